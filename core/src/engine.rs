@@ -1,0 +1,464 @@
+//! The placement engine: parameters (validated once), the placement step, stop conditions.
+//!
+//! This is the algorithm of Shier & Bourke (seed 001, section 2). Shape `i` has area
+//! `A_i = A / (zeta(c, N) (i + N)^c)`. Each trial draws a candidate (angle if rotated, then a
+//! centre uniform over the positions where the shape lies inside the region) and accepts it
+//! when it keeps more than `gap` from every placed shape (and its periodic images) and at
+//! least `gap` from the boundary. One [`Engine::step`] places the next shape and reports how
+//! many trials it took, so a display can draw as the fill grows.
+//!
+//! Guarantees: same seed and parameters, same bits, on every target; the first `k` shapes
+//! never depend on how many are asked for later (each step uses only the RNG stream and the
+//! shapes before it); running out of storage, halting at the trial limit, and a first shape
+//! that cannot fit are error values, never panics.
+
+use crate::coverage::Coverage;
+use crate::geom::{separated, Geo, Point};
+use crate::region::Region;
+use crate::rng;
+use crate::scalar::{powf, Scalar};
+use crate::shape::{Placed, ShapeKind};
+use crate::spatial::SpatialHash;
+use rand_core::RngCore;
+
+/// The parameters of a fill.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Params {
+    /// The power-law exponent c (> 1).
+    pub c: f64,
+    /// The offset N of the paper (> 0, need not be an integer).
+    pub n_offset: f64,
+    /// The shape placed.
+    pub shape: ShapeKind,
+    /// Random rotation (ignored for circles).
+    pub rotate: bool,
+    /// Minimum clearance between shapes and to the boundary (>= 0).
+    pub gap: f64,
+    /// Trial limit per placement (>= 1): reaching it halts the fill.
+    pub max_trials: u64,
+}
+
+impl Params {
+    /// Circles with the given exponent and offset, no gap, the default trial limit.
+    pub fn circles(c: f64, n_offset: f64) -> Self {
+        Params { c, n_offset, shape: ShapeKind::Circle, rotate: false, gap: 0.0, max_trials: 10_000_000 }
+    }
+
+    /// c for a fractal dimension D in 2D (c = 2 / D).
+    pub fn c_from_dimension(d: f64) -> f64 {
+        2.0 / d
+    }
+}
+
+/// What was wrong with the parameters, region or storage.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum ParamError {
+    /// c must be finite and > 1.
+    Exponent,
+    /// N must be finite and > 0.
+    Offset,
+    /// The zeta function overflows for this (c, N).
+    Zeta,
+    /// A shape proportion (aspect ratio) is not finite and positive.
+    Shape,
+    /// Region sizes must be finite and > 0.
+    Region,
+    /// The gap must be finite and >= 0, and smaller than the region.
+    Gap,
+    /// The trial limit must be at least 1.
+    MaxTrials,
+    /// The storage holds no shape slot, or the index buffer is smaller than the shape buffer + 1.
+    Storage,
+}
+
+impl core::fmt::Display for ParamError {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.write_str(match self {
+            ParamError::Exponent => "c must be a finite number greater than 1",
+            ParamError::Offset => "N must be a finite number greater than 0",
+            ParamError::Zeta => "zeta(c, N) overflows: raise N",
+            ParamError::Shape => "shape proportions must be finite and greater than 0",
+            ParamError::Region => "region sizes must be finite and greater than 0",
+            ParamError::Gap => "the gap must be finite, at least 0, and smaller than the region",
+            ParamError::MaxTrials => "the trial limit must be at least 1",
+            ParamError::Storage => "the storage needs at least one shape slot and an index buffer longer than the shape buffer",
+        })
+    }
+}
+
+/// Why a step placed nothing. The engine keeps every shape placed before.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum StepError {
+    /// The trial limit was reached at placement `index` after `trials` trials (halting).
+    Halted {
+        /// The placement that could not be made.
+        index: u64,
+        /// Trials spent on it.
+        trials: u64,
+    },
+    /// The shape buffer is full.
+    Capacity {
+        /// Number of shape slots.
+        capacity: u64,
+    },
+    /// Shape `index` is too large for the region in any orientation (for the first shape:
+    /// lower c or raise N).
+    CannotFit {
+        /// The shape that cannot fit.
+        index: u64,
+    },
+}
+
+impl core::fmt::Display for StepError {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self {
+            StepError::Halted { index, trials } => write!(f, "halted at placement {index} after {trials} trials"),
+            StepError::Capacity { capacity } => write!(f, "storage for {capacity} shapes is full"),
+            StepError::CannotFit { index } => write!(f, "shape {index} is larger than the region allows"),
+        }
+    }
+}
+
+/// One placement: the shape, its nominal area and the trials it took.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Placement<S> {
+    /// Placement index i (0 for the largest shape).
+    pub index: u64,
+    /// The shape as stored.
+    pub shape: Placed<S>,
+    /// A_i.
+    pub area: f64,
+    /// Trials spent on this placement (>= 1).
+    pub trials: u64,
+}
+
+/// When [`Engine::run`] stops: the first condition given that holds stops it.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Stop {
+    /// Stop once this many shapes are placed.
+    pub count: Option<u64>,
+    /// Stop once the placed area reaches this fraction of the region (0 < f < 1).
+    pub fill: Option<f64>,
+    /// Stop before the first shape whose narrowest width is below this.
+    pub min_size: Option<f64>,
+}
+
+/// Why [`Engine::run`] stopped.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum StopReason {
+    /// The count was reached.
+    Count,
+    /// The fill fraction was reached.
+    Fill,
+    /// The next shape is smaller than the minimum size.
+    MinSize,
+    /// A step failed; see [`StepError`].
+    Step(StepError),
+}
+
+/// Statistics of a fill so far.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Stats {
+    /// Shapes placed.
+    pub placed: u64,
+    /// Trials made in all (including those of a halted placement).
+    pub trials: u64,
+    /// Sum of placed nominal areas over the region's area.
+    pub fill_fraction: f64,
+}
+
+impl Stats {
+    /// Average trials per placement (0 when nothing is placed).
+    pub fn trials_per_placement(&self) -> f64 {
+        if self.placed == 0 {
+            0.0
+        } else {
+            self.trials as f64 / self.placed as f64
+        }
+    }
+}
+
+/// The fill engine over caller-provided storage.
+#[derive(Debug)]
+pub struct Engine<'a, S: Scalar> {
+    params: Params,
+    region: Region,
+    shapes: &'a mut [Placed<S>],
+    len: usize,
+    hash: SpatialHash<'a, S>,
+    coverage: Coverage<'a, S>,
+    zeta: f64,
+    area: f64,
+    placed_area: f64,
+    trials: u64,
+    gap: S,
+    period: (S, S),
+}
+
+/// Index words needed for `capacity` shapes: one link each plus `2 * capacity` buckets.
+pub const fn index_words(capacity: usize) -> usize {
+    capacity * 3 + 1
+}
+
+/// The caller-owned storage of an engine.
+#[derive(Debug)]
+pub struct Storage<'a, S> {
+    /// One slot per shape: its length is the capacity.
+    pub shapes: &'a mut [Placed<S>],
+    /// The spatial hash: longer than `shapes` ([`index_words`] recommends the size).
+    pub index: &'a mut [u32],
+    /// The coverage bitmap (see [`crate::coverage`]); may be empty. It speeds up late
+    /// rejections and never changes a result.
+    pub coverage: &'a mut [u64],
+}
+
+impl<'a, S: Scalar> Engine<'a, S> {
+    /// Validates the parameters and builds an engine over the caller's storage.
+    pub fn new(params: Params, region: Region, storage: Storage<'a, S>) -> Result<Self, ParamError> {
+        let Storage { shapes, index, coverage } = storage;
+        if !(params.c.is_finite() && params.c > 1.0) {
+            return Err(ParamError::Exponent);
+        }
+        if !(params.n_offset.is_finite() && params.n_offset > 0.0) {
+            return Err(ParamError::Offset);
+        }
+        if !params.shape.is_valid() {
+            return Err(ParamError::Shape);
+        }
+        if !region.is_valid() {
+            return Err(ParamError::Region);
+        }
+        let (w, h) = region.extent();
+        if !(params.gap.is_finite() && params.gap >= 0.0 && 2.0 * params.gap < w.min(h)) {
+            return Err(ParamError::Gap);
+        }
+        if params.max_trials == 0 {
+            return Err(ParamError::MaxTrials);
+        }
+        if shapes.is_empty() || index.len() <= shapes.len() {
+            return Err(ParamError::Storage);
+        }
+        let zeta = crate::zeta::zeta(params.c, params.n_offset).map_err(|_| ParamError::Zeta)?;
+        let (next, heads) = index.split_at_mut(shapes.len());
+        let hash = SpatialHash::new(heads, next, S::from_f64(w.max(h))).map_err(|_| ParamError::Storage)?;
+        Ok(Engine {
+            params,
+            region,
+            shapes,
+            len: 0,
+            hash,
+            coverage: Coverage::new(coverage, S::from_f64(w), S::from_f64(h)),
+            zeta,
+            area: region.area(),
+            placed_area: 0.0,
+            trials: 0,
+            gap: S::from_f64(params.gap),
+            period: (S::from_f64(w), S::from_f64(h)),
+        })
+    }
+
+    /// The parameters.
+    pub fn params(&self) -> &Params {
+        &self.params
+    }
+
+    /// The region.
+    pub fn region(&self) -> &Region {
+        &self.region
+    }
+
+    /// zeta(c, N) used for the area sequence.
+    pub fn zeta(&self) -> f64 {
+        self.zeta
+    }
+
+    /// The region's area A.
+    pub fn total_area(&self) -> f64 {
+        self.area
+    }
+
+    /// A_i = A / (zeta(c, N) (i + N)^c).
+    pub fn area_of(&self, i: u64) -> f64 {
+        self.area / (self.zeta * powf(i as f64 + self.params.n_offset, self.params.c))
+    }
+
+    /// The shape kind of placement `i`.
+    pub fn kind_of(&self, _i: u64) -> ShapeKind {
+        self.params.shape
+    }
+
+    /// The shapes placed so far, in placement order.
+    pub fn placed(&self) -> &[Placed<S>] {
+        self.shapes.get(..self.len).unwrap_or(&[])
+    }
+
+    /// The concrete geometry of a placed shape: exactly what was tested, and what to draw.
+    pub fn geo(&self, p: &Placed<S>) -> Geo<S> {
+        self.params.shape.geo(Point::new(p.x, p.y), p.scale, p.angle)
+    }
+
+    /// Statistics so far.
+    pub fn stats(&self) -> Stats {
+        Stats { placed: self.len as u64, trials: self.trials, fill_fraction: self.placed_area / self.area }
+    }
+
+    /// Fraction of the region marked in the coverage bitmap (0 without one).
+    pub fn coverage_fraction(&self) -> f64 {
+        self.coverage.marked_fraction()
+    }
+
+    /// The storage capacity in shapes.
+    pub fn capacity(&self) -> usize {
+        self.shapes.len()
+    }
+
+    /// Whether `g` (centred at `(x, y)`, bounding radius `r`) keeps its gap from every placed
+    /// shape, and in a periodic region from every image of them.
+    fn clear(&self, g: &Geo<S>, x: S, y: S, r: S) -> bool {
+        let total = self.len as u32;
+        let gap = self.gap;
+        // Tests candidate `gi`, centred at (qx, qy), against every shape the hash lists.
+        let test = |level: usize, reach: S, gi: &Geo<S>, qx: S, qy: S| {
+            self.hash.query(level, qx - reach, qy - reach, qx + reach, qy + reach, total, |j| {
+                let Some(p) = self.shapes.get(j as usize) else { return true };
+                let lim = r + self.params.shape.bounding_radius(p.scale) + gap;
+                let (dx, dy) = (p.x - qx, p.y - qy);
+                dx * dx + dy * dy > lim * lim || separated(gi, &self.geo(p), gap)
+            })
+        };
+        if !self.region.periodic() {
+            return self.hash.occupied().all(|(level, max_r)| test(level, r + max_r + gap, g, x, y));
+        }
+        let (w, h) = self.period;
+        for (level, max_r) in self.hash.occupied() {
+            let reach = r + max_r + gap;
+            for oy in [S::ZERO, h, -h] {
+                for ox in [S::ZERO, w, -w] {
+                    let (qx, qy) = (x + ox, y + oy);
+                    if qx + reach < S::ZERO || qx - reach > w || qy + reach < S::ZERO || qy - reach > h {
+                        continue;
+                    }
+                    let gi = g.shift(ox, oy);
+                    if !test(level, reach, &gi, qx, qy) {
+                        return false;
+                    }
+                }
+            }
+        }
+        true
+    }
+
+    /// Whether a shape overlaps its own periodic images.
+    fn self_overlaps(&self, g: &Geo<S>, r: S) -> bool {
+        let (w, h) = self.period;
+        if r + r + self.gap < w.min(h) {
+            return false;
+        }
+        [(w, S::ZERO), (S::ZERO, h), (w, h), (w, -h)].iter().any(|&(dx, dy)| !separated(g, &g.shift(dx, dy), self.gap))
+    }
+
+    /// Whether a shape of this scale can be inside the region in some orientation.
+    fn can_fit(&self, kind: ShapeKind, scale: S) -> bool {
+        let quarter = S::from_f64(core::f64::consts::FRAC_PI_2);
+        let angles: &[S] = if self.params.rotate && kind.rotates() { &[S::ZERO, quarter] } else { &[S::ZERO] };
+        angles.iter().any(|&a| {
+            let g = kind.geo(Point::new(S::ZERO, S::ZERO), scale, a);
+            let (x0, y0, x1, y1) = g.bounds();
+            let (w, h) = self.period;
+            let fits = self.region.periodic()
+                || (x1 - x0 + self.gap + self.gap <= w && y1 - y0 + self.gap + self.gap <= h);
+            fits && !(self.region.periodic() && self.self_overlaps(&g, kind.bounding_radius(scale)))
+        })
+    }
+
+    /// Places the next shape, drawing candidates from `rng` until one fits or the trial limit
+    /// is reached. On error nothing is placed and the engine may be stepped again.
+    pub fn step<R: RngCore + ?Sized>(&mut self, rng: &mut R) -> Result<Placement<S>, StepError> {
+        let i = self.len;
+        let index = i as u64;
+        if i >= self.shapes.len() {
+            return Err(StepError::Capacity { capacity: self.shapes.len() as u64 });
+        }
+        let kind = self.kind_of(index);
+        let area = self.area_of(index);
+        let scale = S::from_f64(kind.scale_for_area(area));
+        if !(scale > S::ZERO && scale.is_finite()) || !self.can_fit(kind, scale) {
+            return Err(StepError::CannotFit { index });
+        }
+        let r = kind.bounding_radius(scale);
+        let rotated = self.params.rotate && kind.rotates();
+        let (ex, ey) = kind.half_extents(scale, S::ZERO, S::ONE);
+        // Unrotated: the centre's range is the same for every trial (empty ranges were ruled
+        // out by `can_fit`; a degenerate one still gives a valid, tested candidate).
+        let fixed_range = self.region.centre_range(ex, ey, self.gap).unwrap_or((S::ZERO, S::ZERO, S::ZERO, S::ZERO));
+        let mut trials = 0u64;
+        loop {
+            if trials >= self.params.max_trials {
+                return Err(StepError::Halted { index, trials });
+            }
+            trials += 1;
+            self.trials = self.trials.saturating_add(1);
+            let angle = if rotated { rng::angle::<S, R>(rng) } else { S::ZERO };
+            let ux: S = rng::unit(rng);
+            let uy: S = rng::unit(rng);
+            let (sin, cos) = if rotated { ShapeKind::sin_cos(angle) } else { (S::ZERO, S::ONE) };
+            let (x0, x1, y0, y1) = if rotated {
+                let (ex, ey) = kind.half_extents(scale, sin, cos);
+                match self.region.centre_range(ex, ey, self.gap) {
+                    Some(r) => r,
+                    None => continue,
+                }
+            } else {
+                fixed_range
+            };
+            let c = self.region.wrap(Point::new(x0 + ux * (x1 - x0), y0 + uy * (y1 - y0)));
+            if self.coverage.covered(c.x, c.y) {
+                continue;
+            }
+            let g = kind.geo_sc(c, scale, sin, cos);
+            if !self.region.contains(&g, self.gap) {
+                continue;
+            }
+            if self.region.periodic() && self.self_overlaps(&g, r) {
+                continue;
+            }
+            if !self.clear(&g, c.x, c.y, r) {
+                continue;
+            }
+            let shape = Placed { x: c.x, y: c.y, scale, angle, kind: 0 };
+            if let Some(slot) = self.shapes.get_mut(i) {
+                *slot = shape;
+            }
+            self.hash.insert(i as u32, c.x, c.y, r);
+            let period = if self.region.periodic() { Some(self.period) } else { None };
+            self.coverage.mark(&g, period);
+            self.len += 1;
+            self.placed_area += area;
+            return Ok(Placement { index, shape, area, trials });
+        }
+    }
+
+    /// Steps until a stop condition holds or a step fails, calling `on_place` after each
+    /// placement.
+    pub fn run<R: RngCore + ?Sized>(&mut self, rng: &mut R, stop: &Stop, mut on_place: impl FnMut(&Placement<S>)) -> StopReason {
+        loop {
+            let n = self.len as u64;
+            if stop.count.is_some_and(|k| n >= k) {
+                return StopReason::Count;
+            }
+            if stop.fill.is_some_and(|f| self.placed_area >= f * self.area) {
+                return StopReason::Fill;
+            }
+            if let Some(m) = stop.min_size {
+                let kind = self.kind_of(n);
+                if kind.min_width(kind.scale_for_area(self.area_of(n))) < m {
+                    return StopReason::MinSize;
+                }
+            }
+            match self.step(rng) {
+                Ok(p) => on_place(&p),
+                Err(e) => return StopReason::Step(e),
+            }
+        }
+    }
+}

@@ -1,0 +1,89 @@
+//! The random number generator and the one fixed mapping from random bits to numbers.
+//!
+//! The generator is xoshiro256++ from `rand_xoshiro` (pinned exactly in the workspace), seeded
+//! from a `u64` with `SeedableRng::seed_from_u64`, which expands the seed with SplitMix64.
+//! The RNG is always passed explicitly (`&mut R`); there is no global generator.
+//!
+//! The mapping, fixed forever (changing it changes every output and is a version-level event):
+//! - a unit value u in `[0, 1)` takes one `next_u64()`; for `f64` it is `(bits >> 11) * 2^-53`
+//!   (see [`Scalar::unit`]); a fixed-point scalar takes the top fractional bits;
+//! - a coordinate in `[lo, hi)` is `lo + u * (hi - lo)`;
+//! - an angle is `u * 2π` radians, counter-clockwise;
+//! - each trial draws, in this order: the angle (only when rotation is random), then x, then y.
+//!   A trial always draws the same count of values, whether or not it is accepted.
+
+use crate::scalar::Scalar;
+use rand_core::{RngCore, SeedableRng};
+
+/// The generator zetafill uses: xoshiro256++.
+pub type ZetaRng = rand_xoshiro::Xoshiro256PlusPlus;
+
+/// The generator for a seed.
+pub fn rng_from_seed(seed: u64) -> ZetaRng {
+    ZetaRng::seed_from_u64(seed)
+}
+
+/// A value in `[0, 1)` from the next 64 random bits.
+#[inline]
+pub fn unit<S: Scalar, R: RngCore + ?Sized>(rng: &mut R) -> S {
+    S::unit(rng.next_u64())
+}
+
+/// A value in `[lo, hi)` (or exactly `lo` when `hi <= lo`) from the next 64 random bits.
+#[inline]
+pub fn uniform<S: Scalar, R: RngCore + ?Sized>(rng: &mut R, lo: S, hi: S) -> S {
+    let u: S = unit(rng);
+    if hi > lo {
+        lo + u * (hi - lo)
+    } else {
+        lo
+    }
+}
+
+/// An angle in `[0, 2π)` from the next 64 random bits.
+#[inline]
+pub fn angle<S: Scalar, R: RngCore + ?Sized>(rng: &mut R) -> S {
+    let u: S = unit(rng);
+    u * S::from_f64(core::f64::consts::TAU)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The reference implementation's outputs for the state s = {1, 2, 3, 4}
+    /// (xoshiro256plusplus.c by Blackman and Vigna), as published with rand_xoshiro.
+    #[test]
+    fn xoshiro256plusplus_matches_reference() {
+        let mut seed = [0u8; 32];
+        for (i, v) in [1u64, 2, 3, 4].iter().enumerate() {
+            seed[i * 8..i * 8 + 8].copy_from_slice(&v.to_le_bytes());
+        }
+        let mut rng = ZetaRng::from_seed(seed);
+        let expected: [u64; 10] = [
+            41943041,
+            58720359,
+            3588806011781223,
+            3591011842654386,
+            9228616714210784205,
+            9973669472204895162,
+            14011001112246962877,
+            12406186145184390807,
+            15849039046786891736,
+            10450023813501588000,
+        ];
+        for e in expected {
+            assert_eq!(rng.next_u64(), e);
+        }
+    }
+
+    /// Pins the seeding and the unit mapping: these values are part of zetafill's output.
+    #[test]
+    fn first_unit_values_for_seed_1_are_pinned() {
+        let mut rng = rng_from_seed(1);
+        let got: [u64; 4] = core::array::from_fn(|_| unit::<f64, _>(&mut rng).to_bits());
+        assert_eq!(got, PINNED_SEED1, "seeding or unit mapping changed: {got:x?}");
+    }
+
+    const PINNED_SEED1: [u64; 4] = [0x3fe9f8ba0fede078, 0x3fe7e8482652c7fc, 0x3fb9a37d5757aaf0, 0x3fe7e10233e0b9aa];
+}

@@ -1,0 +1,171 @@
+//! The number type the geometry is written over, and the only place that calls `libm`.
+//!
+//! Every geometric computation in the core goes through [`Scalar`]. `f64` is the default
+//! scalar; a fixed-point scalar can implement the same trait. Each implementation is
+//! deterministic across targets: `f64` uses IEEE-754 basic operations (which are exactly
+//! rounded everywhere) plus `libm`, a pure-Rust maths library whose results do not depend on
+//! the platform. No fused multiply-add, no intrinsics, no SIMD.
+
+use core::fmt::Debug;
+use core::ops::{Add, Div, Mul, Neg, Sub};
+
+/// A deterministic number type for geometry.
+///
+/// Implementations must give bit-identical results on every target for the same inputs.
+pub trait Scalar:
+    Copy
+    + Debug
+    + PartialEq
+    + PartialOrd
+    + Add<Output = Self>
+    + Sub<Output = Self>
+    + Mul<Output = Self>
+    + Div<Output = Self>
+    + Neg<Output = Self>
+{
+    /// Zero.
+    const ZERO: Self;
+    /// One.
+    const ONE: Self;
+    /// Converts from `f64` (rounding or saturating as the type requires).
+    fn from_f64(v: f64) -> Self;
+    /// Converts to `f64` (exactly where the type allows).
+    fn to_f64(self) -> f64;
+    /// Square root; returns zero for negative input.
+    fn sqrt(self) -> Self;
+    /// Sine and cosine of an angle in radians.
+    fn sin_cos(self) -> (Self, Self);
+    /// Largest integer not above `self`, saturated to the `i64` range (NaN gives 0).
+    fn floor_i64(self) -> i64;
+    /// A value uniform in `[0, 1)` made from 64 random bits (see [`crate::rng`]).
+    fn unit(bits: u64) -> Self;
+    /// The bits that identify this value in a digest, with `-0` written as `+0`.
+    fn digest_bits(self) -> u64;
+    /// Whether the value is finite (always true for fixed point).
+    fn is_finite(self) -> bool;
+    /// Absolute value.
+    #[inline]
+    fn abs(self) -> Self {
+        if self < Self::ZERO {
+            -self
+        } else {
+            self
+        }
+    }
+    /// The smaller of two values.
+    #[inline]
+    fn min(self, o: Self) -> Self {
+        if o < self {
+            o
+        } else {
+            self
+        }
+    }
+    /// The larger of two values.
+    #[inline]
+    fn max(self, o: Self) -> Self {
+        if o > self {
+            o
+        } else {
+            self
+        }
+    }
+    /// Half of the value.
+    #[inline]
+    fn half(self) -> Self {
+        self / (Self::ONE + Self::ONE)
+    }
+}
+
+/// 2^-53: the spacing of the 53-bit uniform grid used for `f64`.
+const TWO_POW_M53: f64 = 1.0 / 9_007_199_254_740_992.0;
+
+impl Scalar for f64 {
+    const ZERO: Self = 0.0;
+    const ONE: Self = 1.0;
+    #[inline]
+    fn from_f64(v: f64) -> Self {
+        v
+    }
+    #[inline]
+    fn to_f64(self) -> f64 {
+        self
+    }
+    #[inline]
+    fn sqrt(self) -> Self {
+        if self > 0.0 {
+            libm::sqrt(self)
+        } else {
+            0.0
+        }
+    }
+    #[inline]
+    fn sin_cos(self) -> (Self, Self) {
+        libm::sincos(self)
+    }
+    #[inline]
+    fn floor_i64(self) -> i64 {
+        // `as` truncates toward zero, saturates and maps NaN to 0: never panics. Correct the
+        // truncation for negative non-integers; exact for every finite input.
+        let t = self as i64;
+        if (t as f64) > self {
+            t.saturating_sub(1)
+        } else {
+            t
+        }
+    }
+    #[inline]
+    fn unit(bits: u64) -> Self {
+        // The value is below 2^53, so the signed conversion is exact (and faster than u64).
+        ((bits >> 11) as i64) as f64 * TWO_POW_M53
+    }
+    #[inline]
+    fn digest_bits(self) -> u64 {
+        if self == 0.0 {
+            0
+        } else {
+            self.to_bits()
+        }
+    }
+    #[inline]
+    fn is_finite(self) -> bool {
+        f64::is_finite(self)
+    }
+}
+
+/// `x^y` in `f64` through `libm` (the one power function the core uses).
+#[inline]
+pub fn powf(x: f64, y: f64) -> f64 {
+    libm::pow(x, y)
+}
+
+/// Square root in `f64` through `libm`.
+#[inline]
+pub fn sqrtf(x: f64) -> f64 {
+    libm::sqrt(x)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn unit_covers_zero_and_stays_below_one() {
+        assert_eq!(f64::unit(0), 0.0);
+        assert!(f64::unit(u64::MAX) < 1.0);
+        assert_eq!(f64::unit(u64::MAX), 1.0 - TWO_POW_M53);
+    }
+
+    #[test]
+    fn digest_bits_canonicalise_negative_zero() {
+        assert_eq!((-0.0f64).digest_bits(), 0.0f64.digest_bits());
+        assert_ne!(1.0f64.digest_bits(), (-1.0f64).digest_bits());
+    }
+
+    #[test]
+    fn floor_saturates_and_never_panics() {
+        assert_eq!(f64::NAN.floor_i64(), 0);
+        assert_eq!(f64::INFINITY.floor_i64(), i64::MAX);
+        assert_eq!((-2.5f64).floor_i64(), -3);
+    }
+}

@@ -1,0 +1,127 @@
+//! The result of a fill as one plain data model, shared by every output format (and
+//! serialised as is for JSON, DESIGN section 3, `version` 1).
+
+use serde::Serialize;
+
+/// A finished (or halted) fill.
+#[derive(Debug, Clone, Serialize)]
+pub struct FillDoc {
+    /// Format version (1).
+    pub version: u32,
+    /// `"fill"`.
+    pub mode: &'static str,
+    /// Everything needed to reproduce the run.
+    pub params: ParamsDoc,
+    /// The region in its own frame (mm, x right, y up).
+    pub region: RegionDoc,
+    /// The region's area A.
+    pub area: f64,
+    /// zeta(c, N).
+    pub zeta: f64,
+    /// Shapes in placement order.
+    pub shapes: Vec<ShapeDoc>,
+    /// Run statistics.
+    pub stats: StatsDoc,
+}
+
+/// The parameters of the run.
+#[derive(Debug, Clone, Serialize)]
+pub struct ParamsDoc {
+    /// Exponent c.
+    pub c: f64,
+    /// The paper's N.
+    pub n_offset: f64,
+    /// RNG seed.
+    pub seed: u64,
+    /// Shape as written on the command line.
+    pub shape: String,
+    /// `none` or `random`.
+    pub rotate: &'static str,
+    /// Sampler name.
+    pub sampler: &'static str,
+    /// Clearance in mm.
+    pub gap: f64,
+    /// Stop after this many shapes.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub count: Option<u64>,
+    /// Stop at this fill fraction.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub fill: Option<f64>,
+    /// Stop before the first shape narrower than this (mm).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub min_size: Option<f64>,
+    /// Trial limit per placement.
+    pub max_trials: u64,
+    /// The fractal dimension D = 2/c.
+    pub dimension: f64,
+}
+
+/// A region.
+#[derive(Debug, Clone, Serialize)]
+#[serde(tag = "kind", rename_all = "lowercase")]
+pub enum RegionDoc {
+    /// `[0, width] x [0, height]`.
+    Rect {
+        /// Width (mm).
+        width: f64,
+        /// Height (mm).
+        height: f64,
+        /// Toroidal boundary.
+        periodic: bool,
+    },
+}
+
+/// One placed shape.
+#[derive(Debug, Clone, Serialize)]
+pub struct ShapeDoc {
+    /// Placement index.
+    pub index: u64,
+    /// `circle`, `square`, `rect`.
+    pub kind: &'static str,
+    /// Centre (mm).
+    pub center: [f64; 2],
+    /// Radius (circles and rings).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub radius: Option<f64>,
+    /// Rotation in radians, counter-clockwise (polygonal kinds).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub angle: Option<f64>,
+    /// Nominal area A_i.
+    pub area: f64,
+    /// Trials this placement took.
+    pub trials: u64,
+    /// Vertices counter-clockwise (polygonal kinds): exactly the polygon that was tested.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub vertices: Option<Vec<[f64; 2]>>,
+}
+
+/// Run statistics.
+#[derive(Debug, Clone, Serialize)]
+pub struct StatsDoc {
+    /// Shapes placed.
+    pub placed: u64,
+    /// Trials in all.
+    pub trials: u64,
+    /// Placed area over region area.
+    pub fill_fraction: f64,
+    /// Whether the run halted at the trial limit.
+    pub halted: bool,
+    /// Why the run stopped: `count`, `fill`, `min-size` or `halted`.
+    pub stop: &'static str,
+}
+
+impl FillDoc {
+    /// Width and height of the region's bounding box.
+    pub fn extent(&self) -> (f64, f64) {
+        match self.region {
+            RegionDoc::Rect { width, height, .. } => (width, height),
+        }
+    }
+
+    /// Whether the region is periodic.
+    pub fn periodic(&self) -> bool {
+        match self.region {
+            RegionDoc::Rect { periodic, .. } => periodic,
+        }
+    }
+}

@@ -1,0 +1,322 @@
+//! `zetafill fill`: the 2D fractal fill.
+
+use crate::doc::{FillDoc, ParamsDoc, RegionDoc, ShapeDoc, StatsDoc};
+use crate::error::CliError;
+use crate::output::svg::{Style, SvgOptions};
+use crate::output::{self, Format};
+use crate::spec::{self, RegionSpec};
+use crate::write::Dest;
+use clap::{Args, ValueEnum};
+use std::io::IsTerminal;
+use std::path::PathBuf;
+use zetafill::engine::{ParamError, StepError};
+use zetafill::{index_words, Engine, Geo, Params, Placed, ShapeKind, Stop, StopReason, Storage};
+
+/// Largest number of shapes one run may hold (52 bytes each in the core).
+pub const MAX_SHAPES: u64 = 20_000_000;
+
+/// Words of the coverage bitmap (2 MiB): a 4096 x 4096 grid.
+const COVERAGE_WORDS: usize = 1 << 18;
+
+/// Rotation of non-circular shapes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum Rotate {
+    /// Axis-aligned.
+    None,
+    /// A uniformly random angle per trial.
+    Random,
+}
+
+/// The candidate sampler.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum Sampler {
+    /// The paper's: uniform candidates over the region, retried until one fits.
+    Reference,
+}
+
+/// Arguments of `zetafill fill`.
+#[derive(Debug, Args)]
+pub struct FillArgs {
+    /// circle | square | rect:ASPECT (width over height).
+    #[arg(long, default_value = "circle", value_parser = spec::shape)]
+    pub shape: ShapeKind,
+    /// Rotation: none or random (default: random for non-circles).
+    #[arg(long, value_enum)]
+    pub rotate: Option<Rotate>,
+    /// rect:W:H, sizes in mm.
+    #[arg(long, default_value = "rect:200:200", value_parser = spec::region)]
+    pub region: RegionSpec,
+    /// Periodic (toroidal) boundary: the fill tiles seamlessly.
+    #[arg(long)]
+    pub periodic: bool,
+    /// Power-law exponent c > 1 (default 1.3).
+    #[arg(long, value_parser = spec::exponent, conflicts_with = "dimension")]
+    pub c: Option<f64>,
+    /// Fractal dimension D in (0, 2) instead of c (c = 2/D).
+    #[arg(long, value_parser = spec::dimension)]
+    pub dimension: Option<f64>,
+    /// The paper's N > 0: larger N makes the first shapes smaller.
+    #[arg(long = "n-offset", default_value_t = 1.0, value_parser = spec::positive)]
+    pub n_offset: f64,
+    /// Stop after K shapes (default 2000 when no stop condition is given).
+    #[arg(long, value_parser = clap::value_parser!(u64).range(1..=MAX_SHAPES))]
+    pub count: Option<u64>,
+    /// Stop once this fraction of the region is filled, 0 < F < 1.
+    #[arg(long, value_parser = spec::fraction)]
+    pub fill: Option<f64>,
+    /// Stop before the first shape narrower than MM.
+    #[arg(long = "min-size", value_parser = spec::positive)]
+    pub min_size: Option<f64>,
+    /// Minimum clearance between shapes and to the boundary, in mm.
+    #[arg(long, default_value_t = 0.0, value_parser = spec::non_negative)]
+    pub gap: f64,
+    /// Trial limit per placement; reaching it halts the fill (exit 3).
+    #[arg(long = "max-trials", default_value_t = 10_000_000, value_parser = clap::value_parser!(u64).range(1..))]
+    pub max_trials: u64,
+    /// RNG seed.
+    #[arg(long, default_value_t = 1)]
+    pub seed: u64,
+    /// Candidate sampler.
+    #[arg(long, value_enum, default_value = "reference")]
+    pub sampler: Sampler,
+    /// Output path; the format comes from the extension (.svg .json .csv); '-' is stdout.
+    #[arg(short = 'o', long)]
+    pub output: PathBuf,
+    /// Output format (overrides the extension).
+    #[arg(long, value_enum)]
+    pub format: Option<Format>,
+    /// SVG: outline (plotters) or filled.
+    #[arg(long, value_enum, default_value = "outline")]
+    pub style: Style,
+    /// SVG: stroke width in mm.
+    #[arg(long = "pen-width", default_value_t = 0.3, value_parser = spec::positive)]
+    pub pen_width: f64,
+    /// SVG: also draw the region's outline.
+    #[arg(long)]
+    pub boundary: bool,
+    /// No progress bar.
+    #[arg(short, long)]
+    pub quiet: bool,
+}
+
+impl FillArgs {
+    /// The exponent c, from `--c`, `--dimension` or the default 1.3.
+    pub fn c(&self) -> f64 {
+        match (self.c, self.dimension) {
+            (Some(c), _) => c,
+            (None, Some(d)) => Params::c_from_dimension(d),
+            (None, None) => 1.3,
+        }
+    }
+
+    fn rotate(&self) -> bool {
+        match self.rotate {
+            Some(r) => r == Rotate::Random,
+            None => self.shape.rotates(),
+        }
+    }
+
+    fn stop(&self) -> Stop {
+        let count = match (self.count, self.fill, self.min_size) {
+            (None, None, None) => Some(2000),
+            (c, _, _) => c,
+        };
+        Stop { count, fill: self.fill, min_size: self.min_size }
+    }
+}
+
+/// Names the flag behind a core parameter error.
+fn param_error(e: ParamError) -> CliError {
+    let flag = match e {
+        ParamError::Exponent => "--c",
+        ParamError::Offset | ParamError::Zeta => "--n-offset",
+        ParamError::Shape => "--shape",
+        ParamError::Region => "--region",
+        ParamError::Gap => "--gap",
+        ParamError::MaxTrials => "--max-trials",
+        ParamError::Storage => "--count",
+    };
+    CliError::arg(flag, e)
+}
+
+/// How many shape slots the stop conditions can need (with a little slack).
+fn capacity(params: &Params, area: f64, stop: &Stop) -> Result<u64, CliError> {
+    let (c, n) = (params.c, params.n_offset);
+    let zeta = zetafill::zeta::zeta(c, n).map_err(|e| CliError::arg("--n-offset", e))?;
+    let mut need = u64::MAX;
+    if let Some(k) = stop.count {
+        need = need.min(k);
+    }
+    if let Some(f) = stop.fill {
+        // Smallest k with sum_{i<k} A_i >= f A, i.e. zeta(c, N + k) <= (1 - f) zeta(c, N).
+        let target = (1.0 - f) * zeta;
+        let tail = |k: u64| zetafill::zeta::hurwitz_zeta(c, n + k as f64).unwrap_or(0.0);
+        let mut hi = 1u64;
+        while tail(hi) > target && hi <= MAX_SHAPES {
+            hi *= 2;
+        }
+        if hi > MAX_SHAPES {
+            return Err(CliError::arg("--fill", format!("{f} needs more than {MAX_SHAPES} shapes at this c; lower it or raise --c")));
+        }
+        need = need.min(hi);
+    }
+    if let Some(m) = stop.min_size {
+        // Shape k has width w_k decreasing in k: the first k with w_k < m bounds the run.
+        let kind = params.shape;
+        let width = |k: u64| kind.min_width(kind.scale_for_area(area / (zeta * zetafill::scalar::powf(k as f64 + n, c))));
+        let mut hi = 1u64;
+        while width(hi) >= m && hi <= MAX_SHAPES {
+            hi *= 2;
+        }
+        if hi > MAX_SHAPES {
+            return Err(CliError::arg("--min-size", format!("{m} mm needs more than {MAX_SHAPES} shapes; raise it")));
+        }
+        need = need.min(hi);
+    }
+    Ok(need.saturating_add(1).min(MAX_SHAPES))
+}
+
+/// Advice for a halt at placement `index`.
+fn halt_advice(index: u64) -> &'static str {
+    if index < 100 {
+        "the first shapes left no room for this one: lower --c, raise --n-offset, or try another --seed"
+    } else {
+        "raise --max-trials, lower --c, or ask for fewer shapes"
+    }
+}
+
+/// The concrete geometry of a placed shape as a [`ShapeDoc`].
+fn shape_doc(kind: &ShapeKind, geo: &Geo<f64>, p: &Placed<f64>, index: u64, area: f64, trials: u64) -> ShapeDoc {
+    let (name, radius, angle, vertices) = match geo {
+        Geo::Circle { r, .. } => ("circle", Some(*r), None, None),
+        Geo::Convex { .. } => {
+            let name = if matches!(kind, ShapeKind::Square) { "square" } else { "rect" };
+            let vs = geo.vertices().iter().map(|v| [v.x, v.y]).collect();
+            (name, None, Some(p.angle), Some(vs))
+        }
+    };
+    ShapeDoc { index, kind: name, center: [p.x, p.y], radius, angle, area, trials, vertices }
+}
+
+/// Runs the fill and returns the document (and the halt, if any). Nothing is written.
+pub fn compute(a: &FillArgs) -> Result<(FillDoc, Option<StepError>), CliError> {
+    let region = a.region.region(a.periodic);
+    let params = Params { c: a.c(), n_offset: a.n_offset, shape: a.shape, rotate: a.rotate(), gap: a.gap, max_trials: a.max_trials };
+    let stop = a.stop();
+    let cap = capacity(&params, region.area(), &stop)? as usize;
+    let mut shapes = vec![Placed { x: 0.0, y: 0.0, scale: 0.0, angle: 0.0, kind: 0 }; cap];
+    let mut index = vec![0u32; index_words(cap)];
+    let mut coverage = vec![0u64; COVERAGE_WORDS];
+    let storage = Storage { shapes: &mut shapes, index: &mut index, coverage: &mut coverage };
+    let mut engine = Engine::<f64>::new(params, region, storage).map_err(param_error)?;
+    let mut rng = zetafill::rng_from_seed(a.seed);
+
+    let bar = progress_bar(a, stop.count);
+    let mut trials = Vec::with_capacity(cap);
+    let reason = engine.run(&mut rng, &stop, |p| {
+        trials.push(p.trials);
+        if let Some(b) = &bar {
+            b.inc(1);
+        }
+    });
+    if let Some(b) = &bar {
+        b.finish_and_clear();
+    }
+    let (stop_name, halt) = match reason {
+        StopReason::Count => ("count", None),
+        StopReason::Fill => ("fill", None),
+        StopReason::MinSize => ("min-size", None),
+        StopReason::Step(e @ StepError::Halted { .. }) => ("halted", Some(e)),
+        StopReason::Step(StepError::CannotFit { index: 0 }) => {
+            let kind = params.shape;
+            let s = kind.scale_for_area(engine.area_of(0));
+            return Err(CliError::arg(
+                "--c",
+                format!(
+                    "the first shape (area {:.4} mm², width {:.4} mm) does not fit the region; lower --c or raise --n-offset",
+                    engine.area_of(0),
+                    kind.min_width(s)
+                ),
+            ));
+        }
+        StopReason::Step(e @ StepError::CannotFit { .. }) => ("halted", Some(e)),
+        StopReason::Step(e @ StepError::Capacity { .. }) => return Err(CliError::Io(format!("internal: {e}"))),
+    };
+    let shapes_doc = engine
+        .placed()
+        .iter()
+        .enumerate()
+        .map(|(i, p)| {
+            let i = i as u64;
+            let t = trials.get(i as usize).copied().unwrap_or(0);
+            shape_doc(&params.shape, &engine.geo(p), p, i, engine.area_of(i), t)
+        })
+        .collect();
+    let st = engine.stats();
+    let (w, h) = region.extent();
+    let doc = FillDoc {
+        version: 1,
+        mode: "fill",
+        params: ParamsDoc {
+            c: params.c,
+            n_offset: params.n_offset,
+            seed: a.seed,
+            shape: spec::shape_name(&params.shape),
+            rotate: if params.rotate && params.shape.rotates() { "random" } else { "none" },
+            sampler: "reference",
+            gap: params.gap,
+            count: stop.count,
+            fill: stop.fill,
+            min_size: stop.min_size,
+            max_trials: params.max_trials,
+            dimension: 2.0 / params.c,
+        },
+        region: RegionDoc::Rect { width: w, height: h, periodic: a.periodic },
+        area: engine.total_area(),
+        zeta: engine.zeta(),
+        shapes: shapes_doc,
+        stats: StatsDoc { placed: st.placed, trials: st.trials, fill_fraction: st.fill_fraction, halted: halt.is_some(), stop: stop_name },
+    };
+    Ok((doc, halt))
+}
+
+fn progress_bar(a: &FillArgs, count: Option<u64>) -> Option<indicatif::ProgressBar> {
+    if a.quiet || !std::io::stderr().is_terminal() {
+        return None;
+    }
+    let b = match count {
+        Some(k) => indicatif::ProgressBar::new(k),
+        None => indicatif::ProgressBar::new_spinner(),
+    };
+    if let Ok(style) = indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} shapes, {elapsed} (eta {eta})") {
+        b.set_style(style);
+    }
+    Some(b)
+}
+
+/// Renders a document in a format.
+pub fn render(doc: &FillDoc, format: Format, a: &FillArgs) -> Result<Vec<u8>, CliError> {
+    Ok(match format {
+        Format::Svg => output::svg::render(doc, &SvgOptions { style: a.style, pen_width: a.pen_width, boundary: a.boundary }),
+        Format::Json => output::json::render(doc)?,
+        Format::Csv => output::csv::render(doc),
+    })
+}
+
+/// `zetafill fill`.
+pub fn run(a: &FillArgs) -> Result<(), CliError> {
+    let dest = Dest::parse(&a.output);
+    dest.check("--output", &[])?;
+    let format = Format::resolve(a.format, &a.output)?;
+    let (doc, halt) = compute(a)?;
+    let bytes = render(&doc, format, a)?;
+    dest.write(&bytes)?;
+    match halt {
+        Some(StepError::Halted { index, trials }) => Err(CliError::Halted(format!(
+            "halted at placement {index} after {trials} trials (the output holds the {index} shapes placed before it): {}",
+            halt_advice(index)
+        ))),
+        Some(e) => Err(CliError::Halted(format!("{e}; the output holds every shape placed before it"))),
+        None => Ok(()),
+    }
+}

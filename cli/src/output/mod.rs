@@ -1,0 +1,75 @@
+//! Output formats: one file per format, each turning a [`crate::doc::FillDoc`] into bytes.
+
+pub mod csv;
+pub mod json;
+pub mod svg;
+
+use crate::error::CliError;
+use std::path::Path;
+
+/// The formats `-o` / `--format` accept.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum Format {
+    /// SVG drawing in mm.
+    Svg,
+    /// JSON document (version 1).
+    Json,
+    /// One row per shape.
+    Csv,
+}
+
+impl Format {
+    /// The format for an output path: `--format` if given, else the extension (`-` needs
+    /// `--format` or gets SVG).
+    pub fn resolve(given: Option<Format>, path: &Path) -> Result<Format, CliError> {
+        if let Some(f) = given {
+            return Ok(f);
+        }
+        if path.as_os_str() == "-" {
+            return Ok(Format::Svg);
+        }
+        let ext = path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase);
+        match ext.as_deref() {
+            Some("svg") => Ok(Format::Svg),
+            Some("json") => Ok(Format::Json),
+            Some("csv") => Ok(Format::Csv),
+            _ => Err(CliError::arg(
+                "--output",
+                format!("cannot tell the format of '{}'; end it in .svg, .json or .csv, or give --format", path.display()),
+            )),
+        }
+    }
+}
+
+/// A number in mm with at most `places` decimals, no trailing zeros, never `-0`.
+pub fn num(v: f64, places: usize) -> String {
+    let s = format!("{v:.places$}");
+    let s = if s.contains('.') { s.trim_end_matches('0').trim_end_matches('.').to_string() } else { s };
+    if s == "-0" {
+        "0".into()
+    } else {
+        s
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn numbers_are_plain_and_short() {
+        assert_eq!(num(1.5, 4), "1.5");
+        assert_eq!(num(2.0, 4), "2");
+        assert_eq!(num(-0.00001, 4), "0");
+        assert_eq!(num(1e-7, 4), "0");
+        assert_eq!(num(123.456789, 4), "123.4568");
+    }
+
+    #[test]
+    fn format_from_extension() {
+        assert_eq!(Format::resolve(None, Path::new("a.SVG")).ok(), Some(Format::Svg));
+        assert_eq!(Format::resolve(None, Path::new("a.json")).ok(), Some(Format::Json));
+        assert!(Format::resolve(None, Path::new("a.txt")).is_err());
+        assert_eq!(Format::resolve(Some(Format::Csv), Path::new("a.txt")).ok(), Some(Format::Csv));
+    }
+}

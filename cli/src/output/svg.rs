@@ -1,0 +1,145 @@
+//! SVG output in physical units: `width`/`height` in mm with a matching `viewBox`, so one user
+//! unit is one millimetre. The region's frame has y up; SVG has y down, so every y is written
+//! as `H - y` (no transform, which keeps the file simple for plotter tools). Numbers have four
+//! decimals (0.1 µm). The parameters and seed are in `<title>` and `<desc>`; there is no
+//! timestamp, so the same run gives the same bytes.
+
+use crate::doc::{FillDoc, ShapeDoc};
+use crate::output::num;
+use svg::node::element::{Circle, ClipPath, Definitions, Description, Group, Polygon, Rectangle, Title};
+use svg::node::Text;
+use svg::Document;
+
+/// How shapes are painted.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum Style {
+    /// Stroke-only outlines (pen plotters, laser cutting).
+    Outline,
+    /// Filled shapes without stroke (screens, prints).
+    Filled,
+}
+
+/// SVG options.
+#[derive(Debug, Clone, Copy)]
+pub struct SvgOptions {
+    /// Painting style.
+    pub style: Style,
+    /// Stroke width in mm for outlines.
+    pub pen_width: f64,
+    /// Draw the region's outline too.
+    pub boundary: bool,
+}
+
+const P: usize = 4;
+
+fn shape_node(sh: &ShapeDoc, dx: f64, dy: f64, h: f64) -> Option<svg::node::element::Element> {
+    if let Some(r) = sh.radius {
+        let c = Circle::new()
+            .set("cx", num(sh.center[0] + dx, P))
+            .set("cy", num(h - (sh.center[1] + dy), P))
+            .set("r", num(r, P));
+        return Some(c.into());
+    }
+    let vs = sh.vertices.as_ref()?;
+    let pts: Vec<String> = vs.iter().map(|v| format!("{},{}", num(v[0] + dx, P), num(h - (v[1] + dy), P))).collect();
+    Some(Polygon::new().set("points", pts.join(" ")).into())
+}
+
+/// The (dx, dy) images of a shape that can show inside a periodic region.
+fn images(sh: &ShapeDoc, w: f64, h: f64) -> Vec<(f64, f64)> {
+    let (x0, y0, x1, y1) = bounds(sh);
+    let xs: Vec<f64> = [0.0, w, -w].into_iter().filter(|&d| x1 + d > 0.0 && x0 + d < w).collect();
+    let ys: Vec<f64> = [0.0, h, -h].into_iter().filter(|&d| y1 + d > 0.0 && y0 + d < h).collect();
+    ys.iter().flat_map(|&dy| xs.iter().map(move |&dx| (dx, dy))).collect()
+}
+
+fn bounds(sh: &ShapeDoc) -> (f64, f64, f64, f64) {
+    if let Some(r) = sh.radius {
+        return (sh.center[0] - r, sh.center[1] - r, sh.center[0] + r, sh.center[1] + r);
+    }
+    let vs = sh.vertices.as_deref().unwrap_or(&[]);
+    vs.iter().fold((f64::MAX, f64::MAX, f64::MIN, f64::MIN), |b, v| (b.0.min(v[0]), b.1.min(v[1]), b.2.max(v[0]), b.3.max(v[1])))
+}
+
+/// The `zetafill fill` command line that reproduces the document.
+pub fn command_line(doc: &FillDoc) -> String {
+    let p = &doc.params;
+    let (w, h) = doc.extent();
+    let mut s = format!(
+        "zetafill fill --shape {} --rotate {} --region rect:{}:{}{} --c {} --n-offset {} --gap {} --max-trials {} --seed {}",
+        p.shape,
+        p.rotate,
+        w,
+        h,
+        if doc.periodic() { " --periodic" } else { "" },
+        p.c,
+        p.n_offset,
+        p.gap,
+        p.max_trials,
+        p.seed
+    );
+    if let Some(k) = p.count {
+        s.push_str(&format!(" --count {k}"));
+    }
+    if let Some(f) = p.fill {
+        s.push_str(&format!(" --fill {f}"));
+    }
+    if let Some(m) = p.min_size {
+        s.push_str(&format!(" --min-size {m}"));
+    }
+    s
+}
+
+/// Renders a fill as SVG.
+pub fn render(doc: &FillDoc, opt: &SvgOptions) -> Vec<u8> {
+    let (w, h) = doc.extent();
+    let mut shapes = Group::new().set("id", "shapes");
+    shapes = match opt.style {
+        Style::Outline => shapes.set("fill", "none").set("stroke", "black").set("stroke-width", num(opt.pen_width, P)),
+        Style::Filled => shapes.set("fill", "black").set("stroke", "none"),
+    };
+    let periodic = doc.periodic();
+    for sh in &doc.shapes {
+        let offs = if periodic { images(sh, w, h) } else { vec![(0.0, 0.0)] };
+        for (dx, dy) in offs {
+            if let Some(n) = shape_node(sh, dx, dy, h) {
+                shapes = shapes.add(n);
+            }
+        }
+    }
+    let p = &doc.params;
+    let mut d = Document::new()
+        .set("xmlns:inkscape", "http://www.inkscape.org/namespaces/inkscape")
+        .set("width", format!("{}mm", num(w, P)))
+        .set("height", format!("{}mm", num(h, P)))
+        .set("viewBox", format!("0 0 {} {}", num(w, P), num(h, P)))
+        .add(Title::new("").add(Text::new(format!(
+            "zetafill: {} {}, c = {}, N = {}, seed {}",
+            doc.shapes.len(),
+            p.shape,
+            p.c,
+            p.n_offset,
+            p.seed
+        ))))
+        .add(Description::new().add(Text::new(command_line(doc))));
+    if periodic {
+        // Images of edge-crossing shapes tile seamlessly; the clip keeps the tile's bounds.
+        let clip = ClipPath::new().set("id", "region").add(Rectangle::new().set("width", num(w, P)).set("height", num(h, P)));
+        d = d.add(Definitions::new().add(clip));
+        shapes = shapes.set("clip-path", "url(#region)");
+    }
+    d = d.add(shapes);
+    if opt.boundary {
+        let b = Rectangle::new()
+            .set("id", "boundary")
+            .set("width", num(w, P))
+            .set("height", num(h, P))
+            .set("fill", "none")
+            .set("stroke", "black")
+            .set("stroke-width", num(opt.pen_width, P));
+        d = d.add(b);
+    }
+    let mut s = d.to_string();
+    s.push('\n');
+    s.into_bytes()
+}

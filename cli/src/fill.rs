@@ -300,6 +300,7 @@ pub fn render(doc: &FillDoc, format: Format, a: &FillArgs) -> Result<Vec<u8>, Cl
         Format::Svg => output::svg::render(doc, &SvgOptions { style: a.style, pen_width: a.pen_width, boundary: a.boundary }),
         Format::Json => output::json::render(doc)?,
         Format::Csv => output::csv::render(doc),
+        Format::Digest => output::digest::render(doc),
     })
 }
 

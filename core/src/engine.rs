@@ -319,7 +319,7 @@ impl<'a, S: Scalar> Engine<'a, S> {
         let gap = self.gap;
         // Tests candidate `gi`, centred at (qx, qy), against every shape the hash lists.
         let test = |level: usize, reach: S, gi: &Geo<S>, qx: S, qy: S| {
-            self.hash.query(level, qx - reach, qy - reach, qx + reach, qy + reach, total, |j| {
+            self.hash.query(level, [qx - reach, qy - reach, qx + reach, qy + reach], total, |j| {
                 let Some(p) = self.shapes.get(j as usize) else { return true };
                 let lim = r + self.params.shape.bounding_radius(p.scale) + gap;
                 let (dx, dy) = (p.x - qx, p.y - qy);
@@ -382,15 +382,24 @@ impl<'a, S: Scalar> Engine<'a, S> {
         let kind = self.kind_of(index);
         let area = self.area_of(index);
         let scale = S::from_f64(kind.scale_for_area(area));
-        if !(scale > S::ZERO && scale.is_finite()) || !self.can_fit(kind, scale) {
+        if !(scale > S::ZERO && scale.is_finite() && self.can_fit(kind, scale)) {
             return Err(StepError::CannotFit { index });
         }
         let r = kind.bounding_radius(scale);
         let rotated = self.params.rotate && kind.rotates();
-        let (ex, ey) = kind.half_extents(scale, S::ZERO, S::ONE);
-        // Unrotated: the centre's range is the same for every trial (empty ranges were ruled
-        // out by `can_fit`; a degenerate one still gives a valid, tested candidate).
-        let fixed_range = self.region.centre_range(ex, ey, self.gap).unwrap_or((S::ZERO, S::ZERO, S::ZERO, S::ZERO));
+        // The centre is drawn uniformly over the positions where the shape can lie inside the
+        // region: for an unrotated shape its half extents set the range exactly; a rotated one
+        // may lie anywhere its inscribed circle fits, and the exact containment test decides.
+        // So accepted placements are uniform over all valid (position, angle) pairs.
+        let (ex, ey) = if rotated {
+            let inr = kind.inradius(scale);
+            (inr, inr)
+        } else {
+            kind.half_extents(scale, S::ZERO, S::ONE)
+        };
+        // Empty ranges were ruled out by `can_fit`; a degenerate one still gives a valid,
+        // tested candidate.
+        let range = self.region.centre_range(ex, ey, self.gap).unwrap_or((S::ZERO, S::ZERO, S::ZERO, S::ZERO));
         let mut trials = 0u64;
         loop {
             if trials >= self.params.max_trials {
@@ -401,20 +410,12 @@ impl<'a, S: Scalar> Engine<'a, S> {
             let angle = if rotated { rng::angle::<S, R>(rng) } else { S::ZERO };
             let ux: S = rng::unit(rng);
             let uy: S = rng::unit(rng);
-            let (sin, cos) = if rotated { ShapeKind::sin_cos(angle) } else { (S::ZERO, S::ONE) };
-            let (x0, x1, y0, y1) = if rotated {
-                let (ex, ey) = kind.half_extents(scale, sin, cos);
-                match self.region.centre_range(ex, ey, self.gap) {
-                    Some(r) => r,
-                    None => continue,
-                }
-            } else {
-                fixed_range
-            };
+            let (x0, x1, y0, y1) = range;
             let c = self.region.wrap(Point::new(x0 + ux * (x1 - x0), y0 + uy * (y1 - y0)));
             if self.coverage.covered(c.x, c.y) {
                 continue;
             }
+            let (sin, cos) = if rotated { ShapeKind::sin_cos(angle) } else { (S::ZERO, S::ONE) };
             let g = kind.geo_sc(c, scale, sin, cos);
             if !self.region.contains(&g, self.gap) {
                 continue;

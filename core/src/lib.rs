@@ -32,6 +32,7 @@
 #![deny(clippy::unwrap_used, clippy::expect_used, clippy::panic, clippy::indexing_slicing)]
 
 pub mod coverage;
+pub mod digest;
 pub mod engine;
 pub mod geom;
 pub mod region;

@@ -10,7 +10,9 @@
 //! - a coordinate in `[lo, hi)` is `lo + u * (hi - lo)`;
 //! - an angle is `u * 2π` radians, counter-clockwise;
 //! - each trial draws, in this order: the angle (only when rotation is random), then x, then y.
-//!   A trial always draws the same count of values, whether or not it is accepted.
+//!   A trial always draws the same count of values, whether or not it is accepted;
+//! - x and y are uniform over the centres where the shape's inscribed circle (unrotated: its
+//!   bounding box) lies inside the region shrunk by the gap; the exact tests decide the rest.
 
 use crate::scalar::Scalar;
 use rand_core::{RngCore, SeedableRng};

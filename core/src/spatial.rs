@@ -126,10 +126,11 @@ impl<'a, S: Scalar> SpatialHash<'a, S> {
     }
 
     /// Calls `f` with every shape index at `level` whose cell meets the box
-    /// `[x0, x1] x [y0, y1]` (and possibly others). Stops and returns `false` as soon as `f`
+    /// `[x0, x1] x [y0, y1]` given as `[x0, y0, x1, y1]` (and possibly others). Stops and returns `false` as soon as `f`
     /// does. When the box spans more cells than `total` shapes, calls `f` for every index in
     /// `0..total` instead, which is cheaper and still complete.
-    pub fn query(&self, level: usize, x0: S, y0: S, x1: S, y1: S, total: u32, mut f: impl FnMut(u32) -> bool) -> bool {
+    pub fn query(&self, level: usize, bbox: [S; 4], total: u32, mut f: impl FnMut(u32) -> bool) -> bool {
+        let [x0, y0, x1, y1] = bbox;
         let Some(lv) = self.levels.get(level) else { return true };
         let (cx0, cx1) = ((x0 * lv.inv).floor_i64(), (x1 * lv.inv).floor_i64());
         let (cy0, cy1) = ((y0 * lv.inv).floor_i64(), (y1 * lv.inv).floor_i64());

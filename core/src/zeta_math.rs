@@ -42,12 +42,10 @@ fn em_tail(s: f64, x: f64) -> f64 {
     let mut terms = [0.0f64; 10];
     // term_1 = s * x^(-s-1); term_{j+1} = term_j * (s+2j-1)(s+2j) / x^2.
     let mut rising = s * xs / x;
-    let mut j = 0usize;
-    for (t, coeff) in terms.iter_mut().zip(EM_COEFF.iter()) {
+    for (j, (t, coeff)) in terms.iter_mut().zip(EM_COEFF.iter()).enumerate() {
         *t = coeff * rising;
         let k = (2 * j + 1) as f64;
         rising = rising * (s + k) * (s + k + 1.0) * inv_x2;
-        j += 1;
     }
     // Smallest terms first.
     let mut sum = 0.0f64;

@@ -1,6 +1,7 @@
 //! Output formats: one file per format, each turning a [`crate::doc::FillDoc`] into bytes.
 
 pub mod csv;
+pub mod digest;
 pub mod json;
 pub mod svg;
 
@@ -16,6 +17,8 @@ pub enum Format {
     Json,
     /// One row per shape.
     Csv,
+    /// One line `COUNT HEX16`: the determinism digest of every placed shape.
+    Digest,
 }
 
 impl Format {

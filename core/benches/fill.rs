@@ -1,0 +1,73 @@
+//! Fill benchmark: placements and trials per second of the reference sampler, and bytes of
+//! core storage per shape. Run with `cargo bench -p zetafill --bench fill` (add `-- --quick`
+//! to stop at n = 10^4). Prints a Markdown table for the README. It measures; it asserts
+//! nothing about time.
+
+use std::time::Instant;
+use zetafill::{index_words, Engine, Params, Placed, Region, ShapeKind, Stop, Storage};
+
+const COVERAGE_WORDS: usize = 1 << 18;
+
+struct Row {
+    label: String,
+    n: u64,
+    secs: f64,
+    trials: u64,
+    fill: f64,
+}
+
+fn run(label: &str, shape: ShapeKind, n: u64, periodic: bool) -> Row {
+    let cap = n as usize;
+    let mut shapes = vec![Placed { x: 0.0, y: 0.0, scale: 0.0, angle: 0.0, kind: 0 }; cap];
+    let mut index = vec![0u32; index_words(cap)];
+    let mut coverage = vec![0u64; COVERAGE_WORDS];
+    let mut params = Params::circles(1.3, 1.0);
+    params.shape = shape;
+    params.rotate = shape.rotates();
+    params.max_trials = u64::MAX;
+    let region = Region::Rect { width: 200.0, height: 200.0, periodic };
+    let storage = Storage { shapes: &mut shapes, index: &mut index, coverage: &mut coverage };
+    let t = Instant::now();
+    let mut e = Engine::<f64>::new(params, region, storage).expect("valid parameters");
+    let mut rng = zetafill::rng_from_seed(1);
+    let _ = e.run(&mut rng, &Stop { count: Some(n), ..Stop::default() }, |_| {});
+    let secs = t.elapsed().as_secs_f64();
+    let s = e.stats();
+    Row { label: label.into(), n: s.placed, secs, trials: s.trials, fill: s.fill_fraction }
+}
+
+fn main() {
+    let quick = std::env::args().any(|a| a == "--quick");
+    let ns: &[u64] = if quick { &[1_000, 10_000] } else { &[1_000, 10_000, 100_000] };
+    println!("| run | n | time (s) | trials | trials/placement | placements/s | trials/s | ns/trial | fill |");
+    println!("|---|---:|---:|---:|---:|---:|---:|---:|---:|");
+    let mut cases: Vec<(&str, ShapeKind, bool)> = vec![("circles", ShapeKind::Circle, false)];
+    cases.push(("circles periodic", ShapeKind::Circle, true));
+    cases.push(("squares rotated", ShapeKind::Square, false));
+    for (label, shape, periodic) in cases {
+        for &n in ns {
+            let r = run(label, shape, n, periodic);
+            println!(
+                "| {} | {} | {:.3} | {} | {:.1} | {:.0} | {:.3e} | {:.1} | {:.4} |",
+                r.label,
+                r.n,
+                r.secs,
+                r.trials,
+                r.trials as f64 / r.n as f64,
+                r.n as f64 / r.secs,
+                r.trials as f64 / r.secs,
+                r.secs * 1e9 / r.trials as f64,
+                r.fill
+            );
+        }
+    }
+    let per_shape = std::mem::size_of::<Placed<f64>>() + 4 * (index_words(1000) - 1) / 1000;
+    println!();
+    println!(
+        "core storage per shape: {} bytes ({} shape record + {} index words); coverage bitmap {} KiB fixed",
+        per_shape,
+        std::mem::size_of::<Placed<f64>>(),
+        (index_words(1000) - 1) / 1000,
+        COVERAGE_WORDS * 8 / 1024
+    );
+}

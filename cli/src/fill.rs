@@ -79,7 +79,7 @@ pub struct FillArgs {
     /// Candidate sampler.
     #[arg(long, value_enum, default_value = "reference")]
     pub sampler: Sampler,
-    /// Output path; the format comes from the extension (.svg .json .csv); '-' is stdout.
+    /// Output path; the format comes from the extension (.svg .png .json .csv); '-' is stdout.
     #[arg(short = 'o', long)]
     pub output: PathBuf,
     /// Output format (overrides the extension).
@@ -94,6 +94,9 @@ pub struct FillArgs {
     /// SVG: also draw the region's outline.
     #[arg(long)]
     pub boundary: bool,
+    /// PNG: resolution in pixels per inch.
+    #[arg(long, default_value_t = 96.0, value_parser = spec::positive)]
+    pub dpi: f64,
     /// No progress bar.
     #[arg(short, long)]
     pub quiet: bool,
@@ -301,6 +304,10 @@ pub fn render(doc: &FillDoc, format: Format, a: &FillArgs) -> Result<Vec<u8>, Cl
         Format::Json => output::json::render(doc)?,
         Format::Csv => output::csv::render(doc),
         Format::Digest => output::digest::render(doc),
+        Format::Png => {
+            let svg = output::svg::render(doc, &SvgOptions { style: a.style, pen_width: a.pen_width, boundary: a.boundary });
+            output::png::render(&svg, a.dpi)?
+        }
     })
 }
 

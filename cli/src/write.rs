@@ -80,6 +80,14 @@ pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), CliError> {
         .tempfile_in(&dir)
         .map_err(|e| io("cannot create a temporary file for", e))?;
     tmp.write_all(bytes).map_err(|e| io("cannot write", e))?;
+    // Temporary files are private (0600); the output gets the mode a new file would get
+    // (0644 here) or keeps the mode of the file it replaces.
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::PermissionsExt;
+        let mode = std::fs::metadata(path).map(|m| m.permissions().mode() & 0o7777).unwrap_or(0o644);
+        std::fs::set_permissions(tmp.path(), std::fs::Permissions::from_mode(mode)).map_err(|e| io("cannot set permissions of", e))?;
+    }
     tmp.as_file().sync_all().map_err(|e| io("cannot sync", e))?;
     tmp.persist(path).map_err(|e| io("cannot rename into", e.error))?;
     Ok(())

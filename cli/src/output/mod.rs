@@ -3,6 +3,7 @@
 pub mod csv;
 pub mod digest;
 pub mod json;
+pub mod png;
 pub mod svg;
 
 use crate::error::CliError;
@@ -17,6 +18,8 @@ pub enum Format {
     Json,
     /// One row per shape.
     Csv,
+    /// PNG preview (the SVG rendered).
+    Png,
     /// One line `COUNT HEX16`: the determinism digest of every placed shape.
     Digest,
 }
@@ -36,9 +39,10 @@ impl Format {
             Some("svg") => Ok(Format::Svg),
             Some("json") => Ok(Format::Json),
             Some("csv") => Ok(Format::Csv),
+            Some("png") => Ok(Format::Png),
             _ => Err(CliError::arg(
                 "--output",
-                format!("cannot tell the format of '{}'; end it in .svg, .json or .csv, or give --format", path.display()),
+                format!("cannot tell the format of '{}'; end it in .svg, .png, .json or .csv, or give --format", path.display()),
             )),
         }
     }

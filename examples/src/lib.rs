@@ -1,0 +1,1 @@
+//! Examples live in `examples/examples/`; parameter files and pictures in `examples/gallery/`.

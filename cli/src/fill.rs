@@ -207,7 +207,7 @@ pub fn compute(a: &FillArgs) -> Result<(FillDoc, Option<StepError>), CliError> {
     let params = Params { c: a.c(), n_offset: a.n_offset, shape: a.shape, rotate: a.rotate(), gap: a.gap, max_trials: a.max_trials };
     let stop = a.stop();
     let cap = capacity(&params, region.area(), &stop)? as usize;
-    let mut shapes = vec![Placed { x: 0.0, y: 0.0, scale: 0.0, angle: 0.0, kind: 0 }; cap];
+    let mut shapes = vec![Placed::<f64>::default(); cap];
     let mut index = vec![0u32; index_words(cap)];
     let mut coverage = vec![0u64; COVERAGE_WORDS];
     let storage = Storage { shapes: &mut shapes, index: &mut index, coverage: &mut coverage };

@@ -18,7 +18,7 @@ struct Row {
 
 fn run(label: &str, shape: ShapeKind, n: u64, periodic: bool) -> Row {
     let cap = n as usize;
-    let mut shapes = vec![Placed { x: 0.0, y: 0.0, scale: 0.0, angle: 0.0, kind: 0 }; cap];
+    let mut shapes = vec![Placed::<f64>::default(); cap];
     let mut index = vec![0u32; index_words(cap)];
     let mut coverage = vec![0u64; COVERAGE_WORDS];
     let mut params = Params::circles(1.3, 1.0);

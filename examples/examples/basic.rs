@@ -8,7 +8,7 @@ use zetafill::{index_words, Engine, Params, Placed, Region, Stop, Storage};
 fn main() {
     const CAP: usize = 300;
     // The caller owns every buffer: here Vecs, on a microcontroller static arrays.
-    let mut shapes = vec![Placed { x: 0.0, y: 0.0, scale: 0.0, angle: 0.0, kind: 0 }; CAP];
+    let mut shapes = vec![Placed::<f64>::default(); CAP];
     let mut index = vec![0u32; index_words(CAP)];
     let storage = Storage { shapes: &mut shapes, index: &mut index, coverage: &mut [] };
     let region = Region::Rect { width: 100.0, height: 100.0, periodic: false };

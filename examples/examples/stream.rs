@@ -11,7 +11,7 @@ const H: usize = 36;
 
 fn main() {
     const CAP: usize = 400;
-    let mut shapes = [Placed { x: 0.0, y: 0.0, scale: 0.0, angle: 0.0, kind: 0 }; CAP];
+    let mut shapes = [Placed::<f64>::default(); CAP];
     let mut index = [0u32; index_words(CAP)];
     let storage = Storage { shapes: &mut shapes, index: &mut index, coverage: &mut [] };
     let mut params = Params::circles(1.25, 2.0);

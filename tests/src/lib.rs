@@ -37,7 +37,7 @@ pub const CANONICAL: [Scene; 3] = [
 /// (count, digest, placed shapes).
 pub fn run_scene(s: &Scene, coverage_words: usize) -> (u64, u64, Vec<Placed<f64>>) {
     let cap = s.count as usize;
-    let mut shapes = vec![Placed { x: 0.0, y: 0.0, scale: 0.0, angle: 0.0, kind: 0 }; cap];
+    let mut shapes = vec![Placed::<f64>::default(); cap];
     let mut index = vec![0u32; index_words(cap)];
     let mut coverage = vec![0u64; coverage_words];
     let params = Params { c: s.c, n_offset: s.n, shape: s.shape, rotate: s.rotate, gap: 0.0, max_trials: 10_000_000 };

@@ -22,8 +22,8 @@ pub enum ShapeKind {
     },
 }
 
-/// A shape as stored by the engine.
-#[derive(Clone, Copy, Debug, PartialEq)]
+/// A shape as stored by the engine. `Placed::default()` is an empty slot for storage.
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
 pub struct Placed<S> {
     /// Centre x.
     pub x: S,

@@ -11,7 +11,9 @@
 //! - [`rng`]: the generator and the fixed mapping from random bits to numbers;
 //! - [`geom`], [`shape`], [`region`]: concrete shapes and their exact clearance tests;
 //! - [`spatial`]: the fixed-capacity multi-level spatial hash;
-//! - [`engine`]: parameters, the placement step, stop conditions, statistics.
+//! - [`engine`]: parameters, the placement step, stop conditions, statistics;
+//! - [`line`]: the 1D fill (segments in an interval) over its own 1D multi-level hash;
+//! - [`stats`]: the gasket width of the paper's Table 1, exact dimensions, power-law fits.
 //!
 //! ## Guarantees
 //! - `no_std`, no allocator: the caller owns every buffer ([`engine::Engine::new`] borrows a
@@ -35,15 +37,18 @@ pub mod coverage;
 pub mod digest;
 pub mod engine;
 pub mod geom;
+pub mod line;
 pub mod region;
 pub mod rng;
 pub mod scalar;
 pub mod shape;
 pub mod spatial;
+pub mod stats;
 pub mod zeta;
 
 pub use engine::{index_words, Storage, Engine, ParamError, Params, Placement, StepError, Stop, StopReason};
 pub use geom::{Geo, Point};
+pub use line::{line_index_words, Interval, LineEngine, LineParams, LinePlacement, LineStorage, Segment};
 pub use region::Region;
 pub use rng::{rng_from_seed, ZetaRng};
 pub use scalar::Scalar;

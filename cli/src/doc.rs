@@ -56,7 +56,7 @@ pub struct ParamsDoc {
     pub dimension: f64,
 }
 
-/// A region.
+/// A region, in its own frame (mm, x right, y up).
 #[derive(Debug, Clone, Serialize)]
 #[serde(tag = "kind", rename_all = "lowercase")]
 pub enum RegionDoc {
@@ -69,6 +69,32 @@ pub enum RegionDoc {
         /// Toroidal boundary.
         periodic: bool,
     },
+    /// A disc.
+    Circle {
+        /// Centre.
+        center: [f64; 2],
+        /// Radius.
+        radius: f64,
+    },
+    /// A ring-shaped region.
+    Annulus {
+        /// Centre.
+        center: [f64; 2],
+        /// Outer radius.
+        radius_outer: f64,
+        /// Inner radius.
+        radius_inner: f64,
+    },
+    /// Outlines filled by the even-odd rule.
+    Polygon {
+        /// The first outer outline.
+        vertices: Vec<[f64; 2]>,
+        /// Outlines inside an odd number of others (holes).
+        holes: Vec<Vec<[f64; 2]>>,
+        /// Further outer outlines (islands), when there are several.
+        #[serde(skip_serializing_if = "Vec::is_empty")]
+        outers: Vec<Vec<[f64; 2]>>,
+    },
 }
 
 /// One placed shape.
@@ -76,13 +102,16 @@ pub enum RegionDoc {
 pub struct ShapeDoc {
     /// Placement index.
     pub index: u64,
-    /// `circle`, `square`, `rect`.
+    /// `circle`, `square`, `rect`, `triangle`, `polygon`, `star`, `ring`, `blob`.
     pub kind: &'static str,
     /// Centre (mm).
     pub center: [f64; 2],
-    /// Radius (circles and rings).
+    /// Radius (circles), outer radius (rings).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub radius: Option<f64>,
+    /// Inner radius (rings).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub inner_radius: Option<f64>,
     /// Rotation in radians, counter-clockwise (polygonal kinds).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub angle: Option<f64>,
@@ -111,17 +140,28 @@ pub struct StatsDoc {
 }
 
 impl FillDoc {
+    /// The region's bounding box (min x, min y, max x, max y).
+    pub fn bbox(&self) -> (f64, f64, f64, f64) {
+        match &self.region {
+            RegionDoc::Rect { width, height, .. } => (0.0, 0.0, *width, *height),
+            RegionDoc::Circle { center, radius: r } | RegionDoc::Annulus { center, radius_outer: r, .. } => {
+                (center[0] - r, center[1] - r, center[0] + r, center[1] + r)
+            }
+            RegionDoc::Polygon { vertices, holes, outers } => {
+                let all = vertices.iter().chain(holes.iter().flatten()).chain(outers.iter().flatten());
+                all.fold((f64::MAX, f64::MAX, f64::MIN, f64::MIN), |b, v| (b.0.min(v[0]), b.1.min(v[1]), b.2.max(v[0]), b.3.max(v[1])))
+            }
+        }
+    }
+
     /// Width and height of the region's bounding box.
     pub fn extent(&self) -> (f64, f64) {
-        match self.region {
-            RegionDoc::Rect { width, height, .. } => (width, height),
-        }
+        let (x0, y0, x1, y1) = self.bbox();
+        (x1 - x0, y1 - y0)
     }
 
     /// Whether the region is periodic.
     pub fn periodic(&self) -> bool {
-        match self.region {
-            RegionDoc::Rect { periodic, .. } => periodic,
-        }
+        matches!(self.region, RegionDoc::Rect { periodic: true, .. })
     }
 }

@@ -10,7 +10,7 @@ use clap::{Args, ValueEnum};
 use std::io::IsTerminal;
 use std::path::PathBuf;
 use zetafill::engine::{ParamError, StepError};
-use zetafill::{index_words, Engine, Geo, Params, Placed, ShapeKind, Stop, StopReason, Storage};
+use zetafill::{index_words, Engine, Geo, MixOrder, Params, Placed, PolygonRegion, Region, ShapeKind, Stop, StopReason, Storage};
 
 /// Largest number of shapes one run may hold (52 bytes each in the core).
 pub const MAX_SHAPES: u64 = 20_000_000;
@@ -27,6 +27,15 @@ pub enum Rotate {
     Random,
 }
 
+/// How the shapes of a mix are taken.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum MixArg {
+    /// In turn: placement i gets shape i mod count (the paper's Figure 7).
+    Cycle,
+    /// A random choice per placement (fixed by the seed).
+    Random,
+}
+
 /// The candidate sampler.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum Sampler {
@@ -37,38 +46,42 @@ pub enum Sampler {
 /// Arguments of `zetafill fill`.
 #[derive(Debug, Args)]
 pub struct FillArgs {
-    /// circle | square | rect:ASPECT (width over height).
+    /// circle | square | rect:ASPECT | triangle | polygon:SIDES | star:POINTS:INNER_RATIO |
+    /// ring:INNER_RATIO | blob:DELTA | mix:SHAPE,SHAPE,...
     #[arg(long, default_value = "circle", value_parser = spec::shape)]
-    pub shape: ShapeKind,
+    pub shape: spec::ShapeArg,
+    /// Mixes: take the shapes in turn (cycle) or at random per placement.
+    #[arg(long = "mix-order", value_enum, default_value = "cycle")]
+    pub mix_order: MixArg,
     /// Rotation: none or random (default: random for non-circles).
     #[arg(long, value_enum)]
     pub rotate: Option<Rotate>,
-    /// rect:W:H, sizes in mm.
+    /// rect:W:H | circle:R | annulus:R_OUTER:R_INNER | polygon:X1,Y1,X2,Y2,... | svg:FILE (mm).
     #[arg(long, default_value = "rect:200:200", value_parser = spec::region)]
     pub region: RegionSpec,
-    /// Periodic (toroidal) boundary: the fill tiles seamlessly.
+    /// Periodic (toroidal) boundary: the fill tiles seamlessly (rect regions only).
     #[arg(long)]
     pub periodic: bool,
     /// Power-law exponent c > 1 (default 1.3).
-    #[arg(long, value_parser = spec::exponent, conflicts_with = "dimension")]
+    #[arg(long, value_parser = spec::exponent, conflicts_with = "dimension", allow_negative_numbers = true)]
     pub c: Option<f64>,
     /// Fractal dimension D in (0, 2) instead of c (c = 2/D).
-    #[arg(long, value_parser = spec::dimension)]
+    #[arg(long, value_parser = spec::dimension, allow_negative_numbers = true)]
     pub dimension: Option<f64>,
     /// The paper's N > 0: larger N makes the first shapes smaller.
-    #[arg(long = "n-offset", default_value_t = 1.0, value_parser = spec::positive)]
+    #[arg(long = "n-offset", default_value_t = 1.0, value_parser = spec::positive, allow_negative_numbers = true)]
     pub n_offset: f64,
     /// Stop after K shapes (default 2000 when no stop condition is given).
     #[arg(long, value_parser = clap::value_parser!(u64).range(1..=MAX_SHAPES))]
     pub count: Option<u64>,
     /// Stop once this fraction of the region is filled, 0 < F < 1.
-    #[arg(long, value_parser = spec::fraction)]
+    #[arg(long, value_parser = spec::fraction, allow_negative_numbers = true)]
     pub fill: Option<f64>,
     /// Stop before the first shape narrower than MM.
-    #[arg(long = "min-size", value_parser = spec::positive)]
+    #[arg(long = "min-size", value_parser = spec::positive, allow_negative_numbers = true)]
     pub min_size: Option<f64>,
     /// Minimum clearance between shapes and to the boundary, in mm.
-    #[arg(long, default_value_t = 0.0, value_parser = spec::non_negative)]
+    #[arg(long, default_value_t = 0.0, value_parser = spec::non_negative, allow_negative_numbers = true)]
     pub gap: f64,
     /// Trial limit per placement; reaching it halts the fill (exit 3).
     #[arg(long = "max-trials", default_value_t = 10_000_000, value_parser = clap::value_parser!(u64).range(1..))]
@@ -165,8 +178,10 @@ fn capacity(params: &Params, area: f64, stop: &Stop) -> Result<u64, CliError> {
     }
     if let Some(m) = stop.min_size {
         // Shape k has width w_k decreasing in k: the first k with w_k < m bounds the run.
-        let kind = params.shape;
-        let width = |k: u64| kind.min_width(kind.scale_for_area(area / (zeta * zetafill::scalar::powf(k as f64 + n, c))));
+        let width = |k: u64| {
+            let kind = params.shape.kind_of(k);
+            kind.min_width(kind.scale_for_area(area / (zeta * zetafill::scalar::powf(k as f64 + n, c))))
+        };
         let mut hi = 1u64;
         while width(hi) >= m && hi <= MAX_SHAPES {
             hi *= 2;
@@ -181,7 +196,9 @@ fn capacity(params: &Params, area: f64, stop: &Stop) -> Result<u64, CliError> {
 
 /// Advice for a halt at placement `index`.
 fn halt_advice(index: u64) -> &'static str {
-    if index < 100 {
+    if index == 0 {
+        "no place was found for the first shape: it probably does not fit the region; lower --c or raise --n-offset"
+    } else if index < 100 {
         "the first shapes left no room for this one: lower --c, raise --n-offset, or try another --seed"
     } else {
         "raise --max-trials, lower --c, or ask for fewer shapes"
@@ -190,21 +207,145 @@ fn halt_advice(index: u64) -> &'static str {
 
 /// The concrete geometry of a placed shape as a [`ShapeDoc`].
 fn shape_doc(kind: &ShapeKind, geo: &Geo<f64>, p: &Placed<f64>, index: u64, area: f64, trials: u64) -> ShapeDoc {
-    let (name, radius, angle, vertices) = match geo {
-        Geo::Circle { r, .. } => ("circle", Some(*r), None, None),
-        Geo::Convex { .. } => {
-            let name = if matches!(kind, ShapeKind::Square) { "square" } else { "rect" };
-            let vs = geo.vertices().iter().map(|v| [v.x, v.y]).collect();
-            (name, None, Some(p.angle), Some(vs))
-        }
+    let name = spec::kind_name(kind);
+    let (radius, inner_radius, angle, vertices) = match geo {
+        Geo::Circle { r, .. } => (Some(*r), None, None, None),
+        Geo::Ring { r, inner, .. } => (Some(*r), Some(*inner), None, None),
+        Geo::Poly { .. } => (None, None, Some(p.angle), Some(geo.vertices().iter().map(|v| [v.x, v.y]).collect())),
     };
-    ShapeDoc { index, kind: name, center: [p.x, p.y], radius, angle, area, trials, vertices }
+    ShapeDoc { index, kind: name, center: [p.x, p.y], radius, inner_radius, angle, area, trials, vertices }
+}
+
+/// A region resolved from its flag: owns the outline vertices the core borrows.
+#[derive(Debug, Clone)]
+pub struct RegionData {
+    spec: RegionSpec,
+}
+
+impl RegionData {
+    /// Resolves `--region` (reading an SVG outline from its file).
+    pub fn load(spec: &RegionSpec) -> Result<Self, CliError> {
+        let spec = match spec {
+            RegionSpec::Svg(path) => {
+                let (points, ends) = crate::svgin::read_outline(path)?;
+                RegionSpec::Polygon { points, ends }
+            }
+            other => other.clone(),
+        };
+        Ok(RegionData { spec })
+    }
+
+    /// The core region (validating polygons).
+    pub fn region(&self, periodic: bool) -> Result<Region<'_>, CliError> {
+        if periodic && !matches!(self.spec, RegionSpec::Rect { .. }) {
+            return Err(CliError::arg("--periodic", "only rect:W:H regions can be periodic; remove --periodic or use a rect region"));
+        }
+        Ok(match &self.spec {
+            RegionSpec::Rect { width, height } => Region::Rect { width: *width, height: *height, periodic },
+            RegionSpec::Circle { radius } => Region::Circle { radius: *radius },
+            RegionSpec::Annulus { outer, inner } => Region::Annulus { outer: *outer, inner: *inner },
+            RegionSpec::Polygon { points, ends } => {
+                Region::Polygon(PolygonRegion::new(points, ends).map_err(|e| CliError::arg("--region", format!("{e}; give a simple outline")))?)
+            }
+            RegionSpec::Svg(_) => return Err(CliError::Io("internal: SVG region not loaded".into())),
+        })
+    }
+
+    /// The region as written in JSON.
+    pub fn doc(&self, region: &Region<'_>) -> RegionDoc {
+        match *region {
+            Region::Rect { width, height, periodic } => RegionDoc::Rect { width, height, periodic },
+            Region::Circle { radius } => RegionDoc::Circle { center: [radius, radius], radius },
+            Region::Annulus { outer, inner } => RegionDoc::Annulus { center: [outer, outer], radius_outer: outer, radius_inner: inner },
+            Region::Polygon(p) => {
+                let rings: Vec<&[zetafill::Point<f64>]> = p.rings().collect();
+                let as_vec = |r: &[zetafill::Point<f64>]| r.iter().map(|q| [q.x, q.y]).collect::<Vec<_>>();
+                let (mut vertices, mut holes, mut outers) = (Vec::new(), Vec::new(), Vec::new());
+                for (i, r) in rings.iter().enumerate() {
+                    let probe = r.first().copied().unwrap_or_default();
+                    let depth = rings.iter().enumerate().filter(|(j, o)| *j != i && zetafill::geom::point_in_poly(probe, o)).count();
+                    if depth % 2 == 1 {
+                        holes.push(as_vec(r));
+                    } else if vertices.is_empty() {
+                        vertices = as_vec(r);
+                    } else {
+                        outers.push(as_vec(r));
+                    }
+                }
+                RegionDoc::Polygon { vertices, holes, outers }
+            }
+        }
+    }
+}
+
+/// For shapes whose first two placements have a known geometric limit (unrotated squares,
+/// rectangles, circles and rings in an inclusive rectangle), whether shapes 0 and 1 can both
+/// be placed: side by side, one above the other, or in opposite corners.
+fn first_two_fit(kind: &ShapeKind, a0: f64, a1: f64, w: f64, h: f64, gap: f64) -> bool {
+    let (w, h) = (w - 2.0 * gap, h - 2.0 * gap);
+    match kind {
+        ShapeKind::Square | ShapeKind::Rect { .. } => {
+            let (s0, s1) = (kind.scale_for_area(a0), kind.scale_for_area(a1));
+            let aspect = if let ShapeKind::Rect { aspect } = kind { *aspect } else { 1.0 };
+            let (w0, h0, w1, h1) = (2.0 * aspect * s0, 2.0 * s0, 2.0 * aspect * s1, 2.0 * s1);
+            w0 <= w && h0 <= h && (w0 + w1 + gap < w || h0 + h1 + gap < h)
+        }
+        ShapeKind::Circle | ShapeKind::Ring { .. } => {
+            let (r0, r1) = (kind.scale_for_area(a0), kind.scale_for_area(a1));
+            let (dx, dy) = ((w - r0 - r1).max(0.0), (h - r0 - r1).max(0.0));
+            2.0 * r0 <= w.min(h) && dx * dx + dy * dy > (r0 + r1 + gap) * (r0 + r1 + gap)
+        }
+        _ => true,
+    }
+}
+
+/// Refuses parameters whose first two shapes certainly cannot both fit, naming the largest c
+/// that works for this shape, N and region.
+fn check_known_limit(params: &Params, region: &Region<'_>) -> Result<(), CliError> {
+    let (Region::Rect { width, height, periodic: false }, [kind]) = (region, params.shape.kinds()) else { return Ok(()) };
+    if params.rotate && kind.rotates() {
+        return Ok(());
+    }
+    let fits = |c: f64| {
+        let Ok(z) = zetafill::zeta::zeta(c, params.n_offset) else { return false };
+        let a = |i: f64| width * height / (z * zetafill::scalar::powf(i + params.n_offset, c));
+        first_two_fit(kind, a(0.0), a(1.0), *width, *height, params.gap)
+    };
+    if fits(params.c) {
+        return Ok(());
+    }
+    let (mut lo, mut hi) = (1.0 + 1e-9, params.c);
+    if !fits(lo) {
+        return Err(CliError::arg("--n-offset", format!("the first two {}s cannot both fit this region for any c; raise --n-offset or enlarge --region", spec::kind_name(kind))));
+    }
+    for _ in 0..60 {
+        let mid = 0.5 * (lo + hi);
+        if fits(mid) {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    Err(CliError::arg(
+        "--c",
+        format!(
+            "with N = {} the first two {}s cannot both fit in this region when c > {:.4} (the paper's hard limit, section 3); lower --c or raise --n-offset",
+            params.n_offset,
+            spec::kind_name(kind),
+            lo
+        ),
+    ))
 }
 
 /// Runs the fill and returns the document (and the halt, if any). Nothing is written.
 pub fn compute(a: &FillArgs) -> Result<(FillDoc, Option<StepError>), CliError> {
-    let region = a.region.region(a.periodic);
-    let params = Params { c: a.c(), n_offset: a.n_offset, shape: a.shape, rotate: a.rotate(), gap: a.gap, max_trials: a.max_trials };
+    let data = RegionData::load(&a.region)?;
+    let region = data.region(a.periodic)?;
+    let order = match a.mix_order {
+        MixArg::Cycle => MixOrder::Cycle,
+        MixArg::Random => MixOrder::Random,
+    };
+    let params = Params { c: a.c(), n_offset: a.n_offset, shape: a.shape.list(order, a.seed), rotate: a.rotate(), gap: a.gap, max_trials: a.max_trials };
     let stop = a.stop();
     let cap = capacity(&params, region.area(), &stop)? as usize;
     let mut shapes = vec![Placed::<f64>::default(); cap];
@@ -212,6 +353,7 @@ pub fn compute(a: &FillArgs) -> Result<(FillDoc, Option<StepError>), CliError> {
     let mut coverage = vec![0u64; COVERAGE_WORDS];
     let storage = Storage { shapes: &mut shapes, index: &mut index, coverage: &mut coverage };
     let mut engine = Engine::<f64>::new(params, region, storage).map_err(param_error)?;
+    check_known_limit(&params, &region)?;
     let mut rng = zetafill::rng_from_seed(a.seed);
 
     let bar = progress_bar(a, stop.count);
@@ -231,7 +373,7 @@ pub fn compute(a: &FillArgs) -> Result<(FillDoc, Option<StepError>), CliError> {
         StopReason::MinSize => ("min-size", None),
         StopReason::Step(e @ StepError::Halted { .. }) => ("halted", Some(e)),
         StopReason::Step(StepError::CannotFit { index: 0 }) => {
-            let kind = params.shape;
+            let kind = params.shape.kind_of(0);
             let s = kind.scale_for_area(engine.area_of(0));
             return Err(CliError::arg(
                 "--c",
@@ -249,14 +391,14 @@ pub fn compute(a: &FillArgs) -> Result<(FillDoc, Option<StepError>), CliError> {
         .placed()
         .iter()
         .enumerate()
-        .map(|(i, p)| {
+        .filter_map(|(i, p)| {
+            let g = engine.geo(i)?;
             let i = i as u64;
             let t = trials.get(i as usize).copied().unwrap_or(0);
-            shape_doc(&params.shape, &engine.geo(p), p, i, engine.area_of(i), t)
+            Some(shape_doc(&engine.kind_of(i), &g, p, i, engine.area_of(i), t))
         })
         .collect();
     let st = engine.stats();
-    let (w, h) = region.extent();
     let doc = FillDoc {
         version: 1,
         mode: "fill",
@@ -264,8 +406,8 @@ pub fn compute(a: &FillArgs) -> Result<(FillDoc, Option<StepError>), CliError> {
             c: params.c,
             n_offset: params.n_offset,
             seed: a.seed,
-            shape: spec::shape_name(&params.shape),
-            rotate: if params.rotate && params.shape.rotates() { "random" } else { "none" },
+            shape: a.shape.name(),
+            rotate: if params.rotate && a.shape.rotates() { "random" } else { "none" },
             sampler: "reference",
             gap: params.gap,
             count: stop.count,
@@ -274,7 +416,7 @@ pub fn compute(a: &FillArgs) -> Result<(FillDoc, Option<StepError>), CliError> {
             max_trials: params.max_trials,
             dimension: 2.0 / params.c,
         },
-        region: RegionDoc::Rect { width: w, height: h, periodic: a.periodic },
+        region: data.doc(&region),
         area: engine.total_area(),
         zeta: engine.zeta(),
         shapes: shapes_doc,
@@ -314,7 +456,11 @@ pub fn render(doc: &FillDoc, format: Format, a: &FillArgs) -> Result<Vec<u8>, Cl
 /// `zetafill fill`.
 pub fn run(a: &FillArgs) -> Result<(), CliError> {
     let dest = Dest::parse(&a.output);
-    dest.check("--output", &[])?;
+    let inputs: Vec<&std::path::Path> = match &a.region {
+        RegionSpec::Svg(p) => vec![p.as_path()],
+        _ => vec![],
+    };
+    dest.check("--output", &inputs)?;
     let format = Format::resolve(a.format, &a.output)?;
     let (doc, halt) = compute(a)?;
     let bytes = render(&doc, format, a)?;

@@ -9,6 +9,7 @@ pub mod fill;
 pub mod output;
 pub mod spec;
 pub mod stats;
+pub mod svgin;
 pub mod write;
 
 use clap::{Parser, Subcommand};

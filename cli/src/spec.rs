@@ -2,7 +2,7 @@
 //! Each returns a message that says what is wrong and what to write instead; clap adds the
 //! flag's name and exits with code 2.
 
-use zetafill::{Region, ShapeKind};
+use zetafill::{MixOrder, Point, ShapeKind, ShapeList, MAX_MIX};
 
 /// A number that must be finite.
 pub fn finite(s: &str) -> Result<f64, String> {
@@ -64,22 +64,94 @@ pub fn fraction(s: &str) -> Result<f64, String> {
     }
 }
 
-/// `circle | square | rect:ASPECT`.
-pub fn shape(s: &str) -> Result<ShapeKind, String> {
+/// A ratio in (0, 1).
+fn ratio(what: &str, s: &str) -> Result<f64, String> {
+    let v = finite(s).map_err(|e| format!("{what}: {e}"))?;
+    if v > 0.0 && v < 1.0 {
+        Ok(v)
+    } else {
+        Err(format!("{what} must be between 0 and 1, exclusive (got {s})"))
+    }
+}
+
+/// A count in a range.
+fn count(what: &str, s: &str, lo: u8, hi: u8) -> Result<u8, String> {
+    match s.trim().parse::<u8>() {
+        Ok(v) if (lo..=hi).contains(&v) => Ok(v),
+        _ => Err(format!("{what} must be a whole number from {lo} to {hi} (got {s})")),
+    }
+}
+
+const SHAPES: &str = "circle, square, rect:ASPECT, triangle, polygon:SIDES, star:POINTS:INNER_RATIO, ring:INNER_RATIO, blob:DELTA or mix:SHAPE,SHAPE,...";
+
+/// One shape: `circle | square | rect:ASPECT | triangle | polygon:SIDES |
+/// star:POINTS:INNER_RATIO | ring:INNER_RATIO | blob:DELTA`.
+pub fn one_shape(s: &str) -> Result<ShapeKind, String> {
     let mut parts = s.split(':');
     let name = parts.next().unwrap_or("");
     let rest: Vec<&str> = parts.collect();
     let k = match (name, rest.as_slice()) {
         ("circle", []) => ShapeKind::Circle,
         ("square", []) => ShapeKind::Square,
+        ("triangle", []) => ShapeKind::Triangle,
         ("rect", [a]) => {
             let aspect = positive(a).map_err(|e| format!("rect:ASPECT: the aspect ratio {e}"))?;
             ShapeKind::Rect { aspect }
         }
+        ("polygon", [n]) => ShapeKind::Polygon { sides: count("polygon:SIDES: SIDES", n, 3, 48)? },
+        ("star", [p, r]) => ShapeKind::Star { points: count("star:POINTS:INNER_RATIO: POINTS", p, 2, 24)?, inner: ratio("star:POINTS:INNER_RATIO: INNER_RATIO", r)? },
+        ("ring", [r]) => ShapeKind::Ring { inner: ratio("ring:INNER_RATIO: INNER_RATIO", r)? },
+        ("blob", [d]) => {
+            let delta = finite(d).map_err(|e| format!("blob:DELTA: {e}"))?;
+            if !(0.0..1.0 / 3.0).contains(&delta) {
+                return Err(format!("blob:DELTA: DELTA must be at least 0 and below 1/3 so that r(θ) stays positive (got {d})"));
+            }
+            ShapeKind::Blob { delta }
+        }
         ("rect", _) => return Err("write rect:ASPECT, for example rect:2 (width twice the height)".into()),
-        _ => return Err(format!("unknown shape '{s}'; use circle, square or rect:ASPECT")),
+        ("polygon", _) => return Err("write polygon:SIDES, for example polygon:6".into()),
+        ("star", _) => return Err("write star:POINTS:INNER_RATIO, for example star:5:0.4".into()),
+        ("ring", _) => return Err("write ring:INNER_RATIO, for example ring:0.6".into()),
+        ("blob", _) => return Err("write blob:DELTA, for example blob:0.15".into()),
+        _ => return Err(format!("unknown shape '{s}'; use {SHAPES}")),
     };
     Ok(k)
+}
+
+/// `--shape`: one shape, or `mix:SHAPE,SHAPE,...` (up to 8).
+pub fn shape(s: &str) -> Result<ShapeArg, String> {
+    if let Some(list) = s.strip_prefix("mix:") {
+        let kinds = list.split(',').map(one_shape).collect::<Result<Vec<_>, _>>()?;
+        if kinds.is_empty() || kinds.len() > MAX_MIX {
+            return Err(format!("mix: needs 1 to {MAX_MIX} shapes separated by commas"));
+        }
+        return Ok(ShapeArg(kinds));
+    }
+    Ok(ShapeArg(vec![one_shape(s)?]))
+}
+
+/// The parsed `--shape`: one kind, or the kinds of a mix.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ShapeArg(pub Vec<ShapeKind>);
+
+impl ShapeArg {
+    /// The core's shape list.
+    pub fn list(&self, order: MixOrder, salt: u64) -> ShapeList {
+        ShapeList::mix(&self.0, order, salt).unwrap_or_else(|| ShapeKind::Circle.into())
+    }
+
+    /// Whether any kind rotates.
+    pub fn rotates(&self) -> bool {
+        self.0.iter().any(ShapeKind::rotates)
+    }
+
+    /// The text form, as on the command line.
+    pub fn name(&self) -> String {
+        match self.0.as_slice() {
+            [one] => shape_name(one),
+            many => format!("mix:{}", many.iter().map(shape_name).collect::<Vec<_>>().join(",")),
+        }
+    }
 }
 
 /// The name of a shape as written in JSON and on the command line.
@@ -88,11 +160,30 @@ pub fn shape_name(k: &ShapeKind) -> String {
         ShapeKind::Circle => "circle".into(),
         ShapeKind::Square => "square".into(),
         ShapeKind::Rect { aspect } => format!("rect:{aspect}"),
+        ShapeKind::Triangle => "triangle".into(),
+        ShapeKind::Polygon { sides } => format!("polygon:{sides}"),
+        ShapeKind::Star { points, inner } => format!("star:{points}:{inner}"),
+        ShapeKind::Ring { inner } => format!("ring:{inner}"),
+        ShapeKind::Blob { delta } => format!("blob:{delta}"),
+    }
+}
+
+/// The kind name of a shape in JSON (`"kind"`).
+pub fn kind_name(k: &ShapeKind) -> &'static str {
+    match k {
+        ShapeKind::Circle => "circle",
+        ShapeKind::Square => "square",
+        ShapeKind::Rect { .. } => "rect",
+        ShapeKind::Triangle => "triangle",
+        ShapeKind::Polygon { .. } => "polygon",
+        ShapeKind::Star { .. } => "star",
+        ShapeKind::Ring { .. } => "ring",
+        ShapeKind::Blob { .. } => "blob",
     }
 }
 
 /// The region kinds accepted by `--region` (periodicity comes from `--periodic`).
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub enum RegionSpec {
     /// `rect:W:H`.
     Rect {
@@ -101,19 +192,46 @@ pub enum RegionSpec {
         /// Height in mm.
         height: f64,
     },
+    /// `circle:R`: the disc centred at (R, R).
+    Circle {
+        /// Radius in mm.
+        radius: f64,
+    },
+    /// `annulus:R_OUTER:R_INNER`, centred at (R_OUTER, R_OUTER).
+    Annulus {
+        /// Outer radius.
+        outer: f64,
+        /// Inner radius.
+        inner: f64,
+    },
+    /// `polygon:X1,Y1,X2,Y2,...` or the outlines of `svg:FILE`: rings of vertices.
+    Polygon {
+        /// Vertices, ring after ring.
+        points: Vec<Point<f64>>,
+        /// Exclusive end of each ring.
+        ends: Vec<usize>,
+    },
+    /// `svg:FILE`, read later by [`crate::svgin`].
+    Svg(std::path::PathBuf),
 }
 
-impl RegionSpec {
-    /// The core region.
-    pub fn region(&self, periodic: bool) -> Region {
-        match *self {
-            RegionSpec::Rect { width, height } => Region::Rect { width, height, periodic },
-        }
-    }
-}
-
-/// `rect:W:H` (sizes in mm).
+/// `rect:W:H | circle:R | annulus:R_OUTER:R_INNER | polygon:X1,Y1,... | svg:FILE` (mm).
 pub fn region(s: &str) -> Result<RegionSpec, String> {
+    if let Some(file) = s.strip_prefix("svg:") {
+        return Ok(RegionSpec::Svg(file.into()));
+    }
+    if let Some(list) = s.strip_prefix("polygon:") {
+        let nums = list.split(',').map(finite).collect::<Result<Vec<f64>, _>>().map_err(|e| format!("polygon:X1,Y1,...: {e}"))?;
+        if nums.len() % 2 != 0 {
+            return Err("polygon:X1,Y1,X2,Y2,...: give an even count of numbers (x,y pairs)".into());
+        }
+        if nums.len() < 6 {
+            return Err("polygon:X1,Y1,X2,Y2,...: a polygon needs at least 3 vertices".into());
+        }
+        let points: Vec<Point<f64>> = nums.chunks(2).map(|c| Point::new(c[0], c.get(1).copied().unwrap_or(0.0))).collect();
+        let ends = vec![points.len()];
+        return Ok(RegionSpec::Polygon { points, ends });
+    }
     let parts: Vec<&str> = s.split(':').collect();
     match parts.as_slice() {
         ["rect", w, h] => {
@@ -122,7 +240,18 @@ pub fn region(s: &str) -> Result<RegionSpec, String> {
             Ok(RegionSpec::Rect { width, height })
         }
         ["rect", ..] => Err("write rect:W:H with sizes in mm, for example rect:200:150".into()),
-        _ => Err(format!("unknown region '{s}'; use rect:W:H (sizes in mm)")),
+        ["circle", r] => Ok(RegionSpec::Circle { radius: positive(r).map_err(|e| format!("circle:R: the radius {e}"))? }),
+        ["circle", ..] => Err("write circle:R with the radius in mm, for example circle:100".into()),
+        ["annulus", ro, ri] => {
+            let outer = positive(ro).map_err(|e| format!("annulus:R_OUTER:R_INNER: R_OUTER {e}"))?;
+            let inner = positive(ri).map_err(|e| format!("annulus:R_OUTER:R_INNER: R_INNER {e}"))?;
+            if inner >= outer {
+                return Err(format!("annulus:R_OUTER:R_INNER: R_INNER ({ri}) must be smaller than R_OUTER ({ro})"));
+            }
+            Ok(RegionSpec::Annulus { outer, inner })
+        }
+        ["annulus", ..] => Err("write annulus:R_OUTER:R_INNER in mm, for example annulus:100:40".into()),
+        _ => Err(format!("unknown region '{s}'; use rect:W:H, circle:R, annulus:R_OUTER:R_INNER, polygon:X1,Y1,X2,Y2,... or svg:FILE (sizes in mm)")),
     }
 }
 
@@ -132,10 +261,15 @@ mod tests {
 
     #[test]
     fn shapes_parse_and_name_round_trip() {
-        for s in ["circle", "square", "rect:2", "rect:0.5"] {
-            let k = shape(s).unwrap_or(ShapeKind::Circle);
-            assert_eq!(shape_name(&k), s);
+        for s in ["circle", "square", "rect:2", "rect:0.5", "triangle", "polygon:6", "star:5:0.4", "ring:0.6", "blob:0.2", "mix:circle,square"] {
+            let k = shape(s).map(|k| k.name()).unwrap_or_default();
+            assert_eq!(k, s);
         }
+        assert!(shape("ring:1").is_err());
+        assert!(shape("blob:0.34").is_err());
+        assert!(shape("star:1:0.5").is_err());
+        assert!(shape("polygon:2").is_err());
+        assert!(shape("mix:circle,hexagon").is_err());
         assert!(shape("hexagon").is_err());
         assert!(shape("rect").is_err());
         assert!(shape("rect:0").is_err());
@@ -153,5 +287,9 @@ mod tests {
         assert!(region("rect:10:-1").is_err());
         assert!(region("rect:10").is_err());
         assert!(dimension("2").is_err());
+        assert!(region("annulus:10:10").is_err());
+        assert!(region("polygon:0,0,1,1").is_err());
+        assert!(region("polygon:0,0,1,1,2").is_err());
+        assert!(region("circle:0").is_err());
     }
 }

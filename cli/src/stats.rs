@@ -15,10 +15,10 @@ pub enum StatsCommand {
 #[derive(Debug, Args)]
 pub struct ZetaArgs {
     /// Exponent c (> 1).
-    #[arg(long, value_parser = spec::exponent)]
+    #[arg(long, value_parser = spec::exponent, allow_negative_numbers = true)]
     pub c: f64,
     /// Offset N (> 0).
-    #[arg(long = "n-offset", default_value_t = 1.0, value_parser = spec::positive)]
+    #[arg(long = "n-offset", default_value_t = 1.0, value_parser = spec::positive, allow_negative_numbers = true)]
     pub n_offset: f64,
     /// Print one JSON object.
     #[arg(long)]

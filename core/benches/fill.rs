@@ -22,7 +22,7 @@ fn run(label: &str, shape: ShapeKind, n: u64, periodic: bool) -> Row {
     let mut index = vec![0u32; index_words(cap)];
     let mut coverage = vec![0u64; COVERAGE_WORDS];
     let mut params = Params::circles(1.3, 1.0);
-    params.shape = shape;
+    params.shape = shape.into();
     params.rotate = shape.rotates();
     params.max_trials = u64::MAX;
     let region = Region::Rect { width: 200.0, height: 200.0, periodic };

@@ -1,53 +1,27 @@
-//! A bitmap of grid cells known to lie entirely inside a placed shape: an O(1) early reject.
+//! A bitmap of grid cells where no candidate centre can be valid: an O(1) early reject.
 //!
 //! Late in a fill most candidate centres fall inside a shape that is already placed, and such
-//! a candidate always overlaps it. The engine marks, after each placement, the cells of a
-//! `G x G` grid over the region that lie entirely inside the new shape (with a safety margin
-//! far above rounding error), and rejects a candidate whose centre falls in a marked cell
-//! before any geometric test. This changes no result: the exact tests would reject the same
-//! candidate, and the random draws are the same. It only makes rejections cheap.
+//! a candidate always overlaps it. After each placement the engine marks the cells of a
+//! `G x G` grid over the region's bounding box that lie entirely inside the new shape's
+//! material (a disc, a convex polygon, or the inscribed disc of a concave one; a ring marks
+//! nothing), with a safety margin far above rounding error; at the start it marks the cells
+//! that lie entirely outside the region. A candidate whose centre falls in a marked cell is
+//! rejected before any geometric test. This changes no result: the exact tests would reject
+//! the same candidate, and the random draws are the same. It only makes rejections cheap.
 //!
 //! Storage: the caller's `u64` words (an empty slice turns the bitmap off); `G` is the largest
 //! power of two with `G * G <= 64 * words`, at most 2^15. Never panics.
 
 use crate::geom::{Geo, Point};
+use crate::region::Region;
 use crate::scalar::Scalar;
 
 /// The coverage bitmap.
 #[derive(Debug)]
 pub struct Coverage<'a, S> {
-    fine: Grid<'a, S>,
-}
-
-impl<'a, S: Scalar> Coverage<'a, S> {
-    /// A bitmap over `[0, w] x [0, h]` in the given words (all cleared).
-    pub fn new(bits: &'a mut [u64], w: S, h: S) -> Self {
-        Coverage { fine: Grid::new(bits, w, h) }
-    }
-
-    /// Whether (x, y) lies in a marked cell, hence strictly inside a placed shape.
-    #[inline]
-    pub fn covered(&self, x: S, y: S) -> bool {
-        self.fine.covered(x, y)
-    }
-
-    /// Marks every cell lying entirely inside `geo` (or, with `period`, inside any of its nine
-    /// images shifted by multiples of the period).
-    pub fn mark(&mut self, geo: &Geo<S>, period: Option<(S, S)>) {
-        self.fine.mark(geo, period);
-    }
-
-    /// Fraction of the region marked in the fine grid.
-    pub fn marked_fraction(&self) -> f64 {
-        self.fine.marked_fraction()
-    }
-}
-
-/// One grid of the bitmap.
-#[derive(Debug)]
-struct Grid<'a, S> {
     bits: &'a mut [u64],
     g: i64,
+    origin: Point<S>,
     cw: S,
     ch: S,
     inv_w: S,
@@ -55,9 +29,9 @@ struct Grid<'a, S> {
     margin: S,
 }
 
-impl<'a, S: Scalar> Grid<'a, S> {
-    /// A grid over `[0, w] x [0, h]` in the given words (all cleared).
-    pub fn new(bits: &'a mut [u64], w: S, h: S) -> Self {
+impl<'a, S: Scalar> Coverage<'a, S> {
+    /// A bitmap over the box `[x0, x0 + w] x [y0, y0 + h]` in the given words (all cleared).
+    pub fn new(bits: &'a mut [u64], origin: Point<S>, w: S, h: S) -> Self {
         let cells = (bits.len() as u64).saturating_mul(64);
         let mut g: i64 = 1;
         while g < (1 << 15) && ((g * 2) as u64) * ((g * 2) as u64) <= cells {
@@ -73,10 +47,10 @@ impl<'a, S: Scalar> Grid<'a, S> {
         let (cw, ch) = (w / gs, h / gs);
         // A margin of 2^-16 cell keeps marking conservative far beyond rounding error.
         let margin = cw.min(ch) * S::from_f64(1.0 / 65536.0);
-        Grid { bits, g, cw, ch, inv_w: S::ONE / cw, inv_h: S::ONE / ch, margin }
+        Coverage { bits, g, origin, cw, ch, inv_w: S::ONE / cw, inv_h: S::ONE / ch, margin }
     }
 
-    /// Fraction of the grid's cells that are marked.
+    /// Fraction of the grid's cells that are marked (0 when off).
     pub fn marked_fraction(&self) -> f64 {
         if self.g == 0 {
             return 0.0;
@@ -88,8 +62,9 @@ impl<'a, S: Scalar> Grid<'a, S> {
     #[inline]
     fn cell(&self, x: S, y: S) -> Option<usize> {
         // A point within rounding of a cell edge may be mapped to the neighbour cell; marked
-        // cells lie inside their shape by a margin far larger than that rounding.
-        let (cx, cy) = ((x * self.inv_w).floor_i64(), (y * self.inv_h).floor_i64());
+        // cells are inside their shape by a margin far larger than that rounding.
+        let cx = ((x - self.origin.x) * self.inv_w).floor_i64();
+        let cy = ((y - self.origin.y) * self.inv_h).floor_i64();
         if cx < 0 || cy < 0 || cx >= self.g || cy >= self.g {
             None
         } else {
@@ -97,7 +72,7 @@ impl<'a, S: Scalar> Grid<'a, S> {
         }
     }
 
-    /// Whether (x, y) lies in a marked cell, hence strictly inside a placed shape.
+    /// Whether (x, y) lies in a marked cell, hence cannot be a valid centre.
     #[inline]
     pub fn covered(&self, x: S, y: S) -> bool {
         match self.cell(x, y) {
@@ -113,30 +88,87 @@ impl<'a, S: Scalar> Grid<'a, S> {
         }
     }
 
-    /// Marks every cell lying entirely inside `geo` (or, with `period`, inside any of its nine
-    /// images shifted by multiples of the period).
-    pub fn mark(&mut self, geo: &Geo<S>, period: Option<(S, S)>) {
+    fn cell_x(&self, cx: i64) -> S {
+        self.origin.x + S::from_f64(cx as f64) * self.cw
+    }
+
+    fn cell_y(&self, cy: i64) -> S {
+        self.origin.y + S::from_f64(cy as f64) * self.ch
+    }
+
+    /// Marks the cells lying entirely outside `region`, by recursive subdivision of the grid:
+    /// a block whose centre is farther from the boundary than its half diagonal lies wholly
+    /// on one side. Cost: about the boundary's length in cells times the boundary's edges.
+    pub fn mark_outside(&mut self, region: &Region<'_>) {
+        if self.g == 0 || matches!(region, Region::Rect { .. }) {
+            return;
+        }
+        self.outside_block(region, 0, 0, self.g);
+    }
+
+    fn outside_block(&mut self, region: &Region<'_>, cx: i64, cy: i64, size: i64) {
+        let half = S::from_f64(size as f64 / 2.0);
+        let (hw, hh) = (self.cw * half, self.ch * half);
+        let centre = Point::new(self.cell_x(cx) + hw, self.cell_y(cy) + hh);
+        let reach = (hw * hw + hh * hh).sqrt() + self.margin;
+        if region.boundary_dist2(centre) > reach * reach {
+            if !region.point_inside(centre) {
+                for y in cy..cy + size {
+                    for x in cx..cx + size {
+                        self.set(x, y);
+                    }
+                }
+            }
+            return;
+        }
+        if size == 1 {
+            return;
+        }
+        let s = size / 2;
+        for (dx, dy) in [(0, 0), (s, 0), (0, s), (s, s)] {
+            self.outside_block(region, cx + dx, cy + dy, s);
+        }
+    }
+
+    /// Marks every cell lying entirely inside `geo`'s material (`inscribed`: the radius of a
+    /// disc about `centre` inside a concave polygon, used instead of the polygon), or, with
+    /// `period`, inside any of its nine images shifted by multiples of the period.
+    pub fn mark(&mut self, geo: &Geo<S>, centre: Point<S>, inscribed: S, period: Option<(S, S)>) {
         if self.g == 0 {
             return;
         }
+        let solid = match *geo {
+            Geo::Ring { .. } => return,
+            Geo::Poly { convex: false, .. } => Geo::Circle { c: centre, r: inscribed },
+            other => other,
+        };
         let offsets: &[(i8, i8)] = match period {
             Some(_) => &[(0, 0), (1, 0), (-1, 0), (0, 1), (0, -1), (1, 1), (1, -1), (-1, 1), (-1, -1)],
             None => &[(0, 0)],
         };
         let (pw, ph) = period.unwrap_or((S::ZERO, S::ZERO));
         for &(ox, oy) in offsets {
-            let dx = match ox { 1 => pw, -1 => -pw, _ => S::ZERO };
-            let dy = match oy { 1 => ph, -1 => -ph, _ => S::ZERO };
-            let g = if ox == 0 && oy == 0 { *geo } else { geo.shift(dx, dy) };
+            let dx = match ox {
+                1 => pw,
+                -1 => -pw,
+                _ => S::ZERO,
+            };
+            let dy = match oy {
+                1 => ph,
+                -1 => -ph,
+                _ => S::ZERO,
+            };
+            let g = if ox == 0 && oy == 0 { solid } else { solid.shift(dx, dy) };
             self.mark_one(&g);
         }
     }
 
     fn mark_one(&mut self, geo: &Geo<S>) {
         let (x0, y0, x1, y1) = geo.bounds();
-        let clamp = |v: i64| v.clamp(0, self.g - 1);
-        let (cx0, cx1) = ((x0 / self.cw).floor_i64(), (x1 / self.cw).floor_i64());
-        let (cy0, cy1) = ((y0 / self.ch).floor_i64(), (y1 / self.ch).floor_i64());
+        let (o, iw, ih) = (self.origin, self.inv_w, self.inv_h);
+        let to_cx = move |v: S| ((v - o.x) * iw).floor_i64();
+        let to_cy = move |v: S| ((v - o.y) * ih).floor_i64();
+        let (cx0, cx1, cy0, cy1) = (to_cx(x0), to_cx(x1), to_cy(y0), to_cy(y1));
         if cx1 < 0 || cy1 < 0 || cx0 >= self.g || cy0 >= self.g {
             return;
         }
@@ -144,9 +176,10 @@ impl<'a, S: Scalar> Grid<'a, S> {
         if cx1 - cx0 < 2 || cy1 - cy0 < 2 {
             return;
         }
+        let clamp = |v: i64| v.clamp(0, self.g - 1);
         let (cx0, cx1, cy0, cy1) = (clamp(cx0), clamp(cx1), clamp(cy0), clamp(cy1));
         for cy in cy0..=cy1 {
-            let ya = S::from_f64(cy as f64) * self.ch;
+            let ya = self.cell_y(cy);
             let yb = ya + self.ch;
             match *geo {
                 Geo::Circle { c, r } => {
@@ -160,20 +193,19 @@ impl<'a, S: Scalar> Grid<'a, S> {
                         continue;
                     }
                     let hc = rem.sqrt();
-                    // Cells with x0 >= c.x - hc and x0 + cw <= c.x + hc.
-                    let first = ((c.x - hc) / self.cw).floor_i64() + 1;
-                    let last = ((c.x + hc) / self.cw).floor_i64() - 1;
-                    let (first, last) = (first.max(0), last.min(self.g - 1));
+                    // Cells with left edge >= c.x - hc and right edge <= c.x + hc.
+                    let first = (to_cx(c.x - hc) + 1).max(0);
+                    let last = (to_cx(c.x + hc) - 1).min(self.g - 1);
                     let mut cx = first;
                     while cx <= last {
                         self.set(cx, cy);
                         cx += 1;
                     }
                 }
-                Geo::Convex { .. } => {
+                Geo::Poly { .. } => {
                     let vs = geo.vertices();
                     for cx in cx0..=cx1 {
-                        let xa = S::from_f64(cx as f64) * self.cw;
+                        let xa = self.cell_x(cx);
                         let xb = xa + self.cw;
                         let corners = [Point::new(xa, ya), Point::new(xb, ya), Point::new(xb, yb), Point::new(xa, yb)];
                         if corners.iter().all(|&p| inside_with_margin(p, vs, self.margin)) {
@@ -181,6 +213,7 @@ impl<'a, S: Scalar> Grid<'a, S> {
                         }
                     }
                 }
+                Geo::Ring { .. } => return,
             }
         }
     }
@@ -188,9 +221,7 @@ impl<'a, S: Scalar> Grid<'a, S> {
 
 /// Whether `p` is inside a counter-clockwise convex polygon by more than `m` from every edge.
 fn inside_with_margin<S: Scalar>(p: Point<S>, vs: &[Point<S>], m: S) -> bool {
-    let n = vs.len();
-    (0..n).all(|i| {
-        let (Some(&a), Some(&b)) = (vs.get(i), vs.get((i + 1) % n)) else { return false };
+    crate::geom::edges(vs).all(|(a, b)| {
         let (ex, ey) = (b.x - a.x, b.y - a.y);
         let cross = ex * (p.y - a.y) - ey * (p.x - a.x);
         cross > m * (ex.abs() + ey.abs())

@@ -17,7 +17,7 @@ use crate::geom::{separated, Geo, Point};
 use crate::region::Region;
 use crate::rng;
 use crate::scalar::{powf, Scalar};
-use crate::shape::{Placed, ShapeKind};
+use crate::shape::{Placed, ShapeKind, ShapeList};
 use crate::spatial::SpatialHash;
 use rand_core::RngCore;
 
@@ -28,8 +28,8 @@ pub struct Params {
     pub c: f64,
     /// The offset N of the paper (> 0, need not be an integer).
     pub n_offset: f64,
-    /// The shape placed.
-    pub shape: ShapeKind,
+    /// The shape placed, or a mix of shapes.
+    pub shape: ShapeList,
     /// Random rotation (ignored for circles).
     pub rotate: bool,
     /// Minimum clearance between shapes and to the boundary (>= 0).
@@ -41,7 +41,7 @@ pub struct Params {
 impl Params {
     /// Circles with the given exponent and offset, no gap, the default trial limit.
     pub fn circles(c: f64, n_offset: f64) -> Self {
-        Params { c, n_offset, shape: ShapeKind::Circle, rotate: false, gap: 0.0, max_trials: 10_000_000 }
+        Params { c, n_offset, shape: ShapeKind::Circle.into(), rotate: false, gap: 0.0, max_trials: 10_000_000 }
     }
 
     /// c for a fractal dimension D in 2D (c = 2 / D).
@@ -59,7 +59,7 @@ pub enum ParamError {
     Offset,
     /// The zeta function overflows for this (c, N).
     Zeta,
-    /// A shape proportion (aspect ratio) is not finite and positive.
+    /// A shape proportion is out of range (see [`ShapeKind::is_valid`]).
     Shape,
     /// Region sizes must be finite and > 0.
     Region,
@@ -77,7 +77,7 @@ impl core::fmt::Display for ParamError {
             ParamError::Exponent => "c must be a finite number greater than 1",
             ParamError::Offset => "N must be a finite number greater than 0",
             ParamError::Zeta => "zeta(c, N) overflows: raise N",
-            ParamError::Shape => "shape proportions must be finite and greater than 0",
+            ParamError::Shape => "a shape proportion is out of range",
             ParamError::Region => "region sizes must be finite and greater than 0",
             ParamError::Gap => "the gap must be finite, at least 0, and smaller than the region",
             ParamError::MaxTrials => "the trial limit must be at least 1",
@@ -102,7 +102,7 @@ pub enum StepError {
         capacity: u64,
     },
     /// Shape `index` is too large for the region in any orientation (for the first shape:
-    /// lower c or raise N).
+    /// lower c or raise N). Only detected where it is certain; otherwise the fill halts.
     CannotFit {
         /// The shape that cannot fit.
         index: u64,
@@ -182,7 +182,7 @@ impl Stats {
 #[derive(Debug)]
 pub struct Engine<'a, S: Scalar> {
     params: Params,
-    region: Region,
+    region: Region<'a>,
     shapes: &'a mut [Placed<S>],
     len: usize,
     hash: SpatialHash<'a, S>,
@@ -205,16 +205,17 @@ pub const fn index_words(capacity: usize) -> usize {
 pub struct Storage<'a, S> {
     /// One slot per shape: its length is the capacity.
     pub shapes: &'a mut [Placed<S>],
-    /// The spatial hash: longer than `shapes` ([`index_words`] recommends the size).
+    /// The spatial hash: longer than `shapes` ([`index_words`] recommends the size; any
+    /// number of buckets works, fewer only make queries slower).
     pub index: &'a mut [u32],
-    /// The coverage bitmap (see [`crate::coverage`]); may be empty. It speeds up late
-    /// rejections and never changes a result.
+    /// The coverage bitmap (see [`crate::coverage`]); may be empty. It speeds up rejections
+    /// and never changes a result.
     pub coverage: &'a mut [u64],
 }
 
 impl<'a, S: Scalar> Engine<'a, S> {
     /// Validates the parameters and builds an engine over the caller's storage.
-    pub fn new(params: Params, region: Region, storage: Storage<'a, S>) -> Result<Self, ParamError> {
+    pub fn new(params: Params, region: Region<'a>, storage: Storage<'a, S>) -> Result<Self, ParamError> {
         let Storage { shapes, index, coverage } = storage;
         if !(params.c.is_finite() && params.c > 1.0) {
             return Err(ParamError::Exponent);
@@ -241,13 +242,16 @@ impl<'a, S: Scalar> Engine<'a, S> {
         let zeta = crate::zeta::zeta(params.c, params.n_offset).map_err(|_| ParamError::Zeta)?;
         let (next, heads) = index.split_at_mut(shapes.len());
         let hash = SpatialHash::new(heads, next, S::from_f64(w.max(h))).map_err(|_| ParamError::Storage)?;
+        let (x0, y0, _, _) = region.bbox();
+        let mut coverage = Coverage::new(coverage, Point::new(S::from_f64(x0), S::from_f64(y0)), S::from_f64(w), S::from_f64(h));
+        coverage.mark_outside(&region);
         Ok(Engine {
             params,
             region,
             shapes,
             len: 0,
             hash,
-            coverage: Coverage::new(coverage, S::from_f64(w), S::from_f64(h)),
+            coverage,
             zeta,
             area: region.area(),
             placed_area: 0.0,
@@ -263,7 +267,7 @@ impl<'a, S: Scalar> Engine<'a, S> {
     }
 
     /// The region.
-    pub fn region(&self) -> &Region {
+    pub fn region(&self) -> &Region<'a> {
         &self.region
     }
 
@@ -283,8 +287,9 @@ impl<'a, S: Scalar> Engine<'a, S> {
     }
 
     /// The shape kind of placement `i`.
-    pub fn kind_of(&self, _i: u64) -> ShapeKind {
-        self.params.shape
+    #[inline]
+    pub fn kind_of(&self, i: u64) -> ShapeKind {
+        self.params.shape.kind_of(i)
     }
 
     /// The shapes placed so far, in placement order.
@@ -292,9 +297,10 @@ impl<'a, S: Scalar> Engine<'a, S> {
         self.shapes.get(..self.len).unwrap_or(&[])
     }
 
-    /// The concrete geometry of a placed shape: exactly what was tested, and what to draw.
-    pub fn geo(&self, p: &Placed<S>) -> Geo<S> {
-        self.params.shape.geo(Point::new(p.x, p.y), p.scale, p.angle)
+    /// The concrete geometry of placed shape `i`: exactly what was tested, and what to draw.
+    pub fn geo(&self, i: usize) -> Option<Geo<S>> {
+        let p = self.placed().get(i)?;
+        Some(self.kind_of(i as u64).geo(Point::new(p.x, p.y), p.scale, p.angle))
     }
 
     /// Statistics so far.
@@ -302,7 +308,7 @@ impl<'a, S: Scalar> Engine<'a, S> {
         Stats { placed: self.len as u64, trials: self.trials, fill_fraction: self.placed_area / self.area }
     }
 
-    /// Fraction of the region marked in the coverage bitmap (0 without one).
+    /// Fraction of the region's bounding box marked in the coverage bitmap (0 without one).
     pub fn coverage_fraction(&self) -> f64 {
         self.coverage.marked_fraction()
     }
@@ -321,9 +327,10 @@ impl<'a, S: Scalar> Engine<'a, S> {
         let test = |level: usize, reach: S, gi: &Geo<S>, qx: S, qy: S| {
             self.hash.query(level, [qx - reach, qy - reach, qx + reach, qy + reach], total, |j| {
                 let Some(p) = self.shapes.get(j as usize) else { return true };
-                let lim = r + self.params.shape.bounding_radius(p.scale) + gap;
+                let kind = self.kind_of(u64::from(j));
+                let lim = r + kind.bounding_radius(p.scale) + gap;
                 let (dx, dy) = (p.x - qx, p.y - qy);
-                dx * dx + dy * dy > lim * lim || separated(gi, &self.geo(p), gap)
+                dx * dx + dy * dy > lim * lim || separated(gi, &kind.geo(Point::new(p.x, p.y), p.scale, p.angle), gap)
             })
         };
         if !self.region.periodic() {
@@ -357,18 +364,48 @@ impl<'a, S: Scalar> Engine<'a, S> {
         [(w, S::ZERO), (S::ZERO, h), (w, h), (w, -h)].iter().any(|&(dx, dy)| !separated(g, &g.shift(dx, dy), self.gap))
     }
 
-    /// Whether a shape of this scale can be inside the region in some orientation.
-    fn can_fit(&self, kind: ShapeKind, scale: S) -> bool {
-        let quarter = S::from_f64(core::f64::consts::FRAC_PI_2);
-        let angles: &[S] = if self.params.rotate && kind.rotates() { &[S::ZERO, quarter] } else { &[S::ZERO] };
-        angles.iter().any(|&a| {
-            let g = kind.geo(Point::new(S::ZERO, S::ZERO), scale, a);
-            let (x0, y0, x1, y1) = g.bounds();
-            let (w, h) = self.period;
-            let fits = self.region.periodic()
-                || (x1 - x0 + self.gap + self.gap <= w && y1 - y0 + self.gap + self.gap <= h);
-            fits && !(self.region.periodic() && self.self_overlaps(&g, kind.bounding_radius(scale)))
-        })
+    /// Whether a shape of this area certainly cannot lie in the region in any orientation.
+    fn cannot_fit(&self, kind: ShapeKind, area: f64) -> bool {
+        let scale: S = kind.scale_for(area, S::ZERO);
+        let inr = kind.inradius(scale);
+        if self.region.centre_range(inr, inr, self.gap).is_none() {
+            return true;
+        }
+        match self.region {
+            Region::Rect { periodic: false, width, height } => {
+                // Rectangles: the narrowest bounding boxes are at 0 and 90 degrees (or only at
+                // 0 when unrotated); every other kind is tested at angle 0 and reported only if
+                // its inscribed circle cannot fit (above).
+                if !matches!(kind, ShapeKind::Square | ShapeKind::Rect { .. } | ShapeKind::Circle | ShapeKind::Ring { .. }) {
+                    return false;
+                }
+                let quarter = S::from_f64(core::f64::consts::FRAC_PI_2);
+                let angles: &[S] = if self.params.rotate && kind.rotates() { &[S::ZERO, quarter] } else { &[S::ZERO] };
+                let (w, h) = (S::from_f64(width), S::from_f64(height));
+                !angles.iter().any(|&a| {
+                    let (x0, y0, x1, y1) = kind.geo(Point::new(S::ZERO, S::ZERO), scale, a).bounds();
+                    x1 - x0 + self.gap + self.gap <= w && y1 - y0 + self.gap + self.gap <= h
+                })
+            }
+            Region::Rect { periodic: true, .. } => {
+                matches!(kind, ShapeKind::Circle | ShapeKind::Ring { .. })
+                    && self.self_overlaps(&kind.geo(Point::new(S::ZERO, S::ZERO), scale, S::ZERO), scale)
+            }
+            Region::Circle { radius } => kind.inradius(scale) + self.gap > S::from_f64(radius),
+            Region::Annulus { outer, inner } => {
+                // In the band, or (a ring) around the hole.
+                let band = S::from_f64(outer - inner);
+                let in_band = inr + inr + self.gap + self.gap <= band;
+                let around = match kind {
+                    ShapeKind::Ring { inner: ri } => {
+                        scale * S::from_f64(ri) >= S::from_f64(inner) + self.gap && scale + self.gap <= S::from_f64(outer)
+                    }
+                    _ => false,
+                };
+                !(in_band || around)
+            }
+            Region::Polygon(_) => false,
+        }
     }
 
     /// Places the next shape, drawing candidates from `rng` until one fits or the trial limit
@@ -381,25 +418,27 @@ impl<'a, S: Scalar> Engine<'a, S> {
         }
         let kind = self.kind_of(index);
         let area = self.area_of(index);
-        let scale = S::from_f64(kind.scale_for_area(area));
-        if !(scale > S::ZERO && scale.is_finite() && self.can_fit(kind, scale)) {
+        let base_scale: S = kind.scale_for(area, S::ZERO);
+        if !(base_scale > S::ZERO && base_scale.is_finite()) || self.cannot_fit(kind, area) {
             return Err(StepError::CannotFit { index });
         }
-        let r = kind.bounding_radius(scale);
         let rotated = self.params.rotate && kind.rotates();
+        let is_blob = matches!(kind, ShapeKind::Blob { .. });
         // The centre is drawn uniformly over the positions where the shape can lie inside the
-        // region: for an unrotated shape its half extents set the range exactly; a rotated one
-        // may lie anywhere its inscribed circle fits, and the exact containment test decides.
-        // So accepted placements are uniform over all valid (position, angle) pairs.
-        let (ex, ey) = if rotated {
-            let inr = kind.inradius(scale);
+        // region's bounding box: for an unrotated shape its exact extents set the range; a
+        // rotated one may lie anywhere its inscribed circle fits, and the exact containment
+        // test decides. So accepted placements are uniform over all valid (position, angle)
+        // pairs.
+        let (ex, ey) = if rotated || is_blob {
+            let inr = kind.inradius(base_scale);
             (inr, inr)
         } else {
-            kind.half_extents(scale, S::ZERO, S::ONE)
+            let (x0, y0, x1, y1) = kind.geo(Point::new(S::ZERO, S::ZERO), base_scale, S::ZERO).bounds();
+            ((-x0).max(x1), (-y0).max(y1))
         };
-        // Empty ranges were ruled out by `can_fit`; a degenerate one still gives a valid,
-        // tested candidate.
         let range = self.region.centre_range(ex, ey, self.gap).unwrap_or((S::ZERO, S::ZERO, S::ZERO, S::ZERO));
+        let base_r = kind.bounding_radius(base_scale);
+        let period = if self.region.periodic() { Some(self.period) } else { None };
         let mut trials = 0u64;
         loop {
             if trials >= self.params.max_trials {
@@ -415,24 +454,28 @@ impl<'a, S: Scalar> Engine<'a, S> {
             if self.coverage.covered(c.x, c.y) {
                 continue;
             }
-            let (sin, cos) = if rotated { ShapeKind::sin_cos(angle) } else { (S::ZERO, S::ONE) };
-            let g = kind.geo_sc(c, scale, sin, cos);
+            let (scale, r, g) = if is_blob {
+                let s: S = kind.scale_for(area, angle);
+                (s, kind.bounding_radius(s), kind.geo(c, s, angle))
+            } else {
+                let (sin, cos) = if rotated { ShapeKind::sin_cos(angle) } else { (S::ZERO, S::ONE) };
+                (base_scale, base_r, kind.geo_sc(c, base_scale, sin, cos))
+            };
             if !self.region.contains(&g, self.gap) {
                 continue;
             }
-            if self.region.periodic() && self.self_overlaps(&g, r) {
+            if period.is_some() && self.self_overlaps(&g, r) {
                 continue;
             }
             if !self.clear(&g, c.x, c.y, r) {
                 continue;
             }
-            let shape = Placed { x: c.x, y: c.y, scale, angle, kind: 0 };
+            let shape = Placed { x: c.x, y: c.y, scale, angle };
             if let Some(slot) = self.shapes.get_mut(i) {
                 *slot = shape;
             }
             self.hash.insert(i as u32, c.x, c.y, r);
-            let period = if self.region.periodic() { Some(self.period) } else { None };
-            self.coverage.mark(&g, period);
+            self.coverage.mark(&g, c, kind.inradius(scale), period);
             self.len += 1;
             self.placed_area += area;
             return Ok(Placement { index, shape, area, trials });

@@ -1,15 +1,17 @@
 //! Points and the exact clearance tests between concrete shapes.
 //!
-//! A concrete shape ([`Geo`]) is a circle or a convex polygon with its vertices in
-//! counter-clockwise order. [`separated`] answers "is the distance between the two shapes
-//! greater than `gap`?" exactly in the scalar's arithmetic: with `gap = 0` touching counts as
-//! overlapping (the paper's "does not overlap or touch"). The pair table is symmetric:
+//! A concrete shape ([`Geo`]) is a disc, a ring (annulus) or a simple polygon with its
+//! vertices in counter-clockwise order, flagged convex or not. [`separated`] answers "is the
+//! distance between the two shapes' material greater than `gap`?" exactly in the scalar's
+//! arithmetic; with `gap = 0` touching counts as overlapping (the paper's "does not overlap or
+//! touch"). A shape lying in a ring's hole is separated from the ring when it keeps `gap` from
+//! the inner circle (nesting, the paper's Figure 2). The pair table is symmetric:
 //! `separated(a, b, g) == separated(b, a, g)`.
 
 use crate::scalar::Scalar;
 
 /// A point (or vector) in the plane, in the region's frame (x right, y up).
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
 pub struct Point<S> {
     /// x coordinate.
     pub x: S,
@@ -28,24 +30,33 @@ impl<S: Scalar> Point<S> {
     pub fn shift(self, dx: S, dy: S) -> Self {
         Point::new(self.x + dx, self.y + dy)
     }
+    /// `self - o`.
     #[inline]
-    fn sub(self, o: Self) -> Self {
+    pub fn sub(self, o: Self) -> Self {
         Point::new(self.x - o.x, self.y - o.y)
     }
+    /// Dot product.
     #[inline]
-    fn dot(self, o: Self) -> S {
+    pub fn dot(self, o: Self) -> S {
         self.x * o.x + self.y * o.y
     }
+    /// z of the cross product.
     #[inline]
-    fn cross(self, o: Self) -> S {
+    pub fn cross(self, o: Self) -> S {
         self.x * o.y - self.y * o.x
+    }
+    /// Squared distance to another point.
+    #[inline]
+    pub fn dist2(self, o: Self) -> S {
+        let d = self.sub(o);
+        d.dot(d)
     }
 }
 
-/// Most vertices a convex polygon may have here.
-pub const MAX_VERTS: usize = 4;
+/// Most vertices a polygon may have (blobs use [`crate::shape::BLOB_VERTICES`]).
+pub const MAX_VERTS: usize = 48;
 
-/// A concrete shape at its place, ready for exact tests.
+/// A concrete shape at its place, ready for exact tests and for drawing.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Geo<S> {
     /// A disc.
@@ -55,12 +66,23 @@ pub enum Geo<S> {
         /// Radius.
         r: S,
     },
-    /// A convex polygon, vertices counter-clockwise; only the first `n` are used.
-    Convex {
+    /// An annulus: the material between two concentric circles; its hole is free space.
+    Ring {
+        /// Centre.
+        c: Point<S>,
+        /// Outer radius.
+        r: S,
+        /// Inner radius (0 < inner < r).
+        inner: S,
+    },
+    /// A simple polygon, vertices counter-clockwise; only the first `n` are used.
+    Poly {
         /// Vertices.
         v: [Point<S>; MAX_VERTS],
-        /// Number of vertices used.
+        /// Number of vertices used (3..=MAX_VERTS).
         n: usize,
+        /// Whether the polygon is convex (enables the faster separating-axis test).
+        convex: bool,
     },
 }
 
@@ -69,28 +91,29 @@ impl<S: Scalar> Geo<S> {
     pub fn shift(&self, dx: S, dy: S) -> Self {
         match *self {
             Geo::Circle { c, r } => Geo::Circle { c: c.shift(dx, dy), r },
-            Geo::Convex { mut v, n } => {
-                for p in v.iter_mut() {
+            Geo::Ring { c, r, inner } => Geo::Ring { c: c.shift(dx, dy), r, inner },
+            Geo::Poly { mut v, n, convex } => {
+                for p in v.iter_mut().take(n) {
                     *p = p.shift(dx, dy);
                 }
-                Geo::Convex { v, n }
+                Geo::Poly { v, n, convex }
             }
         }
     }
 
-    /// The vertices of a polygon (empty for a circle).
+    /// The vertices of a polygon (empty for circles and rings).
     pub fn vertices(&self) -> &[Point<S>] {
         match self {
-            Geo::Circle { .. } => &[],
-            Geo::Convex { v, n } => v.get(..*n).unwrap_or(&[]),
+            Geo::Poly { v, n, .. } => v.get(..*n).unwrap_or(&[]),
+            _ => &[],
         }
     }
 
     /// Axis-aligned bounds (min x, min y, max x, max y).
     pub fn bounds(&self) -> (S, S, S, S) {
         match *self {
-            Geo::Circle { c, r } => (c.x - r, c.y - r, c.x + r, c.y + r),
-            Geo::Convex { .. } => {
+            Geo::Circle { c, r } | Geo::Ring { c, r, .. } => (c.x - r, c.y - r, c.x + r, c.y + r),
+            Geo::Poly { .. } => {
                 let vs = self.vertices();
                 let first = vs.first().copied().unwrap_or(Point::new(S::ZERO, S::ZERO));
                 let mut b = (first.x, first.y, first.x, first.y);
@@ -101,10 +124,26 @@ impl<S: Scalar> Geo<S> {
             }
         }
     }
+
+    /// The largest squared distance from `p` to a point of the shape.
+    pub fn max_dist2(&self, p: Point<S>) -> S {
+        match *self {
+            Geo::Circle { c, r } | Geo::Ring { c, r, .. } => {
+                let d = c.dist2(p).sqrt() + r;
+                d * d
+            }
+            Geo::Poly { .. } => self.vertices().iter().fold(S::ZERO, |m, v| m.max(v.dist2(p))),
+        }
+    }
+
+    /// Twice the signed area of a polygon (0 for circles and rings).
+    pub fn poly_area2(&self) -> S {
+        edges(self.vertices()).fold(S::ZERO, |s, (a, b)| s + a.cross(b))
+    }
 }
 
 /// Squared distance from `p` to the segment `a`–`b`.
-fn seg_dist2<S: Scalar>(p: Point<S>, a: Point<S>, b: Point<S>) -> S {
+pub fn seg_dist2<S: Scalar>(p: Point<S>, a: Point<S>, b: Point<S>) -> S {
     let ab = b.sub(a);
     let ap = p.sub(a);
     let len2 = ab.dot(ab);
@@ -113,19 +152,70 @@ fn seg_dist2<S: Scalar>(p: Point<S>, a: Point<S>, b: Point<S>) -> S {
         return ap.dot(ap);
     }
     if t >= len2 {
-        let bp = p.sub(b);
-        return bp.dot(bp);
+        return p.dist2(b);
     }
-    // Distance to the line: cross^2 / len2 (non-negative by construction).
     let cr = ab.cross(ap);
     cr * cr / len2
 }
 
 /// Iterates the edges (a, b) of a closed polygon.
-fn edges<S: Scalar>(vs: &[Point<S>]) -> impl Iterator<Item = (Point<S>, Point<S>)> + '_ {
-    vs.iter()
-        .copied()
-        .zip(vs.iter().copied().cycle().skip(1))
+pub fn edges<S: Scalar>(vs: &[Point<S>]) -> impl Iterator<Item = (Point<S>, Point<S>)> + '_ {
+    vs.iter().copied().zip(vs.iter().copied().cycle().skip(1))
+}
+
+/// Sign of the orientation of (a, b, c): 1 counter-clockwise, -1 clockwise, 0 collinear.
+fn orient<S: Scalar>(a: Point<S>, b: Point<S>, c: Point<S>) -> i8 {
+    let v = b.sub(a).cross(c.sub(a));
+    if v > S::ZERO {
+        1
+    } else if v < S::ZERO {
+        -1
+    } else {
+        0
+    }
+}
+
+fn on_segment<S: Scalar>(a: Point<S>, b: Point<S>, p: Point<S>) -> bool {
+    p.x >= a.x.min(b.x) && p.x <= a.x.max(b.x) && p.y >= a.y.min(b.y) && p.y <= a.y.max(b.y)
+}
+
+/// Whether the closed segments p1–p2 and q1–q2 share a point.
+pub fn segments_intersect<S: Scalar>(p1: Point<S>, p2: Point<S>, q1: Point<S>, q2: Point<S>) -> bool {
+    let (d1, d2) = (orient(q1, q2, p1), orient(q1, q2, p2));
+    let (d3, d4) = (orient(p1, p2, q1), orient(p1, p2, q2));
+    if d1 * d2 < 0 && d3 * d4 < 0 {
+        return true;
+    }
+    (d1 == 0 && on_segment(q1, q2, p1))
+        || (d2 == 0 && on_segment(q1, q2, p2))
+        || (d3 == 0 && on_segment(p1, p2, q1))
+        || (d4 == 0 && on_segment(p1, p2, q2))
+}
+
+/// Squared distance between two closed segments.
+pub fn seg_seg_dist2<S: Scalar>(p1: Point<S>, p2: Point<S>, q1: Point<S>, q2: Point<S>) -> S {
+    if segments_intersect(p1, p2, q1, q2) {
+        return S::ZERO;
+    }
+    seg_dist2(p1, q1, q2).min(seg_dist2(p2, q1, q2)).min(seg_dist2(q1, p1, p2)).min(seg_dist2(q2, p1, p2))
+}
+
+/// Whether `p` is inside a simple polygon (even-odd rule; points on the boundary may go
+/// either way, callers test boundary distance separately).
+pub fn point_in_poly<S: Scalar>(p: Point<S>, vs: &[Point<S>]) -> bool {
+    let mut inside = false;
+    for (a, b) in edges(vs) {
+        if (a.y > p.y) != (b.y > p.y) {
+            // x of the edge at height p.y, compared without division.
+            let lhs = (p.x - a.x) * (b.y - a.y);
+            let rhs = (b.x - a.x) * (p.y - a.y);
+            let left = if b.y > a.y { lhs < rhs } else { lhs > rhs };
+            if left {
+                inside = !inside;
+            }
+        }
+    }
+    inside
 }
 
 /// Whether `p` is inside or on a counter-clockwise convex polygon.
@@ -133,7 +223,15 @@ fn in_convex<S: Scalar>(p: Point<S>, vs: &[Point<S>]) -> bool {
     edges(vs).all(|(a, b)| b.sub(a).cross(p.sub(a)) >= S::ZERO)
 }
 
-/// Smallest squared distance from any vertex of `p` to any edge of `q`.
+fn in_poly<S: Scalar>(p: Point<S>, vs: &[Point<S>], convex: bool) -> bool {
+    if convex {
+        in_convex(p, vs)
+    } else {
+        point_in_poly(p, vs)
+    }
+}
+
+/// Smallest squared distance from any vertex of `p` to any edge of `q`, starting from `best`.
 fn vert_edge_dist2<S: Scalar>(p: &[Point<S>], q: &[Point<S>], mut best: S) -> S {
     for &v in p {
         for (a, b) in edges(q) {
@@ -143,46 +241,90 @@ fn vert_edge_dist2<S: Scalar>(p: &[Point<S>], q: &[Point<S>], mut best: S) -> S 
     best
 }
 
-/// Whether an edge normal of `p` strictly separates `p` from `q` (q entirely outside).
+/// Whether an edge normal of convex `p` strictly separates `p` from `q`.
 fn has_separating_edge<S: Scalar>(p: &[Point<S>], q: &[Point<S>]) -> bool {
     edges(p).any(|(a, b)| {
         let e = b.sub(a);
-        // Outward normal of a CCW polygon's edge is (e.y, -e.x); q is separated when every
-        // vertex of q is strictly on the outer side of the edge line.
         q.iter().all(|&v| e.cross(v.sub(a)) < S::ZERO)
     })
+}
+
+/// Disc (centre `c`, radius `r`) against a polygon.
+fn disc_poly<S: Scalar>(c: Point<S>, r: S, vs: &[Point<S>], convex: bool, gap: S) -> bool {
+    if in_poly(c, vs, convex) {
+        return false;
+    }
+    let reach = r + gap;
+    edges(vs).all(|(p, q)| seg_dist2(c, p, q) > reach * reach)
+}
+
+fn poly_poly<S: Scalar>(pa: &[Point<S>], ca: bool, pb: &[Point<S>], cb: bool, gap: S) -> bool {
+    if ca && cb {
+        if !(has_separating_edge(pa, pb) || has_separating_edge(pb, pa)) {
+            return false;
+        }
+        if gap <= S::ZERO {
+            return true;
+        }
+        // Disjoint convex polygons: the distance is reached between a vertex and an edge.
+        let inf = gap * gap + S::ONE;
+        return vert_edge_dist2(pb, pa, vert_edge_dist2(pa, pb, inf)) > gap * gap;
+    }
+    // General simple polygons: overlapping ones have crossing edges or one holds a vertex
+    // of the other.
+    if pa.iter().any(|&v| in_poly(v, pb, cb)) || pb.iter().any(|&v| in_poly(v, pa, ca)) {
+        return false;
+    }
+    let g2 = gap * gap;
+    for (a1, a2) in edges(pa) {
+        for (b1, b2) in edges(pb) {
+            if gap <= S::ZERO {
+                if segments_intersect(a1, a2, b1, b2) {
+                    return false;
+                }
+            } else if seg_seg_dist2(a1, a2, b1, b2) <= g2 {
+                return false;
+            }
+        }
+    }
+    true
+}
+
+/// Whether `g` lies in the hole of a ring (centre `c`, inner radius `inner`) with `gap` to
+/// the inner circle.
+fn in_hole<S: Scalar>(g: &Geo<S>, c: Point<S>, inner: S, gap: S) -> bool {
+    let room = inner - gap;
+    if room <= S::ZERO {
+        return false;
+    }
+    match *g {
+        Geo::Circle { c: gc, r } | Geo::Ring { c: gc, r, .. } => {
+            let d = room - r;
+            d > S::ZERO && gc.dist2(c) < d * d
+        }
+        Geo::Poly { .. } => g.vertices().iter().all(|v| v.dist2(c) < room * room),
+    }
 }
 
 /// Whether the distance between `a` and `b` is greater than `gap` (`gap >= 0`).
 pub fn separated<S: Scalar>(a: &Geo<S>, b: &Geo<S>, gap: S) -> bool {
     match (a, b) {
         (Geo::Circle { c: c1, r: r1 }, Geo::Circle { c: c2, r: r2 }) => {
-            let d = c1.sub(*c2);
             let reach = *r1 + *r2 + gap;
-            d.dot(d) > reach * reach
+            c1.dist2(*c2) > reach * reach
         }
-        (Geo::Circle { c, r }, poly @ Geo::Convex { .. })
-        | (poly @ Geo::Convex { .. }, Geo::Circle { c, r }) => {
-            let vs = poly.vertices();
-            if in_convex(*c, vs) {
-                return false;
-            }
-            let reach = *r + gap;
-            edges(vs).all(|(p, q)| seg_dist2(*c, p, q) > reach * reach)
+        (Geo::Ring { c: c1, r: r1, inner: i1 }, Geo::Ring { c: c2, r: r2, inner: i2 }) => {
+            // Either ring may sit in the other's hole.
+            let (o1, o2) = (Geo::Circle { c: *c1, r: *r1 }, Geo::Circle { c: *c2, r: *r2 });
+            in_hole(&o2, *c1, *i1, gap) || in_hole(&o1, *c2, *i2, gap) || separated(&o1, &o2, gap)
         }
-        (Geo::Convex { .. }, Geo::Convex { .. }) => {
-            let (pa, pb) = (a.vertices(), b.vertices());
-            if !(has_separating_edge(pa, pb) || has_separating_edge(pb, pa)) {
-                return false;
-            }
-            if gap <= S::ZERO {
-                return true;
-            }
-            // Disjoint convex polygons: the distance is reached between a vertex and an edge.
-            let inf = gap * gap + S::ONE;
-            let d2 = vert_edge_dist2(pb, pa, vert_edge_dist2(pa, pb, inf));
-            d2 > gap * gap
+        (Geo::Ring { c, r, inner }, other) | (other, Geo::Ring { c, r, inner }) => {
+            in_hole(other, *c, *inner, gap) || separated(&Geo::Circle { c: *c, r: *r }, other, gap)
         }
+        (Geo::Circle { c, r }, poly @ Geo::Poly { convex, .. }) | (poly @ Geo::Poly { convex, .. }, Geo::Circle { c, r }) => {
+            disc_poly(*c, *r, poly.vertices(), *convex, gap)
+        }
+        (Geo::Poly { convex: ca, .. }, Geo::Poly { convex: cb, .. }) => poly_poly(a.vertices(), *ca, b.vertices(), *cb, gap),
     }
 }
 
@@ -192,7 +334,16 @@ mod tests {
 
     fn sq(cx: f64, cy: f64, h: f64) -> Geo<f64> {
         let p = |x, y| Point::new(x, y);
-        Geo::Convex { v: [p(cx - h, cy - h), p(cx + h, cy - h), p(cx + h, cy + h), p(cx - h, cy + h)], n: 4 }
+        let mut v = [Point::default(); MAX_VERTS];
+        v[..4].copy_from_slice(&[p(cx - h, cy - h), p(cx + h, cy - h), p(cx + h, cy + h), p(cx - h, cy + h)]);
+        Geo::Poly { v, n: 4, convex: true }
+    }
+
+    fn as_concave(g: Geo<f64>) -> Geo<f64> {
+        match g {
+            Geo::Poly { v, n, .. } => Geo::Poly { v, n, convex: false },
+            other => other,
+        }
     }
 
     #[test]
@@ -201,25 +352,46 @@ mod tests {
         let b = Geo::Circle { c: Point::new(2.0, 0.0), r: 1.0 };
         assert!(!separated(&a, &b, 0.0));
         assert!(separated(&a, &b.shift(1e-9, 0.0), 0.0));
-        assert!(!separated(&sq(0.0, 0.0, 1.0), &sq(2.0, 0.0, 1.0), 0.0));
-        assert!(separated(&sq(0.0, 0.0, 1.0), &sq(2.0 + 1e-9, 0.0, 1.0), 0.0));
-        assert!(!separated(&a, &sq(2.0, 0.0, 1.0), 0.0));
+        for conv in [false, true] {
+            let f = |g| if conv { g } else { as_concave(g) };
+            assert!(!separated(&f(sq(0.0, 0.0, 1.0)), &f(sq(2.0, 0.0, 1.0)), 0.0));
+            assert!(separated(&f(sq(0.0, 0.0, 1.0)), &f(sq(2.0 + 1e-9, 0.0, 1.0)), 0.0));
+            assert!(!separated(&a, &f(sq(2.0, 0.0, 1.0)), 0.0));
+        }
     }
 
     #[test]
     fn gap_between_squares_is_exact_at_corners() {
-        // Corner to corner along the diagonal: distance sqrt(2)*0.5.
-        let a = sq(0.0, 0.0, 1.0);
-        let b = sq(2.5, 2.5, 1.0);
         let d = libm::sqrt(0.5);
-        assert!(separated(&a, &b, d - 1e-12));
-        assert!(!separated(&a, &b, d + 1e-12));
+        for conv in [false, true] {
+            let f = |g| if conv { g } else { as_concave(g) };
+            let (a, b) = (f(sq(0.0, 0.0, 1.0)), f(sq(2.5, 2.5, 1.0)));
+            assert!(separated(&a, &b, d - 1e-12));
+            assert!(!separated(&a, &b, d + 1e-12));
+        }
     }
 
     #[test]
-    fn circle_inside_square_overlaps() {
+    fn containment_is_overlap() {
         let a = Geo::Circle { c: Point::new(0.0, 0.0), r: 0.1 };
         assert!(!separated(&a, &sq(0.0, 0.0, 1.0), 0.0));
         assert!(!separated(&sq(0.0, 0.0, 1.0), &a, 0.0));
+        assert!(!separated(&as_concave(sq(0.0, 0.0, 0.1)), &as_concave(sq(0.0, 0.0, 1.0)), 0.0));
+    }
+
+    #[test]
+    fn shapes_nest_in_a_ring_hole() {
+        let ring = Geo::Ring { c: Point::new(0.0, 0.0), r: 3.0, inner: 2.0 };
+        let small = Geo::Circle { c: Point::new(0.5, 0.0), r: 1.0 };
+        assert!(separated(&ring, &small, 0.0));
+        assert!(separated(&small, &ring, 0.4));
+        assert!(!separated(&small, &ring, 0.5));
+        assert!(!separated(&ring, &Geo::Circle { c: Point::new(0.0, 0.0), r: 2.5 }, 0.0));
+        assert!(separated(&ring, &sq(0.0, 0.0, 1.0), 0.0));
+        assert!(!separated(&ring, &sq(0.0, 0.0, 1.5), 0.0));
+        let inner_ring = Geo::Ring { c: Point::new(0.2, 0.0), r: 1.5, inner: 1.0 };
+        assert!(separated(&ring, &inner_ring, 0.0));
+        assert!(separated(&inner_ring, &ring, 0.0));
+        assert!(!separated(&ring, &Geo::Ring { c: Point::new(1.0, 0.0), r: 1.5, inner: 1.0 }, 0.0));
     }
 }

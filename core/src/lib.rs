@@ -7,6 +7,7 @@
 //!
 //! ## Layers
 //! - [`scalar`]: the number type geometry is written over (the only caller of `libm`);
+//! - [`fixed`](mod@fixed): [`Fixed`], the 32.32 fixed-point scalar for cores without an FPU;
 //! - [`zeta`]: Hurwitz zeta, partial sums, and a build-time table;
 //! - [`rng`]: the generator and the fixed mapping from random bits to numbers;
 //! - [`geom`], [`shape`], [`region`]: concrete shapes and their exact clearance tests;
@@ -26,8 +27,8 @@
 //! - Prefix stability: the first `k` shapes of a seed never depend on how many are asked for.
 //!
 //! ## Memory
-//! A placed shape takes `size_of::<Placed<f64>>()` = 40 bytes plus 12 bytes of index
-//! (one link and two buckets), 52 bytes in all with the recommended [`engine::index_words`].
+//! A placed shape takes `size_of::<Placed<f64>>()` = 32 bytes plus 12 bytes of index
+//! (one link and two buckets), 44 bytes in all with the recommended [`engine::index_words`].
 
 #![no_std]
 #![deny(missing_docs, unsafe_code)]
@@ -36,6 +37,7 @@
 pub mod coverage;
 pub mod digest;
 pub mod engine;
+pub mod fixed;
 pub mod geom;
 pub mod line;
 pub mod region;
@@ -46,10 +48,11 @@ pub mod spatial;
 pub mod stats;
 pub mod zeta;
 
+pub use self::fixed::Fixed;
 pub use engine::{index_words, Storage, Engine, ParamError, Params, Placement, StepError, Stop, StopReason};
 pub use geom::{Geo, Point};
 pub use line::{line_index_words, Interval, LineEngine, LineParams, LinePlacement, LineStorage, Segment};
-pub use region::Region;
+pub use region::{PolygonRegion, Region, RegionError};
 pub use rng::{rng_from_seed, ZetaRng};
 pub use scalar::Scalar;
-pub use shape::{Placed, ShapeKind};
+pub use shape::{MixOrder, Placed, ShapeKind, ShapeList, MAX_MIX};

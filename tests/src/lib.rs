@@ -40,7 +40,7 @@ pub fn run_scene(s: &Scene, coverage_words: usize) -> (u64, u64, Vec<Placed<f64>
     let mut shapes = vec![Placed::<f64>::default(); cap];
     let mut index = vec![0u32; index_words(cap)];
     let mut coverage = vec![0u64; coverage_words];
-    let params = Params { c: s.c, n_offset: s.n, shape: s.shape, rotate: s.rotate, gap: 0.0, max_trials: 10_000_000 };
+    let params = Params { c: s.c, n_offset: s.n, shape: s.shape.into(), rotate: s.rotate, gap: 0.0, max_trials: 10_000_000 };
     let region = Region::Rect { width: s.size.0, height: s.size.1, periodic: s.periodic };
     let storage = Storage { shapes: &mut shapes, index: &mut index, coverage: &mut coverage };
     let Ok(mut e) = Engine::<f64>::new(params, region, storage) else { return (0, 0, Vec::new()) };

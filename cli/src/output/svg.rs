@@ -4,9 +4,9 @@
 //! decimals (0.1 µm). The parameters and seed are in `<title>` and `<desc>`; there is no
 //! timestamp, so the same run gives the same bytes.
 
-use crate::doc::{FillDoc, ShapeDoc};
+use crate::doc::{FillDoc, RegionDoc, ShapeDoc};
 use crate::output::num;
-use svg::node::element::{Circle, ClipPath, Definitions, Description, Group, Polygon, Rectangle, Title};
+use svg::node::element::{Circle, ClipPath, Definitions, Description, Group, Path, Polygon, Rectangle, Title};
 use svg::node::Text;
 use svg::Document;
 
@@ -32,17 +32,75 @@ pub struct SvgOptions {
 
 const P: usize = 4;
 
-fn shape_node(sh: &ShapeDoc, dx: f64, dy: f64, h: f64) -> Option<svg::node::element::Element> {
-    if let Some(r) = sh.radius {
-        let c = Circle::new()
-            .set("cx", num(sh.center[0] + dx, P))
-            .set("cy", num(h - (sh.center[1] + dy), P))
-            .set("r", num(r, P));
-        return Some(c.into());
+/// The page frame: SVG x = x - x0, SVG y = y1 - y (y flipped about the region's top).
+#[derive(Debug, Clone, Copy)]
+struct Frame {
+    x0: f64,
+    y1: f64,
+}
+
+impl Frame {
+    fn x(&self, x: f64) -> String {
+        num(x - self.x0, P)
+    }
+    fn y(&self, y: f64) -> String {
+        num(self.y1 - y, P)
+    }
+}
+
+/// A closed circle as path data (two half arcs), for rings drawn as one even-odd path.
+fn circle_d(f: &Frame, cx: f64, cy: f64, r: f64) -> String {
+    format!(
+        "M{},{} A{},{} 0 1 0 {},{} A{},{} 0 1 0 {},{} Z",
+        f.x(cx + r),
+        f.y(cy),
+        num(r, P),
+        num(r, P),
+        f.x(cx - r),
+        f.y(cy),
+        num(r, P),
+        num(r, P),
+        f.x(cx + r),
+        f.y(cy)
+    )
+}
+
+fn ring_d(f: &Frame, pts: &[[f64; 2]]) -> String {
+    let body: Vec<String> = pts.iter().map(|v| format!("{},{}", f.x(v[0]), f.y(v[1]))).collect();
+    format!("M{} Z", body.join(" L"))
+}
+
+fn shape_node(sh: &ShapeDoc, dx: f64, dy: f64, f: &Frame) -> Option<svg::node::element::Element> {
+    let (cx, cy) = (sh.center[0] + dx, sh.center[1] + dy);
+    match (sh.radius, sh.inner_radius) {
+        (Some(r), Some(inner)) => {
+            let d = format!("{} {}", circle_d(f, cx, cy, r), circle_d(f, cx, cy, inner));
+            return Some(Path::new().set("d", d).set("fill-rule", "evenodd").into());
+        }
+        (Some(r), None) => {
+            return Some(Circle::new().set("cx", f.x(cx)).set("cy", f.y(cy)).set("r", num(r, P)).into());
+        }
+        _ => {}
     }
     let vs = sh.vertices.as_ref()?;
-    let pts: Vec<String> = vs.iter().map(|v| format!("{},{}", num(v[0] + dx, P), num(h - (v[1] + dy), P))).collect();
+    let pts: Vec<String> = vs.iter().map(|v| format!("{},{}", f.x(v[0] + dx), f.y(v[1] + dy))).collect();
     Some(Polygon::new().set("points", pts.join(" ")).into())
+}
+
+/// The region's outline as one path (even-odd for holes).
+fn region_node(doc: &FillDoc, f: &Frame) -> Path {
+    let d = match &doc.region {
+        RegionDoc::Rect { width, height, .. } => ring_d(f, &[[0.0, 0.0], [*width, 0.0], [*width, *height], [0.0, *height]]),
+        RegionDoc::Circle { center, radius } => circle_d(f, center[0], center[1], *radius),
+        RegionDoc::Annulus { center, radius_outer, radius_inner } => {
+            format!("{} {}", circle_d(f, center[0], center[1], *radius_outer), circle_d(f, center[0], center[1], *radius_inner))
+        }
+        RegionDoc::Polygon { vertices, holes, outers } => {
+            let all: Vec<String> = std::iter::once(vertices).chain(outers).chain(holes).map(|r| ring_d(f, r)).collect();
+            all.join(" ")
+        }
+    };
+    Path::new().set("id", "boundary").set("d", d).set("fill-rule", "evenodd")
 }
 
 /// The (dx, dy) images of a shape that can show inside a periodic region.
@@ -64,13 +122,20 @@ fn bounds(sh: &ShapeDoc) -> (f64, f64, f64, f64) {
 /// The `zetafill fill` command line that reproduces the document.
 pub fn command_line(doc: &FillDoc) -> String {
     let p = &doc.params;
-    let (w, h) = doc.extent();
+    let region = match &doc.region {
+        RegionDoc::Rect { width, height, .. } => format!("rect:{width}:{height}"),
+        RegionDoc::Circle { radius, .. } => format!("circle:{radius}"),
+        RegionDoc::Annulus { radius_outer, radius_inner, .. } => format!("annulus:{radius_outer}:{radius_inner}"),
+        RegionDoc::Polygon { vertices, holes, outers } if holes.is_empty() && outers.is_empty() => {
+            format!("polygon:{}", vertices.iter().map(|v| format!("{},{}", v[0], v[1])).collect::<Vec<_>>().join(","))
+        }
+        RegionDoc::Polygon { .. } => "svg:(outline with holes; see the JSON output)".to_string(),
+    };
     let mut s = format!(
-        "zetafill fill --shape {} --rotate {} --region rect:{}:{}{} --c {} --n-offset {} --gap {} --max-trials {} --seed {}",
+        "zetafill fill --shape {} --rotate {} --region {}{} --c {} --n-offset {} --gap {} --max-trials {} --seed {}",
         p.shape,
         p.rotate,
-        w,
-        h,
+        region,
         if doc.periodic() { " --periodic" } else { "" },
         p.c,
         p.n_offset,
@@ -93,6 +158,8 @@ pub fn command_line(doc: &FillDoc) -> String {
 /// Renders a fill as SVG.
 pub fn render(doc: &FillDoc, opt: &SvgOptions) -> Vec<u8> {
     let (w, h) = doc.extent();
+    let (x0, _, _, y1) = doc.bbox();
+    let frame = Frame { x0, y1 };
     let mut shapes = Group::new().set("id", "shapes");
     shapes = match opt.style {
         Style::Outline => shapes.set("fill", "none").set("stroke", "black").set("stroke-width", num(opt.pen_width, P)),
@@ -102,7 +169,7 @@ pub fn render(doc: &FillDoc, opt: &SvgOptions) -> Vec<u8> {
     for sh in &doc.shapes {
         let offs = if periodic { images(sh, w, h) } else { vec![(0.0, 0.0)] };
         for (dx, dy) in offs {
-            if let Some(n) = shape_node(sh, dx, dy, h) {
+            if let Some(n) = shape_node(sh, dx, dy, &frame) {
                 shapes = shapes.add(n);
             }
         }
@@ -130,13 +197,7 @@ pub fn render(doc: &FillDoc, opt: &SvgOptions) -> Vec<u8> {
     }
     d = d.add(shapes);
     if opt.boundary {
-        let b = Rectangle::new()
-            .set("id", "boundary")
-            .set("width", num(w, P))
-            .set("height", num(h, P))
-            .set("fill", "none")
-            .set("stroke", "black")
-            .set("stroke-width", num(opt.pen_width, P));
+        let b = region_node(doc, &frame).set("fill", "none").set("stroke", "black").set("stroke-width", num(opt.pen_width, P));
         d = d.add(b);
     }
     let mut s = d.to_string();

@@ -1,12 +1,26 @@
-//! The shapes that can be placed: how area maps to scale, bounding radius, extents, and the
-//! concrete [`Geo`] that is both tested and drawn.
+//! The shapes that can be placed: how area maps to scale, bounding and inscribed radii, and
+//! the concrete [`Geo`] that is both tested and drawn.
 //!
-//! A placed shape is stored compactly as [`Placed`]: centre, scale and angle. The scale is the
-//! circle's radius, or a rectangle's half height (its half width is `aspect` times that; a
-//! square has aspect 1).
+//! A placed shape is stored compactly as [`Placed`]: centre, scale and angle (32 bytes with
+//! `f64`). Its kind is not stored: the engine knows it from the placement index (see
+//! [`ShapeList`]). The scale is, per kind:
+//! - circle, ring: the (outer) radius;
+//! - square, rectangle: the half height (the half width is `aspect` times it);
+//! - triangle, regular polygon, star, blob: the circumradius (for a blob, the base radius R
+//!   of eq. 9, chosen per trial so that the polygon's area is exactly the area asked for).
+//!
+//! Polygons and stars point up when unrotated (their first vertex at 90°). Curved outlines
+//! are never approximated: circles and rings are tested as true circles; a blob *is* its
+//! polygon of [`BLOB_VERTICES`] vertices (tested and drawn alike).
 
-use crate::geom::{Geo, Point};
+use crate::geom::{Geo, Point, MAX_VERTS};
 use crate::scalar::Scalar;
+
+/// Vertices of a blob's polygon.
+pub const BLOB_VERTICES: usize = 48;
+
+/// Most shapes in a mix.
+pub const MAX_MIX: usize = 8;
 
 /// A kind of shape, with its fixed proportions.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -20,6 +34,31 @@ pub enum ShapeKind {
         /// Width over height, finite and > 0.
         aspect: f64,
     },
+    /// An equilateral triangle.
+    Triangle,
+    /// A regular polygon.
+    Polygon {
+        /// Number of sides, 3..=48.
+        sides: u8,
+    },
+    /// A star with `points` points; the inner vertices lie at `inner` times the outer radius.
+    Star {
+        /// Points, 2..=24.
+        points: u8,
+        /// Inner radius over outer radius, in (0, 1).
+        inner: f64,
+    },
+    /// An annulus; its hole is free space where smaller shapes may be placed.
+    Ring {
+        /// Inner radius over outer radius, in (0, 1).
+        inner: f64,
+    },
+    /// The irregular blob of eq. 9: r(θ) = R (1 + δ Σ_{j=2..4} cos(jθ + φ_j)), with new random
+    /// phases φ_j at every trial.
+    Blob {
+        /// δ in [0, 1/3): r(θ) stays positive for every phase.
+        delta: f64,
+    },
 }
 
 /// A shape as stored by the engine. `Placed::default()` is an empty slot for storage.
@@ -29,26 +68,110 @@ pub struct Placed<S> {
     pub x: S,
     /// Centre y.
     pub y: S,
-    /// Scale: radius (circle) or half height (square, rectangle).
+    /// Scale (see the module docs).
     pub scale: S,
-    /// Rotation in radians, counter-clockwise (0 when unrotated).
+    /// Rotation in radians, counter-clockwise (0 when unrotated). For a blob it also selects
+    /// the phases φ_j.
     pub angle: S,
-    /// Index of the kind in the engine's shape list.
-    pub kind: u8,
+}
+
+/// How a mix of shapes is taken.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum MixOrder {
+    /// In turn: placement i gets kind i mod len (the paper's Figure 7).
+    Cycle,
+    /// A fixed pseudo-random choice per placement index (from `salt`), so nothing is stored.
+    Random,
+}
+
+/// The shape, or mix of shapes, of a fill. The area sequence is the same whatever the mix.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ShapeList {
+    kinds: [ShapeKind; MAX_MIX],
+    len: u8,
+    /// How kinds are chosen per placement.
+    pub order: MixOrder,
+    /// Salt for [`MixOrder::Random`].
+    pub salt: u64,
+}
+
+impl From<ShapeKind> for ShapeList {
+    fn from(k: ShapeKind) -> Self {
+        ShapeList { kinds: [k; MAX_MIX], len: 1, order: MixOrder::Cycle, salt: 0 }
+    }
+}
+
+impl ShapeList {
+    /// A mix of 1..=MAX_MIX kinds, or `None` for an empty or too long list.
+    pub fn mix(kinds: &[ShapeKind], order: MixOrder, salt: u64) -> Option<Self> {
+        let first = *kinds.first()?;
+        if kinds.len() > MAX_MIX {
+            return None;
+        }
+        let mut all = [first; MAX_MIX];
+        for (d, k) in all.iter_mut().zip(kinds) {
+            *d = *k;
+        }
+        Some(ShapeList { kinds: all, len: kinds.len() as u8, order, salt })
+    }
+
+    /// The kinds in the mix.
+    pub fn kinds(&self) -> &[ShapeKind] {
+        self.kinds.get(..usize::from(self.len)).unwrap_or(&[])
+    }
+
+    /// The kind of placement `i`.
+    #[inline]
+    pub fn kind_of(&self, i: u64) -> ShapeKind {
+        let n = u64::from(self.len.max(1));
+        let k = match self.order {
+            _ if n == 1 => 0,
+            MixOrder::Cycle => i % n,
+            MixOrder::Random => mix64(i ^ self.salt) % n,
+        };
+        self.kinds.get(k as usize).copied().unwrap_or(ShapeKind::Circle)
+    }
+
+    /// Whether every kind is valid and the list is not empty.
+    pub fn is_valid(&self) -> bool {
+        self.len >= 1 && self.kinds().iter().all(ShapeKind::is_valid)
+    }
+}
+
+/// SplitMix64's output function: a fixed bijective mix of 64 bits.
+pub fn mix64(mut z: u64) -> u64 {
+    z = z.wrapping_add(0x9E37_79B9_7F4A_7C15);
+    z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+    z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+    z ^ (z >> 31)
+}
+
+fn rot<S: Scalar>(p: Point<S>, s: S, c: S) -> Point<S> {
+    Point::new(p.x * c - p.y * s, p.x * s + p.y * c)
 }
 
 impl ShapeKind {
-    /// Whether the proportions are valid (finite aspect > 0).
+    /// Whether the proportions are valid.
     pub fn is_valid(&self) -> bool {
+        let unit_open = |v: f64| v.is_finite() && v > 0.0 && v < 1.0;
         match *self {
             ShapeKind::Rect { aspect } => aspect.is_finite() && aspect > 0.0,
-            _ => true,
+            ShapeKind::Polygon { sides } => (3..=MAX_VERTS as u8).contains(&sides),
+            ShapeKind::Star { points, inner } => (2..=(MAX_VERTS / 2) as u8).contains(&points) && unit_open(inner),
+            ShapeKind::Ring { inner } => unit_open(inner),
+            ShapeKind::Blob { delta } => delta.is_finite() && (0.0..1.0 / 3.0).contains(&delta),
+            ShapeKind::Circle | ShapeKind::Square | ShapeKind::Triangle => true,
         }
     }
 
-    /// Whether rotating the shape changes it.
+    /// Whether rotating the shape changes it (and so whether `--rotate random` draws angles).
     pub fn rotates(&self) -> bool {
-        !matches!(self, ShapeKind::Circle)
+        !matches!(self, ShapeKind::Circle | ShapeKind::Ring { .. })
+    }
+
+    /// Whether the shape's polygon is convex.
+    pub fn convex(&self) -> bool {
+        !matches!(self, ShapeKind::Star { .. } | ShapeKind::Blob { .. })
     }
 
     fn aspect(&self) -> f64 {
@@ -58,52 +181,93 @@ impl ShapeKind {
         }
     }
 
-    /// The scale for an area.
+    fn sides(&self) -> usize {
+        match *self {
+            ShapeKind::Triangle => 3,
+            ShapeKind::Polygon { sides } => usize::from(sides),
+            ShapeKind::Star { points, .. } => 2 * usize::from(points),
+            _ => 4,
+        }
+    }
+
+    /// Area at scale 1 (for a blob: of the round blob, δ = 0; the true area depends on the
+    /// phases and is met exactly by [`ShapeKind::scale_for`]).
+    pub fn unit_area(&self) -> f64 {
+        use core::f64::consts::PI;
+        match *self {
+            ShapeKind::Circle => PI,
+            ShapeKind::Ring { inner } => PI * (1.0 - inner * inner),
+            ShapeKind::Square | ShapeKind::Rect { .. } => 4.0 * self.aspect(),
+            ShapeKind::Triangle | ShapeKind::Polygon { .. } | ShapeKind::Blob { .. } => {
+                let n = if let ShapeKind::Blob { .. } = self { BLOB_VERTICES } else { self.sides() } as f64;
+                0.5 * n * libm::sin(2.0 * PI / n)
+            }
+            ShapeKind::Star { points, inner } => f64::from(points) * inner * libm::sin(PI / f64::from(points)),
+        }
+    }
+
+    /// The scale for an area (blobs: of the round blob; see [`ShapeKind::scale_for`]).
     pub fn scale_for_area(&self, area: f64) -> f64 {
-        match self {
-            ShapeKind::Circle => crate::scalar::sqrtf(area / core::f64::consts::PI),
-            _ => crate::scalar::sqrtf(area / (4.0 * self.aspect())),
-        }
+        crate::scalar::sqrtf(area / self.unit_area())
     }
 
-    /// The area of the shape at a scale.
+    /// The area of the shape at a scale (blobs: of the round blob).
     pub fn area_for_scale(&self, scale: f64) -> f64 {
-        match self {
-            ShapeKind::Circle => core::f64::consts::PI * scale * scale,
-            _ => 4.0 * self.aspect() * scale * scale,
-        }
+        self.unit_area() * scale * scale
     }
 
-    /// Half width and half height at a scale.
-    fn half_sides<S: Scalar>(&self, scale: S) -> (S, S) {
-        (scale * S::from_f64(self.aspect()), scale)
+    /// The scale that gives exactly `area` for the shape drawn at `angle` (only blobs depend
+    /// on the angle, through their phases).
+    pub fn scale_for<S: Scalar>(&self, area: f64, angle: S) -> S {
+        match *self {
+            ShapeKind::Blob { delta } => {
+                let (_, a2) = blob_unit(delta, angle);
+                S::from_f64(crate::scalar::sqrtf(2.0 * area / a2.to_f64()))
+            }
+            _ => S::from_f64(self.scale_for_area(area)),
+        }
     }
 
     /// Radius of the smallest circle about the centre that holds the shape.
     pub fn bounding_radius<S: Scalar>(&self, scale: S) -> S {
-        match self {
-            ShapeKind::Circle => scale,
-            _ => {
-                let (hw, hh) = self.half_sides(scale);
-                (hw * hw + hh * hh).sqrt()
+        match *self {
+            ShapeKind::Square | ShapeKind::Rect { .. } => {
+                let hw = scale * S::from_f64(self.aspect());
+                (hw * hw + scale * scale).sqrt()
             }
+            ShapeKind::Blob { delta } => scale * S::from_f64(1.0 + 3.0 * delta),
+            _ => scale,
         }
     }
 
-    /// Radius of the largest circle about the centre inside the shape.
+    /// A radius of a circle about the centre that lies inside the shape's material or
+    /// outline (a lower bound of the inscribed radius; for a ring, its outer radius, the disc
+    /// it keeps others out of except for its hole).
     pub fn inradius<S: Scalar>(&self, scale: S) -> S {
-        match self {
-            ShapeKind::Circle => scale,
-            _ => {
-                let (hw, hh) = self.half_sides(scale);
-                hw.min(hh)
+        use core::f64::consts::PI;
+        let f = match *self {
+            ShapeKind::Circle | ShapeKind::Ring { .. } => 1.0,
+            ShapeKind::Square | ShapeKind::Rect { .. } => self.aspect().min(1.0),
+            ShapeKind::Triangle | ShapeKind::Polygon { .. } => libm::cos(PI / self.sides() as f64),
+            ShapeKind::Star { points, inner } => {
+                // Distance from the centre to the line through an outer and an inner vertex.
+                let t = PI / f64::from(points);
+                let (bx, by) = (inner * libm::cos(t), inner * libm::sin(t));
+                let len = libm::sqrt((bx - 1.0) * (bx - 1.0) + by * by);
+                (by / len).min(inner) * 0.999_999
             }
-        }
+            ShapeKind::Blob { delta } => (1.0 - 3.0 * delta) * libm::cos(PI / BLOB_VERTICES as f64) * 0.999_999,
+        };
+        scale * S::from_f64(f)
     }
 
-    /// The narrowest width of the shape (the size `--min-size` compares against).
+    /// The narrowest width of the shape (what `--min-size` compares against): a ring's band,
+    /// otherwise twice the inscribed radius.
     pub fn min_width(&self, scale: f64) -> f64 {
-        2.0 * self.inradius(scale)
+        match *self {
+            ShapeKind::Ring { inner } => scale * (1.0 - inner),
+            _ => 2.0 * self.inradius(scale),
+        }
     }
 
     /// The sine and cosine the shape uses for an angle (exactly 0 and 1 for angle 0).
@@ -115,64 +279,153 @@ impl ShapeKind {
         }
     }
 
-    /// Half extents (x, y) of the shape's bounding box at a rotation given by its sine and
-    /// cosine; the box about the centre that holds the shape (up to rounding: the exact
-    /// containment test is always made on the [`Geo`]).
-    pub fn half_extents<S: Scalar>(&self, scale: S, sin: S, cos: S) -> (S, S) {
-        match self {
-            ShapeKind::Circle => (scale, scale),
+    /// The concrete shape at a place.
+    pub fn geo<S: Scalar>(&self, c: Point<S>, scale: S, angle: S) -> Geo<S> {
+        match *self {
+            ShapeKind::Blob { delta } => {
+                let (u, _) = blob_unit(delta, angle);
+                let mut v = [Point::default(); MAX_VERTS];
+                for (d, p) in v.iter_mut().zip(u.iter()) {
+                    *d = Point::new(c.x + p.x * scale, c.y + p.y * scale);
+                }
+                Geo::Poly { v, n: BLOB_VERTICES, convex: false }
+            }
             _ => {
-                let (hw, hh) = self.half_sides(scale);
-                let (s, c) = (sin.abs(), cos.abs());
-                (hw * c + hh * s, hw * s + hh * c)
+                let (sin, cos) = Self::sin_cos(angle);
+                self.geo_sc(c, scale, sin, cos)
             }
         }
     }
 
-    /// The concrete shape at a place.
-    pub fn geo<S: Scalar>(&self, c: Point<S>, scale: S, angle: S) -> Geo<S> {
-        let (sin, cos) = Self::sin_cos(angle);
-        self.geo_sc(c, scale, sin, cos)
-    }
-
-    /// The concrete shape at a place, rotation given by [`ShapeKind::sin_cos`] of its angle.
+    /// The concrete shape at a place, rotation given by [`ShapeKind::sin_cos`] of its angle
+    /// (not for blobs, whose outline depends on the angle itself: use [`ShapeKind::geo`]).
     pub fn geo_sc<S: Scalar>(&self, c: Point<S>, scale: S, sin: S, cos: S) -> Geo<S> {
-        match self {
+        let mut v = [Point::default(); MAX_VERTS];
+        match *self {
             ShapeKind::Circle => Geo::Circle { c, r: scale },
-            _ => {
-                let (hw, hh) = self.half_sides(scale);
+            ShapeKind::Ring { inner } => Geo::Ring { c, r: scale, inner: scale * S::from_f64(inner) },
+            ShapeKind::Square | ShapeKind::Rect { .. } => {
+                let (hw, hh) = (scale * S::from_f64(self.aspect()), scale);
                 let corner = |sx: S, sy: S| {
                     let (dx, dy) = (sx * hw, sy * hh);
                     Point::new(c.x + dx * cos - dy * sin, c.y + dx * sin + dy * cos)
                 };
                 let (m, p) = (-S::ONE, S::ONE);
-                Geo::Convex { v: [corner(m, m), corner(p, m), corner(p, p), corner(m, p)], n: 4 }
+                for (d, q) in v.iter_mut().zip([corner(m, m), corner(p, m), corner(p, p), corner(m, p)]) {
+                    *d = q;
+                }
+                Geo::Poly { v, n: 4, convex: true }
             }
+            ShapeKind::Triangle | ShapeKind::Polygon { .. } | ShapeKind::Star { .. } => {
+                let n = self.sides().min(MAX_VERTS);
+                let (ss, cs) = S::from_f64(core::f64::consts::TAU / n as f64).sin_cos();
+                let inner = match *self {
+                    ShapeKind::Star { inner, .. } => S::from_f64(inner),
+                    _ => S::ONE,
+                };
+                // First vertex straight up, then counter-clockwise by 2π/n (a recurrence:
+                // deterministic, and the drawn polygon is the tested one).
+                let mut dir = Point::new(-sin, cos);
+                for (k, d) in v.iter_mut().take(n).enumerate() {
+                    let rad = if k % 2 == 1 { scale * inner } else { scale };
+                    *d = Point::new(c.x + dir.x * rad, c.y + dir.y * rad);
+                    dir = rot(dir, ss, cs);
+                }
+                Geo::Poly { v, n, convex: self.convex() }
+            }
+            ShapeKind::Blob { .. } => self.geo(c, scale, S::ZERO),
         }
     }
+}
+
+/// The blob of eq. 9 at scale 1 about the origin for `angle` (which selects the phases), and
+/// twice its area.
+fn blob_unit<S: Scalar>(delta: f64, angle: S) -> ([Point<S>; BLOB_VERTICES], S) {
+    let tau = S::from_f64(core::f64::consts::TAU);
+    let d = S::from_f64(delta);
+    let key = angle.digest_bits();
+    // Phases φ_2..φ_4 from the angle's bits (angle is uniform per trial, so the phases are new
+    // random values at every trial), and e^{i(jθ_k + φ_j)} advanced by e^{ijΔ} per vertex.
+    let mut z = [Point::default(); 4];
+    let mut step = [Point::default(); 4];
+    let dtheta = tau / S::from_f64(BLOB_VERTICES as f64);
+    for (j, (zj, sj)) in z.iter_mut().zip(step.iter_mut()).enumerate() {
+        let phase = if j == 0 { S::ZERO } else { S::unit(mix64(key ^ (j as u64).wrapping_mul(0xA076_1D64_78BD_642F))) * tau };
+        let (s, c) = phase.sin_cos();
+        *zj = Point::new(c, s);
+        let (s, c) = (dtheta * S::from_f64((j + 1) as f64)).sin_cos();
+        *sj = Point::new(c, s);
+    }
+    let mut out = [Point::default(); BLOB_VERTICES];
+    for o in out.iter_mut() {
+        let (z1, z2, z3, z4) = (z[0], z[1], z[2], z[3]);
+        let r = S::ONE + d * (z2.x + z3.x + z4.x);
+        *o = Point::new(z1.x * r, z1.y * r);
+        for (zj, sj) in z.iter_mut().zip(step.iter()) {
+            *zj = rot(*zj, sj.y, sj.x);
+        }
+    }
+    let a2 = crate::geom::edges(&out).fold(S::ZERO, |s, (a, b)| s + a.cross(b));
+    (out, a2)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
 
-    #[test]
-    fn area_and_scale_round_trip() {
-        for k in [ShapeKind::Circle, ShapeKind::Square, ShapeKind::Rect { aspect: 2.5 }] {
-            let s = k.scale_for_area(123.0);
-            assert!((k.area_for_scale(s) - 123.0).abs() < 1e-12);
+    fn area(g: &Geo<f64>) -> f64 {
+        match *g {
+            Geo::Circle { r, .. } => core::f64::consts::PI * r * r,
+            Geo::Ring { r, inner, .. } => core::f64::consts::PI * (r * r - inner * inner),
+            Geo::Poly { .. } => g.poly_area2() / 2.0,
         }
     }
 
     #[test]
-    fn rotated_square_is_ccw_and_has_right_area() {
-        let g = ShapeKind::Square.geo(Point::new(1.0, 2.0), 0.5f64, 0.7);
-        let v = g.vertices();
-        let mut a2 = 0.0;
-        for i in 0..4 {
-            let (p, q) = (v[i], v[(i + 1) % 4]);
-            a2 += p.x * q.y - q.x * p.y;
+    fn every_kind_has_the_area_asked_for_and_is_ccw() {
+        let kinds = [
+            ShapeKind::Circle,
+            ShapeKind::Square,
+            ShapeKind::Rect { aspect: 2.5 },
+            ShapeKind::Triangle,
+            ShapeKind::Polygon { sides: 7 },
+            ShapeKind::Star { points: 5, inner: 0.4 },
+            ShapeKind::Ring { inner: 0.6 },
+            ShapeKind::Blob { delta: 0.2 },
+        ];
+        for k in kinds {
+            assert!(k.is_valid());
+            for angle in [0.0, 0.7, 4.0] {
+                let s: f64 = k.scale_for(123.0, angle);
+                let g = k.geo(Point::new(1.0, 2.0), s, angle);
+                assert!((area(&g) - 123.0).abs() < 1e-9, "{k:?} {angle}: {}", area(&g));
+                if let Geo::Poly { .. } = g {
+                    assert!(g.poly_area2() > 0.0);
+                    let r = k.bounding_radius(s);
+                    assert!(g.max_dist2(Point::new(1.0, 2.0)) <= r * r * (1.0 + 1e-12), "{k:?}");
+                }
+            }
         }
-        assert!((a2 / 2.0 - 1.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn invalid_proportions_are_rejected() {
+        assert!(!ShapeKind::Ring { inner: 1.0 }.is_valid());
+        assert!(!ShapeKind::Star { points: 1, inner: 0.5 }.is_valid());
+        assert!(!ShapeKind::Star { points: 5, inner: 0.0 }.is_valid());
+        assert!(!ShapeKind::Polygon { sides: 2 }.is_valid());
+        assert!(!ShapeKind::Polygon { sides: 49 }.is_valid());
+        assert!(!ShapeKind::Blob { delta: 1.0 / 3.0 }.is_valid());
+        assert!(!ShapeKind::Blob { delta: f64::NAN }.is_valid());
+        assert!(!ShapeKind::Rect { aspect: 0.0 }.is_valid());
+    }
+
+    #[test]
+    fn blob_phases_change_with_the_angle() {
+        let k = ShapeKind::Blob { delta: 0.25 };
+        let a = k.geo(Point::new(0.0, 0.0), 1.0f64, 0.3);
+        let b = k.geo(Point::new(0.0, 0.0), 1.0f64, 0.30000000001);
+        assert_ne!(a, b);
+        assert_eq!(a, k.geo(Point::new(0.0, 0.0), 1.0f64, 0.3));
     }
 }

@@ -4,7 +4,7 @@
 //! The file is parsed by usvg, which resolves transforms, units and shapes (rect, circle,
 //! ellipse, polygon are paths to it). Coordinates come out in CSS pixels (96 per inch) and
 //! are converted to mm (25.4 / 96 mm per px), with y flipped about the document's height.
-//! Curves are flattened so that no chord is longer than 0.5 mm, with at least 8 pieces per
+//! Coordinates are rounded to 1e-4 mm (usvg computes in f32). Curves are flattened so that no chord is longer than 0.5 mm, with at least 8 pieces per
 //! curve. Rings inside other rings are holes (the even-odd rule). Subpaths that are not
 //! closed are ignored; a file with none is an error.
 
@@ -54,7 +54,9 @@ fn flatten(p: &usvg::Path, height: f64, rings: &mut Vec<Vec<Point<f64>>>) {
         let (x, y) = (f64::from(x), f64::from(y));
         let (sx, ky, kx, sy, tx, ty) = (f64::from(ts.sx), f64::from(ts.ky), f64::from(ts.kx), f64::from(ts.sy), f64::from(ts.tx), f64::from(ts.ty));
         let (px, py) = (sx * x + kx * y + tx, ky * x + sy * y + ty);
-        Point::new(px * MM_PER_PX, (height - py) * MM_PER_PX)
+        // usvg works in f32: round to 1e-4 mm (0.1 µm) so that "90" reads back as 90.
+        let snap = |v: f64| (v * 1e4).round() / 1e4;
+        Point::new(snap(px * MM_PER_PX), snap((height - py) * MM_PER_PX))
     };
     let mut cur: Vec<Point<f64>> = Vec::new();
     let mut last = Point::new(0.0, 0.0);

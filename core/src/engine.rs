@@ -178,6 +178,14 @@ impl Stats {
     }
 }
 
+/// How many periods of length `p` a reach can span (at least 1, at most 64).
+fn periods<S: Scalar>(reach: S, p: S) -> i64 {
+    if p <= S::ZERO {
+        return 1;
+    }
+    (reach / p).floor_i64().saturating_add(1).clamp(1, 64)
+}
+
 /// The fill engine over caller-provided storage.
 #[derive(Debug)]
 pub struct Engine<'a, S: Scalar> {
@@ -339,13 +347,17 @@ impl<'a, S: Scalar> Engine<'a, S> {
         let (w, h) = self.period;
         for (level, max_r) in self.hash.occupied() {
             let reach = r + max_r + gap;
-            for oy in [S::ZERO, h, -h] {
-                for ox in [S::ZERO, w, -w] {
+            // Every image k W, l H of a stored shape whose reach can meet the candidate; one
+            // period each way unless a long shape in a narrow torus reaches further.
+            let (kx, ky) = (periods(reach, w), periods(reach, h));
+            for l in -ky..=ky {
+                for k in -kx..=kx {
+                    let (ox, oy) = (w * S::from_f64(k as f64), h * S::from_f64(l as f64));
                     let (qx, qy) = (x + ox, y + oy);
                     if qx + reach < S::ZERO || qx - reach > w || qy + reach < S::ZERO || qy - reach > h {
                         continue;
                     }
-                    let gi = g.shift(ox, oy);
+                    let gi = if k == 0 && l == 0 { *g } else { g.shift(ox, oy) };
                     if !test(level, reach, &gi, qx, qy) {
                         return false;
                     }
@@ -355,13 +367,27 @@ impl<'a, S: Scalar> Engine<'a, S> {
         true
     }
 
-    /// Whether a shape overlaps its own periodic images.
+    /// Whether a shape overlaps its own periodic images (all of them within its reach).
     fn self_overlaps(&self, g: &Geo<S>, r: S) -> bool {
         let (w, h) = self.period;
-        if r + r + self.gap < w.min(h) {
+        let reach = r + r + self.gap;
+        if reach < w.min(h) {
             return false;
         }
-        [(w, S::ZERO), (S::ZERO, h), (w, h), (w, -h)].iter().any(|&(dx, dy)| !separated(g, &g.shift(dx, dy), self.gap))
+        let (kx, ky) = (periods(reach, w), periods(reach, h));
+        for l in 0..=ky {
+            for k in -kx..=kx {
+                // Half of the lattice suffices: the image at -v overlaps iff the one at v does.
+                if l == 0 && k <= 0 {
+                    continue;
+                }
+                let (dx, dy) = (w * S::from_f64(k as f64), h * S::from_f64(l as f64));
+                if !separated(g, &g.shift(dx, dy), self.gap) {
+                    return true;
+                }
+            }
+        }
+        false
     }
 
     /// Whether a shape of this area certainly cannot lie in the region in any orientation.

@@ -37,6 +37,12 @@ const EM_START: f64 = 12.0;
 /// x^(1-s)/(s-1) + x^(-s)/2 + sum_j B_2j/(2j)! s(s+1)...(s+2j-2) x^(-s-2j+1).
 /// For s < 1 this is the analytic continuation, whose differences are finite sums.
 fn em_tail(s: f64, x: f64) -> f64 {
+    let (small, xs) = em_small(s, x);
+    small + x * xs / (s - 1.0)
+}
+
+/// The expansion without its leading term x^(1-s)/(s-1), and x^(-s).
+fn em_small(s: f64, x: f64) -> (f64, f64) {
     let xs = libm::pow(x, -s);
     let inv_x2 = 1.0 / (x * x);
     let mut terms = [0.0f64; 10];
@@ -52,7 +58,7 @@ fn em_tail(s: f64, x: f64) -> f64 {
     for t in terms.iter().rev() {
         sum += t;
     }
-    sum + 0.5 * xs + x * xs / (s - 1.0)
+    (sum + 0.5 * xs, xs)
 }
 
 /// The asymptotic expansion of the digamma function for x >= EM_START.
@@ -106,10 +112,17 @@ fn partial_raw(s: f64, a: f64, n: u64) -> f64 {
     }
     let lo = a + m as f64;
     let hi = a + count as f64;
+    // ln(hi / lo) from the exact count of terms, so that a huge a loses nothing.
+    let log_ratio = libm::log1p((count - m) as f64 / lo);
     let tail = if s == 1.0 {
-        digamma_asym(hi) - digamma_asym(lo)
+        // psi(hi) - psi(lo): ln(hi/lo) plus the small terms.
+        log_ratio + (digamma_asym(hi) - libm::log(hi)) - (digamma_asym(lo) - libm::log(lo))
     } else {
-        em_tail(s, lo) - em_tail(s, hi)
+        // The leading terms (lo^(1-s) - hi^(1-s)) / (s - 1), written with expm1 so that
+        // neither s near 1 nor hi near lo cancels; then the small Euler–Maclaurin terms.
+        let t = 1.0 - s;
+        let lead = libm::pow(lo, t) * (libm::expm1(t * log_ratio) / t);
+        lead + (em_small(s, lo).0 - em_small(s, hi).0)
     };
     tail + direct_sum(s, a, 0, m)
 }

@@ -424,26 +424,20 @@ fn replay(case: &Case, r: &Run, e_area_of: impl Fn(u64) -> f64) -> Result<(), St
             let (x0, y0, x1, y1) = kind.geo(Point::new(0.0, 0.0), scale, 0.0).bounds();
             ((-x0).max(x1), (-y0).max(y1))
         };
-        let range = Some(region.centre_range(ex, ey, case.gap).unwrap_or((0.0, 0.0, 0.0, 0.0)));
+        let (x0, x1, y0, y1) = region.centre_range(ex, ey, case.gap).unwrap_or((0.0, 0.0, 0.0, 0.0));
         for t in 1..=pl.trials {
             let angle = if rotated { unit(&mut rng) * std::f64::consts::TAU } else { 0.0 };
             let (ux, uy) = (unit(&mut rng), unit(&mut rng));
             let (sin, cos) = if rotated { ShapeKind::sin_cos(angle) } else { (0.0, 1.0) };
-            let accepted = match range {
-                None => false,
-                Some((x0, x1, y0, y1)) => {
-                    let c = region.wrap(Point::new(x0 + ux * (x1 - x0), y0 + uy * (y1 - y0)));
-                    let g = kind.geo_sc(c, scale, sin, cos);
-                    let ok = brute_accepts(case, &r.items[..i], &g);
-                    if ok && t == pl.trials {
-                        let s = Placed { x: c.x, y: c.y, scale, angle };
-                        if placed_bits(&s) != placed_bits(&pl.shape) {
-                            return Err(format!("placement {i}: replayed {s:?}, engine placed {:?}", pl.shape));
-                        }
-                    }
-                    ok
+            let c = region.wrap(Point::new(x0 + ux * (x1 - x0), y0 + uy * (y1 - y0)));
+            let g = kind.geo_sc(c, scale, sin, cos);
+            let accepted = brute_accepts(case, &r.items[..i], &g);
+            if accepted && t == pl.trials {
+                let s = Placed { x: c.x, y: c.y, scale, angle };
+                if placed_bits(&s) != placed_bits(&pl.shape) {
+                    return Err(format!("placement {i}: replayed {s:?}, engine placed {:?}", pl.shape));
                 }
-            };
+            }
             if accepted != (t == pl.trials) {
                 return Err(format!(
                     "placement {i}, trial {t} of {}: brute force {} the candidate, the engine did the opposite",
@@ -1174,15 +1168,13 @@ proptest! {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Known core bug (ignored so the suite stays green; run with `--ignored`).
+// Regression: images more than one period away.
 // ---------------------------------------------------------------------------------------------
 
-/// In a periodic region `Engine::clear` tests a candidate only against the images one period
-/// away (offsets 0, ±W, ±H), and `self_overlaps` only its own images one period away. A rotated
-/// elongated shape in a narrow torus can reach more than one period: here shape 1's image two
-/// periods to the right, (x + 2W, y), overlaps shape 0, and the engine accepts it.
+/// A rotated elongated shape in a narrow torus can reach more than one period. `Engine::clear`
+/// once tested only the images one period away, so shape 1's image two periods to the right,
+/// (x + 2W, y), overlapped shape 0 and was accepted. Now every image within reach is tested.
 #[test]
-#[ignore = "core bug: periodic image tests stop one period away (engine.rs clear/self_overlaps)"]
 fn periodic_images_beyond_one_period_are_tested() {
     let case = Case {
         seed: 19,

@@ -178,10 +178,10 @@ fn checker_detects_a_perturbed_reference() {
     }
 }
 
-// Known core bug (ignored so the suite stays green; run with `--ignored`): `partial_raw`
-// (src/zeta_math.rs) computes the Euler–Maclaurin part as `em_tail(s, lo) - em_tail(s, hi)`.
-// Each term holds x^(1-s)/(s-1), which is huge when s is near 1 (s != 1) or nearly equal at lo
-// and hi when a >> n, so the difference cancels catastrophically. References: mpmath at 50
+// Regression: `partial_raw` (src/zeta_math.rs) once computed the Euler–Maclaurin part as
+// `em_tail(s, lo) - em_tail(s, hi)`. Each term holds x^(1-s)/(s-1), which is huge when s is
+// near 1 (s != 1) or nearly equal at lo and hi when a >> n, so the difference cancelled
+// catastrophically; it is now written with expm1/log1p. References: mpmath at 50
 // digits (checked at 90), zeta(s, a) - zeta(s, a + n + 1).
 const PARTIAL_CANCELLATION: [(f64, f64, u64, f64); 7] = [
     (0.9999999, 1.0, 10_000_000, 16.69532444823584177929954),
@@ -194,7 +194,7 @@ const PARTIAL_CANCELLATION: [(f64, f64, u64, f64); 7] = [
 ];
 
 #[test]
-#[ignore = "core bug: partial_sum cancels catastrophically for s near 1 or a >> n (zeta_math.rs partial_raw)"]
+
 fn partial_sum_near_s_1_is_accurate() {
     let rows: Vec<Row> = PARTIAL_CANCELLATION
         .iter()

@@ -106,8 +106,16 @@ fn region_node(doc: &FillDoc, f: &Frame) -> Path {
 /// The (dx, dy) images of a shape that can show inside a periodic region.
 fn images(sh: &ShapeDoc, w: f64, h: f64) -> Vec<(f64, f64)> {
     let (x0, y0, x1, y1) = bounds(sh);
-    let xs: Vec<f64> = [0.0, w, -w].into_iter().filter(|&d| x1 + d > 0.0 && x0 + d < w).collect();
-    let ys: Vec<f64> = [0.0, h, -h].into_iter().filter(|&d| y1 + d > 0.0 && y0 + d < h).collect();
+    // Every period shift that brings the shape's box into the tile (usually 0 or ±1).
+    let shifts = |lo: f64, hi: f64, p: f64| -> Vec<f64> {
+        let k0 = (-hi / p).floor() as i64;
+        let k1 = ((p - lo) / p).ceil() as i64;
+        let mut ks: Vec<i64> = (k0..=k1).collect();
+        // The shape itself first, then its images nearest first.
+        ks.sort_by_key(|k| (k.abs(), -k));
+        ks.into_iter().map(|k| k as f64 * p).filter(|&d| hi + d > 0.0 && lo + d < p).collect()
+    };
+    let (xs, ys) = (shifts(x0, x1, w), shifts(y0, y1, h));
     ys.iter().flat_map(|&dy| xs.iter().map(move |&dx| (dx, dy))).collect()
 }
 

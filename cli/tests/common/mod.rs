@@ -1,0 +1,561 @@
+//! Shared helpers of the `zetafill` end-to-end tests: running the binary in a temporary
+//! folder, reading its JSON, and geometry checkers written independently of the core.
+
+#![allow(dead_code)]
+
+use serde_json::Value;
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+/// The result of one run of the binary.
+#[derive(Debug)]
+pub struct Out {
+    /// Exit code (-1 if killed by a signal).
+    pub code: i32,
+    /// Raw standard output.
+    pub stdout: Vec<u8>,
+    /// Standard error as text.
+    pub stderr: String,
+}
+
+/// Runs `zetafill ARGS` with `dir` as the working folder.
+pub fn zf(dir: &Path, args: &[&str]) -> Out {
+    let out = Command::new(env!("CARGO_BIN_EXE_zetafill"))
+        .args(args)
+        .current_dir(dir)
+        .output()
+        .unwrap_or_else(|e| panic!("cannot run zetafill: {e}"));
+    Out { code: out.status.code().unwrap_or(-1), stdout: out.stdout, stderr: String::from_utf8_lossy(&out.stderr).into_owned() }
+}
+
+/// Runs `zetafill ARGS` and asserts exit code 0.
+pub fn zf_ok(dir: &Path, args: &[&str]) -> Out {
+    let o = zf(dir, args);
+    assert_eq!(o.code, 0, "zetafill {args:?} failed: {}", o.stderr);
+    o
+}
+
+/// A fresh temporary folder.
+pub fn tmp() -> tempfile::TempDir {
+    tempfile::Builder::new().prefix("zetafill-cli-test-").tempdir().unwrap_or_else(|e| panic!("tempdir: {e}"))
+}
+
+/// Reads a file (panics with the path on failure).
+pub fn read(p: &Path) -> Vec<u8> {
+    std::fs::read(p).unwrap_or_else(|e| panic!("cannot read {}: {e}", p.display()))
+}
+
+/// Parses JSON bytes.
+pub fn parse_json(bytes: &[u8]) -> Value {
+    serde_json::from_slice(bytes).unwrap_or_else(|e| panic!("bad JSON ({e}): {}", String::from_utf8_lossy(bytes)))
+}
+
+/// Runs `fill ARGS -o NAME` in `dir` (exit 0 required) and returns the file's bytes.
+pub fn fill_to(dir: &Path, name: &str, args: &[&str]) -> Vec<u8> {
+    let mut a: Vec<&str> = vec!["fill"];
+    a.extend_from_slice(args);
+    a.extend_from_slice(&["-o", name]);
+    zf_ok(dir, &a);
+    read(&dir.join(name))
+}
+
+/// Runs a fill to JSON and returns the document.
+pub fn fill_json(dir: &Path, args: &[&str]) -> Value {
+    parse_json(&fill_to(dir, "out.json", args))
+}
+
+/// The names of the entries of a folder, sorted.
+pub fn listing(dir: &Path) -> Vec<PathBuf> {
+    let mut v: Vec<PathBuf> = std::fs::read_dir(dir)
+        .unwrap_or_else(|e| panic!("read_dir {}: {e}", dir.display()))
+        .map(|e| e.map(|e| e.path()).unwrap_or_default())
+        .collect();
+    v.sort();
+    v
+}
+
+// ---------------------------------------------------------------------------------------------
+// JSON access
+
+/// `v[key]` as f64.
+pub fn f(v: &Value, key: &str) -> f64 {
+    v.get(key).and_then(Value::as_f64).unwrap_or_else(|| panic!("'{key}' is not a number in {v}"))
+}
+
+/// `v[key]` as u64.
+pub fn u(v: &Value, key: &str) -> u64 {
+    v.get(key).and_then(Value::as_u64).unwrap_or_else(|| panic!("'{key}' is not an unsigned integer in {v}"))
+}
+
+/// `v[key]` as str.
+pub fn s<'a>(v: &'a Value, key: &str) -> &'a str {
+    v.get(key).and_then(Value::as_str).unwrap_or_else(|| panic!("'{key}' is not a string in {v}"))
+}
+
+/// `v[key]` as bool.
+pub fn b(v: &Value, key: &str) -> bool {
+    v.get(key).and_then(Value::as_bool).unwrap_or_else(|| panic!("'{key}' is not a bool in {v}"))
+}
+
+/// `v` as a point `[x, y]`.
+pub fn pt(v: &Value) -> [f64; 2] {
+    let a = v.as_array().unwrap_or_else(|| panic!("not a point: {v}"));
+    assert_eq!(a.len(), 2, "a point has two coordinates: {v}");
+    let c = |i: usize| a.get(i).and_then(Value::as_f64).unwrap_or_else(|| panic!("bad coordinate in {v}"));
+    [c(0), c(1)]
+}
+
+/// The shapes array of a fill document.
+pub fn shapes(doc: &Value) -> &Vec<Value> {
+    doc.get("shapes").and_then(Value::as_array).unwrap_or_else(|| panic!("no shapes array"))
+}
+
+/// The sorted keys of an object.
+pub fn keys(v: &Value) -> Vec<String> {
+    let mut k: Vec<String> = v.as_object().unwrap_or_else(|| panic!("not an object: {v}")).keys().cloned().collect();
+    k.sort();
+    k
+}
+
+fn sorted(k: &[&str]) -> Vec<String> {
+    let mut v: Vec<String> = k.iter().map(|s| s.to_string()).collect();
+    v.sort();
+    v
+}
+
+/// Region (width, height, periodic) of a document.
+pub fn region(doc: &Value) -> (f64, f64, bool) {
+    let r = doc.get("region").unwrap_or_else(|| panic!("no region"));
+    (f(r, "width"), f(r, "height"), b(r, "periodic"))
+}
+
+/// Relative difference.
+pub fn rel(a: f64, b: f64) -> f64 {
+    if a == b {
+        0.0
+    } else {
+        (a - b).abs() / a.abs().max(b.abs())
+    }
+}
+
+/// Shoelace area (absolute).
+pub fn shoelace(vs: &[[f64; 2]]) -> f64 {
+    let n = vs.len();
+    let mut a2 = 0.0;
+    for i in 0..n {
+        let (p, q) = (vs[i], vs[(i + 1) % n]);
+        a2 += p[0] * q[1] - q[0] * p[1];
+    }
+    (a2 / 2.0).abs()
+}
+
+// ---------------------------------------------------------------------------------------------
+// The document contract (DESIGN section 3)
+
+/// What a run was asked for.
+#[derive(Debug, Clone, Copy)]
+pub struct Expect<'a> {
+    /// `--shape` as written ("circle", "square", "rect:2.5").
+    pub shape: &'a str,
+    /// Expected `params.rotate`.
+    pub rotate: &'a str,
+    /// c.
+    pub c: f64,
+    /// N.
+    pub n_offset: f64,
+    /// Seed.
+    pub seed: u64,
+    /// Region width and height.
+    pub w: f64,
+    /// Region height.
+    pub h: f64,
+    /// Periodic region.
+    pub periodic: bool,
+    /// `--count`, if the run used one (then exactly this many shapes unless halted).
+    pub count: Option<u64>,
+    /// Gap.
+    pub gap: f64,
+    /// Trial limit.
+    pub max_trials: u64,
+}
+
+impl Default for Expect<'_> {
+    fn default() -> Self {
+        Expect {
+            shape: "circle",
+            rotate: "none",
+            c: 1.3,
+            n_offset: 1.0,
+            seed: 1,
+            w: 100.0,
+            h: 80.0,
+            periodic: false,
+            count: None,
+            gap: 0.0,
+            max_trials: 10_000_000,
+        }
+    }
+}
+
+/// The kind name a `--shape` value gives in the shapes list.
+pub fn kind_of(shape: &str) -> &'static str {
+    if shape == "circle" {
+        "circle"
+    } else if shape == "square" {
+        "square"
+    } else if shape.starts_with("rect:") {
+        "rect"
+    } else {
+        panic!("unknown shape {shape}")
+    }
+}
+
+/// Aspect ratio (width over height) of a `--shape` value (1 for circle and square).
+pub fn aspect_of(shape: &str) -> f64 {
+    shape.strip_prefix("rect:").map(|a| a.parse::<f64>().unwrap_or_else(|_| panic!("bad aspect {a}"))).unwrap_or(1.0)
+}
+
+/// Checks keys, types and every number of a fill document that follows from the others.
+/// Returns whether the run was halted.
+pub fn check_doc(doc: &Value, e: &Expect) -> bool {
+    assert_eq!(
+        keys(doc),
+        sorted(&["version", "mode", "params", "region", "area", "zeta", "shapes", "stats"]),
+        "top-level keys"
+    );
+    assert_eq!(doc.get("version").and_then(Value::as_u64), Some(1), "version");
+    assert_eq!(s(doc, "mode"), "fill");
+
+    // params
+    let p = doc.get("params").unwrap_or_else(|| panic!("no params"));
+    let pk = keys(p);
+    for k in ["c", "n_offset", "seed", "shape", "rotate", "sampler", "gap", "max_trials"] {
+        assert!(pk.contains(&k.to_string()), "params lacks {k}: {p}");
+    }
+    let allowed = ["c", "n_offset", "seed", "shape", "rotate", "sampler", "gap", "count", "fill", "min_size", "max_trials", "dimension"];
+    for k in &pk {
+        assert!(allowed.contains(&k.as_str()), "unexpected params key {k}");
+    }
+    assert!(p.get("c").is_some_and(Value::is_f64), "c is a float");
+    assert!(p.get("n_offset").is_some_and(Value::is_f64), "n_offset is a float");
+    assert!(p.get("gap").is_some_and(Value::is_f64), "gap is a float");
+    assert_eq!(f(p, "c"), e.c, "params.c");
+    assert_eq!(f(p, "n_offset"), e.n_offset, "params.n_offset");
+    assert_eq!(u(p, "seed"), e.seed, "params.seed");
+    assert_eq!(s(p, "shape"), e.shape, "params.shape");
+    assert_eq!(s(p, "rotate"), e.rotate, "params.rotate");
+    assert_eq!(s(p, "sampler"), "reference", "params.sampler");
+    assert_eq!(f(p, "gap"), e.gap, "params.gap");
+    assert_eq!(u(p, "max_trials"), e.max_trials, "params.max_trials");
+    if let Some(k) = e.count {
+        assert_eq!(u(p, "count"), k, "params.count");
+    }
+
+    // region
+    let r = doc.get("region").unwrap_or_else(|| panic!("no region"));
+    assert_eq!(keys(r), sorted(&["kind", "width", "height", "periodic"]), "region keys");
+    assert_eq!(s(r, "kind"), "rect");
+    assert!(r.get("width").is_some_and(Value::is_f64) && r.get("height").is_some_and(Value::is_f64));
+    assert_eq!(f(r, "width"), e.w);
+    assert_eq!(f(r, "height"), e.h);
+    assert_eq!(b(r, "periodic"), e.periodic);
+    let area = f(doc, "area");
+    assert_eq!(area, e.w * e.h, "area == width * height");
+    let zeta = f(doc, "zeta");
+    assert!(zeta.is_finite() && zeta > 0.0);
+
+    // shapes
+    let kind = kind_of(e.shape);
+    let aspect = aspect_of(e.shape);
+    let list = shapes(doc);
+    let mut trial_sum = 0u64;
+    let mut area_sum = 0.0;
+    for (i, sh) in list.iter().enumerate() {
+        let want_keys: &[&str] = if kind == "circle" {
+            &["index", "kind", "center", "radius", "area", "trials"]
+        } else {
+            &["index", "kind", "center", "angle", "area", "trials", "vertices"]
+        };
+        assert_eq!(keys(sh), sorted(want_keys), "keys of shape {i}");
+        assert_eq!(u(sh, "index"), i as u64, "shapes in index order");
+        assert_eq!(s(sh, "kind"), kind);
+        let c = pt(sh.get("center").unwrap_or(&Value::Null));
+        let a = f(sh, "area");
+        let t = u(sh, "trials");
+        assert!(t >= 1, "shape {i} took {t} trials");
+        assert!(t <= e.max_trials);
+        trial_sum += t;
+        area_sum += a;
+        let want = area / (zeta * (i as f64 + e.n_offset).powf(e.c));
+        assert!(rel(a, want) <= 1e-12, "shape {i}: area {a} != A/(zeta (i+N)^c) = {want}");
+        if kind == "circle" {
+            let r = f(sh, "radius");
+            assert!(rel(std::f64::consts::PI * r * r, a) <= 1e-9, "shape {i}: radius {r} does not give area {a}");
+        } else {
+            let angle = f(sh, "angle");
+            let vs: Vec<[f64; 2]> = sh
+                .get("vertices")
+                .and_then(Value::as_array)
+                .unwrap_or_else(|| panic!("vertices"))
+                .iter()
+                .map(pt)
+                .collect();
+            assert_eq!(vs.len(), 4, "shape {i} has 4 vertices");
+            assert!(rel(shoelace(&vs), a) <= 1e-9, "shape {i}: polygon area {} != {a}", shoelace(&vs));
+            if e.rotate == "none" {
+                assert_eq!(angle, 0.0, "shape {i} rotated with --rotate none");
+            }
+            // The vertices are the rectangle of that area, aspect and angle about the centre.
+            let hh = (a / (4.0 * aspect)).sqrt();
+            let hw = aspect * hh;
+            let (sn, cs) = angle.sin_cos();
+            let size = hw.max(hh);
+            let mut found = 0;
+            for (sx, sy) in [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)] {
+                let (dx, dy) = (sx * hw, sy * hh);
+                let q = [c[0] + dx * cs - dy * sn, c[1] + dx * sn + dy * cs];
+                if vs.iter().any(|v| (v[0] - q[0]).hypot(v[1] - q[1]) <= 1e-9 * size.max(1.0)) {
+                    found += 1;
+                }
+            }
+            assert_eq!(found, 4, "shape {i}: vertices {vs:?} are not the {e:?} rectangle at {c:?}, angle {angle}");
+        }
+    }
+
+    // stats
+    let st = doc.get("stats").unwrap_or_else(|| panic!("no stats"));
+    let sk = keys(st);
+    for k in ["placed", "trials", "fill_fraction", "halted"] {
+        assert!(sk.contains(&k.to_string()), "stats lacks {k}");
+    }
+    assert_eq!(u(st, "placed"), list.len() as u64, "stats.placed");
+    let halted = b(st, "halted");
+    if halted {
+        // The halted placement's trials count too (core Stats).
+        assert_eq!(u(st, "trials"), trial_sum + e.max_trials, "stats.trials of a halted run");
+    } else {
+        assert_eq!(u(st, "trials"), trial_sum, "stats.trials == sum of shape trials");
+        if let Some(k) = e.count {
+            if sk.contains(&"stop".to_string()) && s(st, "stop") == "count" {
+                assert_eq!(list.len() as u64, k, "count");
+            }
+        }
+    }
+    let ff = f(st, "fill_fraction");
+    assert!((ff - area_sum / area).abs() <= 1e-12, "fill_fraction {ff} != {}", area_sum / area);
+    halted
+}
+
+// ---------------------------------------------------------------------------------------------
+// Geometry, independent of the core
+
+/// A shape's geometry.
+#[derive(Debug, Clone, PartialEq)]
+pub enum G {
+    /// A disc.
+    Circle {
+        /// Centre.
+        c: [f64; 2],
+        /// Radius.
+        r: f64,
+    },
+    /// A convex polygon (either orientation).
+    Poly(Vec<[f64; 2]>),
+}
+
+impl G {
+    /// From a JSON shape.
+    pub fn from_json(sh: &Value) -> G {
+        if let Some(r) = sh.get("radius").and_then(Value::as_f64) {
+            G::Circle { c: pt(sh.get("center").unwrap_or(&Value::Null)), r }
+        } else {
+            let vs = sh.get("vertices").and_then(Value::as_array).unwrap_or_else(|| panic!("no vertices in {sh}"));
+            G::Poly(vs.iter().map(pt).collect())
+        }
+    }
+
+    /// Shifted copy.
+    pub fn shift(&self, dx: f64, dy: f64) -> G {
+        match self {
+            G::Circle { c, r } => G::Circle { c: [c[0] + dx, c[1] + dy], r: *r },
+            G::Poly(vs) => G::Poly(vs.iter().map(|v| [v[0] + dx, v[1] + dy]).collect()),
+        }
+    }
+
+    /// Bounding box (x0, y0, x1, y1).
+    pub fn bounds(&self) -> (f64, f64, f64, f64) {
+        match self {
+            G::Circle { c, r } => (c[0] - r, c[1] - r, c[0] + r, c[1] + r),
+            G::Poly(vs) => vs.iter().fold((f64::INFINITY, f64::INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY), |b, v| {
+                (b.0.min(v[0]), b.1.min(v[1]), b.2.max(v[0]), b.3.max(v[1]))
+            }),
+        }
+    }
+
+    /// A bounding circle (centre of the bounding box, half diagonal).
+    fn bcircle(&self) -> ([f64; 2], f64) {
+        match self {
+            G::Circle { c, r } => (*c, *r),
+            G::Poly(_) => {
+                let (x0, y0, x1, y1) = self.bounds();
+                ([(x0 + x1) / 2.0, (y0 + y1) / 2.0], (x1 - x0).hypot(y1 - y0) / 2.0)
+            }
+        }
+    }
+}
+
+fn seg_dist(p: [f64; 2], a: [f64; 2], b: [f64; 2]) -> f64 {
+    let (ex, ey) = (b[0] - a[0], b[1] - a[1]);
+    let len2 = ex * ex + ey * ey;
+    let t = if len2 > 0.0 { (((p[0] - a[0]) * ex + (p[1] - a[1]) * ey) / len2).clamp(0.0, 1.0) } else { 0.0 };
+    (p[0] - (a[0] + t * ex)).hypot(p[1] - (a[1] + t * ey))
+}
+
+fn edges(vs: &[[f64; 2]]) -> impl Iterator<Item = ([f64; 2], [f64; 2])> + '_ {
+    (0..vs.len()).map(move |i| (vs[i], vs[(i + 1) % vs.len()]))
+}
+
+fn inside_poly(p: [f64; 2], vs: &[[f64; 2]]) -> bool {
+    let (mut pos, mut neg) = (false, false);
+    for (a, b) in edges(vs) {
+        let cr = (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0]);
+        if cr > 0.0 {
+            pos = true;
+        }
+        if cr < 0.0 {
+            neg = true;
+        }
+    }
+    !(pos && neg)
+}
+
+/// Separating-axis test over the edge normals of both polygons: the largest gap between the
+/// projections (negative when every axis overlaps, i.e. the polygons intersect).
+pub fn sat_gap(a: &[[f64; 2]], b: &[[f64; 2]]) -> f64 {
+    let mut best = f64::NEG_INFINITY;
+    for (p, q) in edges(a).chain(edges(b)) {
+        let (nx, ny) = (q[1] - p[1], p[0] - q[0]);
+        let len = nx.hypot(ny);
+        if len == 0.0 {
+            continue;
+        }
+        let proj = |vs: &[[f64; 2]]| {
+            vs.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |m, v| {
+                let d = (v[0] * nx + v[1] * ny) / len;
+                (m.0.min(d), m.1.max(d))
+            })
+        };
+        let (a0, a1) = proj(a);
+        let (b0, b1) = proj(b);
+        best = best.max((b0 - a1).max(a0 - b1));
+    }
+    best
+}
+
+/// Clearance between two shapes: the Euclidean distance when they are disjoint, <= 0 when
+/// they touch or overlap.
+pub fn clearance(a: &G, b: &G) -> f64 {
+    match (a, b) {
+        (G::Circle { c: c1, r: r1 }, G::Circle { c: c2, r: r2 }) => (c1[0] - c2[0]).hypot(c1[1] - c2[1]) - r1 - r2,
+        (G::Circle { c, r }, G::Poly(vs)) | (G::Poly(vs), G::Circle { c, r }) => {
+            if inside_poly(*c, vs) {
+                return -r;
+            }
+            edges(vs).map(|(p, q)| seg_dist(*c, p, q)).fold(f64::INFINITY, f64::min) - r
+        }
+        (G::Poly(pa), G::Poly(pb)) => {
+            let g = sat_gap(pa, pb);
+            if g <= 0.0 {
+                return g;
+            }
+            // Disjoint convex polygons: the distance is reached between a vertex and an edge.
+            let mut d = f64::INFINITY;
+            for (x, y) in [(pa, pb), (pb, pa)] {
+                for v in x.iter() {
+                    for (p, q) in edges(y) {
+                        d = d.min(seg_dist(*v, p, q));
+                    }
+                }
+            }
+            d
+        }
+    }
+}
+
+/// Tolerance of the geometry checks (mm).
+pub const EPS: f64 = 1e-9;
+
+/// Every pair of shapes (and, for a periodic region, every shape against the images of all
+/// shapes, itself included, shifted by ±W, ±H) keeps at least `gap` clearance. Returns one
+/// message per violation.
+pub fn check_overlaps(doc: &Value) -> Vec<String> {
+    let (w, h, periodic) = region(doc);
+    let gap = doc.get("params").map(|p| f(p, "gap")).unwrap_or(0.0);
+    let gs: Vec<G> = shapes(doc).iter().map(G::from_json).collect();
+    let bc: Vec<([f64; 2], f64)> = gs.iter().map(G::bcircle).collect();
+    let shifts: Vec<(f64, f64)> = if periodic {
+        [-1.0, 0.0, 1.0].iter().flat_map(|&i| [-1.0, 0.0, 1.0].iter().map(move |&j| (i * w, j * h))).collect()
+    } else {
+        vec![(0.0, 0.0)]
+    };
+    let mut errs = Vec::new();
+    for i in 0..gs.len() {
+        for j in i..gs.len() {
+            for &(dx, dy) in &shifts {
+                if i == j && dx == 0.0 && dy == 0.0 {
+                    continue;
+                }
+                let (ci, ri) = bc[i];
+                let (cj, rj) = bc[j];
+                if (ci[0] - cj[0] - dx).hypot(ci[1] - cj[1] - dy) > ri + rj + gap + 1e-6 {
+                    continue;
+                }
+                let d = clearance(&gs[i], &gs[j].shift(dx, dy));
+                if d < gap - EPS {
+                    errs.push(format!("shapes {i} and {j} (shifted by {dx}, {dy}) are {d} mm apart, less than the gap {gap}"));
+                }
+            }
+        }
+    }
+    errs
+}
+
+/// Inclusive regions: every shape inside [gap, W-gap] x [gap, H-gap]. Periodic regions: every
+/// centre in [0, W) x [0, H).
+pub fn check_inside(doc: &Value) -> Vec<String> {
+    let (w, h, periodic) = region(doc);
+    let gap = doc.get("params").map(|p| f(p, "gap")).unwrap_or(0.0);
+    let mut errs = Vec::new();
+    for (i, sh) in shapes(doc).iter().enumerate() {
+        if periodic {
+            let c = pt(sh.get("center").unwrap_or(&Value::Null));
+            if !(c[0] >= 0.0 && c[0] < w && c[1] >= 0.0 && c[1] < h) {
+                errs.push(format!("shape {i}: centre {c:?} outside [0,{w})x[0,{h})"));
+            }
+        } else {
+            let (x0, y0, x1, y1) = G::from_json(sh).bounds();
+            if x0 < gap - EPS || y0 < gap - EPS || x1 > w - gap + EPS || y1 > h - gap + EPS {
+                errs.push(format!("shape {i}: bounds ({x0}, {y0}, {x1}, {y1}) outside the region {w}x{h} less gap {gap}"));
+            }
+        }
+    }
+    errs
+}
+
+/// Both geometry checks; panics listing the first violations.
+pub fn assert_geometry(doc: &Value) {
+    let mut errs = check_inside(doc);
+    errs.extend(check_overlaps(doc));
+    assert!(errs.is_empty(), "{} geometry errors, first: {:?}", errs.len(), &errs[..errs.len().min(5)]);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Messages
+
+/// Whether `text` mentions `flag` as a whole word (so "--c" is not found in "--count").
+pub fn names_flag(text: &str, flag: &str) -> bool {
+    text.match_indices(flag).any(|(i, _)| {
+        let next = text[i + flag.len()..].chars().next();
+        !next.is_some_and(|ch| ch.is_ascii_alphanumeric() || ch == '-' || ch == '_')
+    })
+}

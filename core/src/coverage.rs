@@ -203,14 +203,23 @@ impl<'a, S: Scalar> Coverage<'a, S> {
                     }
                 }
                 Geo::Poly { .. } => {
+                    // Convex: the left boundary x = L(y) is convex and the right one R(y)
+                    // concave, so over the band [ya - m, yb + m] the inner interval is fixed
+                    // by the band's two edges. Cells inside [L + m, R - m] lie inside the
+                    // polygon with margin m on every side.
                     let vs = geo.vertices();
-                    for cx in cx0..=cx1 {
-                        let xa = self.cell_x(cx);
-                        let xb = xa + self.cw;
-                        let corners = [Point::new(xa, ya), Point::new(xb, ya), Point::new(xb, yb), Point::new(xa, yb)];
-                        if corners.iter().all(|&p| inside_with_margin(p, vs, self.margin)) {
-                            self.set(cx, cy);
-                        }
+                    let m = self.margin;
+                    let (Some((l0, r0)), Some((l1, r1))) = (x_range(vs, ya - m), x_range(vs, yb + m)) else { continue };
+                    let (lo, hi) = (l0.max(l1) + m, r0.min(r1) - m);
+                    if hi <= lo {
+                        continue;
+                    }
+                    let first = (to_cx(lo) + 1).max(cx0);
+                    let last = (to_cx(hi) - 1).min(cx1);
+                    let mut cx = first;
+                    while cx <= last {
+                        self.set(cx, cy);
+                        cx += 1;
                     }
                 }
                 Geo::Ring { .. } => return,
@@ -219,11 +228,20 @@ impl<'a, S: Scalar> Coverage<'a, S> {
     }
 }
 
-/// Whether `p` is inside a counter-clockwise convex polygon by more than `m` from every edge.
-fn inside_with_margin<S: Scalar>(p: Point<S>, vs: &[Point<S>], m: S) -> bool {
-    crate::geom::edges(vs).all(|(a, b)| {
-        let (ex, ey) = (b.x - a.x, b.y - a.y);
-        let cross = ex * (p.y - a.y) - ey * (p.x - a.x);
-        cross > m * (ex.abs() + ey.abs())
-    })
+/// The x-interval where the horizontal line at `y` crosses a convex polygon, or `None` when
+/// the line misses its interior (outside the polygon's y-range).
+fn x_range<S: Scalar>(vs: &[Point<S>], y: S) -> Option<(S, S)> {
+    let mut range: Option<(S, S)> = None;
+    for (a, b) in crate::geom::edges(vs) {
+        let (lo, hi) = if a.y <= b.y { (a, b) } else { (b, a) };
+        if y < lo.y || y > hi.y || hi.y == lo.y {
+            continue;
+        }
+        let x = lo.x + (hi.x - lo.x) * ((y - lo.y) / (hi.y - lo.y));
+        range = Some(match range {
+            None => (x, x),
+            Some((l, r)) => (l.min(x), r.max(x)),
+        });
+    }
+    range.filter(|(l, r)| r > l)
 }

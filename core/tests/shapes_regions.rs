@@ -1,0 +1,332 @@
+//! Every shape kind against every other, and every shape in every region.
+//!
+//! The pair table checks `geom::separated` for each unordered pair of kinds against an
+//! independent distance: both outlines sampled densely, overlap decided by point-in-material
+//! tests written here. The fills check, by brute force over all pairs (and periodic images),
+//! that no two shapes come within the gap, and, by sampling each outline against region
+//! membership written here, that every shape lies inside its region with its gap.
+
+use zetafill::geom::separated;
+use zetafill::{index_words, rng_from_seed, Engine, Geo, Params, Placed, Point, PolygonRegion, Region, ShapeKind, Stop, StopReason, Storage};
+
+const KINDS: [ShapeKind; 8] = [
+    ShapeKind::Circle,
+    ShapeKind::Square,
+    ShapeKind::Rect { aspect: 2.5 },
+    ShapeKind::Triangle,
+    ShapeKind::Polygon { sides: 6 },
+    ShapeKind::Star { points: 5, inner: 0.45 },
+    ShapeKind::Ring { inner: 0.6 },
+    ShapeKind::Blob { delta: 0.2 },
+];
+
+// ---------------------------------------------------------------------------------------------
+// Independent geometry: outlines as point samples, and material membership.
+
+fn outline(g: &Geo<f64>, per_edge: usize) -> Vec<Point<f64>> {
+    let circle = |c: Point<f64>, r: f64, n: usize| -> Vec<Point<f64>> {
+        (0..n).map(|k| {
+            let t = k as f64 / n as f64 * std::f64::consts::TAU;
+            Point::new(c.x + r * t.cos(), c.y + r * t.sin())
+        }).collect()
+    };
+    match *g {
+        Geo::Circle { c, r } => circle(c, r, per_edge * 16),
+        Geo::Ring { c, r, inner } => {
+            let mut v = circle(c, r, per_edge * 16);
+            v.extend(circle(c, inner, per_edge * 16));
+            v
+        }
+        Geo::Poly { v, n, .. } => {
+            let mut out = Vec::new();
+            for i in 0..n {
+                let (a, b) = (v[i], v[(i + 1) % n]);
+                for k in 0..per_edge {
+                    let t = k as f64 / per_edge as f64;
+                    out.push(Point::new(a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t));
+                }
+            }
+            out
+        }
+    }
+}
+
+fn in_polygon(p: Point<f64>, vs: &[Point<f64>]) -> bool {
+    let mut inside = false;
+    let n = vs.len();
+    for i in 0..n {
+        let (a, b) = (vs[i], vs[(i + 1) % n]);
+        if (a.y > p.y) != (b.y > p.y) && p.x < a.x + (p.y - a.y) / (b.y - a.y) * (b.x - a.x) {
+            inside = !inside;
+        }
+    }
+    inside
+}
+
+/// Whether `p` is in the shape's material (closed).
+fn in_material(p: Point<f64>, g: &Geo<f64>) -> bool {
+    let d = |c: Point<f64>| ((p.x - c.x).powi(2) + (p.y - c.y).powi(2)).sqrt();
+    match *g {
+        Geo::Circle { c, r } => d(c) <= r,
+        Geo::Ring { c, r, inner } => d(c) <= r && d(c) >= inner,
+        Geo::Poly { v, n, .. } => in_polygon(p, &v[..n]),
+    }
+}
+
+/// Distance between the materials of two shapes, to the sampling resolution (0 if they
+/// overlap).
+fn sampled_distance(a: &Geo<f64>, b: &Geo<f64>) -> f64 {
+    let (oa, ob) = (outline(a, 200), outline(b, 200));
+    if oa.iter().any(|&p| in_material(p, b)) || ob.iter().any(|&p| in_material(p, a)) {
+        return 0.0;
+    }
+    let mut best = f64::INFINITY;
+    for p in &oa {
+        for q in &ob {
+            best = best.min((p.x - q.x).powi(2) + (p.y - q.y).powi(2));
+        }
+    }
+    best.sqrt()
+}
+
+fn at(kind: ShapeKind, x: f64, y: f64, area: f64, angle: f64) -> Geo<f64> {
+    let s: f64 = kind.scale_for(area, angle);
+    kind.geo(Point::new(x, y), s, angle)
+}
+
+// ---------------------------------------------------------------------------------------------
+// The pair table.
+
+#[test]
+fn pair_table_every_kind_against_every_kind() {
+    let mut rows = 0;
+    for (i, &ka) in KINDS.iter().enumerate() {
+        for &kb in &KINDS[i..] {
+            for &(angle_a, angle_b) in &[(0.0, 0.0), (0.4, 1.9)] {
+                let a = at(ka, 0.0, 0.0, 10.0, angle_a);
+                // Overlapping: B on A's material (a ring's band, not its hole).
+                let band = if let ShapeKind::Ring { .. } = ka { ka.scale_for_area(10.0) * 0.8 } else { 0.0 };
+                let b = at(kb, band, 0.0, 4.0, angle_b);
+                assert!(!separated(&a, &b, 0.0) && !separated(&b, &a, 0.0), "{ka:?} / {kb:?} overlap missed");
+                // Far apart.
+                let far = at(kb, 40.0, 3.0, 4.0, angle_b);
+                assert!(separated(&a, &far, 0.5) && separated(&far, &a, 0.5), "{ka:?} / {kb:?} far apart");
+                // Near: the exact test agrees with the sampled distance on either side of it.
+                for dy in [0.0, 1.3] {
+                    let near = at(kb, 5.5, dy, 4.0, angle_b);
+                    let d = sampled_distance(&a, &near);
+                    if d > 0.05 {
+                        for (gap, expect) in [(d * 0.9, true), (d * 1.1, false)] {
+                            assert_eq!(separated(&a, &near, gap), expect, "{ka:?} / {kb:?} at gap {gap} (distance {d})");
+                            assert_eq!(separated(&near, &a, gap), expect, "{kb:?} / {ka:?} symmetry at gap {gap}");
+                        }
+                        rows += 1;
+                    } else if d == 0.0 {
+                        assert!(!separated(&a, &near, 0.0), "{ka:?} / {kb:?} sampled overlap missed");
+                    }
+                }
+            }
+        }
+    }
+    assert!(rows >= 36, "only {rows} near configurations exercised");
+}
+
+#[test]
+fn every_kind_nests_in_a_ring_hole() {
+    let ring = at(ShapeKind::Ring { inner: 0.8 }, 0.0, 0.0, 100.0, 0.0);
+    let Geo::Ring { inner, .. } = ring else { panic!("not a ring") };
+    for &k in &KINDS {
+        for angle in [0.0, 0.9] {
+            // Scaled so that the bounding radius is 60% of the hole.
+            let s = 0.6 * inner / k.bounding_radius(1.0);
+            let small = k.geo(Point::new(0.1, -0.2), s, angle);
+            assert!(separated(&ring, &small, 0.0) && separated(&small, &ring, 0.0), "{k:?} in the hole");
+            let room = inner - small.max_dist2(Point::new(0.0, 0.0)).sqrt();
+            assert!(separated(&ring, &small, room * 0.9), "{k:?} gap inside the hole");
+            assert!(!separated(&ring, &small, room * 1.1), "{k:?} gap inside the hole too large");
+            // Too large for the hole: it touches the band.
+            let big = k.geo(Point::new(0.0, 0.0), 1.3 * inner / k.inradius(1.0).max(1e-9), angle);
+            assert!(!separated(&ring, &big, 0.0), "{k:?} larger than the hole");
+        }
+    }
+}
+
+#[test]
+fn sampled_distance_detects_overlap_and_measures_gaps() {
+    // The independent measure itself: two unit circles 3 apart are 1 apart; overlapping ones 0.
+    let a = Geo::Circle { c: Point::new(0.0, 0.0), r: 1.0 };
+    let b = Geo::Circle { c: Point::new(3.0, 0.0), r: 1.0 };
+    assert!((sampled_distance(&a, &b) - 1.0).abs() < 1e-3);
+    assert_eq!(sampled_distance(&a, &Geo::Circle { c: Point::new(1.5, 0.0), r: 1.0 }), 0.0);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Fills of every shape in every region.
+
+fn region_inside(r: &Region<'_>, p: Point<f64>, pts: &[Point<f64>], ends: &[usize]) -> bool {
+    match *r {
+        Region::Rect { width, height, .. } => p.x >= 0.0 && p.y >= 0.0 && p.x <= width && p.y <= height,
+        Region::Circle { radius } => (p.x - radius).hypot(p.y - radius) <= radius,
+        Region::Annulus { outer, inner } => {
+            let d = (p.x - outer).hypot(p.y - outer);
+            d <= outer && d >= inner
+        }
+        Region::Polygon(_) => {
+            let mut inside = false;
+            let mut start = 0;
+            for &e in ends {
+                inside ^= in_polygon(p, &pts[start..e]);
+                start = e;
+            }
+            inside
+        }
+    }
+}
+
+fn point_segment(p: Point<f64>, a: Point<f64>, b: Point<f64>) -> f64 {
+    let (dx, dy) = (b.x - a.x, b.y - a.y);
+    let t = (((p.x - a.x) * dx + (p.y - a.y) * dy) / (dx * dx + dy * dy)).clamp(0.0, 1.0);
+    (p.x - (a.x + t * dx)).hypot(p.y - (a.y + t * dy))
+}
+
+/// Distance from a point to the region's boundary, computed here analytically.
+fn boundary_distance(r: &Region<'_>, p: Point<f64>, pts: &[Point<f64>], ends: &[usize]) -> f64 {
+    match *r {
+        Region::Rect { width, height, .. } => p.x.min(width - p.x).min(p.y).min(height - p.y).abs(),
+        Region::Circle { radius } => (radius - (p.x - radius).hypot(p.y - radius)).abs(),
+        Region::Annulus { outer, inner } => {
+            let d = (p.x - outer).hypot(p.y - outer);
+            (outer - d).abs().min((d - inner).abs())
+        }
+        Region::Polygon(_) => {
+            let mut best = f64::INFINITY;
+            let mut start = 0;
+            for &e in ends {
+                let ring = &pts[start..e];
+                for i in 0..ring.len() {
+                    best = best.min(point_segment(p, ring[i], ring[(i + 1) % ring.len()]));
+                }
+                start = e;
+            }
+            best
+        }
+    }
+}
+
+/// Brute-force check of a finished fill. Returns the number of shapes checked.
+fn check(geos: &[Geo<f64>], region: &Region<'_>, gap: f64, pts: &[Point<f64>], ends: &[usize]) -> Result<usize, String> {
+    let periodic = region.periodic();
+    let (w, h) = region.extent();
+    let shifts: Vec<(f64, f64)> = if periodic {
+        (-2..=2).flat_map(|i| (-2..=2).map(move |j| (i as f64 * w, j as f64 * h))).collect()
+    } else {
+        vec![(0.0, 0.0)]
+    };
+    for (i, a) in geos.iter().enumerate() {
+        for (j, b) in geos.iter().enumerate().skip(i) {
+            for &(dx, dy) in &shifts {
+                if i == j && dx == 0.0 && dy == 0.0 {
+                    continue;
+                }
+                if !separated(a, &b.shift(dx, dy), gap) {
+                    return Err(format!("shapes {i} and {j} (shift {dx},{dy}) closer than {gap}"));
+                }
+            }
+        }
+    }
+    if !periodic {
+        for (i, g) in geos.iter().enumerate() {
+            for p in outline(g, 24) {
+                if !region_inside(region, p, pts, ends) {
+                    return Err(format!("shape {i} leaves the region at ({}, {})", p.x, p.y));
+                }
+                let d = boundary_distance(region, p, pts, ends);
+                if d < gap * (1.0 - 1e-9) {
+                    return Err(format!("shape {i} is {d} from the boundary, gap {gap}"));
+                }
+            }
+        }
+    }
+    Ok(geos.len())
+}
+
+fn fill(kind: ShapeKind, region: Region<'_>, gap: f64, count: u64, seed: u64) -> (Vec<Geo<f64>>, StopReason) {
+    let cap = count as usize;
+    let mut shapes = vec![Placed::<f64>::default(); cap];
+    let mut index = vec![0u32; index_words(cap)];
+    let mut cov = vec![0u64; 1 << 12];
+    let params = Params { c: 1.2, n_offset: 4.0, shape: kind.into(), rotate: true, gap, max_trials: 200_000 };
+    let storage = Storage { shapes: &mut shapes, index: &mut index, coverage: &mut cov };
+    let mut e = Engine::<f64>::new(params, region, storage).unwrap_or_else(|err| panic!("{kind:?}: {err}"));
+    let mut rng = rng_from_seed(seed);
+    let reason = e.run(&mut rng, &Stop { count: Some(count), ..Stop::default() }, |_| {});
+    ((0..e.placed().len()).filter_map(|i| e.geo(i)).collect(), reason)
+}
+
+#[test]
+fn every_shape_in_every_region() {
+    // A star-shaped polygon with a square hole.
+    let mut pts: Vec<Point<f64>> = (0..10)
+        .map(|k| {
+            let t = std::f64::consts::FRAC_PI_2 + k as f64 * std::f64::consts::PI / 5.0;
+            let r = if k % 2 == 0 { 100.0 } else { 55.0 };
+            Point::new(100.0 + r * t.cos(), 100.0 + r * t.sin())
+        })
+        .collect();
+    pts.extend([Point::new(90.0, 90.0), Point::new(90.0, 110.0), Point::new(110.0, 110.0), Point::new(110.0, 90.0)]);
+    let ends = vec![10, 14];
+    let poly = PolygonRegion::new(&pts, &ends).unwrap_or_else(|e| panic!("{e}"));
+    let regions = [
+        Region::Rect { width: 160.0, height: 120.0, periodic: false },
+        Region::Rect { width: 160.0, height: 120.0, periodic: true },
+        Region::Circle { radius: 80.0 },
+        Region::Annulus { outer: 90.0, inner: 35.0 },
+        Region::Polygon(poly),
+    ];
+    let mut total = 0;
+    for (ri, region) in regions.iter().enumerate() {
+        for (ki, &kind) in KINDS.iter().enumerate() {
+            for gap in [0.0, 0.8] {
+                let (geos, reason) = fill(kind, *region, gap, 100, 1 + ri as u64 * 10 + ki as u64);
+                assert!(!matches!(reason, StopReason::Step(zetafill::StepError::CannotFit { .. })), "{kind:?} in region {ri}: {reason:?}");
+                assert!(geos.len() >= 20, "{kind:?} in region {ri} gap {gap}: only {} shapes ({reason:?})", geos.len());
+                total += check(&geos, region, gap, &pts, &ends).unwrap_or_else(|e| panic!("{kind:?} in region {ri} gap {gap}: {e}"));
+            }
+        }
+    }
+    assert!(total > 4000, "{total} shapes checked");
+}
+
+#[test]
+fn rings_nest_in_fills() {
+    let region = Region::Rect { width: 200.0, height: 200.0, periodic: false };
+    let (geos, _) = fill(ShapeKind::Ring { inner: 0.7 }, region, 0.0, 600, 5);
+    let nested = geos
+        .iter()
+        .enumerate()
+        .filter(|(i, g)| {
+            let (Geo::Ring { c, .. } | Geo::Circle { c, .. }) = g else { return false };
+            geos[..*i].iter().any(|o| matches!(o, Geo::Ring { c: oc, inner, .. } if oc.dist2(*c).sqrt() < *inner))
+        })
+        .count();
+    assert!(nested > 10, "only {nested} rings placed inside another ring's hole");
+}
+
+#[test]
+fn the_fill_checker_can_fail() {
+    let region = Region::Rect { width: 100.0, height: 100.0, periodic: false };
+    let a = Geo::Circle { c: Point::new(30.0, 30.0), r: 10.0 };
+    let b = Geo::Circle { c: Point::new(45.0, 30.0), r: 6.0 };
+    assert!(check(&[a, b], &region, 0.0, &[], &[]).is_err(), "overlap not found");
+    assert!(check(&[a, b.shift(2.0, 0.0)], &region, 0.0, &[], &[]).is_ok());
+    assert!(check(&[a, b.shift(2.0, 0.0)], &region, 1.5, &[], &[]).is_err(), "gap not enforced");
+    let out = Geo::Circle { c: Point::new(95.0, 50.0), r: 6.0 };
+    assert!(check(&[out], &region, 0.0, &[], &[]).is_err(), "outside not found");
+    let near = Geo::Circle { c: Point::new(93.0, 50.0), r: 6.0 };
+    assert!(check(&[near], &region, 0.0, &[], &[]).is_ok());
+    assert!(check(&[near], &region, 1.5, &[], &[]).is_err(), "boundary gap not enforced");
+    let torus = Region::Rect { width: 100.0, height: 100.0, periodic: true };
+    let edge = Geo::Circle { c: Point::new(2.0, 50.0), r: 5.0 };
+    let other = Geo::Circle { c: Point::new(97.0, 50.0), r: 4.0 };
+    assert!(check(&[edge, other], &torus, 0.0, &[], &[]).is_err(), "overlap across the edge not found");
+}

@@ -32,7 +32,7 @@ impl<S: Scalar> Point<S> {
     }
     /// `self - o`.
     #[inline]
-    pub fn sub(self, o: Self) -> Self {
+    pub fn diff(self, o: Self) -> Self {
         Point::new(self.x - o.x, self.y - o.y)
     }
     /// Dot product.
@@ -48,7 +48,7 @@ impl<S: Scalar> Point<S> {
     /// Squared distance to another point.
     #[inline]
     pub fn dist2(self, o: Self) -> S {
-        let d = self.sub(o);
+        let d = self.diff(o);
         d.dot(d)
     }
 }
@@ -144,8 +144,8 @@ impl<S: Scalar> Geo<S> {
 
 /// Squared distance from `p` to the segment `a`–`b`.
 pub fn seg_dist2<S: Scalar>(p: Point<S>, a: Point<S>, b: Point<S>) -> S {
-    let ab = b.sub(a);
-    let ap = p.sub(a);
+    let ab = b.diff(a);
+    let ap = p.diff(a);
     let len2 = ab.dot(ab);
     let t = ap.dot(ab);
     if t <= S::ZERO || len2 <= S::ZERO {
@@ -165,7 +165,7 @@ pub fn edges<S: Scalar>(vs: &[Point<S>]) -> impl Iterator<Item = (Point<S>, Poin
 
 /// Sign of the orientation of (a, b, c): 1 counter-clockwise, -1 clockwise, 0 collinear.
 fn orient<S: Scalar>(a: Point<S>, b: Point<S>, c: Point<S>) -> i8 {
-    let v = b.sub(a).cross(c.sub(a));
+    let v = b.diff(a).cross(c.diff(a));
     if v > S::ZERO {
         1
     } else if v < S::ZERO {
@@ -220,7 +220,7 @@ pub fn point_in_poly<S: Scalar>(p: Point<S>, vs: &[Point<S>]) -> bool {
 
 /// Whether `p` is inside or on a counter-clockwise convex polygon.
 fn in_convex<S: Scalar>(p: Point<S>, vs: &[Point<S>]) -> bool {
-    edges(vs).all(|(a, b)| b.sub(a).cross(p.sub(a)) >= S::ZERO)
+    edges(vs).all(|(a, b)| b.diff(a).cross(p.diff(a)) >= S::ZERO)
 }
 
 fn in_poly<S: Scalar>(p: Point<S>, vs: &[Point<S>], convex: bool) -> bool {
@@ -244,8 +244,8 @@ fn vert_edge_dist2<S: Scalar>(p: &[Point<S>], q: &[Point<S>], mut best: S) -> S 
 /// Whether an edge normal of convex `p` strictly separates `p` from `q`.
 fn has_separating_edge<S: Scalar>(p: &[Point<S>], q: &[Point<S>]) -> bool {
     edges(p).any(|(a, b)| {
-        let e = b.sub(a);
-        q.iter().all(|&v| e.cross(v.sub(a)) < S::ZERO)
+        let e = b.diff(a);
+        q.iter().all(|&v| e.cross(v.diff(a)) < S::ZERO)
     })
 }
 

@@ -83,7 +83,7 @@ impl<'a> PolygonRegion<'a> {
                     // Folding back onto the previous edge (collinear overlap) is not simple.
                     let shared = if rings.next(i) == j { a2 } else { a1 };
                     let (p, q) = if rings.next(i) == j { (a1, b2) } else { (b1, a2) };
-                    let (u, v) = (p.sub(shared), q.sub(shared));
+                    let (u, v) = (p.diff(shared), q.diff(shared));
                     if u.cross(v) == 0.0 && u.dot(v) > 0.0 {
                         return Err(RegionError::SelfIntersecting);
                     }

@@ -6,6 +6,7 @@
 pub mod doc;
 pub mod error;
 pub mod fill;
+pub mod line;
 pub mod output;
 pub mod spec;
 pub mod stats;
@@ -32,7 +33,9 @@ pub struct Cli {
 pub enum Command {
     /// Fill a 2D region with shapes whose areas follow a power law.
     Fill(fill::FillArgs),
-    /// Numbers behind the fills: zeta(c, N).
+    /// Fill an interval with segments whose lengths follow a power law (1D).
+    Line(line::LineArgs),
+    /// Numbers behind the fills: zeta, gasket width, trials, halting, dimension.
     #[command(subcommand)]
     Stats(stats::StatsCommand),
 }
@@ -65,6 +68,7 @@ where
 pub fn run(cli: Cli) -> Result<(), CliError> {
     match cli.command {
         Command::Fill(a) => fill::run(&a),
+        Command::Line(a) => line::run(&a),
         Command::Stats(s) => stats::run(&s),
     }
 }

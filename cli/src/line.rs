@@ -38,31 +38,31 @@ pub enum Render {
 #[derive(Debug, Args)]
 pub struct LineArgs {
     /// Length L of the interval in mm.
-    #[arg(long, default_value_t = 200.0, value_parser = spec::positive)]
+    #[arg(long, default_value_t = 200.0, value_parser = spec::positive, allow_negative_numbers = true)]
     pub length: f64,
     /// Periodic boundary: the interval is a circle, a segment running past L continues at 0.
     #[arg(long)]
     pub periodic: bool,
     /// Power-law exponent c > 1 (default 1.4; about 2.7 is the 1D maximum with N = 1).
-    #[arg(long, value_parser = spec::exponent, conflicts_with = "dimension")]
+    #[arg(long, value_parser = spec::exponent, conflicts_with = "dimension", allow_negative_numbers = true)]
     pub c: Option<f64>,
     /// Fractal dimension D in (0, 1) instead of c (c = 1/D).
-    #[arg(long, value_parser = dimension_1d)]
+    #[arg(long, value_parser = dimension_1d, allow_negative_numbers = true)]
     pub dimension: Option<f64>,
     /// The paper's N > 0: larger N makes the first segments shorter.
-    #[arg(long = "n-offset", default_value_t = 1.0, value_parser = spec::positive)]
+    #[arg(long = "n-offset", default_value_t = 1.0, value_parser = spec::positive, allow_negative_numbers = true)]
     pub n_offset: f64,
     /// Stop after K segments (default 2000 when no stop condition is given).
     #[arg(long, value_parser = clap::value_parser!(u64).range(1..=MAX_SEGMENTS))]
     pub count: Option<u64>,
     /// Stop once this fraction of the interval is filled, 0 < F < 1.
-    #[arg(long, value_parser = spec::fraction)]
+    #[arg(long, value_parser = spec::fraction, allow_negative_numbers = true)]
     pub fill: Option<f64>,
     /// Stop before the first segment shorter than MM.
-    #[arg(long = "min-size", value_parser = spec::positive)]
+    #[arg(long = "min-size", value_parser = spec::positive, allow_negative_numbers = true)]
     pub min_size: Option<f64>,
     /// Minimum clearance between segments and to the ends, in mm.
-    #[arg(long, default_value_t = 0.0, value_parser = spec::non_negative)]
+    #[arg(long, default_value_t = 0.0, value_parser = spec::non_negative, allow_negative_numbers = true)]
     pub gap: f64,
     /// Trial limit per placement; reaching it halts the fill (exit 3).
     #[arg(long = "max-trials", default_value_t = 10_000_000, value_parser = clap::value_parser!(u64).range(1..))]
@@ -83,22 +83,25 @@ pub struct LineArgs {
     #[arg(long, value_enum, default_value = "outline")]
     pub style: Style,
     /// SVG: stroke width in mm (dashes and outlines).
-    #[arg(long = "pen-width", default_value_t = 0.3, value_parser = spec::positive)]
+    #[arg(long = "pen-width", default_value_t = 0.3, value_parser = spec::positive, allow_negative_numbers = true)]
     pub pen_width: f64,
     /// SVG `bars`: bar height in mm.
-    #[arg(long = "bar-height", default_value_t = 10.0, value_parser = spec::positive)]
+    #[arg(long = "bar-height", default_value_t = 10.0, value_parser = spec::positive, allow_negative_numbers = true)]
     pub bar_height: f64,
     /// SVG `zoom`: number of rows (the first shows the whole interval).
     #[arg(long = "zoom-rows", default_value_t = 4, value_parser = clap::value_parser!(u32).range(1..=12))]
     pub zoom_rows: u32,
     /// SVG `zoom`: each row shows this central fraction of the row above (Figure 3: 0.05).
-    #[arg(long = "zoom-fraction", default_value_t = 0.05, value_parser = spec::fraction)]
+    #[arg(long = "zoom-fraction", default_value_t = 0.05, value_parser = spec::fraction, allow_negative_numbers = true)]
     pub zoom_fraction: f64,
+    /// SVG `zoom`: the point (mm from the left end) the rows zoom into (default: the middle).
+    #[arg(long = "zoom-center", value_parser = spec::non_negative, allow_negative_numbers = true)]
+    pub zoom_center: Option<f64>,
     /// SVG: also mark the ends of the interval.
     #[arg(long)]
     pub boundary: bool,
     /// PNG: resolution in pixels per inch.
-    #[arg(long, default_value_t = 96.0, value_parser = spec::positive)]
+    #[arg(long, default_value_t = 96.0, value_parser = spec::positive, allow_negative_numbers = true)]
     pub dpi: f64,
     /// No progress bar.
     #[arg(short, long)]
@@ -271,7 +274,7 @@ fn capacity(c: f64, n: f64, length: f64, stop: &Stop) -> Result<u64, CliError> {
 pub fn compute(a: &LineArgs) -> Result<(LineDoc, Option<StepError>), CliError> {
     let params = LineParams { c: a.c(), n_offset: a.n_offset, gap: a.gap, max_trials: a.max_trials };
     let interval = Interval { length: a.length, periodic: a.periodic };
-    if !(2.0 * a.gap < a.length) {
+    if 2.0 * a.gap >= a.length {
         return Err(CliError::arg("--gap", format!("{} mm leaves no room in a {} mm interval; it must be under half the length", a.gap, a.length)));
     }
     let stop = a.stop();
@@ -378,6 +381,8 @@ pub struct LineSvgOptions {
     pub zoom_rows: u32,
     /// Zoom fraction per row.
     pub zoom_fraction: f64,
+    /// The point the rows zoom into (mm).
+    pub zoom_center: f64,
     /// Mark the interval's ends.
     pub boundary: bool,
 }
@@ -499,7 +504,8 @@ pub fn render_svg(doc: &LineDoc, opt: &LineSvgOptions) -> Vec<u8> {
             let shifts: &[f64] = if periodic { &[0.0, -l, l] } else { &[0.0] };
             for k in 0..rows {
                 let w = l * opt.zoom_fraction.powi(k as i32);
-                let (a, b) = (l / 2.0 - w / 2.0, l / 2.0 + w / 2.0);
+                let mid = opt.zoom_center;
+                let (a, b) = (mid - w / 2.0, mid + w / 2.0);
                 let scale = l / w;
                 let y0 = k as f64 * (row_h + spacing);
                 let cy = y0 + row_h / 2.0;
@@ -520,15 +526,16 @@ pub fn render_svg(doc: &LineDoc, opt: &LineSvgOptions) -> Vec<u8> {
                         if s1 < a || s0 > b {
                             continue;
                         }
-                        let mid = (s0 + s1) / 2.0;
-                        g = g.add(circle((mid - a) * scale, cy, r));
+                        let m = (s0 + s1) / 2.0;
+                        g = g.add(circle((m - a) * scale, cy, r));
                     }
                 }
                 body.push(g);
                 if k + 1 < rows {
                     // Ticks at the part of this row that the next row shows.
                     let half = l * opt.zoom_fraction / 2.0;
-                    for x in [l / 2.0 - half, l / 2.0 + half] {
+                    let at = (mid - a) * scale;
+                    for x in [at - half, at + half] {
                         marks = marks.add(
                             Line::new().set("x1", num(x, P)).set("y1", num(y0 + row_h, P)).set("x2", num(x, P)).set("y2", num(y0 + row_h + spacing, P)),
                         );
@@ -607,6 +614,7 @@ pub fn render(doc: &LineDoc, format: Format, a: &LineArgs) -> Result<Vec<u8>, Cl
         bar_height: a.bar_height,
         zoom_rows: a.zoom_rows,
         zoom_fraction: a.zoom_fraction,
+        zoom_center: a.zoom_center.unwrap_or(a.length / 2.0),
         boundary: a.boundary,
     };
     Ok(match format {
@@ -622,6 +630,9 @@ pub fn render(doc: &LineDoc, format: Format, a: &LineArgs) -> Result<Vec<u8>, Cl
 
 /// `zetafill line`.
 pub fn run(a: &LineArgs) -> Result<(), CliError> {
+    if a.zoom_center.is_some_and(|x| x > a.length) {
+        return Err(CliError::arg("--zoom-center", format!("must lie in the interval [0, {}]", a.length)));
+    }
     let dest = Dest::parse(&a.output);
     dest.check("--output", &[])?;
     let format = Format::resolve(a.format, &a.output)?;

@@ -1,4 +1,14 @@
-//! `zetafill stats`: the numbers behind the fills.
+//! `zetafill stats`: the numbers behind the fills. Every subcommand takes `--json` and then
+//! prints one JSON object on stdout.
+
+#[path = "stats_chart.rs"]
+pub mod chart;
+#[path = "stats_dimension.rs"]
+pub mod dimension;
+#[path = "stats_halting.rs"]
+pub mod halting;
+#[path = "stats_trials.rs"]
+pub mod trials;
 
 use crate::error::CliError;
 use crate::spec;
@@ -9,6 +19,14 @@ use clap::{Args, Subcommand};
 pub enum StatsCommand {
     /// The Hurwitz zeta function zeta(c, N) = sum_{i>=0} (i+N)^-c.
     Zeta(ZetaArgs),
+    /// The dimensionless average gasket width b(c, N, n) for circles (paper section 4, Table 1).
+    Gasket(GasketArgs),
+    /// Cumulative trials against placements for a fill, with the fitted power-law exponent.
+    Trials(trials::TrialsArgs),
+    /// The fraction of runs that halt at each c (paper Figure 6), runs spread over all cores.
+    Halting(halting::HaltingArgs),
+    /// Box-counting estimate of the fractal dimension of a fill's JSON, beside the exact value.
+    Dimension(dimension::DimensionArgs),
 }
 
 /// Arguments of `stats zeta`.
@@ -20,6 +38,23 @@ pub struct ZetaArgs {
     /// Offset N (> 0).
     #[arg(long = "n-offset", default_value_t = 1.0, value_parser = spec::positive, allow_negative_numbers = true)]
     pub n_offset: f64,
+    /// Print one JSON object.
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// Arguments of `stats gasket`.
+#[derive(Debug, Args)]
+pub struct GasketArgs {
+    /// Exponent c (> 1).
+    #[arg(long, value_parser = spec::exponent, allow_negative_numbers = true)]
+    pub c: f64,
+    /// Offset N (> 0).
+    #[arg(long = "n-offset", default_value_t = 1.0, value_parser = spec::positive, allow_negative_numbers = true)]
+    pub n_offset: f64,
+    /// Number of placements done, n >= 1 (the next circle is number n, counted from 0).
+    #[arg(long, value_parser = clap::value_parser!(u64).range(1..))]
+    pub n: u64,
     /// Print one JSON object.
     #[arg(long)]
     pub json: bool,
@@ -37,5 +72,17 @@ pub fn run(cmd: &StatsCommand) -> Result<(), CliError> {
             }
             Ok(())
         }
+        StatsCommand::Gasket(a) => {
+            let b = zetafill::stats::gasket_width(a.c, a.n_offset, a.n).map_err(|e| CliError::arg("--n-offset", e))?;
+            if a.json {
+                println!("{}", serde_json::json!({ "b": b, "c": a.c, "n_offset": a.n_offset, "n": a.n }));
+            } else {
+                println!("{b}");
+            }
+            Ok(())
+        }
+        StatsCommand::Trials(a) => trials::run(a),
+        StatsCommand::Halting(a) => halting::run(a),
+        StatsCommand::Dimension(a) => dimension::run(a),
     }
 }

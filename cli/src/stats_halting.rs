@@ -35,22 +35,22 @@ pub struct HaltingArgs {
     #[arg(long, value_enum, default_value = "none")]
     pub rotate: Rotate,
     /// rect:W:H, sizes in mm.
-    #[arg(long, default_value = "rect:200:200", value_parser = rect_2d)]
+    #[arg(long, default_value = "rect:200:200", value_parser = rect_2d, allow_negative_numbers = true)]
     pub region: (f64, f64),
     /// Periodic (toroidal) boundary.
     #[arg(long)]
     pub periodic: bool,
     /// First c (> 1).
-    #[arg(long = "c-from", value_parser = spec::exponent)]
+    #[arg(long = "c-from", value_parser = spec::exponent, allow_negative_numbers = true)]
     pub c_from: f64,
     /// Last c (>= --c-from).
-    #[arg(long = "c-to", value_parser = spec::exponent)]
+    #[arg(long = "c-to", value_parser = spec::exponent, allow_negative_numbers = true)]
     pub c_to: f64,
     /// Step between values of c (> 0).
-    #[arg(long = "c-step", value_parser = spec::positive)]
+    #[arg(long = "c-step", value_parser = spec::positive, allow_negative_numbers = true)]
     pub c_step: f64,
     /// The paper's N > 0.
-    #[arg(long = "n-offset", default_value_t = 1.0, value_parser = spec::positive)]
+    #[arg(long = "n-offset", default_value_t = 1.0, value_parser = spec::positive, allow_negative_numbers = true)]
     pub n_offset: f64,
     /// Runs per value of c.
     #[arg(long, default_value_t = 20, value_parser = clap::value_parser!(u64).range(1..=1_000_000))]

@@ -49,13 +49,17 @@ pub fn rect_2d(s: &str) -> Result<(f64, f64), String> {
     }
 }
 
-/// A comma-separated list of exponents, each > 1.
-pub fn exponents(s: &str) -> Result<Vec<f64>, String> {
+/// A list of exponents given as `C1,C2,...`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Exponents(pub Vec<f64>);
+
+/// A comma-separated list of 1 to 32 exponents, each > 1.
+pub fn exponents(s: &str) -> Result<Exponents, String> {
     let v = s.split(',').map(spec::exponent).collect::<Result<Vec<_>, _>>()?;
     if v.is_empty() || v.len() > 32 {
         return Err("give 1 to 32 values of c separated by commas".into());
     }
-    Ok(v)
+    Ok(Exponents(v))
 }
 
 /// What one 2D run is.
@@ -132,16 +136,16 @@ pub struct TrialsArgs {
     #[arg(long, value_enum, default_value = "none")]
     pub rotate: Rotate,
     /// rect:W:H, sizes in mm.
-    #[arg(long, default_value = "rect:200:200", value_parser = rect_2d)]
+    #[arg(long, default_value = "rect:200:200", value_parser = rect_2d, allow_negative_numbers = true)]
     pub region: (f64, f64),
     /// Periodic (toroidal) boundary.
     #[arg(long)]
     pub periodic: bool,
     /// Exponent c > 1, or several separated by commas (one curve each).
-    #[arg(long, default_value = "1.3", value_parser = exponents)]
-    pub c: Vec<f64>,
+    #[arg(long, default_value = "1.3", value_parser = exponents, allow_negative_numbers = true)]
+    pub c: Exponents,
     /// The paper's N > 0.
-    #[arg(long = "n-offset", default_value_t = 1.0, value_parser = spec::positive)]
+    #[arg(long = "n-offset", default_value_t = 1.0, value_parser = spec::positive, allow_negative_numbers = true)]
     pub n_offset: f64,
     /// Shapes per run.
     #[arg(long, default_value_t = 10_000, value_parser = clap::value_parser!(u64).range(10..=10_000_000))]
@@ -216,6 +220,7 @@ pub fn run(a: &TrialsArgs) -> Result<(), CliError> {
     }
     let jobs: Vec<(usize, u64, RunSpec)> = a
         .c
+        .0
         .iter()
         .enumerate()
         .flat_map(|(k, &c)| {

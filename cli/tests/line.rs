@@ -83,8 +83,9 @@ fn check_line(doc: &Value) -> Result<(), String> {
 #[test]
 fn json_follows_the_design_and_passes_the_checker() {
     let d = tmp();
-    for (periodic, gap) in [(false, "0"), (true, "0"), (false, "0.05"), (true, "0.05")] {
-        let mut args = vec!["--c", "1.3", "--count", "1500", "--seed", "5", "--length", "150", "--gap", gap];
+    for (periodic, gap, count) in [(false, "0", 1500), (true, "0", 1500), (false, "0.002", 400), (true, "0.002", 400)] {
+        let k = count.to_string();
+        let mut args = vec!["--c", "1.3", "--count", &k, "--seed", "5", "--length", "150", "--gap", gap];
         if periodic {
             args.push("--periodic");
         }
@@ -96,10 +97,10 @@ fn json_follows_the_design_and_passes_the_checker() {
         assert_eq!(doc["region"]["periodic"], periodic);
         assert_eq!(doc["params"]["seed"], 5);
         assert_eq!(doc["params"]["dimension"], 1.0 / 1.3);
-        assert_eq!(doc["stats"]["placed"], 1500);
+        assert_eq!(doc["stats"]["placed"], count);
         assert_eq!(doc["stats"]["halted"], false);
         let shapes = doc["shapes"].as_array().cloned().unwrap_or_default();
-        assert_eq!(shapes.len(), 1500);
+        assert_eq!(shapes.len(), count);
         for (i, s) in shapes.iter().enumerate() {
             assert_eq!(s["index"], i);
             assert_eq!(s["kind"], "segment");
@@ -230,7 +231,7 @@ fn bad_input_exits_2_names_the_flag_and_writes_nothing() {
         (&["--length", "nan"], "--length"),
         (&["--gap", "-1"], "--gap"),
         (&["--gap", "150"], "--gap"),
-        (&["--gap", "60", "--c", "1.3"], "--gap"),
+        (&["--gap", "80", "--c", "1.3"], "--gap"),
         (&["--fill", "1"], "--fill"),
         (&["--fill", "0"], "--fill"),
         (&["--count", "0"], "--count"),
@@ -287,33 +288,41 @@ fn stop_conditions_and_dimension() {
     assert_eq!(doc["params"]["c"], 2.0);
 }
 
+/// A line document with c = 2, N = 1 in `[0, l]` and segments starting at `starts`.
+fn synthetic(l: f64, periodic: bool, starts: &[f64]) -> Value {
+    let z = std::f64::consts::PI * std::f64::consts::PI / 6.0;
+    let shapes: Vec<Value> = starts
+        .iter()
+        .enumerate()
+        .map(|(i, &s)| serde_json::json!({ "index": i, "kind": "segment", "start": s, "length": l / (z * ((i + 1) as f64).powi(2)), "trials": 1 }))
+        .collect();
+    serde_json::json!({ "version": 1, "mode": "line", "params": { "c": 2.0, "n_offset": 1.0, "gap": 0.0 }, "zeta": z,
+        "region": { "kind": "interval", "length": l, "periodic": periodic }, "shapes": shapes })
+}
+
 #[test]
 fn the_checker_fails_on_broken_fills() {
-    let d = tmp();
-    let good = json(&line(d.path(), "a.json", &["--count", "50", "--periodic"]));
-    assert!(check_line(&good).is_ok());
-    let mut overlap = good.clone();
-    let s1 = overlap["shapes"][1]["start"].clone();
-    overlap["shapes"][2]["start"] = s1;
-    assert!(check_line(&overlap).is_err(), "overlap not caught");
-    let mut outside = good.clone();
-    outside["shapes"][3]["start"] = Value::from(200.0);
-    assert!(check_line(&outside).is_err(), "start outside the period not caught");
-    let mut length = good.clone();
-    length["shapes"][4]["length"] = Value::from(good["shapes"][4]["length"].as_f64().unwrap_or(0.0) * 1.001);
-    assert!(check_line(&length).is_err(), "wrong length not caught");
-    // A segment that wraps onto the first one.
-    let mut wrap = good.clone();
-    let first = segments(&good).iter().copied().fold((f64::INFINITY, 0.0), |a, s| if s.0 < a.0 { s } else { a });
-    let len = good["shapes"][49]["length"].as_f64().unwrap_or(0.0);
-    wrap["shapes"][49]["start"] = Value::from(200.0 - len / 2.0 + first.0.min(len / 4.0) * 0.0);
-    wrap["region"]["periodic"] = Value::from(true);
-    let broke = check_line(&wrap).is_err();
-    let mut inclusive = good.clone();
-    inclusive["region"]["periodic"] = Value::from(false);
-    let wraps_any = segments(&good).iter().any(|s| s.0 + s.1 > 200.0);
-    assert!(broke || first.0 > len / 2.0, "wrap onto the first not caught");
-    if wraps_any {
-        assert!(check_line(&inclusive).is_err(), "a wrapping segment in an inclusive interval not caught");
+    // Lengths 6.08, 1.52, 0.68 in [0, 10].
+    assert!(check_line(&synthetic(10.0, false, &[1.0, 7.5, 9.2])).is_ok());
+    assert!(check_line(&synthetic(10.0, true, &[1.0, 7.5, 0.1])).is_ok());
+    let broken: [(&str, Value); 6] = [
+        ("overlap", synthetic(10.0, false, &[1.0, 6.5, 9.2])),
+        ("touching", synthetic(10.0, false, &[1.0, 10.0 / (std::f64::consts::PI.powi(2) / 6.0) + 1.0, 9.2])),
+        ("outside", synthetic(10.0, false, &[1.0, 7.5, 9.5])),
+        ("wraps onto the first", synthetic(10.0, true, &[1.0, 9.6])),
+        ("start outside the period", synthetic(10.0, true, &[1.0, 10.0])),
+        ("negative start", synthetic(10.0, false, &[-0.5])),
+    ];
+    for (what, doc) in broken {
+        assert!(check_line(&doc).is_err(), "not caught: {what}");
     }
+    let mut wrong = synthetic(10.0, false, &[1.0, 7.5, 9.2]);
+    wrong["shapes"][1]["length"] = Value::from(1.6);
+    assert!(check_line(&wrong).is_err(), "wrong length not caught");
+    // And on a real fill with one segment moved onto another.
+    let d = tmp();
+    let mut doc = json(&line(d.path(), "a.json", &["--count", "50", "--periodic"]));
+    assert!(check_line(&doc).is_ok());
+    doc["shapes"][2]["start"] = doc["shapes"][1]["start"].clone();
+    assert!(check_line(&doc).is_err());
 }

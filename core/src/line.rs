@@ -12,7 +12,8 @@
 //! Placed segments are indexed by a one-dimensional version of the multi-level spatial hash of
 //! [`crate::spatial`]: level `l` cuts the interval into cells of length `L / 2^l`; a segment of
 //! length `len` lives at the finest level whose cells are at least `len` long, in the cell of
-//! its start. A query looks, level by level, at the two or three cells its reach can touch, so
+//! its start. A query looks, level by level (coarsest first), at the two or three cells its
+//! reach can touch, so
 //! a trial costs O(levels) = O(log(L_0 / L_n)) whatever the number of segments, and an
 //! insertion is O(1). Bucket collisions only add work; every listed segment is tested exactly.
 //!
@@ -183,11 +184,12 @@ impl<'a, S: Scalar> LineHash<'a, S> {
         }
     }
 
-    /// Calls `f` for every segment index whose start may lie in `[lo, hi]` at an occupied
-    /// level (and possibly others), finest level first; stops when `f` returns `false`.
-    /// `reach_back` is added per level: the level's longest segment.
+    /// Calls `f` for every segment index that may meet `[lo, hi]` (those whose start lies in
+    /// `[lo - longest at its level, hi]`, and possibly others), coarsest level first: a random
+    /// candidate most often lands in one of the long, early segments, so it is rejected after
+    /// a look at a few coarse cells. Stops as soon as `f` returns `false`.
     fn query(&self, lo: S, hi: S, total: u32, mut f: impl FnMut(u32) -> bool) -> bool {
-        for (level, lv) in self.levels.iter().enumerate().rev() {
+        for (level, lv) in self.levels.iter().enumerate() {
             if lv.count == 0 {
                 continue;
             }

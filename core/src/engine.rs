@@ -417,7 +417,12 @@ impl<'a, S: Scalar> Engine<'a, S> {
                 matches!(kind, ShapeKind::Circle | ShapeKind::Ring { .. })
                     && self.self_overlaps(&kind.geo(Point::new(S::ZERO, S::ZERO), scale, S::ZERO), scale)
             }
-            Region::Circle { radius } => kind.inradius(scale) + self.gap > S::from_f64(radius),
+            // A regular shape's smallest enclosing circle is its circumcircle (a blob's is not
+            // known, so only its inscribed circle is used).
+            Region::Circle { radius } => {
+                let r = if matches!(kind, ShapeKind::Blob { .. }) { kind.inradius(scale) } else { kind.bounding_radius(scale) };
+                r + self.gap > S::from_f64(radius)
+            }
             Region::Annulus { outer, inner } => {
                 // In the band, or (a ring) around the hole.
                 let band = S::from_f64(outer - inner);

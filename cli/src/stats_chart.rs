@@ -39,6 +39,26 @@ pub struct TrialsSeries {
     pub fit: Option<(f64, f64, f64, f64)>,
 }
 
+/// The points worth drawing on a log x axis: at most about 400 per decade (the first point
+/// of each step of 1/400 decade, and the last point).
+fn thin_log(points: &[(f64, f64)]) -> Vec<(f64, f64)> {
+    let mut out: Vec<(f64, f64)> = Vec::new();
+    let mut last_step = i64::MIN;
+    for &p in points {
+        let step = (p.0.log10() * 400.0).floor() as i64;
+        if step != last_step {
+            out.push(p);
+            last_step = step;
+        }
+    }
+    if let (Some(&l), Some(&o)) = (points.last(), out.last()) {
+        if l != o {
+            out.push(l);
+        }
+    }
+    out
+}
+
 /// Log-log chart of cumulative trials against placements.
 pub fn trials_chart(series: &[TrialsSeries], title: &str) -> Result<Vec<u8>, CliError> {
     let mut out = String::new();
@@ -65,7 +85,7 @@ pub fn trials_chart(series: &[TrialsSeries], title: &str) -> Result<Vec<u8>, Cli
         for (i, s) in series.iter().enumerate() {
             let col = color(i);
             chart
-                .draw_series(LineSeries::new(s.points.iter().copied(), col.stroke_width(2)))
+                .draw_series(LineSeries::new(thin_log(&s.points), col.stroke_width(2)))
                 .map_err(chart_error)?
                 .label(s.label.clone())
                 .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], col.stroke_width(2)));

@@ -2,7 +2,7 @@
 
 use crate::doc::{FillDoc, ParamsDoc, RegionDoc, ShapeDoc, StatsDoc};
 use crate::error::CliError;
-use crate::output::svg::{Style, SvgOptions};
+use crate::output::svg::Style;
 use crate::output::{self, Format};
 use crate::spec::{self, RegionSpec};
 use crate::write::Dest;
@@ -113,6 +113,9 @@ pub struct FillArgs {
     /// No progress bar.
     #[arg(short, long)]
     pub quiet: bool,
+    /// Plotter and laser output: G-code machine, path order, hatch, pages, layers.
+    #[command(flatten)]
+    pub plot: crate::plot::PlotArgs,
 }
 
 impl FillArgs {
@@ -442,12 +445,13 @@ fn progress_bar(a: &FillArgs, count: Option<u64>) -> Option<indicatif::ProgressB
 /// Renders a document in a format.
 pub fn render(doc: &FillDoc, format: Format, a: &FillArgs) -> Result<Vec<u8>, CliError> {
     Ok(match format {
-        Format::Svg => output::svg::render(doc, &SvgOptions { style: a.style, pen_width: a.pen_width, boundary: a.boundary }),
+        Format::Svg => output::svg::render(doc, &a.plot.svg_options(doc, a.style, a.pen_width, a.boundary)?),
+        Format::Gcode => crate::plot::render_gcode(doc, &a.plot, a.quiet)?,
         Format::Json => output::json::render(doc)?,
         Format::Csv => output::csv::render(doc),
         Format::Digest => output::digest::render(doc),
         Format::Png => {
-            let svg = output::svg::render(doc, &SvgOptions { style: a.style, pen_width: a.pen_width, boundary: a.boundary });
+            let svg = output::svg::render(doc, &a.plot.svg_options(doc, a.style, a.pen_width, a.boundary)?);
             output::png::render(&svg, a.dpi)?
         }
     })
@@ -462,6 +466,9 @@ pub fn run(a: &FillArgs) -> Result<(), CliError> {
     };
     dest.check("--output", &inputs)?;
     let format = Format::resolve(a.format, &a.output)?;
+    // Plotter flags (machine profile, feeds, power, hatch, page) are checked before the fill
+    // runs; the bed check needs the drawing and happens in render().
+    a.plot.check(format)?;
     let (doc, halt) = compute(a)?;
     let bytes = render(&doc, format, a)?;
     dest.write(&bytes)?;

@@ -6,8 +6,10 @@
 pub mod doc;
 pub mod error;
 pub mod fill;
+pub mod machines_cmd;
 pub mod line;
 pub mod output;
+pub mod plot;
 pub mod spec;
 pub mod stats;
 pub mod svgin;
@@ -38,6 +40,8 @@ pub enum Command {
     /// Numbers behind the fills: zeta, gasket width, trials, halting, dimension.
     #[command(subcommand)]
     Stats(stats::StatsCommand),
+    /// Machine profiles for G-code: list the built-ins, or show one as TOML.
+    Machines(machines_cmd::MachinesArgs),
 }
 
 /// Runs the tool on `args` (including the program name); returns the exit code after
@@ -70,5 +74,6 @@ pub fn run(cli: Cli) -> Result<(), CliError> {
         Command::Fill(a) => fill::run(&a),
         Command::Line(a) => line::run(&a),
         Command::Stats(s) => stats::run(&s),
+        Command::Machines(m) => machines_cmd::run(&m),
     }
 }

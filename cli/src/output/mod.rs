@@ -22,6 +22,8 @@ pub enum Format {
     Png,
     /// One line `COUNT HEX16`: the determinism digest of every placed shape.
     Digest,
+    /// G-code for a pen plotter or laser (`--machine`).
+    Gcode,
 }
 
 impl Format {
@@ -40,9 +42,10 @@ impl Format {
             Some("json") => Ok(Format::Json),
             Some("csv") => Ok(Format::Csv),
             Some("png") => Ok(Format::Png),
+            Some("gcode") | Some("nc") => Ok(Format::Gcode),
             _ => Err(CliError::arg(
                 "--output",
-                format!("cannot tell the format of '{}'; end it in .svg, .png, .json or .csv, or give --format", path.display()),
+                format!("cannot tell the format of '{}'; end it in .svg, .png, .json, .csv, .gcode or .nc, or give --format", path.display()),
             )),
         }
     }
@@ -77,6 +80,8 @@ mod tests {
         assert_eq!(Format::resolve(None, Path::new("a.SVG")).ok(), Some(Format::Svg));
         assert_eq!(Format::resolve(None, Path::new("a.json")).ok(), Some(Format::Json));
         assert!(Format::resolve(None, Path::new("a.txt")).is_err());
+        assert_eq!(Format::resolve(None, Path::new("a.gcode")).ok(), Some(Format::Gcode));
+        assert_eq!(Format::resolve(None, Path::new("a.NC")).ok(), Some(Format::Gcode));
         assert_eq!(Format::resolve(Some(Format::Csv), Path::new("a.txt")).ok(), Some(Format::Csv));
     }
 }

@@ -3,6 +3,11 @@
 //! as `H - y` (no transform, which keeps the file simple for plotter tools). Numbers have four
 //! decimals (0.1 µm). The parameters and seed are in `<title>` and `<desc>`; there is no
 //! timestamp, so the same run gives the same bytes.
+//!
+//! For plotters, [`SvgOptions::page`] puts the drawing on a page (`--page`, margins,
+//! `--center`, `--fit`) and [`SvgOptions::layers`] splits the shapes into Inkscape layers by
+//! size band (`--layers size-bands:K`, one pen per layer). Without them the output is exactly
+//! the region-sized drawing above (the gallery pins it byte for byte).
 
 use crate::doc::{FillDoc, RegionDoc, ShapeDoc};
 use crate::output::num;
@@ -28,23 +33,50 @@ pub struct SvgOptions {
     pub pen_width: f64,
     /// Draw the region's outline too.
     pub boundary: bool,
+    /// A page to place the drawing on (`--page`); `None`: the page is the region's box.
+    pub page: Option<PageLayout>,
+    /// `Some(K)`: the shapes in K Inkscape layers by size, largest first (`--layers`).
+    pub layers: Option<u32>,
+}
+
+/// Where the drawing goes on a page: page point = `scale * p + (dx, dy)` for a region point
+/// `p`, in a page frame with y up from the page's bottom edge (the SVG flips it).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PageLayout {
+    /// Page width in mm.
+    pub width: f64,
+    /// Page height in mm.
+    pub height: f64,
+    /// Scale (1 unless `--fit`).
+    pub scale: f64,
+    /// Shift in x (mm).
+    pub dx: f64,
+    /// Shift in y (mm, y up).
+    pub dy: f64,
 }
 
 const P: usize = 4;
 
-/// The page frame: SVG x = x - x0, SVG y = y1 - y (y flipped about the region's top).
+/// The page frame: SVG x = ox + s (x - x0), SVG y = oy + s (y1 - y) (y flipped about the
+/// region's top). Without a page, s = 1 and ox = oy = 0.
 #[derive(Debug, Clone, Copy)]
 struct Frame {
     x0: f64,
     y1: f64,
+    s: f64,
+    ox: f64,
+    oy: f64,
 }
 
 impl Frame {
     fn x(&self, x: f64) -> String {
-        num(x - self.x0, P)
+        num(self.ox + self.s * (x - self.x0), P)
     }
     fn y(&self, y: f64) -> String {
-        num(self.y1 - y, P)
+        num(self.oy + self.s * (self.y1 - y), P)
+    }
+    fn len(&self, r: f64) -> String {
+        num(self.s * r, P)
     }
 }
 
@@ -54,12 +86,12 @@ fn circle_d(f: &Frame, cx: f64, cy: f64, r: f64) -> String {
         "M{},{} A{},{} 0 1 0 {},{} A{},{} 0 1 0 {},{} Z",
         f.x(cx + r),
         f.y(cy),
-        num(r, P),
-        num(r, P),
+        f.len(r),
+        f.len(r),
         f.x(cx - r),
         f.y(cy),
-        num(r, P),
-        num(r, P),
+        f.len(r),
+        f.len(r),
         f.x(cx + r),
         f.y(cy)
     )
@@ -78,7 +110,7 @@ fn shape_node(sh: &ShapeDoc, dx: f64, dy: f64, f: &Frame) -> Option<svg::node::e
             return Some(Path::new().set("d", d).set("fill-rule", "evenodd").into());
         }
         (Some(r), None) => {
-            return Some(Circle::new().set("cx", f.x(cx)).set("cy", f.y(cy)).set("r", num(r, P)).into());
+            return Some(Circle::new().set("cx", f.x(cx)).set("cy", f.y(cy)).set("r", f.len(r)).into());
         }
         _ => {}
     }
@@ -163,31 +195,80 @@ pub fn command_line(doc: &FillDoc) -> String {
     s
 }
 
+/// The size band (0 = largest) of each shape when the shapes are split into `k` bands of
+/// equal width in log(area), and each band's (largest, smallest) shape width in mm.
+pub fn size_bands(doc: &FillDoc, k: u32) -> (Vec<usize>, Vec<Option<(f64, f64)>>) {
+    let k = k.max(1) as usize;
+    let (amax, amin) = doc.shapes.iter().fold((0.0f64, f64::INFINITY), |(a, b), s| (a.max(s.area), b.min(s.area)));
+    let span = if amin > 0.0 && amax > amin { (amax / amin).ln() } else { 0.0 };
+    let mut widths: Vec<Option<(f64, f64)>> = vec![None; k];
+    let bands = doc
+        .shapes
+        .iter()
+        .map(|s| {
+            let b = if span > 0.0 && s.area > 0.0 { ((k as f64 * (amax / s.area).ln() / span).floor() as usize).min(k - 1) } else { 0 };
+            let w = crate::plot::shape_width(s);
+            widths[b] = Some(match widths[b] {
+                Some((hi, lo)) => (hi.max(w), lo.min(w)),
+                None => (w, w),
+            });
+            b
+        })
+        .collect();
+    (bands, widths)
+}
+
 /// Renders a fill as SVG.
 pub fn render(doc: &FillDoc, opt: &SvgOptions) -> Vec<u8> {
     let (w, h) = doc.extent();
     let (x0, _, _, y1) = doc.bbox();
-    let frame = Frame { x0, y1 };
-    let mut shapes = Group::new().set("id", "shapes");
-    shapes = match opt.style {
-        Style::Outline => shapes.set("fill", "none").set("stroke", "black").set("stroke-width", num(opt.pen_width, P)),
-        Style::Filled => shapes.set("fill", "black").set("stroke", "none"),
+    let (frame, page_w, page_h) = match opt.page {
+        None => (Frame { x0, y1, s: 1.0, ox: 0.0, oy: 0.0 }, w, h),
+        Some(pg) => {
+            let ox = pg.scale * x0 + pg.dx;
+            let oy = pg.height - pg.scale * y1 - pg.dy;
+            (Frame { x0, y1, s: pg.scale, ox, oy }, pg.width, pg.height)
+        }
+    };
+    let style = |g: Group| match opt.style {
+        Style::Outline => g.set("fill", "none").set("stroke", "black").set("stroke-width", num(opt.pen_width, P)),
+        Style::Filled => g.set("fill", "black").set("stroke", "none"),
+    };
+    // One group, or one Inkscape layer per size band (largest shapes first).
+    let (bands, widths) = match opt.layers {
+        Some(k) => size_bands(doc, k),
+        None => (vec![0; doc.shapes.len()], vec![None]),
+    };
+    let mut groups: Vec<Group> = match opt.layers {
+        None => vec![style(Group::new().set("id", "shapes"))],
+        Some(_) => widths
+            .iter()
+            .enumerate()
+            .map(|(i, wd)| {
+                let label = match wd {
+                    Some((hi, lo)) => format!("{} widths {}-{} mm", i + 1, num(*hi, 3), num(*lo, 3)),
+                    None => format!("{} (empty)", i + 1),
+                };
+                style(Group::new().set("id", format!("layer{}", i + 1)).set("inkscape:groupmode", "layer").set("inkscape:label", label))
+            })
+            .collect(),
     };
     let periodic = doc.periodic();
-    for sh in &doc.shapes {
+    for (sh, &band) in doc.shapes.iter().zip(&bands) {
         let offs = if periodic { images(sh, w, h) } else { vec![(0.0, 0.0)] };
         for (dx, dy) in offs {
             if let Some(n) = shape_node(sh, dx, dy, &frame) {
-                shapes = shapes.add(n);
+                let g = std::mem::take(&mut groups[band]);
+                groups[band] = g.add(n);
             }
         }
     }
     let p = &doc.params;
     let mut d = Document::new()
         .set("xmlns:inkscape", "http://www.inkscape.org/namespaces/inkscape")
-        .set("width", format!("{}mm", num(w, P)))
-        .set("height", format!("{}mm", num(h, P)))
-        .set("viewBox", format!("0 0 {} {}", num(w, P), num(h, P)))
+        .set("width", format!("{}mm", num(page_w, P)))
+        .set("height", format!("{}mm", num(page_h, P)))
+        .set("viewBox", format!("0 0 {} {}", num(page_w, P), num(page_h, P)))
         .add(Title::new("").add(Text::new(format!(
             "zetafill: {} {}, c = {}, N = {}, seed {}",
             doc.shapes.len(),
@@ -199,11 +280,17 @@ pub fn render(doc: &FillDoc, opt: &SvgOptions) -> Vec<u8> {
         .add(Description::new().add(Text::new(command_line(doc))));
     if periodic {
         // Images of edge-crossing shapes tile seamlessly; the clip keeps the tile's bounds.
-        let clip = ClipPath::new().set("id", "region").add(Rectangle::new().set("width", num(w, P)).set("height", num(h, P)));
+        let mut rect = Rectangle::new();
+        if opt.page.is_some() {
+            rect = rect.set("x", frame.x(x0)).set("y", frame.y(y1));
+        }
+        let clip = ClipPath::new().set("id", "region").add(rect.set("width", frame.len(w)).set("height", frame.len(h)));
         d = d.add(Definitions::new().add(clip));
-        shapes = shapes.set("clip-path", "url(#region)");
+        groups = groups.into_iter().map(|g| g.set("clip-path", "url(#region)")).collect();
     }
-    d = d.add(shapes);
+    for g in groups {
+        d = d.add(g);
+    }
     if opt.boundary {
         let b = region_node(doc, &frame).set("fill", "none").set("stroke", "black").set("stroke-width", num(opt.pen_width, P));
         d = d.add(b);

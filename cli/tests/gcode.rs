@@ -1,0 +1,686 @@
+//! G-code output, read back with an independent parser (the `gcode` crate) and replayed by a
+//! small interpreter written here, not shared with the writer: it tracks position, modal
+//! motion (G0/G1/G2/G3), feed, and the tool state implied by the profile's own `tool_off`
+//! block (a Z height, a servo angle, or laser power), and reports every breach of the safety
+//! invariants (DESIGN section 3, issue 4):
+//! - every coordinate inside the bed, arcs included (their extreme points);
+//! - the tool off for every G0 and at the end of the program;
+//! - a feed set before the first cutting move;
+//! - plain decimals with fixed precision (no exponent, NaN or -0);
+//! - byte-identical output for the same input.
+//!
+//! `checkers_fail_on_broken_programs` shows that each check can fail.
+
+mod common;
+
+use common::*;
+use std::f64::consts::{FRAC_PI_2, TAU};
+use std::path::Path;
+
+// ---------------------------------------------------------------------------------------------
+// The profile as the checker sees it (read with `toml`, not with the writer's types)
+
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum ToolModel {
+    /// Laser: on while M3/M4 is active with S > 0.
+    Laser,
+    /// Servo pen: up while the last M3 S equals the tool_off angle (M5 also counts as up).
+    Servo { up: f64 },
+    /// Z-lift pen: up at or above the tool_off Z.
+    Z { up: f64 },
+}
+
+#[derive(Debug, Clone)]
+struct Profile {
+    decimals: usize,
+    /// Bed in output units: x0, y0, x1, y1.
+    bed: [f64; 4],
+    tool: ToolModel,
+}
+
+fn toml_f(v: &toml::Value, path: &[&str]) -> f64 {
+    let mut cur = v;
+    for k in path {
+        cur = cur.get(k).unwrap_or_else(|| panic!("profile lacks {path:?}"));
+    }
+    cur.as_float().or_else(|| cur.as_integer().map(|i| i as f64)).unwrap_or_else(|| panic!("{path:?} is not a number"))
+}
+
+fn profile_from_toml(text: &str) -> Profile {
+    let v: toml::Value = toml::from_str(text).unwrap_or_else(|e| panic!("profile TOML: {e}"));
+    let inch = v.get("units").and_then(|u| u.as_str()) == Some("inch");
+    let f = if inch { 1.0 / 25.4 } else { 1.0 };
+    let (w, h) = (toml_f(&v, &["bed", "width"]) * f, toml_f(&v, &["bed", "height"]) * f);
+    let bed = match v.get("origin").and_then(|o| o.as_str()) {
+        Some("center") => [-w / 2.0, -h / 2.0, w / 2.0, h / 2.0],
+        _ => [0.0, 0.0, w, h],
+    };
+    let off = v.get("tool_off").and_then(|t| t.as_str()).unwrap_or("");
+    let prog = gcode::parse(off).unwrap_or_else(|e| panic!("tool_off does not parse: {e:?}"));
+    let mut tool = ToolModel::Laser;
+    for b in &prog.blocks {
+        for c in &b.codes {
+            let (letter, num, args) = code_parts(c);
+            for a in args {
+                let val = match a.value {
+                    gcode::Value::Literal(x) => x as f64,
+                    _ => continue,
+                };
+                if a.letter == 'Z' {
+                    tool = ToolModel::Z { up: val };
+                }
+                if letter == 'M' && num == 3 && a.letter == 'S' && !matches!(tool, ToolModel::Z { .. }) {
+                    tool = ToolModel::Servo { up: val };
+                }
+            }
+        }
+    }
+    Profile { decimals: if inch { 4 } else { 3 }, bed, tool }
+}
+
+fn builtin_profile(d: &Path, name: &str) -> (Profile, String) {
+    let o = zf_ok(d, &["machines", "show", name]);
+    let text = String::from_utf8_lossy(&o.stdout).into_owned();
+    (profile_from_toml(&text), text)
+}
+
+fn code_parts(c: &gcode::Code) -> (char, u32, &[gcode::Argument]) {
+    match c {
+        gcode::Code::General(g) => ('G', g.number.major(), &g.args),
+        gcode::Code::Miscellaneous(m) => ('M', m.number.major(), &m.args),
+        gcode::Code::ToolChange(t) => ('T', t.number.major(), &t.args),
+        _ => ('?', 0, &[]),
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// The interpreter
+
+#[derive(Debug, Default, Clone)]
+struct Replay {
+    /// One message per violation.
+    errors: Vec<String>,
+    /// Cutting length (output units).
+    down: f64,
+    /// Rapid / tool-off travel (output units).
+    up: f64,
+    g0: usize,
+    arcs: usize,
+    cuts: usize,
+    /// Cutting moves as segments (arcs as their chord) for geometry checks.
+    segments: Vec<[[f64; 2]; 2]>,
+    /// Every position reached (x0, y0, x1, y1).
+    bounds: [f64; 4],
+    /// Every position reached with the tool on, arc extremes included.
+    drawn: [f64; 4],
+}
+
+/// A plain decimal: `-?\d+(\.\d+)?` with exactly `decimals` decimals when given.
+fn plain(num: &str, decimals: Option<usize>) -> bool {
+    let body = num.strip_prefix('-').unwrap_or(num);
+    let (int, frac) = match body.split_once('.') {
+        Some((i, f)) => (i, Some(f)),
+        None => (body, None),
+    };
+    let digits = |s: &str| !s.is_empty() && s.bytes().all(|b| b.is_ascii_digit());
+    if !digits(int) || frac.is_some_and(|f| !digits(f)) {
+        return false;
+    }
+    if num.starts_with('-') && body.bytes().all(|b| b == b'0' || b == b'.') {
+        return false; // -0
+    }
+    match decimals {
+        Some(d) => frac.map_or(0, str::len) == d,
+        None => true,
+    }
+}
+
+/// Checks the raw text of every line, independently of the parser: words are a letter and a
+/// plain number; coordinates have exactly `decimals` decimals.
+fn check_numbers(text: &str, decimals: usize, errors: &mut Vec<String>) {
+    for (n, raw) in text.lines().enumerate() {
+        let line = raw.split(';').next().unwrap_or("");
+        let mut chars = line.char_indices().peekable();
+        while let Some((i, c)) = chars.next() {
+            if c.is_whitespace() {
+                continue;
+            }
+            if !c.is_ascii_alphabetic() {
+                errors.push(format!("line {}: unexpected '{c}' in '{raw}'", n + 1));
+                break;
+            }
+            let start = i + c.len_utf8();
+            let mut end = start;
+            while let Some(&(j, d)) = chars.peek() {
+                if d.is_ascii_digit() || d == '.' || d == '-' || d == '+' {
+                    end = j + d.len_utf8();
+                    chars.next();
+                } else {
+                    break;
+                }
+            }
+            let num = &line[start..end];
+            let letter = c.to_ascii_uppercase();
+            let want = if matches!(letter, 'X' | 'Y' | 'I' | 'J') { Some(decimals) } else { None };
+            if !plain(num, want) {
+                errors.push(format!("line {}: '{letter}{num}' is not a plain number with the fixed precision ({raw})", n + 1));
+            }
+        }
+    }
+}
+
+fn arc_extreme_angles(from: f64, span: f64) -> Vec<f64> {
+    let k0 = (from / FRAC_PI_2).ceil() as i64;
+    let k1 = ((from + span) / FRAC_PI_2).floor() as i64;
+    (k0..=k1).map(|k| k as f64 * FRAC_PI_2).collect()
+}
+
+fn replay(text: &str, p: &Profile) -> Replay {
+    let empty = [f64::INFINITY, f64::INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY];
+    let mut r = Replay { bounds: empty, drawn: empty, ..Replay::default() };
+    check_numbers(text, p.decimals, &mut r.errors);
+    let prog = match gcode::parse(text) {
+        Ok(p) => p,
+        Err(e) => {
+            r.errors.push(format!("does not parse: {e:?}"));
+            return r;
+        }
+    };
+    let eps = 1e-9;
+    let [bx0, by0, bx1, by1] = p.bed;
+    let mut pos = [0.0f64, 0.0];
+    let mut motion: Option<u32> = None;
+    let mut feed: Option<f64> = None;
+    let mut spindle = false;
+    let mut s_word = 0.0f64;
+    // Unknown at the start: assume the worst (down) for pens, off for a laser (GRBL boots off).
+    let mut z = f64::NEG_INFINITY;
+    let mut servo_s: Option<f64> = None;
+    let tool_on = |spindle: bool, s: f64, z: f64, servo_s: Option<f64>| match p.tool {
+        ToolModel::Laser => spindle && s > 0.0,
+        ToolModel::Servo { up } => !(servo_s == Some(up) || (!spindle && servo_s.is_some())),
+        ToolModel::Z { up } => z < up - 1e-9,
+    };
+    for (n, b) in prog.blocks.iter().enumerate() {
+        let line = n + 1;
+        let mut words: Vec<(char, f64)> = Vec::new();
+        let mut codes: Vec<(char, u32)> = Vec::new();
+        for c in &b.codes {
+            let (letter, num, args) = code_parts(c);
+            codes.push((letter, num));
+            for a in args {
+                let raw = &text[a.span.start..a.span.start + a.span.length];
+                let v = raw[1..].trim().parse::<f64>().unwrap_or(f64::NAN);
+                words.push((a.letter.to_ascii_uppercase(), v));
+            }
+        }
+        for w in &b.word_addresses {
+            let raw = &text[w.span.start..w.span.start + w.span.length];
+            words.push((w.letter.to_ascii_uppercase(), raw[1..].trim().parse::<f64>().unwrap_or(f64::NAN)));
+        }
+        let word = |l: char| words.iter().find(|w| w.0 == l).map(|w| w.1);
+        for &(l, num) in &codes {
+            match (l, num) {
+                ('G', 0..=3) => motion = Some(num),
+                ('M', 3) | ('M', 4) => {
+                    spindle = true;
+                    if let Some(s) = word('S') {
+                        servo_s = Some(s);
+                    }
+                }
+                ('M', 5) | ('M', 2) | ('M', 30) => spindle = false,
+                _ => {}
+            }
+        }
+        if let Some(f) = word('F') {
+            feed = Some(f);
+        }
+        if let Some(s) = word('S') {
+            s_word = s;
+        }
+        let moves_xy = word('X').is_some() || word('Y').is_some();
+        let moves_z = word('Z').is_some();
+        let dwell = codes.contains(&('G', 4));
+        if dwell || !(moves_xy || moves_z) {
+            continue;
+        }
+        let Some(m) = motion else {
+            r.errors.push(format!("line {line}: a move without a motion mode"));
+            continue;
+        };
+        let on = tool_on(spindle, s_word, z, servo_s);
+        if m >= 1 && feed.is_none() {
+            r.errors.push(format!("line {line}: G{m} before any feed was set"));
+        }
+        if let Some(zz) = word('Z') {
+            z = zz;
+        }
+        if !moves_xy {
+            continue;
+        }
+        let to = [word('X').unwrap_or(pos[0]), word('Y').unwrap_or(pos[1])];
+        if !(to[0].is_finite() && to[1].is_finite()) {
+            r.errors.push(format!("line {line}: a coordinate is not a number"));
+            continue;
+        }
+        let visit = |q: [f64; 2], what: &str, r: &mut Replay| {
+            r.bounds = [r.bounds[0].min(q[0]), r.bounds[1].min(q[1]), r.bounds[2].max(q[0]), r.bounds[3].max(q[1])];
+            if on {
+                r.drawn = [r.drawn[0].min(q[0]), r.drawn[1].min(q[1]), r.drawn[2].max(q[0]), r.drawn[3].max(q[1])];
+            }
+            if q[0] < bx0 - eps || q[0] > bx1 + eps || q[1] < by0 - eps || q[1] > by1 + eps {
+                r.errors.push(format!("line {line}: {what} ({}, {}) is outside the bed", q[0], q[1]));
+            }
+        };
+        if on {
+            visit(pos, "start point", &mut r);
+        }
+        visit(to, "end point", &mut r);
+        let len = (to[0] - pos[0]).hypot(to[1] - pos[1]);
+        match m {
+            0 => {
+                r.g0 += 1;
+                if on {
+                    r.errors.push(format!("line {line}: G0 with the tool on"));
+                }
+                r.up += len;
+            }
+            1 => {
+                if on {
+                    r.down += len;
+                    r.cuts += 1;
+                    r.segments.push([pos, to]);
+                } else {
+                    r.up += len;
+                }
+            }
+            _ => {
+                let (i, j) = (word('I').unwrap_or(0.0), word('J').unwrap_or(0.0));
+                let c = [pos[0] + i, pos[1] + j];
+                let rad = i.hypot(j);
+                let rad_end = (to[0] - c[0]).hypot(to[1] - c[1]);
+                if (rad - rad_end).abs() > 0.005_f64.max(rad * 1e-3) {
+                    r.errors.push(format!("line {line}: arc radius {rad} at the start, {rad_end} at the end"));
+                }
+                let a0 = (pos[1] - c[1]).atan2(pos[0] - c[0]);
+                let a1 = (to[1] - c[1]).atan2(to[0] - c[0]);
+                let full = to == pos;
+                let ccw = m == 3;
+                let span = if full {
+                    TAU
+                } else if ccw {
+                    (a1 - a0).rem_euclid(TAU)
+                } else {
+                    (a0 - a1).rem_euclid(TAU)
+                };
+                let from = if ccw || full { a0 } else { a1 };
+                for a in arc_extreme_angles(from, span) {
+                    visit([c[0] + rad * a.cos(), c[1] + rad * a.sin()], "arc extreme", &mut r);
+                }
+                r.arcs += 1;
+                if on {
+                    r.down += rad * span;
+                    r.cuts += 1;
+                    r.segments.push([pos, to]);
+                } else {
+                    r.up += rad * span;
+                }
+            }
+        }
+        pos = to;
+    }
+    if tool_on(spindle, s_word, z, servo_s) {
+        r.errors.push("the tool is on at the end of the program".into());
+    }
+    r
+}
+
+fn assert_safe(text: &str, p: &Profile, what: &str) -> Replay {
+    let r = replay(text, p);
+    assert!(r.errors.is_empty(), "{what}: {} violations, first: {:?}", r.errors.len(), &r.errors[..r.errors.len().min(5)]);
+    assert!(r.cuts > 0, "{what}: nothing drawn");
+    r
+}
+
+fn gcode_to(d: &Path, name: &str, args: &[&str]) -> (String, Out) {
+    let mut a: Vec<&str> = vec!["fill"];
+    a.extend_from_slice(args);
+    a.extend_from_slice(&["-o", name]);
+    let o = zf_ok(d, &a);
+    (String::from_utf8_lossy(&read(&d.join(name))).into_owned(), o)
+}
+
+fn circles_json(d: &Path, args: &[&str]) -> Vec<([f64; 2], f64)> {
+    let doc = fill_json(d, args);
+    shapes(&doc).iter().map(|s| (pt(s.get("center").unwrap_or(&serde_json::Value::Null)), f(s, "radius"))).collect()
+}
+
+// ---------------------------------------------------------------------------------------------
+// The checkers can fail
+
+#[test]
+fn checkers_fail_on_broken_programs() {
+    let laser = Profile { decimals: 3, bed: [0.0, 0.0, 100.0, 100.0], tool: ToolModel::Laser };
+    let good = "G90\nG21\nM5 S0\nG0 X10.000 Y10.000\nM4 S800\nG1 X20.000 Y10.000 F1000\nG2 X10.000 Y10.000 I-5.000 J0.000\nM5 S0\nM2\n";
+    assert!(replay(good, &laser).errors.is_empty(), "{:?}", replay(good, &laser).errors);
+    let cases: [(&str, String); 8] = [
+        ("G0 with the tool on", good.replace("G2 X10.000 Y10.000 I-5.000 J0.000", "G0 X30.000 Y30.000")),
+        ("outside the bed", good.replace("G1 X20.000 Y10.000", "G1 X120.000 Y10.000")),
+        ("outside the bed", good.replace("G2 X10.000 Y10.000 I-5.000 J0.000", "G2 X20.000 Y10.000 I0.000 J95.000")),
+        ("not a plain number", good.replace("X20.000", "X2.0e1")),
+        ("not a plain number", good.replace("X20.000", "X-0.000")),
+        ("not a plain number", good.replace("X20.000", "X20.0")),
+        ("before any feed", good.replace(" F1000", "")),
+        ("at the end", good.replace("M5 S0\nM2\n", "")),
+    ];
+    for (want, text) in cases {
+        let errs = replay(&text, &laser).errors;
+        assert!(errs.iter().any(|e| e.contains(want)), "expected '{want}' for:\n{text}\ngot {errs:?}");
+    }
+    // Pens: a servo angle other than the up angle is down; a Z below the up height is down.
+    let servo = Profile { tool: ToolModel::Servo { up: 30.0 }, ..laser.clone() };
+    let pen = "G90\nM3 S30\nG0 X10.000 Y10.000\nM3 S90\nG1 X20.000 Y10.000 F1000\nM3 S30\nG0 X0.000 Y0.000\nM2\n";
+    assert!(replay(pen, &servo).errors.is_empty());
+    assert!(replay(&pen.replace("M3 S30\nG0 X0.000", "G0 X0.000"), &servo).errors.iter().any(|e| e.contains("G0 with the tool on")));
+    let zpen = Profile { tool: ToolModel::Z { up: 3.0 }, ..laser };
+    let zp = "G90\nG0 Z3.000\nG0 X10.000 Y10.000\nG1 Z0.000 F600\nG1 X20.000 Y10.000 F1000\nG0 Z3.000\nG0 X0.000 Y0.000\n";
+    assert!(replay(zp, &zpen).errors.is_empty());
+    assert!(replay(&zp.replace("G0 Z3.000\nG0 X0.000", "G0 X0.000"), &zpen).errors.iter().any(|e| e.contains("G0 with the tool on")));
+    assert!(replay(&zp.replace("G0 Z3.000\nG0 X10", "G0 X10"), &zpen).errors.iter().any(|e| e.contains("G0 with the tool on")), "pen state unknown at start counts as down");
+}
+
+// ---------------------------------------------------------------------------------------------
+// Every profile, every kind of drawing
+
+#[test]
+fn every_builtin_profile_replays_safely() {
+    let dir = tmp();
+    let d = dir.path();
+    let scenes: [&[&str]; 5] = [
+        &["--region", "rect:150:120", "--count", "300", "--seed", "3"],
+        &["--region", "rect:150:120", "--shape", "star:5:0.5", "--c", "1.2", "--n-offset", "2", "--count", "150", "--seed", "4"],
+        &["--region", "rect:150:120", "--shape", "ring:0.5", "--periodic", "--count", "200", "--seed", "5"],
+        &["--region", "circle:60", "--count", "200", "--seed", "6", "--no-arcs", "--passes", "2"],
+        &["--region", "rect:100:100", "--shape", "square", "--count", "80", "--seed", "7", "--hatch", "1:30"],
+    ];
+    for machine in ["grbl-laser", "grbl-servo-pen", "z-lift-pen"] {
+        let (prof, _) = builtin_profile(d, machine);
+        for (k, scene) in scenes.iter().enumerate() {
+            let mut args = scene.to_vec();
+            args.extend_from_slice(&["--machine", machine]);
+            let (text, out) = gcode_to(d, "a.gcode", &args);
+            let r = assert_safe(&text, &prof, &format!("{machine} scene {k}"));
+            // The figures are in the header and on stderr.
+            assert!(text.starts_with("; zetafill G-code for machine"), "{machine}: header");
+            assert!(text.contains("figures:") && text.contains("pen-down") && text.contains("estimated time"));
+            assert!(text.contains("--seed"), "the header carries the parameters and the seed");
+            assert!(out.stderr.contains("pen-up travel"), "{machine}: figures on stderr: {}", out.stderr);
+            if scene.contains(&"--no-arcs") {
+                assert_eq!(r.arcs, 0, "--no-arcs writes no G2/G3");
+            }
+            // Same input, same bytes.
+            let (again, _) = gcode_to(d, "b.gcode", &args);
+            assert_eq!(text, again, "{machine} scene {k}: byte-identical rerun");
+        }
+    }
+}
+
+#[test]
+fn stdout_and_quiet() {
+    let dir = tmp();
+    let d = dir.path();
+    let args = ["fill", "--region", "rect:100:100", "--count", "50", "--format", "gcode", "-o", "-"];
+    let o = zf_ok(d, &args);
+    let (file, _) = gcode_to(d, "x.nc", &["--region", "rect:100:100", "--count", "50"]);
+    assert_eq!(String::from_utf8_lossy(&o.stdout), file, "-o - writes the same program; .nc is G-code");
+    let q = zf_ok(d, &[&args[..], &["--quiet"]].concat());
+    assert!(q.stderr.is_empty(), "--quiet: {}", q.stderr);
+}
+
+#[test]
+fn circles_become_one_arc_each_and_lengths_add_up() {
+    let dir = tmp();
+    let d = dir.path();
+    let base = ["--region", "rect:150:150", "--count", "400", "--seed", "11"];
+    let circles = circles_json(d, &base);
+    let (prof, _) = builtin_profile(d, "grbl-servo-pen");
+    let (text, _) = gcode_to(d, "c.gcode", &base);
+    let r = assert_safe(&text, &prof, "circles");
+    let want: f64 = circles.iter().map(|c| TAU * c.1).sum();
+    // Arcs are written for circles of radius >= 0.01 mm, the rest as chords.
+    assert!(r.arcs <= circles.len() && r.arcs + 5 >= circles.len(), "{} arcs for {} circles", r.arcs, circles.len());
+    assert!((r.down - want).abs() < 1e-3 * want, "pen-down {} mm, circumferences {want} mm", r.down);
+    // Without arcs: chords within the tolerance, so slightly shorter.
+    let (poly, _) = gcode_to(d, "p.gcode", &[&base[..], &["--no-arcs", "--chord-tolerance", "0.05"]].concat());
+    let rp = assert_safe(&poly, &prof, "chords");
+    assert_eq!(rp.arcs, 0);
+    assert!(rp.down < want && rp.down > want * 0.99, "{} vs {want}", rp.down);
+    // Every chord end lies on its circle: each cutting segment's ends are within 1 µm of
+    // some circle's outline, and its midpoint within the tolerance.
+    let near = |q: [f64; 2], tol: f64| circles.iter().any(|(c, rr)| ((q[0] - c[0]).hypot(q[1] - c[1]) - rr).abs() <= tol);
+    for s in &rp.segments {
+        assert!(near(s[0], 1e-3) && near(s[1], 1e-3));
+        let mid = [(s[0][0] + s[1][0]) / 2.0, (s[0][1] + s[1][1]) / 2.0];
+        assert!(near(mid, 0.05 + 1e-3), "chord {s:?} strays more than the tolerance");
+    }
+    // Two passes draw everything twice.
+    let (two, _) = gcode_to(d, "t.gcode", &[&base[..], &["--passes", "2"]].concat());
+    let r2 = assert_safe(&two, &prof, "passes");
+    assert!((r2.down - 2.0 * r.down).abs() < 1e-6 * r.down);
+}
+
+#[test]
+fn min_feature_leaves_out_small_shapes() {
+    let dir = tmp();
+    let d = dir.path();
+    let base = ["--region", "rect:150:150", "--count", "400", "--seed", "12"];
+    let circles = circles_json(d, &base);
+    let (prof, _) = builtin_profile(d, "grbl-laser");
+    let (text, _) = gcode_to(d, "m.gcode", &[&base[..], &["--machine", "grbl-laser", "--min-feature", "2"]].concat());
+    let r = assert_safe(&text, &prof, "min-feature");
+    let kept: Vec<_> = circles.iter().filter(|c| 2.0 * c.1 >= 2.0).collect();
+    assert!(kept.len() < circles.len());
+    assert_eq!(r.arcs, kept.len());
+    let want: f64 = kept.iter().map(|c| TAU * c.1).sum();
+    assert!((r.down - want).abs() < 1e-3 * want);
+}
+
+#[test]
+fn hatch_lines_stay_inside_their_shapes() {
+    let dir = tmp();
+    let d = dir.path();
+    let base = ["--region", "rect:120:120", "--shape", "ring:0.5", "--count", "120", "--seed", "13"];
+    let doc = fill_json(d, &base);
+    let rings: Vec<([f64; 2], f64, f64)> =
+        shapes(&doc).iter().map(|s| (pt(s.get("center").unwrap_or(&serde_json::Value::Null)), f(s, "radius"), f(s, "inner_radius"))).collect();
+    let (prof, _) = builtin_profile(d, "grbl-laser");
+    let (text, _) = gcode_to(d, "h.gcode", &[&base[..], &["--machine", "grbl-laser", "--hatch", "0.4:20", "--hatch-only", "--power", "300"]].concat());
+    assert!(text.contains("M4 S300"), "--power sets S");
+    let r = assert_safe(&text, &prof, "hatch");
+    assert_eq!(r.arcs, 0, "hatch only: no outlines");
+    // Each hatch segment lies in one ring's annulus (both ends on its circles, midpoint inside).
+    for s in &r.segments {
+        let mid = [(s[0][0] + s[1][0]) / 2.0, (s[0][1] + s[1][1]) / 2.0];
+        let ok = rings.iter().any(|(c, ro, ri)| {
+            let dm = (mid[0] - c[0]).hypot(mid[1] - c[1]);
+            let on = |q: [f64; 2]| {
+                let dq = (q[0] - c[0]).hypot(q[1] - c[1]);
+                (dq - ro).abs() < 2e-3 || (dq - ri).abs() < 2e-3
+            };
+            dm >= ri - 1e-3 && dm <= ro + 1e-3 && on(s[0]) && on(s[1])
+        });
+        assert!(ok, "hatch segment {s:?} is not inside one ring's annulus");
+    }
+}
+
+#[test]
+fn periodic_fill_is_clipped_to_the_tile() {
+    let dir = tmp();
+    let d = dir.path();
+    let (prof, _) = builtin_profile(d, "grbl-servo-pen");
+    let (text, _) = gcode_to(d, "p.gcode", &["--region", "rect:100:80", "--periodic", "--count", "300", "--seed", "14"]);
+    let r = assert_safe(&text, &prof, "periodic");
+    let b = r.drawn;
+    assert!(b[0] >= 0.0 && b[1] >= 0.0 && b[2] <= 100.0 && b[3] <= 80.0, "drawn inside the tile: {b:?}");
+    assert!(b[0] < 0.5 && b[2] > 99.5, "edge-crossing shapes reach the tile's edges: {b:?}");
+}
+
+#[test]
+fn order_cuts_travel() {
+    let dir = tmp();
+    let d = dir.path();
+    let (prof, _) = builtin_profile(d, "grbl-servo-pen");
+    let base = ["--region", "rect:200:200", "--count", "1500", "--seed", "15"];
+    let travel = |order: &str| {
+        let (text, _) = gcode_to(d, &format!("{order}.gcode"), &[&base[..], &["--order", order]].concat());
+        assert_safe(&text, &prof, order).up
+    };
+    let (none, greedy, improved) = (travel("none"), travel("greedy"), travel("improved"));
+    assert!(greedy < none / 3.0, "greedy {greedy} none {none}");
+    assert!(improved <= greedy, "improved {improved} greedy {greedy}");
+}
+
+// ---------------------------------------------------------------------------------------------
+// Placement on the bed, other origins and units
+
+#[test]
+fn too_big_is_refused_unless_fitted() {
+    let dir = tmp();
+    let d = dir.path();
+    let (prof, _) = builtin_profile(d, "grbl-servo-pen");
+    std::fs::write(d.join("big.gcode"), b"keep").unwrap_or_else(|e| panic!("{e}"));
+    let big = ["fill", "--region", "rect:500:200", "--count", "100", "-o", "big.gcode"];
+    let o = zf(d, &big);
+    assert_eq!(o.code, 2, "{}", o.stderr);
+    assert!(names_flag(&o.stderr, "--machine") && o.stderr.contains("--fit"), "{}", o.stderr);
+    assert_eq!(read(&d.join("big.gcode")), b"keep", "nothing written");
+    // --center does not shrink it.
+    assert_eq!(zf(d, &[&big[..], &["--center"]].concat()).code, 2);
+    // --fit scales it into the bed (less the margin).
+    zf_ok(d, &[&big[..], &["--fit", "--margin", "5"]].concat());
+    let text = String::from_utf8_lossy(&read(&d.join("big.gcode"))).into_owned();
+    let r = assert_safe(&text, &prof, "fit");
+    let b = r.drawn;
+    assert!(b[0] >= 5.0 - 1e-9 && b[2] <= 295.0 + 1e-9, "{b:?}");
+    assert!(b[2] - b[0] > 250.0, "scaled to the bed's width: {b:?}");
+    // A drawing of the right size in the wrong place: refused, placed by --center.
+    let far = ["fill", "--region", "polygon:400,400,480,400,480,470,400,470", "--count", "60", "-o", "far.gcode"];
+    let o = zf(d, &far);
+    assert_eq!(o.code, 2, "{}", o.stderr);
+    zf_ok(d, &[&far[..], &["--center"]].concat());
+    let text = String::from_utf8_lossy(&read(&d.join("far.gcode"))).into_owned();
+    let r = assert_safe(&text, &prof, "center");
+    assert!(r.drawn[0] > 100.0 && r.drawn[2] < 200.0, "centred (the 80 mm region at x 110..190): {:?}", r.drawn);
+}
+
+#[test]
+fn other_origins_and_inches() {
+    let dir = tmp();
+    let d = dir.path();
+    let (_, servo) = builtin_profile(d, "grbl-servo-pen");
+    for (origin, units) in [("top-left", "mm"), ("center", "mm"), ("bottom-left", "inch")] {
+        let text = servo
+            .replace("origin = \"bottom-left\"", &format!("origin = \"{origin}\""))
+            .replace("units = \"mm\"", &format!("units = \"{units}\""))
+            .replace("name = \"grbl-servo-pen\"", "name = \"custom\"");
+        std::fs::write(d.join("m.toml"), &text).unwrap_or_else(|e| panic!("{e}"));
+        let prof = profile_from_toml(&text);
+        let (g, _) = gcode_to(d, "o.gcode", &["--region", "rect:120:100", "--count", "200", "--seed", "16", "--machine", "m.toml"]);
+        let r = assert_safe(&g, &prof, &format!("{origin} {units}"));
+        assert!(g.contains(if units == "inch" { "G20" } else { "G21" }));
+        if origin == "center" {
+            assert!(r.drawn[0] < 0.0, "centre origin: negative coordinates on the left half");
+        }
+        if origin == "top-left" {
+            // y mirrored: the drawing (y 0..100 in the region) sits at y 200..300 from the top.
+            assert!(r.drawn[1] >= 200.0 - 1e-9, "{:?}", r.drawn);
+        }
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// `zetafill machines`
+
+#[test]
+fn machines_lists_and_shows_profiles() {
+    let dir = tmp();
+    let d = dir.path();
+    let list = String::from_utf8_lossy(&zf_ok(d, &["machines"]).stdout).into_owned();
+    for m in ["grbl-laser", "grbl-servo-pen", "z-lift-pen"] {
+        assert!(list.contains(m), "{list}");
+        let (_, text) = builtin_profile(d, m);
+        // What `show` prints is a valid profile: use it as a file.
+        std::fs::write(d.join("copy.toml"), &text).unwrap_or_else(|e| panic!("{e}"));
+        let (g, _) = gcode_to(d, "copy.gcode", &["--region", "rect:100:100", "--count", "30", "--machine", "copy.toml"]);
+        let (b, _) = gcode_to(d, "builtin.gcode", &["--region", "rect:100:100", "--count", "30", "--machine", m]);
+        assert_eq!(g, b, "{m}: the shown TOML is the built-in");
+    }
+    let laser = builtin_profile(d, "grbl-laser").0;
+    assert_eq!(laser.tool, ToolModel::Laser);
+    assert_eq!(builtin_profile(d, "grbl-servo-pen").0.tool, ToolModel::Servo { up: 30.0 });
+    assert_eq!(builtin_profile(d, "z-lift-pen").0.tool, ToolModel::Z { up: 3.0 });
+    let o = zf(d, &["machines", "show", "nope"]);
+    assert_eq!(o.code, 2, "{}", o.stderr);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Bad input: exit 2, the flag named, nothing written
+
+#[test]
+fn bad_input_names_the_flag_and_writes_nothing() {
+    let dir = tmp();
+    let d = dir.path();
+    let (_, servo) = builtin_profile(d, "grbl-servo-pen");
+    std::fs::write(d.join("missing.toml"), servo.replace("tool_off = \"\"\"\nM3 S30\nG4 P0.15\n\"\"\"\n", "")).unwrap_or_else(|e| panic!("{e}"));
+    std::fs::write(d.join("wrong.toml"), servo.replace("draw = 3000.0", "draw = \"fast\"")).unwrap_or_else(|e| panic!("{e}"));
+    std::fs::write(d.join("extra.toml"), servo.replace("arcs = true", "arcs = true\nspeed = 3")).unwrap_or_else(|e| panic!("{e}"));
+    std::fs::write(d.join("negfeed.toml"), servo.replace("draw = 3000.0", "draw = 0.0")).unwrap_or_else(|e| panic!("{e}"));
+    std::fs::create_dir(d.join("dir.gcode")).unwrap_or_else(|e| panic!("{e}"));
+    let cases: &[(&[&str], &str, &str)] = &[
+        (&["--machine", "grbl-lazer"], "--machine", "unknown machine"),
+        (&["--machine", "missing.toml"], "--machine", "tool_off"),
+        (&["--machine", "wrong.toml"], "--machine", "draw"),
+        (&["--machine", "extra.toml"], "--machine", "speed"),
+        (&["--machine", "negfeed.toml"], "--machine", "feed.draw"),
+        (&["--machine", "nofile.toml"], "--machine", "cannot read"),
+        (&["--feed", "0"], "--feed", "positive"),
+        (&["--feed", "-100"], "--feed", "positive"),
+        (&["--travel-feed", "0"], "--travel-feed", "positive"),
+        (&["--machine", "grbl-laser", "--power", "2000"], "--power", "range"),
+        (&["--machine", "grbl-laser", "--power", "-1"], "--power", "range"),
+        (&["--power", "100"], "--power", "power range"),
+        (&["--hatch", "0"], "--hatch", "positive"),
+        (&["--hatch", "-1:45"], "--hatch", "positive"),
+        (&["--hatch", "x"], "--hatch", "number"),
+        (&["--region", "rect:400:300"], "--machine", "does not fit"),
+        (&["--layers", "size-bands:2"], "--layers", "SVG"),
+        (&["--page", "a4"], "--page", "SVG"),
+    ];
+    for (extra, flag, what) in cases {
+        std::fs::write(d.join("out.gcode"), b"keep").unwrap_or_else(|e| panic!("{e}"));
+        let mut args = vec!["fill", "--count", "20", "-o", "out.gcode"];
+        if !extra.contains(&"--region") {
+            args.extend_from_slice(&["--region", "rect:100:100"]);
+        }
+        args.extend_from_slice(extra);
+        let o = zf(d, &args);
+        assert_eq!(o.code, 2, "{extra:?}: {}", o.stderr);
+        assert!(names_flag(&o.stderr, flag), "{extra:?}: the message names {flag}: {}", o.stderr);
+        assert!(o.stderr.contains(what), "{extra:?}: the message says '{what}': {}", o.stderr);
+        assert_eq!(read(&d.join("out.gcode")), b"keep", "{extra:?}: the old file is untouched");
+    }
+    let o = zf(d, &["fill", "--count", "20", "-o", "dir.gcode"]);
+    assert_eq!(o.code, 2);
+    assert!(names_flag(&o.stderr, "--output"), "{}", o.stderr);
+    let names: Vec<String> = listing(d).iter().filter_map(|p| p.file_name().map(|n| n.to_string_lossy().into_owned())).collect();
+    assert!(names.iter().all(|n| !n.starts_with(".zetafill-")), "no temporary files left: {names:?}");
+}
+
+#[test]
+fn progress_is_silent_when_piped() {
+    // The tests' stderr is a pipe, never a terminal: no progress bar, even for a long run.
+    let dir = tmp();
+    let d = dir.path();
+    let o = zf_ok(d, &["fill", "--count", "20000", "-o", "p.json"]);
+    assert!(o.stderr.is_empty(), "stderr: {}", o.stderr);
+}

@@ -1,0 +1,178 @@
+//! Plotter SVG: pages with margins, `--center`, `--fit`, Inkscape layers by size band, read
+//! back with usvg (element count, bounds and units must match the page), and reruns
+//! byte-identical. The default SVG (no page, no layers) is pinned by the gallery test.
+
+mod common;
+
+use common::*;
+
+const PX_PER_MM: f64 = 96.0 / 25.4;
+
+fn tree(bytes: &[u8]) -> usvg::Tree {
+    usvg::Tree::from_data(bytes, &usvg::Options::default()).unwrap_or_else(|e| panic!("usvg: {e}"))
+}
+
+/// Bounding boxes (px) of every drawn path, and how many there are per top-level group id.
+fn paths(g: &usvg::Group, out: &mut Vec<usvg::Rect>) {
+    for n in g.children() {
+        match n {
+            usvg::Node::Group(g) => paths(g, out),
+            usvg::Node::Path(p) => out.push(p.abs_bounding_box()),
+            _ => {}
+        }
+    }
+}
+
+fn union(boxes: &[usvg::Rect]) -> [f64; 4] {
+    boxes.iter().fold([f64::INFINITY, f64::INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY], |b, r| {
+        [b[0].min(r.left() as f64), b[1].min(r.top() as f64), b[2].max(r.right() as f64), b[3].max(r.bottom() as f64)]
+    })
+}
+
+/// The region's box on the page in mm (x0, y0 from the top-left, x1, y1), from the shapes
+/// of the same run: circles' extreme points.
+fn drawn_mm(tree: &usvg::Tree) -> [f64; 4] {
+    let mut boxes = Vec::new();
+    paths(tree.root(), &mut boxes);
+    let b = union(&boxes);
+    [b[0] / PX_PER_MM, b[1] / PX_PER_MM, b[2] / PX_PER_MM, b[3] / PX_PER_MM]
+}
+
+fn size_mm(t: &usvg::Tree) -> (f64, f64) {
+    (t.size().width() as f64 / PX_PER_MM, t.size().height() as f64 / PX_PER_MM)
+}
+
+#[test]
+fn page_presets_place_the_drawing_inside_the_margins() {
+    let dir = tmp();
+    let d = dir.path();
+    let base = ["--region", "rect:150:100", "--count", "300", "--seed", "21"];
+    let doc = fill_json(d, &base);
+    let n = shapes(&doc).len();
+    for (page, w, h) in [("a4", 210.0, 297.0), ("a3", 297.0, 420.0), ("letter", 215.9, 279.4), ("a4-landscape", 297.0, 210.0), ("180x130", 180.0, 130.0)] {
+        let svg = fill_to(d, "p.svg", &[&base[..], &["--page", page, "--margin", "12"]].concat());
+        let text = String::from_utf8_lossy(&svg).into_owned();
+        assert!(text.contains(&format!("width=\"{w}mm\"")) && text.contains(&format!("height=\"{h}mm\"")), "{page}: size in mm");
+        assert!(text.contains(&format!("viewBox=\"0 0 {w} {h}\"")), "{page}: a viewBox in mm");
+        let t = tree(&svg);
+        let (pw, ph) = size_mm(&t);
+        assert!((pw - w).abs() < 1e-3 && (ph - h).abs() < 1e-3, "{page}: usvg reads {pw} x {ph} mm");
+        let mut boxes = Vec::new();
+        paths(t.root(), &mut boxes);
+        assert_eq!(boxes.len(), n, "{page}: one element per shape");
+        // Top-left placement: the region's box starts at the margin; every shape inside it.
+        let b = drawn_mm(&t);
+        let pen = 0.3 / 2.0 + 1e-3;
+        assert!(b[0] >= 12.0 - pen && b[1] >= 12.0 - pen, "{page}: {b:?}");
+        assert!(b[2] <= 12.0 + 150.0 + pen && b[3] <= 12.0 + 100.0 + pen, "{page}: {b:?}");
+        assert_eq!(svg, fill_to(d, "q.svg", &[&base[..], &["--page", page, "--margin", "12"]].concat()), "{page}: byte-identical rerun");
+    }
+}
+
+#[test]
+fn center_and_fit() {
+    let dir = tmp();
+    let d = dir.path();
+    let base = ["--region", "rect:150:100", "--count", "300", "--seed", "22", "--boundary"];
+    // With --boundary the region's outline is drawn, so its box is the drawing's box.
+    let c = tree(&fill_to(d, "c.svg", &[&base[..], &["--page", "a4", "--center"]].concat()));
+    let b = drawn_mm(&c);
+    let pen = 0.3 / 2.0 + 1e-3;
+    assert!((b[0] - (210.0 - 150.0) / 2.0).abs() <= pen && (b[2] - (210.0 + 150.0) / 2.0).abs() <= pen, "{b:?}");
+    assert!((b[1] - (297.0 - 100.0) / 2.0).abs() <= pen && (b[3] - (297.0 + 100.0) / 2.0).abs() <= pen, "{b:?}");
+    // --fit scales to the page less margins: 150 mm wide becomes 190 mm on A4 with 10 mm margins.
+    let f = tree(&fill_to(d, "f.svg", &[&base[..], &["--page", "a4", "--fit"]].concat()));
+    let b = drawn_mm(&f);
+    assert!((b[0] - 10.0).abs() <= pen && (b[2] - 200.0).abs() <= pen, "{b:?}");
+    assert!(((b[3] - b[1]) - 190.0 * 100.0 / 150.0).abs() <= 2.0 * pen, "{b:?}");
+    // Too big for the page: refused, naming --page, nothing written.
+    std::fs::write(d.join("big.svg"), b"keep").unwrap_or_else(|e| panic!("{e}"));
+    let o = zf(d, &["fill", "--region", "rect:300:100", "--count", "20", "--page", "a4", "-o", "big.svg"]);
+    assert_eq!(o.code, 2, "{}", o.stderr);
+    assert!(names_flag(&o.stderr, "--page") && o.stderr.contains("--fit"), "{}", o.stderr);
+    assert_eq!(read(&d.join("big.svg")), b"keep");
+    // --fit without a page is a mistake for SVG.
+    let o = zf(d, &["fill", "--count", "20", "--fit", "-o", "x.svg"]);
+    assert_eq!(o.code, 2);
+    assert!(names_flag(&o.stderr, "--fit"), "{}", o.stderr);
+    let o = zf(d, &["fill", "--count", "20", "--hatch", "1", "-o", "x.svg"]);
+    assert_eq!(o.code, 2);
+    assert!(names_flag(&o.stderr, "--hatch"), "{}", o.stderr);
+    let o = zf(d, &["fill", "--count", "20", "--page", "a4", "--margin", "200", "-o", "x.svg"]);
+    assert_eq!(o.code, 2);
+    assert!(names_flag(&o.stderr, "--margin"), "{}", o.stderr);
+}
+
+#[test]
+fn layers_split_shapes_by_size() {
+    let dir = tmp();
+    let d = dir.path();
+    let base = ["--region", "rect:150:150", "--count", "400", "--seed", "23"];
+    let doc = fill_json(d, &base);
+    let n = shapes(&doc).len();
+    let svg = fill_to(d, "l.svg", &[&base[..], &["--layers", "size-bands:3", "--page", "a4"]].concat());
+    let text = String::from_utf8_lossy(&svg).into_owned();
+    assert_eq!(text.matches("inkscape:groupmode=\"layer\"").count(), 3, "three Inkscape layers");
+    for k in 1..=3 {
+        assert!(text.contains(&format!("id=\"layer{k}\"")) && text.contains(&format!("inkscape:label=\"{k} ")), "layer {k}");
+    }
+    let t = tree(&svg);
+    // Each layer is a top-level group (usvg keeps groups with an id).
+    fn layers(g: &usvg::Group, out: &mut Vec<(String, Vec<usvg::Rect>)>) {
+        for node in g.children() {
+            if let usvg::Node::Group(g) = node {
+                if g.id().starts_with("layer") {
+                    let mut v = Vec::new();
+                    paths(g, &mut v);
+                    out.push((g.id().to_string(), v));
+                } else {
+                    layers(g, out);
+                }
+            }
+        }
+    }
+    let mut per_layer: Vec<(String, Vec<usvg::Rect>)> = Vec::new();
+    layers(t.root(), &mut per_layer);
+    let ids: Vec<&str> = per_layer.iter().map(|(i, _)| i.as_str()).collect();
+    assert_eq!(ids, ["layer1", "layer2", "layer3"]);
+    assert_eq!(per_layer.iter().map(|(_, v)| v.len()).sum::<usize>(), n, "every shape in exactly one layer");
+    assert!(per_layer.iter().all(|(_, v)| !v.is_empty()));
+    // Largest first: every shape of a layer is at least as large as every shape of the next.
+    let size = |r: &usvg::Rect| r.width().max(r.height()) as f64;
+    for w in per_layer.windows(2) {
+        let smallest = w[0].1.iter().map(size).fold(f64::INFINITY, f64::min);
+        let largest_next = w[1].1.iter().map(size).fold(0.0, f64::max);
+        assert!(smallest >= largest_next - 1e-3, "{} then {}: {smallest} < {largest_next}", w[0].0, w[1].0);
+    }
+    assert!(per_layer[0].1.len() < per_layer[2].1.len(), "few large shapes, many small ones");
+    // Layers without a page work too, and keep the region's size.
+    let plain = tree(&fill_to(d, "m.svg", &[&base[..], &["--layers", "size-bands:2"]].concat()));
+    let (w, h) = size_mm(&plain);
+    assert!((w - 150.0).abs() < 1e-3 && (h - 150.0).abs() < 1e-3);
+    let o = zf(d, &["fill", "--count", "20", "--layers", "size-bands:0", "-o", "x.svg"]);
+    assert_eq!(o.code, 2);
+    assert!(names_flag(&o.stderr, "--layers"), "{}", o.stderr);
+}
+
+#[test]
+fn periodic_on_a_page_clips_to_the_tile() {
+    let dir = tmp();
+    let d = dir.path();
+    let svg = fill_to(d, "t.svg", &["--region", "rect:100:80", "--periodic", "--count", "200", "--seed", "24", "--page", "a4", "--center"]);
+    let t = tree(&svg);
+    let b = drawn_mm(&t);
+    // The tile is centred: x 55..155, y 108.5..188.5 on A4. Images of edge-crossing shapes
+    // reach past it (usvg's boxes ignore clipping) and are clipped to exactly that rectangle.
+    assert!(b[0] < 55.0 && b[2] > 155.0, "images past the tile's edges: {b:?}");
+    let text = String::from_utf8_lossy(&svg).into_owned();
+    let clip = text.split("<clipPath").nth(1).and_then(|c| c.split("</clipPath>").next()).unwrap_or_else(|| panic!("no clipPath"));
+    for attr in ["x=\"55\"", "y=\"108.5\"", "width=\"100\"", "height=\"80\""] {
+        assert!(clip.contains(attr), "clip rectangle lacks {attr}: {clip}");
+    }
+    assert!(text.contains("clip-path=\"url(#region)\""));
+    // PNG previews follow the page.
+    let png = fill_to(d, "t.png", &["--region", "rect:100:80", "--count", "50", "--page", "a5"]);
+    assert_eq!(&png[12..16], b"IHDR");
+    let be = |i: usize| u32::from_be_bytes([png[i], png[i + 1], png[i + 2], png[i + 3]]);
+    assert_eq!((be(16), be(20)), (560, 794), "A5 at 96 dpi");
+}

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Runs every zetafill test on a fresh machine, installing what it needs first.
 #   bash scripts/test-all.sh
-# Steps: the Cortex-M3 Rust target; the core built and linted for it (no_std, no alloc,
-# no panicking constructs); every host test of the workspace in release mode.
+# Steps: the Cortex-M3 Rust target, qemu-system-arm and defmt-print; the core built and linted
+# for it (no_std, no alloc, no panicking constructs); the firmware run under QEMU; every host
+# test of the workspace in release mode (including host-vs-firmware parity).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -12,6 +13,20 @@ step "installing the Rust target thumbv7m-none-eabi"
 rustup target add thumbv7m-none-eabi
 rustup component add clippy >/dev/null 2>&1 || true
 
+step "installing qemu-system-arm (the firmware simulation)"
+if ! command -v qemu-system-arm >/dev/null 2>&1; then
+    sudo=""
+    if [ "$(id -u)" -ne 0 ]; then sudo="sudo"; fi
+    $sudo apt-get update
+    $sudo apt-get install -y qemu-system-arm
+fi
+qemu-system-arm --version | head -n 1
+
+step "installing defmt-print (decodes the firmware's defmt log on the host)"
+if ! command -v defmt-print >/dev/null 2>&1; then
+    cargo install defmt-print --version =1.2.0 --locked
+fi
+
 step "core builds for Cortex-M3 (no_std, no allocator)"
 cargo build -p zetafill --target thumbv7m-none-eabi --release
 
@@ -20,6 +35,12 @@ if cargo clippy --version >/dev/null 2>&1; then
     cargo clippy -p zetafill --target thumbv7m-none-eabi --release -- -D warnings
     step "workspace lints (libraries and binaries)"
     cargo clippy --workspace --release -- -D warnings
+fi
+
+step "firmware: every scene under qemu-system-arm (lm3s6965evb, Cortex-M3, no FPU)"
+(cd firmware-sim && env -u CARGO_TARGET_DIR cargo run --release)
+if cargo clippy --version >/dev/null 2>&1; then
+    (cd firmware-sim && env -u CARGO_TARGET_DIR cargo clippy --release -- -D warnings)
 fi
 
 step "host tests (release)"

@@ -1,0 +1,154 @@
+//! zetafill on a Cortex-M3 (TI LM3S6965, no FPU) under qemu-system-arm.
+//!
+//! Runs every scene of `zetafill_display::SCENES` in a 1,024-shape engine that lives on the
+//! stack (so the f64 and the fixed-point scenes reuse the same RAM), drawing each shape onto a
+//! 128x128 monochrome framebuffer as it is placed, and reports through semihosting:
+//!
+//! - on the host's stderr, plain text lines that the host test parses:
+//!   `clock instructions=I ticks=T`, `digest NAME COUNT HEX16`, `cost NAME scalar=S placements=P trials=T instructions=I`,
+//!   `frame NAME FILE`, `stack NAME static=B stack=B total=B` (the stack painted anew before
+//!   each scene), `memory static=B stack=B total=B flash=B target=B`, then `done`;
+//! - each frame as a binary PBM file `frame-NAME.pbm` in QEMU's working directory;
+//! - on the host's stdout, defmt log frames (decoded by `defmt-print -e ELF`).
+//!
+//! Exit status 0 when every scene ran and the memory stays within the limits; 1 on any error
+//! (invalid parameters, capacity, halting, a failed file write, over budget), after a line
+//! `error ...`. A panic (there should be none) prints its message and exits non-zero too.
+//! There is no logic here beyond wiring the core and the display crate to the board.
+
+#![no_std]
+#![no_main]
+#![deny(unsafe_code)]
+
+mod board;
+
+use core::ffi::CStr;
+use cortex_m_rt::entry;
+use defmt_semihosting as _;
+use semihosting::io::Write as _;
+use semihosting::{eprintln, process};
+use zetafill::{Fixed, Placed, Scalar, Storage};
+use zetafill_display::draw::{Frame, PBM_HEADER};
+use zetafill_display::scenes::{run, ScalarKind, Scene, CAPACITY, INDEX_WORDS, SCENES};
+
+use board::{Board, CALIBRATION_INSTRUCTIONS};
+
+/// The target for static RAM plus stack (bytes): reported, see the README.
+const RAM_TARGET: usize = 48 * 1024;
+/// Static RAM plus stack beyond this fails the run: the board's 64 KiB less 8 KiB headroom.
+const RAM_LIMIT: usize = 56 * 1024;
+/// Flash must stay within this (bytes).
+const FLASH_BUDGET: usize = 192 * 1024;
+
+#[entry]
+fn main() -> ! {
+    let Some(peripherals) = cortex_m::Peripherals::take() else { fail("peripherals already taken") };
+    let board = Board::init(peripherals.SYST);
+    defmt::info!("zetafill firmware-sim: {=usize} scenes, engine capacity {=usize} shapes", SCENES.len(), CAPACITY);
+    let cal = Calibration { instructions: CALIBRATION_INSTRUCTIONS, ticks: board.calibrate() };
+    eprintln!("clock instructions={} ticks={}", cal.instructions, cal.ticks);
+    defmt::info!("clock: {=u64} instructions in {=u64} SysTick ticks", cal.instructions, cal.ticks);
+    if cal.ticks == 0 {
+        fail("SysTick does not count: run QEMU with -icount shift=0");
+    }
+    let mut deepest = 0;
+    for scene in SCENES {
+        board.repaint();
+        let ok = match scene.scalar {
+            ScalarKind::F64 => run_scene::<f64>(scene, &board, &cal),
+            ScalarKind::Fixed => run_scene::<Fixed>(scene, &board, &cal),
+        };
+        if !ok {
+            process::exit(1);
+        }
+        let m = board.memory();
+        eprintln!("stack {} static={} stack={} total={}", scene.name, m.static_ram, m.stack, m.static_ram + m.stack);
+        deepest = deepest.max(m.stack);
+    }
+    let m = board.memory();
+    let total = m.static_ram + deepest;
+    eprintln!("memory static={} stack={} total={} flash={} target={}", m.static_ram, deepest, total, m.flash, RAM_TARGET);
+    defmt::info!("memory: static {=usize} B + stack {=usize} B = {=usize} B, flash {=usize} B", m.static_ram, deepest, total, m.flash);
+    if total > RAM_LIMIT || m.flash > FLASH_BUDGET {
+        fail("memory over budget (56 KiB RAM, 192 KiB flash)");
+    }
+    eprintln!("done");
+    process::exit(0)
+}
+
+/// Instructions per SysTick tick, as measured.
+struct Calibration {
+    instructions: u64,
+    ticks: u64,
+}
+
+impl Calibration {
+    fn instructions(&self, ticks: u64) -> u64 {
+        (u128::from(ticks) * u128::from(self.instructions) / u128::from(self.ticks.max(1))) as u64
+    }
+}
+
+fn fail(msg: &str) -> ! {
+    eprintln!("error {}", msg);
+    process::exit(1)
+}
+
+/// Runs one scene on scalar `S` with the engine's storage on this frame of the stack.
+#[inline(never)]
+fn run_scene<S: Scalar + Default>(scene: &Scene, board: &Board, cal: &Calibration) -> bool {
+    let mut shapes = [Placed::<S>::default(); CAPACITY];
+    let mut index = [0u32; INDEX_WORDS];
+    let mut frame = Frame::new();
+    let storage = Storage { shapes: &mut shapes, index: &mut index, coverage: &mut [] };
+    let mut clock = board.clock();
+    let outcome = match run(scene, storage, &mut frame, || clock.now()) {
+        Ok(o) => o,
+        Err(e) => {
+            eprintln!("error {}: {}", scene.name, e);
+            return false;
+        }
+    };
+    let instructions = cal.instructions(outcome.ticks);
+    eprintln!("digest {} {} {:016x}", scene.name, outcome.count, outcome.digest);
+    eprintln!(
+        "cost {} scalar={} placements={} trials={} instructions={}",
+        scene.name,
+        scene.scalar.name(),
+        outcome.count,
+        outcome.trials,
+        instructions
+    );
+    defmt::info!(
+        "{=str} ({=str}): {=u64} shapes, {=u64} trials, {=u64} instructions per placement",
+        scene.name,
+        scene.scalar.name(),
+        outcome.count,
+        outcome.trials,
+        instructions / outcome.count.max(1)
+    );
+    write_frame(scene.name, &frame)
+}
+
+/// Writes `frame-NAME.pbm` through semihosting.
+fn write_frame(name: &str, frame: &Frame) -> bool {
+    let mut path = [0u8; 64];
+    let parts: [&[u8]; 4] = [b"frame-", name.as_bytes(), b".pbm", b"\0"];
+    let mut n = 0;
+    for part in parts {
+        let Some(dst) = path.get_mut(n..n + part.len()) else { return false };
+        dst.copy_from_slice(part);
+        n += part.len();
+    }
+    let Some(Ok(cpath)) = path.get(..n).map(CStr::from_bytes_with_nul) else { return false };
+    let written = semihosting::fs::File::create(cpath).and_then(|mut file| {
+        file.write_all(PBM_HEADER)?;
+        file.write_all(frame.data())
+    });
+    if written.is_err() {
+        eprintln!("error {}: cannot write the frame file", name);
+        return false;
+    }
+    let file_name = core::str::from_utf8(path.get(..n - 1).unwrap_or(&[])).unwrap_or("?");
+    eprintln!("frame {} {}", name, file_name);
+    true
+}

@@ -110,6 +110,10 @@ pub struct FillArgs {
     /// PNG: resolution in pixels per inch.
     #[arg(long, default_value_t = 96.0, value_parser = spec::positive)]
     pub dpi: f64,
+    /// SVG/PNG: draw the Voronoi cells of the shapes' centres ("cobblestones") instead of the
+    /// shapes; with --periodic the cells tile seamlessly.
+    #[arg(long)]
+    pub voronoi: bool,
     /// No progress bar.
     #[arg(short, long)]
     pub quiet: bool,
@@ -444,6 +448,13 @@ fn progress_bar(a: &FillArgs, count: Option<u64>) -> Option<indicatif::ProgressB
 
 /// Renders a document in a format.
 pub fn render(doc: &FillDoc, format: Format, a: &FillArgs) -> Result<Vec<u8>, CliError> {
+    if a.voronoi {
+        return match format {
+            Format::Svg => crate::cobble::svg(doc, a.pen_width, a.boundary),
+            Format::Png => output::png::render(&crate::cobble::svg(doc, a.pen_width, a.boundary)?, a.dpi),
+            _ => Err(CliError::arg("--voronoi", "cobblestones are drawn as SVG or PNG; write .svg or .png, or drop --voronoi")),
+        };
+    }
     Ok(match format {
         Format::Svg => output::svg::render(doc, &a.plot.svg_options(doc, a.style, a.pen_width, a.boundary)?),
         Format::Gcode => crate::plot::render_gcode(doc, &a.plot, a.quiet)?,

@@ -3,6 +3,7 @@
 
 #![deny(missing_docs)]
 
+pub mod cobble;
 pub mod doc;
 pub mod error;
 pub mod fill;
@@ -13,6 +14,7 @@ pub mod plot;
 pub mod spec;
 pub mod stats;
 pub mod svgin;
+pub mod territory;
 pub mod write;
 
 use clap::{Parser, Subcommand};
@@ -37,6 +39,8 @@ pub enum Command {
     Fill(fill::FillArgs),
     /// Fill an interval with segments whose lengths follow a power law (1D).
     Line(line::LineArgs),
+    /// Sugihara's Voronoi territory competing: boundaries, cells or coloured cells.
+    Territory(territory::TerritoryArgs),
     /// Numbers behind the fills: zeta, gasket width, trials, halting, dimension.
     #[command(subcommand)]
     Stats(stats::StatsCommand),
@@ -73,6 +77,7 @@ pub fn run(cli: Cli) -> Result<(), CliError> {
     match cli.command {
         Command::Fill(a) => fill::run(&a),
         Command::Line(a) => line::run(&a),
+        Command::Territory(a) => territory::run(&a),
         Command::Stats(s) => stats::run(&s),
         Command::Machines(m) => machines_cmd::run(&m),
     }

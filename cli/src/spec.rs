@@ -98,8 +98,8 @@ pub fn one_shape(s: &str) -> Result<ShapeKind, String> {
             let aspect = positive(a).map_err(|e| format!("rect:ASPECT: the aspect ratio {e}"))?;
             ShapeKind::Rect { aspect }
         }
-        ("polygon", [n]) => ShapeKind::Polygon { sides: count("polygon:SIDES: SIDES", n, 3, 48)? },
-        ("star", [p, r]) => ShapeKind::Star { points: count("star:POINTS:INNER_RATIO: POINTS", p, 2, 24)?, inner: ratio("star:POINTS:INNER_RATIO: INNER_RATIO", r)? },
+        ("polygon", [n]) => ShapeKind::Polygon { sides: count("polygon:SIDES: SIDES", n, 3, 32)? },
+        ("star", [p, r]) => ShapeKind::Star { points: count("star:POINTS:INNER_RATIO: POINTS", p, 2, 16)?, inner: ratio("star:POINTS:INNER_RATIO: INNER_RATIO", r)? },
         ("ring", [r]) => ShapeKind::Ring { inner: ratio("ring:INNER_RATIO: INNER_RATIO", r)? },
         ("blob", [d]) => {
             let delta = finite(d).map_err(|e| format!("blob:DELTA: {e}"))?;

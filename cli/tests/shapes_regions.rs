@@ -31,7 +31,7 @@ fn check_kinds(doc: &Value) {
                     "triangle" => 3,
                     "polygon" => 7,
                     "star" => if vs.len() == 8 { 8 } else { 10 },
-                    "blob" => 48,
+                    "blob" => 32,
                     other => panic!("unknown kind {other}"),
                 };
                 assert_eq!(vs.len(), want, "{kind}");

@@ -391,6 +391,8 @@ impl<'a, S: Scalar> Engine<'a, S> {
     }
 
     /// Whether a shape of this area certainly cannot lie in the region in any orientation.
+    /// Kept out of line: its scratch geometry would otherwise sit in every step's stack frame.
+    #[inline(never)]
     fn cannot_fit(&self, kind: ShapeKind, area: f64) -> bool {
         let scale: S = kind.scale_for(area, S::ZERO);
         let inr = kind.inradius(scale);

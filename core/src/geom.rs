@@ -54,7 +54,7 @@ impl<S: Scalar> Point<S> {
 }
 
 /// Most vertices a polygon may have (blobs use [`crate::shape::BLOB_VERTICES`]).
-pub const MAX_VERTS: usize = 48;
+pub const MAX_VERTS: usize = 32;
 
 /// A concrete shape at its place, ready for exact tests and for drawing.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -23,7 +23,7 @@ pub const CAPACITY: usize = 1024;
 /// Hash buckets: an eighth of the host's `2 * capacity` to save RAM (collisions only cost
 /// time, never change a result; 128 buckets would save 512 B and cost 48% more instructions
 /// per placement for `circles`).
-pub const BUCKETS: usize = 256;
+pub const BUCKETS: usize = 128;
 /// Index words: one link per shape slot plus the buckets.
 pub const INDEX_WORDS: usize = CAPACITY + BUCKETS;
 

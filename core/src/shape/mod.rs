@@ -17,7 +17,7 @@ use crate::geom::{Geo, Point, MAX_VERTS};
 use crate::scalar::Scalar;
 
 /// Vertices of a blob's polygon.
-pub const BLOB_VERTICES: usize = 48;
+pub const BLOB_VERTICES: usize = 32;
 
 /// Most shapes in a mix.
 pub const MAX_MIX: usize = 8;
@@ -38,12 +38,12 @@ pub enum ShapeKind {
     Triangle,
     /// A regular polygon.
     Polygon {
-        /// Number of sides, 3..=48.
+        /// Number of sides, 3..=32.
         sides: u8,
     },
     /// A star with `points` points; the inner vertices lie at `inner` times the outer radius.
     Star {
-        /// Points, 2..=24.
+        /// Points, 2..=16.
         points: u8,
         /// Inner radius over outer radius, in (0, 1).
         inner: f64,

@@ -106,6 +106,9 @@ pub struct LineArgs {
     /// No progress bar.
     #[arg(short, long)]
     pub quiet: bool,
+    /// Plotter and laser flags (G-code output).
+    #[command(flatten)]
+    pub plot: crate::plot::PlotArgs,
 }
 
 /// The fractal dimension D in 1D: 0 < D < 1 (so that c = 1/D > 1).
@@ -605,6 +608,77 @@ pub fn render_digest(doc: &LineDoc) -> Vec<u8> {
     format!("{} {:016x}\n", doc.shapes.len(), h.finish()).into_bytes()
 }
 
+/// The plotter drawing of a 1D fill, in the frame of its SVG (x along the interval, y up,
+/// the line at mid height): `dashes` one open stroke per segment (per piece when a periodic
+/// segment wraps), `circles` one circle of diameter L_i per segment centred on the line
+/// (a wrapping segment's circle centred at its middle taken modulo L), `bars` each segment's
+/// bar outline (fill it with `--hatch`). `zoom` has no G-code form.
+pub fn drawing(doc: &LineDoc, opt: &LineSvgOptions) -> Result<(crate::plot::Drawing, crate::plot::Bounds), CliError> {
+    use crate::plot::{Bounds, Drawing, Path};
+    let l = doc.region.length;
+    let periodic = doc.region.periodic;
+    let d0 = doc.shapes.first().map_or(l / 10.0, |s| s.length);
+    let mut paths = Vec::new();
+    let height = match opt.render {
+        Render::Dashes => {
+            let h = (4.0 * opt.pen_width).max(2.0);
+            for s in &doc.shapes {
+                for (a, b) in pieces(s, l, periodic) {
+                    if b - a >= INVISIBLE {
+                        paths.push(Path::polyline(vec![[a, h / 2.0], [b, h / 2.0]], false));
+                    }
+                }
+            }
+            h
+        }
+        Render::Circles => {
+            for s in &doc.shapes {
+                let r = s.length / 2.0;
+                if r >= INVISIBLE {
+                    let mid = s.start + r;
+                    let mid = if periodic && mid >= l { mid - l } else { mid };
+                    paths.push(Path::circle([mid, d0 / 2.0], r));
+                }
+            }
+            d0
+        }
+        Render::Bars => {
+            let h = opt.bar_height;
+            for s in &doc.shapes {
+                for (a, b) in pieces(s, l, periodic) {
+                    if b - a >= INVISIBLE {
+                        paths.push(Path::polyline(vec![[a, 0.0], [b, 0.0], [b, h], [a, h]], true));
+                    }
+                }
+            }
+            h
+        }
+        Render::Zoom => return Err(CliError::arg("--render", "zoom has no G-code form; use dashes, circles or bars")),
+    };
+    // Circles may reach past the ends of the interval: the frame holds them all.
+    let mut frame = Bounds { x0: 0.0, y0: 0.0, x1: l, y1: height };
+    for p in &paths {
+        let b = p.bounds();
+        frame = Bounds { x0: frame.x0.min(b.x0), y0: frame.y0.min(b.y0), x1: frame.x1.max(b.x1), y1: frame.y1.max(b.y1) };
+    }
+    Ok((Drawing { paths }, frame))
+}
+
+fn render_gcode(doc: &LineDoc, opt: &LineSvgOptions, a: &LineArgs) -> Result<Vec<u8>, CliError> {
+    let (d, frame) = drawing(doc, opt)?;
+    let p = &doc.params;
+    let header = vec![format!(
+        "zetafill line --length {} --c {} --n-offset {} --seed {} --render {}{}",
+        doc.region.length,
+        p.c,
+        p.n_offset,
+        p.seed,
+        opt.render.to_possible_value().map(|v| v.get_name().to_string()).unwrap_or_default(),
+        if doc.region.periodic { " --periodic" } else { "" }
+    )];
+    crate::plot::drawing_gcode(&d, &frame, &a.plot, header, a.quiet)
+}
+
 /// Renders a document in a format.
 pub fn render(doc: &LineDoc, format: Format, a: &LineArgs) -> Result<Vec<u8>, CliError> {
     let opt = LineSvgOptions {
@@ -623,6 +697,7 @@ pub fn render(doc: &LineDoc, format: Format, a: &LineArgs) -> Result<Vec<u8>, Cl
         Format::Csv => render_csv(doc),
         Format::Digest => render_digest(doc),
         Format::Png => output::png::render(&render_svg(doc, &opt), a.dpi)?,
+        Format::Gcode => render_gcode(doc, &opt, a)?,
         #[allow(unreachable_patterns)]
         f => return Err(CliError::arg("--format", format!("{f:?} is not available for a 1D fill; use svg, png, json, csv or digest"))),
     })

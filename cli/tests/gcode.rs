@@ -619,6 +619,10 @@ fn machines_lists_and_shows_profiles() {
     assert_eq!(laser.tool, ToolModel::Laser);
     assert_eq!(builtin_profile(d, "grbl-servo-pen").0.tool, ToolModel::Servo { up: 30.0 });
     assert_eq!(builtin_profile(d, "z-lift-pen").0.tool, ToolModel::Z { up: 3.0 });
+    // `show FILE.toml` checks a profile and prints it back as TOML that loads again.
+    let shown = String::from_utf8_lossy(&zf_ok(d, &["machines", "show", "copy.toml"]).stdout).into_owned();
+    std::fs::write(d.join("again.toml"), &shown).unwrap_or_else(|e| panic!("{e}"));
+    zf_ok(d, &["machines", "show", "again.toml"]);
     let o = zf(d, &["machines", "show", "nope"]);
     assert_eq!(o.code, 2, "{}", o.stderr);
 }
@@ -683,4 +687,38 @@ fn progress_is_silent_when_piped() {
     let d = dir.path();
     let o = zf_ok(d, &["fill", "--count", "20000", "-o", "p.json"]);
     assert!(o.stderr.is_empty(), "stderr: {}", o.stderr);
+}
+
+/// `zetafill line` writes G-code through the same back end: every render that has a plotter
+/// form replays safely on every built-in machine, reruns are byte-identical, and the pen goes
+/// down once per segment for dashes.
+#[test]
+fn line_gcode_replays_safely() {
+    let dir = tmp();
+    let d = dir.path();
+    for machine in ["grbl-laser", "grbl-servo-pen", "z-lift-pen"] {
+        let (prof, _) = builtin_profile(d, machine);
+        for render in ["dashes", "circles", "bars"] {
+            for periodic in [false, true] {
+                let mut args = vec!["line", "--count", "200", "--seed", "9", "--render", render, "--machine", machine, "-o", "l.gcode"];
+                if periodic {
+                    // A wrapping segment's circle reaches past x = 0: centre the drawing.
+                    args.extend_from_slice(&["--periodic", "--center"]);
+                }
+                zf_ok(d, &args);
+                let text = String::from_utf8_lossy(&read(&d.join("l.gcode"))).into_owned();
+                let r = assert_safe(&text, &prof, &format!("line {render} on {machine}"));
+                assert!(text.contains("zetafill line") && text.contains("--seed 9"), "the header names the run");
+                if render == "dashes" && !periodic {
+                    assert_eq!(r.cuts >= 200, true, "one stroke per segment");
+                }
+                zf_ok(d, &args[..args.len()].iter().map(|s| if *s == "l.gcode" { "m.gcode" } else { s }).collect::<Vec<_>>());
+                assert_eq!(read(&d.join("l.gcode")), read(&d.join("m.gcode")), "byte-identical rerun");
+            }
+        }
+    }
+    let o = zf(d, &["line", "--render", "zoom", "-o", "z.gcode"]);
+    assert_eq!(o.code, 2);
+    assert!(names_flag(&o.stderr, "--render"), "{}", o.stderr);
+    assert!(!d.join("z.gcode").exists());
 }

@@ -666,3 +666,66 @@ fn bad_input_exits_2_names_the_flag_and_writes_nothing() {
         assert!(!dir.path().join("out.svg").exists(), "{args:?} wrote a file");
     }
 }
+
+#[test]
+fn gcode_draws_the_boundaries_safely_inside_the_bed() {
+    let dir = tmp();
+    ok(dir.path(), &["territory", "--points", "3000", "--seed", "2", "--boundary", "-q", "-o", "t.gcode"]);
+    ok(dir.path(), &["territory", "--points", "3000", "--seed", "2", "-o", "t.json"]);
+    let text = String::from_utf8(std::fs::read(dir.path().join("t.gcode")).unwrap_or_default()).unwrap_or_default();
+    let doc = json(&dir.path().join("t.json"));
+    let drawn = gcode_check(&text).unwrap_or_else(|e| panic!("{e}"));
+    // The checker fails on a rapid move with the pen down, and on a point off the bed.
+    let pen_down_rapid = text.replacen("M3 S30\nG4 P0.15\nG0", "M3 S90\nG4 P0.15\nG0", 1);
+    assert_ne!(pen_down_rapid, text);
+    assert!(gcode_check(&pen_down_rapid).is_err());
+    assert!(gcode_check(&text.replacen("G1 X", "G1 X-", 1)).is_err());
+    let want = doc["stats"]["boundary_length"].as_f64().unwrap_or(0.0) + 800.0;
+    assert!((drawn - want).abs() < 0.01 * want, "drew {drawn} mm, boundaries and outline are {want} mm");
+    // Filled cells cannot be plotted: exit 2, no file.
+    let o = zf(dir.path(), &["territory", "--render", "filled", "-o", "f.gcode"]);
+    assert_eq!(o.code, 2);
+    assert!(o.stderr.contains("--render") && !dir.path().join("f.gcode").exists());
+}
+
+/// A small G-code interpreter for the plot back end's pen profile (M3 S90 down, M3 S30 up):
+/// every coordinate inside the 300 x 300 mm bed, the pen up for every rapid move and at the
+/// end, a feed before the first cutting move, plain numbers. Returns the pen-down length.
+fn gcode_check(text: &str) -> Result<f64, String> {
+    let (mut down, mut pos, mut drawn, mut feed_set) = (false, [0.0f64, 0.0], 0.0, false);
+    for line in text.lines().map(|l| l.split(';').next().unwrap_or("").trim()).filter(|l| !l.is_empty()) {
+        let word = |c: char| line.split_whitespace().find(|w| w.starts_with(c)).and_then(|w| w[1..].parse::<f64>().ok());
+        if line.contains('e') || line.contains("NaN") {
+            return Err(format!("not a plain number: {line}"));
+        }
+        let cmd = line.split_whitespace().next().unwrap_or("");
+        if cmd == "M3" {
+            down = word('S') == Some(90.0);
+        } else if cmd == "M5" {
+            down = false;
+        } else if cmd == "G0" || cmd == "G1" {
+            let next = [word('X').unwrap_or(pos[0]), word('Y').unwrap_or(pos[1])];
+            if !((0.0..=300.0).contains(&next[0]) && (0.0..=300.0).contains(&next[1])) {
+                return Err(format!("off the bed: {line}"));
+            }
+            if cmd == "G0" {
+                if down {
+                    return Err(format!("rapid move with the pen down: {line}"));
+                }
+            } else {
+                feed_set |= word('F').is_some();
+                if !feed_set {
+                    return Err(format!("cutting move before any feed: {line}"));
+                }
+                if down {
+                    drawn += (next[0] - pos[0]).hypot(next[1] - pos[1]);
+                }
+            }
+            pos = next;
+        }
+    }
+    if down {
+        return Err("pen left down at the end".into());
+    }
+    Ok(drawn)
+}

@@ -36,6 +36,8 @@ pub enum TerritoryFormat {
     Png,
     /// JSON document (version 1, mode "territory").
     Json,
+    /// G-code for a plotter or laser (the boundaries, or every edge with --render cells).
+    Gcode,
 }
 
 impl TerritoryFormat {
@@ -50,7 +52,8 @@ impl TerritoryFormat {
             Some("svg") => Ok(TerritoryFormat::Svg),
             Some("png") => Ok(TerritoryFormat::Png),
             Some("json") => Ok(TerritoryFormat::Json),
-            _ => Err(CliError::arg("--output", format!("cannot tell the format of '{}'; end it in .svg, .png or .json, or give --format", path.display()))),
+            Some("gcode" | "nc") => Ok(TerritoryFormat::Gcode),
+            _ => Err(CliError::arg("--output", format!("cannot tell the format of '{}'; end it in .svg, .png, .json, .gcode or .nc, or give --format", path.display()))),
         }
     }
 }
@@ -117,9 +120,82 @@ pub struct TerritoryArgs {
     /// PNG: resolution in pixels per inch.
     #[arg(long, default_value_t = 96.0, value_parser = spec::positive)]
     pub dpi: f64,
-    /// No progress bar.
+    /// No progress bar (and no G-code figures on stderr).
     #[arg(short, long)]
     pub quiet: bool,
+    /// Plotter and laser output (G-code): machine, feeds, passes, order, --fit/--center.
+    #[command(flatten)]
+    pub plot: crate::plot::PlotArgs,
+}
+
+/// Refuses the plot flags that have no meaning for territories, before any work.
+fn check_plot(a: &TerritoryArgs, format: TerritoryFormat) -> Result<(), CliError> {
+    let p = &a.plot;
+    let not_here = |flag: &str, why: &str| Err(CliError::arg(flag, format!("is not available for territory: {why}")));
+    if p.hatch.is_some() || p.hatch_only {
+        return not_here("--hatch", "territories are drawn as lines");
+    }
+    if p.min_feature > 0.0 {
+        return not_here("--min-feature", "every boundary edge is drawn");
+    }
+    if p.layers != crate::plot::Layers::None {
+        return not_here("--layers", "the SVG has its own layers (cells, boundaries, outline)");
+    }
+    if p.page.is_some() {
+        return not_here("--page", "the SVG is drawn at the region's size");
+    }
+    if format == TerritoryFormat::Gcode {
+        if !matches!(a.render, Render::Boundaries | Render::Cells) {
+            return Err(CliError::arg("--render", "G-code draws lines: use --render boundaries or cells"));
+        }
+        let m = p.machine()?;
+        p.gcode_options(&m)?;
+    } else if p.fit || p.center {
+        return Err(CliError::arg(if p.fit { "--fit" } else { "--center" }, "places the drawing on a machine's bed: it is for G-code output"));
+    }
+    Ok(())
+}
+
+/// The drawing as G-code: boundary polylines (and with `cells` every other Voronoi edge),
+/// placed on the machine's bed, written by the plot back end with its safety invariants.
+fn gcode(o: &Outcome, a: &TerritoryArgs, desc: String) -> Result<Vec<u8>, CliError> {
+    use crate::plot::{gcode, place, Bounds, Drawing, Fit, Path as PlotPath};
+    let p = &a.plot;
+    let m = p.machine()?;
+    let mut opts = p.gcode_options(&m)?;
+    let mut lines = Vec::new();
+    if a.render == Render::Cells {
+        let dual = geom::Dual::of(&o.model.tri, o.clip.bbox());
+        let t = &o.model.territory;
+        lines = geom::polylines(&dual, (0..dual.edges.len()).filter(|&i| t[dual.edges[i].sites.0] == t[dual.edges[i].sites.1]), &o.clip);
+    }
+    lines.extend(o.boundaries.iter().cloned());
+    let mut paths: Vec<PlotPath> = lines.into_iter().map(|l| PlotPath::polyline(l, false)).collect();
+    if a.boundary {
+        paths.extend(o.clip.outline_paths());
+    }
+    let (x0, y0, x1, y1) = o.clip.bbox();
+    let area = m.usable_area(opts.margin);
+    let fit = if p.fit {
+        Fit::Scale
+    } else if p.center {
+        Fit::Center
+    } else {
+        Fit::AsIs
+    };
+    let pl = place(&Bounds { x0, y0, x1, y1 }, &area, fit).map_err(|e| {
+        CliError::arg(
+            "--machine",
+            format!("{e} of the bed of '{}' ({} x {} mm, margin {} mm); use --fit to scale it or --center to move it", m.name, m.bed.width, m.bed.height, opts.margin),
+        )
+    })?;
+    let drawing = Drawing { paths }.placed(&pl);
+    opts.header.push(desc);
+    let out = gcode::write(&drawing, &m, &opts).map_err(|e| CliError::arg("--machine", e))?;
+    if !a.quiet {
+        eprintln!("{}", out.figures);
+    }
+    Ok(out.bytes)
 }
 
 fn seed_count(s: &str) -> Result<usize, String> {
@@ -573,14 +649,15 @@ pub fn compute(a: &TerritoryArgs) -> Result<Outcome, CliError> {
 
 /// Renders a finished run.
 pub fn render_bytes(o: &Outcome, a: &TerritoryArgs, format: TerritoryFormat) -> Result<Vec<u8>, CliError> {
+    let desc = command_line(a, o.doc.seeds, o.doc.params.points, &region_text(&o.doc.region));
     let svg = || {
         let colours: Vec<[f64; 3]> = o.doc.sites.iter().map(|s| s.color).collect();
         let style = Style { render: a.render, pen_width: a.pen_width, thin_width: a.thin_width, outline: a.boundary };
         let title = format!("zetafill territory: {} sites, {} territories, seed {}", o.doc.sites.len(), o.doc.seeds, a.seed);
-        let desc = command_line(a, o.doc.seeds, o.doc.params.points, &region_text(&o.doc.region));
         render::svg(&o.model, &o.clip, &colours, &o.shapes, &style, &title, &desc)
     };
     Ok(match format {
+        TerritoryFormat::Gcode => gcode(o, a, desc.clone())?,
         TerritoryFormat::Svg => svg(),
         TerritoryFormat::Png => crate::output::png::render(&svg(), a.dpi)?,
         TerritoryFormat::Json => {
@@ -603,6 +680,7 @@ pub fn run(a: &TerritoryArgs) -> Result<(), CliError> {
     }
     dest.check("--output", &inputs)?;
     let format = TerritoryFormat::resolve(a.format, &a.output)?;
+    check_plot(a, format)?;
     let o = compute(a)?;
     let bytes = render_bytes(&o, a, format)?;
     dest.write(&bytes)

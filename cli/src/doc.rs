@@ -22,6 +22,9 @@ pub struct FillDoc {
     pub shapes: Vec<ShapeDoc>,
     /// Run statistics.
     pub stats: StatsDoc,
+    /// The determinism digest (count, FNV-1a) of the engine's own bits, when known.
+    #[serde(skip)]
+    pub digest: Option<(u64, u64)>,
 }
 
 /// The parameters of the run.
@@ -39,6 +42,8 @@ pub struct ParamsDoc {
     pub rotate: &'static str,
     /// Sampler name.
     pub sampler: &'static str,
+    /// Engine number type: `f64` or `fixed`.
+    pub scalar: &'static str,
     /// Clearance in mm.
     pub gap: f64,
     /// Stop after this many shapes.

@@ -92,6 +92,9 @@ pub struct FillArgs {
     /// Candidate sampler.
     #[arg(long, value_enum, default_value = "reference")]
     pub sampler: Sampler,
+    /// Number type of the engine: f64 or fixed (32.32 fixed point).
+    #[arg(long, value_enum, default_value = "f64")]
+    pub scalar: ScalarArg,
     /// Output path; the format comes from the extension (.svg .png .json .csv); '-' is stdout.
     #[arg(short = 'o', long)]
     pub output: PathBuf,
@@ -344,6 +347,93 @@ fn check_known_limit(params: &Params, region: &Region<'_>) -> Result<(), CliErro
     ))
 }
 
+/// The number type the engine computes in.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum ScalarArg {
+    /// IEEE double precision through libm (the default).
+    F64,
+    /// 32.32 fixed point, as on a microcontroller without an FPU (different shapes, equally
+    /// deterministic; `--format digest` then matches the firmware's fixed-point runs).
+    Fixed,
+}
+
+impl ScalarArg {
+    /// The name in JSON.
+    pub fn name(self) -> &'static str {
+        match self {
+            ScalarArg::F64 => "f64",
+            ScalarArg::Fixed => "fixed",
+        }
+    }
+}
+
+/// What a run of the engine produced, in f64 whatever the scalar.
+struct EngineRun {
+    shapes: Vec<ShapeDoc>,
+    stats: zetafill::engine::Stats,
+    reason: StopReason,
+    zeta: f64,
+    area: f64,
+    digest: (u64, u64),
+}
+
+fn geo_f64<S: zetafill::Scalar>(g: &Geo<S>) -> Geo<f64> {
+    let pt = |p: zetafill::Point<S>| zetafill::Point::new(p.x.to_f64(), p.y.to_f64());
+    match *g {
+        Geo::Circle { c, r } => Geo::Circle { c: pt(c), r: r.to_f64() },
+        Geo::Ring { c, r, inner } => Geo::Ring { c: pt(c), r: r.to_f64(), inner: inner.to_f64() },
+        Geo::Poly { v, n, convex } => {
+            let mut out = [zetafill::Point::new(0.0, 0.0); zetafill::geom::MAX_VERTS];
+            for (o, p) in out.iter_mut().zip(v.iter()) {
+                *o = pt(*p);
+            }
+            Geo::Poly { v: out, n, convex }
+        }
+    }
+}
+
+/// Runs the engine on scalar `S` with the CLI's storage, progress bar and known-limit check.
+fn run_engine<S: zetafill::Scalar>(a: &FillArgs, params: Params, region: Region<'_>, stop: &Stop, cap: usize) -> Result<EngineRun, CliError> {
+    let mut shapes = vec![Placed::<S>::default(); cap];
+    let mut index = vec![0u32; index_words(cap)];
+    let mut coverage = vec![0u64; COVERAGE_WORDS];
+    let storage = Storage { shapes: &mut shapes, index: &mut index, coverage: &mut coverage };
+    let mut engine = Engine::<S>::new(params, region, storage).map_err(param_error)?;
+    check_known_limit(&params, &region)?;
+    let mut rng = zetafill::rng_from_seed(a.seed);
+    let bar = progress_bar(a, stop.count);
+    let mut trials = Vec::with_capacity(cap);
+    let reason = engine.run(&mut rng, stop, |p| {
+        trials.push(p.trials);
+        if let Some(b) = &bar {
+            b.inc(1);
+        }
+    });
+    if let Some(b) = &bar {
+        b.finish_and_clear();
+    }
+    let shapes_doc = engine
+        .placed()
+        .iter()
+        .enumerate()
+        .filter_map(|(i, p)| {
+            let g = geo_f64(&engine.geo(i)?);
+            let pf = Placed { x: p.x.to_f64(), y: p.y.to_f64(), scale: p.scale.to_f64(), angle: p.angle.to_f64() };
+            let i = i as u64;
+            let t = trials.get(i as usize).copied().unwrap_or(0);
+            Some(shape_doc(&engine.kind_of(i), &g, &pf, i, engine.area_of(i), t))
+        })
+        .collect();
+    Ok(EngineRun {
+        shapes: shapes_doc,
+        stats: engine.stats(),
+        reason,
+        zeta: engine.zeta(),
+        area: engine.total_area(),
+        digest: zetafill::digest::engine_digest(&engine),
+    })
+}
+
 /// Runs the fill and returns the document (and the halt, if any). Nothing is written.
 pub fn compute(a: &FillArgs) -> Result<(FillDoc, Option<StepError>), CliError> {
     let data = RegionData::load(&a.region)?;
@@ -355,25 +445,11 @@ pub fn compute(a: &FillArgs) -> Result<(FillDoc, Option<StepError>), CliError> {
     let params = Params { c: a.c(), n_offset: a.n_offset, shape: a.shape.list(order, a.seed), rotate: a.rotate(), gap: a.gap, max_trials: a.max_trials };
     let stop = a.stop();
     let cap = capacity(&params, region.area(), &stop)? as usize;
-    let mut shapes = vec![Placed::<f64>::default(); cap];
-    let mut index = vec![0u32; index_words(cap)];
-    let mut coverage = vec![0u64; COVERAGE_WORDS];
-    let storage = Storage { shapes: &mut shapes, index: &mut index, coverage: &mut coverage };
-    let mut engine = Engine::<f64>::new(params, region, storage).map_err(param_error)?;
-    check_known_limit(&params, &region)?;
-    let mut rng = zetafill::rng_from_seed(a.seed);
-
-    let bar = progress_bar(a, stop.count);
-    let mut trials = Vec::with_capacity(cap);
-    let reason = engine.run(&mut rng, &stop, |p| {
-        trials.push(p.trials);
-        if let Some(b) = &bar {
-            b.inc(1);
-        }
-    });
-    if let Some(b) = &bar {
-        b.finish_and_clear();
-    }
+    let run = match a.scalar {
+        ScalarArg::F64 => run_engine::<f64>(a, params, region, &stop, cap)?,
+        ScalarArg::Fixed => run_engine::<zetafill::Fixed>(a, params, region, &stop, cap)?,
+    };
+    let EngineRun { shapes: shapes_doc, stats: st, reason, zeta, area, digest } = run;
     let (stop_name, halt) = match reason {
         StopReason::Count => ("count", None),
         StopReason::Fill => ("fill", None),
@@ -381,31 +457,16 @@ pub fn compute(a: &FillArgs) -> Result<(FillDoc, Option<StepError>), CliError> {
         StopReason::Step(e @ StepError::Halted { .. }) => ("halted", Some(e)),
         StopReason::Step(StepError::CannotFit { index: 0 }) => {
             let kind = params.shape.kind_of(0);
-            let s = kind.scale_for_area(engine.area_of(0));
+            let a0 = area / (zeta * zetafill::scalar::powf(params.n_offset, params.c));
+            let s = kind.scale_for_area(a0);
             return Err(CliError::arg(
                 "--c",
-                format!(
-                    "the first shape (area {:.4} mm², width {:.4} mm) does not fit the region; lower --c or raise --n-offset",
-                    engine.area_of(0),
-                    kind.min_width(s)
-                ),
+                format!("the first shape (area {a0:.4} mm², width {:.4} mm) does not fit the region; lower --c or raise --n-offset", kind.min_width(s)),
             ));
         }
         StopReason::Step(e @ StepError::CannotFit { .. }) => ("halted", Some(e)),
         StopReason::Step(e @ StepError::Capacity { .. }) => return Err(CliError::Io(format!("internal: {e}"))),
     };
-    let shapes_doc = engine
-        .placed()
-        .iter()
-        .enumerate()
-        .filter_map(|(i, p)| {
-            let g = engine.geo(i)?;
-            let i = i as u64;
-            let t = trials.get(i as usize).copied().unwrap_or(0);
-            Some(shape_doc(&engine.kind_of(i), &g, p, i, engine.area_of(i), t))
-        })
-        .collect();
-    let st = engine.stats();
     let doc = FillDoc {
         version: 1,
         mode: "fill",
@@ -416,6 +477,7 @@ pub fn compute(a: &FillArgs) -> Result<(FillDoc, Option<StepError>), CliError> {
             shape: a.shape.name(),
             rotate: if params.rotate && a.shape.rotates() { "random" } else { "none" },
             sampler: "reference",
+            scalar: a.scalar.name(),
             gap: params.gap,
             count: stop.count,
             fill: stop.fill,
@@ -424,10 +486,11 @@ pub fn compute(a: &FillArgs) -> Result<(FillDoc, Option<StepError>), CliError> {
             dimension: 2.0 / params.c,
         },
         region: data.doc(&region),
-        area: engine.total_area(),
-        zeta: engine.zeta(),
+        area,
+        zeta,
         shapes: shapes_doc,
         stats: StatsDoc { placed: st.placed, trials: st.trials, fill_fraction: st.fill_fraction, halted: halt.is_some(), stop: stop_name },
+        digest: Some(digest),
     };
     Ok((doc, halt))
 }

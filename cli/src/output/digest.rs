@@ -6,6 +6,10 @@ use zetafill::digest::{add_shape, Fnv1a};
 
 /// The digest line of a fill.
 pub fn render(doc: &FillDoc) -> Vec<u8> {
+    // The engine's own digest (exact for every scalar) when the document carries it.
+    if let Some((n, h)) = doc.digest {
+        return format!("{n} {h:016x}\n").into_bytes();
+    }
     let mut h = Fnv1a::default();
     for s in &doc.shapes {
         add_shape(&mut h, s.center[0], s.center[1], s.area, s.angle.unwrap_or(0.0));

@@ -232,7 +232,7 @@ pub fn check_doc(doc: &Value, e: &Expect) -> bool {
     for k in ["c", "n_offset", "seed", "shape", "rotate", "sampler", "gap", "max_trials"] {
         assert!(pk.contains(&k.to_string()), "params lacks {k}: {p}");
     }
-    let allowed = ["c", "n_offset", "seed", "shape", "rotate", "sampler", "gap", "count", "fill", "min_size", "max_trials", "dimension"];
+    let allowed = ["c", "n_offset", "seed", "shape", "rotate", "sampler", "scalar", "gap", "count", "fill", "min_size", "max_trials", "dimension"];
     for k in &pk {
         assert!(allowed.contains(&k.as_str()), "unexpected params key {k}");
     }

@@ -102,6 +102,50 @@ fn ring_d(f: &Frame, pts: &[[f64; 2]]) -> String {
     format!("M{} Z", body.join(" L"))
 }
 
+/// Path data of plot paths (polylines and arcs, region frame) on the page.
+fn plot_d(paths: &[crate::plot::Path], f: &Frame) -> String {
+    use crate::plot::Path as P2;
+    let mut parts = Vec::new();
+    for p in paths {
+        match p {
+            P2::Polyline { points, closed } => {
+                let body: Vec<String> = points.iter().map(|v| format!("{},{}", f.x(v[0]), f.y(v[1]))).collect();
+                if !body.is_empty() {
+                    parts.push(format!("M{}{}", body.join(" L"), if *closed { " Z" } else { "" }));
+                }
+            }
+            P2::Arc { center, radius, sweep, .. } if sweep.abs() >= std::f64::consts::TAU => parts.push(circle_d(f, center[0], center[1], *radius)),
+            P2::Arc { radius, sweep, .. } => {
+                let (a, b) = (p.start_point(), p.end_point());
+                // y is flipped on the page: a counter-clockwise arc has sweep-flag 0.
+                let large = u8::from(sweep.abs() > std::f64::consts::PI);
+                let flag = u8::from(*sweep < 0.0);
+                parts.push(format!("M{},{} A{},{} 0 {large} {flag} {},{}", f.x(a[0]), f.y(a[1]), f.len(*radius), f.len(*radius), f.x(b[0]), f.y(b[1])));
+            }
+        }
+    }
+    parts.join(" ")
+}
+
+/// A periodic image cut exactly to the tile (for plotter tools that ignore `clip-path`):
+/// `None` when the image lies inside the tile and is drawn as it is.
+fn clipped_node(sh: &ShapeDoc, dx: f64, dy: f64, w: f64, h: f64, f: &Frame) -> Option<Option<svg::node::element::Element>> {
+    use crate::plot::{clip_path, Bounds, Path as P2};
+    let tile = Bounds { x0: 0.0, y0: 0.0, x1: w, y1: h };
+    let b = crate::plot::shape_bounds(sh);
+    if (Bounds { x0: b.x0 + dx, y0: b.y0 + dy, x1: b.x1 + dx, y1: b.y1 + dy }).inside(&tile, 0.0) {
+        return None;
+    }
+    let c = [sh.center[0] + dx, sh.center[1] + dy];
+    let outlines: Vec<P2> = match (sh.radius, sh.inner_radius) {
+        (Some(r), inner) => std::iter::once(r).chain(inner).map(|r| P2::circle(c, r)).collect(),
+        _ => vec![P2::polyline(sh.vertices.as_deref().unwrap_or(&[]).iter().map(|v| [v[0] + dx, v[1] + dy]).collect(), true)],
+    };
+    let pieces: Vec<P2> = outlines.iter().flat_map(|p| clip_path(p, &tile)).collect();
+    let d = plot_d(&pieces, f);
+    Some((!d.is_empty()).then(|| Path::new().set("d", d).into()))
+}
+
 fn shape_node(sh: &ShapeDoc, dx: f64, dy: f64, f: &Frame) -> Option<svg::node::element::Element> {
     let (cx, cy) = (sh.center[0] + dx, sh.center[1] + dy);
     match (sh.radius, sh.inner_radius) {
@@ -254,10 +298,17 @@ pub fn render(doc: &FillDoc, opt: &SvgOptions) -> Vec<u8> {
             .collect(),
     };
     let periodic = doc.periodic();
+    // Plotter output (a page or layers) of a periodic outline fill: images cut exactly to the
+    // tile, since vpype and plotter drivers ignore clip-path. Otherwise a clip-path.
+    let geometric_clip = periodic && opt.style == Style::Outline && (opt.page.is_some() || opt.layers.is_some());
     for (sh, &band) in doc.shapes.iter().zip(&bands) {
         let offs = if periodic { images(sh, w, h) } else { vec![(0.0, 0.0)] };
         for (dx, dy) in offs {
-            if let Some(n) = shape_node(sh, dx, dy, &frame) {
+            let node = match geometric_clip.then(|| clipped_node(sh, dx, dy, w, h, &frame)).flatten() {
+                Some(clipped) => clipped,
+                None => shape_node(sh, dx, dy, &frame),
+            };
+            if let Some(n) = node {
                 let g = std::mem::take(&mut groups[band]);
                 groups[band] = g.add(n);
             }
@@ -278,7 +329,7 @@ pub fn render(doc: &FillDoc, opt: &SvgOptions) -> Vec<u8> {
             p.seed
         ))))
         .add(Description::new().add(Text::new(command_line(doc))));
-    if periodic {
+    if periodic && !geometric_clip {
         // Images of edge-crossing shapes tile seamlessly; the clip keeps the tile's bounds.
         let mut rect = Rectangle::new();
         if opt.page.is_some() {

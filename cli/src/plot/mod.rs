@@ -29,6 +29,10 @@
 //! eprintln!("{}", out.figures);
 //! ```
 //!
+//! A mode with clap arguments can `#[command(flatten)]` [`PlotArgs`] and call
+//! [`drawing_gcode`], which adds placement on the bed (`--fit`, `--center`, `--margin`) and
+//! every other flag, exactly as `zetafill fill` does.
+//!
 //! [`gcode::write`] checks that the drawing lies inside the bed, orders the paths (unless told
 //! not to), and writes text whose every coordinate is inside the bed, with the tool off for
 //! every rapid move and at the end, a feed before the first cutting move, and plain
@@ -929,21 +933,32 @@ impl PlotArgs {
     }
 }
 
-/// The figures line printed on stderr and in the G-code header.
+/// `--format gcode` of a fill: its drawing (outlines, hatching) placed on the bed by the
+/// region's box.
 pub fn render_gcode(doc: &FillDoc, a: &PlotArgs, quiet: bool) -> Result<Vec<u8>, CliError> {
-    let m = a.machine()?;
-    let mut opts = a.gcode_options(&m)?;
     let drawing = from_fill(doc, &a.build_options()?);
     let (x0, y0, x1, y1) = doc.bbox();
+    let header = vec![crate::output::svg::command_line(doc)];
+    drawing_gcode(&drawing, &Bounds { x0, y0, x1, y1 }, a, header, quiet)
+}
+
+/// G-code of any drawing with the plotter flags of `a` (machine, feeds, power, passes, arcs,
+/// order, margin, `--fit`, `--center`): `frame` is the box placed on the bed (the region's,
+/// so every seed lands in the same place), `header` the comment lines that say how the
+/// drawing was made (command line, parameters, seed). The figures go to stderr unless
+/// `quiet`. This is the entry point for other modes (`line`, `territory`, ...).
+pub fn drawing_gcode(drawing: &Drawing, frame: &Bounds, a: &PlotArgs, header: Vec<String>, quiet: bool) -> Result<Vec<u8>, CliError> {
+    let m = a.machine()?;
+    let mut opts = a.gcode_options(&m)?;
     let area = m.usable_area(opts.margin);
-    let pl = place(&Bounds { x0, y0, x1, y1 }, &area, a.fit(Fit::AsIs)).map_err(|e| {
+    let pl = place(frame, &area, a.fit(Fit::AsIs)).map_err(|e| {
         CliError::arg(
             "--machine",
             format!("{e} of the bed of '{}' ({} x {} mm, margin {} mm); use --fit to scale it or --center to move it", m.name, m.bed.width, m.bed.height, opts.margin),
         )
     })?;
     let drawing = drawing.placed(&pl);
-    opts.header.push(crate::output::svg::command_line(doc));
+    opts.header = header;
     opts.header.push(format!(
         "plot: machine {} order {:?} passes {} hatch {} min-feature {} scale {} shift {} {}",
         m.name,

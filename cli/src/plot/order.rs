@@ -438,7 +438,7 @@ const K: usize = 8;
 
 /// Longest stretch one 2-opt move may reverse (the shorter side of the tour): long
 /// reversals cost O(n) each and rarely pay for themselves in a greedy tour.
-const MAX_REVERSAL: usize = 10_000;
+const MAX_REVERSAL: usize = 25_000;
 
 struct Tour<'a> {
     paths: &'a [Path],
@@ -534,8 +534,12 @@ fn two_opt(paths: &[Path], seq: &[(usize, Entry)], home: Pt) -> Vec<(usize, Entr
     let mut cand: Vec<(f64, u32)> = Vec::with_capacity(4 * K);
     for i in 0..n {
         cand.clear();
-        for q in ends_v[i] {
-            index.k_nearest(q, K + 2, &mut found);
+        let [e0, e1] = ends_v[i];
+        let both = [e0, e1];
+        // A closed path's two ends are one point: one query.
+        let queries = if e0 == e1 { &both[..1] } else { &both[..] };
+        for q in queries {
+            index.k_nearest(*q, K + 2, &mut found);
             cand.extend(found.iter().map(|&(d, p)| (d, index.item(p).0)).filter(|&(_, id)| id as usize != i));
         }
         cand.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));

@@ -578,15 +578,23 @@ fn other_origins_and_inches() {
     let dir = tmp();
     let d = dir.path();
     let (_, servo) = builtin_profile(d, "grbl-servo-pen");
-    for (origin, units) in [("top-left", "mm"), ("center", "mm"), ("bottom-left", "inch")] {
+    for (origin, units, travel) in [("top-left", "mm", "rapid"), ("center", "mm", "rapid"), ("bottom-left", "inch", "rapid"), ("bottom-left", "mm", "feed")] {
         let text = servo
+            .replace("travel = \"rapid\"", &format!("travel = \"{travel}\""))
             .replace("origin = \"bottom-left\"", &format!("origin = \"{origin}\""))
             .replace("units = \"mm\"", &format!("units = \"{units}\""))
             .replace("name = \"grbl-servo-pen\"", "name = \"custom\"");
         std::fs::write(d.join("m.toml"), &text).unwrap_or_else(|e| panic!("{e}"));
         let prof = profile_from_toml(&text);
         let (g, _) = gcode_to(d, "o.gcode", &["--region", "rect:120:100", "--count", "200", "--seed", "16", "--machine", "m.toml"]);
-        let r = assert_safe(&g, &prof, &format!("{origin} {units}"));
+        let r = assert_safe(&g, &prof, &format!("{origin} {units} {travel}"));
+        if travel == "feed" {
+            // Travel as G1 at the travel feed (6000 mm/min), tool off; only the park is a rapid.
+            assert_eq!(r.g0, 1, "one G0 (the park)");
+            assert!(g.contains(" F6000"), "travel feed stated");
+            let travel_feed = zf_ok(d, &["fill", "--region", "rect:120:100", "--count", "200", "--seed", "16", "--machine", "m.toml", "--travel-feed", "2500", "-o", "-", "--format", "gcode"]);
+            assert!(String::from_utf8_lossy(&travel_feed.stdout).contains(" F2500"), "--travel-feed overrides it");
+        }
         assert!(g.contains(if units == "inch" { "G20" } else { "G21" }));
         if origin == "center" {
             assert!(r.drawn[0] < 0.0, "centre origin: negative coordinates on the left half");

@@ -31,7 +31,13 @@ fn main() {
             let a: f64 = n.parse().expect("grid offset parses");
             let z = hurwitz_raw(s, a);
             assert!(z.is_finite());
-            let _ = writeln!(out, "    (0x{:016x}, 0x{:016x}, 0x{:016x}), // c={c} N={n}", s.to_bits(), a.to_bits(), z.to_bits());
+            let _ = writeln!(
+                out,
+                "    (0x{:016x}, 0x{:016x}, 0x{:016x}), // c={c} N={n}",
+                s.to_bits(),
+                a.to_bits(),
+                z.to_bits()
+            );
         }
     }
     out.push_str("];\n");

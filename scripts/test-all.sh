@@ -12,6 +12,13 @@ step() { printf '\n== %s\n' "$*"; }
 step "installing the Rust target thumbv7m-none-eabi"
 rustup target add thumbv7m-none-eabi
 rustup component add clippy >/dev/null 2>&1 || true
+rustup component add rustfmt >/dev/null 2>&1 || true
+
+if cargo fmt --version >/dev/null 2>&1; then
+    step "formatting (rustfmt.toml)"
+    cargo fmt --all -- --check
+    (cd firmware-sim && cargo fmt -- --check)
+fi
 
 step "installing qemu-system-arm (the firmware simulation)"
 if ! command -v qemu-system-arm >/dev/null 2>&1; then

@@ -18,7 +18,9 @@ fn fill(args: &[&str]) -> zetafill_cli::doc::FillDoc {
         Ok(c) => c,
         Err(e) => panic!("{e}"),
     };
-    let zetafill_cli::Command::Fill(a) = cli.command else { panic!("not fill") };
+    let zetafill_cli::Command::Fill(a) = cli.command else {
+        panic!("not fill")
+    };
     match zetafill_cli::fill::compute(&a) {
         Ok((doc, _)) => doc,
         Err(e) => panic!("{e}"),
@@ -37,7 +39,11 @@ fn vpype_ends(p: &Path) -> [Pt; 2] {
 /// vpype `linemerge --tolerance 0.05` (flip allowed): pop the first line, extend its end with
 /// the nearest line end within the tolerance, then its start, until none is left.
 fn linemerge(lines: &[[Pt; 2]], tol: f64) -> Vec<[Pt; 2]> {
-    let items: Vec<(Pt, f64, u32, u32)> = lines.iter().enumerate().flat_map(|(i, l)| [(l[0], 0.0, i as u32, 0), (l[1], 0.0, i as u32, 1)]).collect();
+    let items: Vec<(Pt, f64, u32, u32)> = lines
+        .iter()
+        .enumerate()
+        .flat_map(|(i, l)| [(l[0], 0.0, i as u32, 0), (l[1], 0.0, i as u32, 1)])
+        .collect();
     let mut index = PointIndex::new(&items);
     let mut used = vec![false; lines.len()];
     let mut out = Vec::new();
@@ -79,7 +85,12 @@ fn linemerge(lines: &[[Pt; 2]], tol: f64) -> Vec<[Pt; 2]> {
 /// start or end is nearest the pen. Returns pen-up travel from `home`.
 fn linesort_travel(lines: &[[Pt; 2]], home: Pt) -> f64 {
     let Some(first) = lines.first() else { return 0.0 };
-    let items: Vec<(Pt, f64, u32, u32)> = lines.iter().enumerate().skip(1).flat_map(|(i, l)| [(l[0], 0.0, i as u32, 0), (l[1], 0.0, i as u32, 1)]).collect();
+    let items: Vec<(Pt, f64, u32, u32)> = lines
+        .iter()
+        .enumerate()
+        .skip(1)
+        .flat_map(|(i, l)| [(l[0], 0.0, i as u32, 0), (l[1], 0.0, i as u32, 1)])
+        .collect();
     let mut index = PointIndex::new(&items);
     let mut travel = dist(home, first[0]);
     let mut pen = first[1];
@@ -113,10 +124,20 @@ fn main() {
     let home = [0.0, 0.0];
     let scenes: [Scene; 4] = [
         ("10^4 circles", || from_fill(&fill(&["--count", "10000"]), &BuildOptions::default())),
-        ("10^5 circles", || from_fill(&fill(&["--count", "100000"]), &BuildOptions::default())),
-        ("10^5 circles, periodic (clipped arcs)", || from_fill(&fill(&["--count", "100000", "--periodic"]), &BuildOptions::default())),
+        ("10^5 circles", || {
+            from_fill(&fill(&["--count", "100000"]), &BuildOptions::default())
+        }),
+        ("10^5 circles, periodic (clipped arcs)", || {
+            from_fill(&fill(&["--count", "100000", "--periodic"]), &BuildOptions::default())
+        }),
         ("2000 rotated squares, hatched 0.5 mm", || {
-            from_fill(&fill(&["--shape", "square", "--count", "2000"]), &BuildOptions { hatch: Some(Hatch { spacing: 0.5, angle: 45.0 }), ..BuildOptions::default() })
+            from_fill(
+                &fill(&["--shape", "square", "--count", "2000"]),
+                &BuildOptions {
+                    hatch: Some(Hatch { spacing: 0.5, angle: 45.0 }),
+                    ..BuildOptions::default()
+                },
+            )
         }),
     ];
     // `cargo bench --bench order -- WORD` runs only the drawings whose name holds WORD.
@@ -136,6 +157,9 @@ fn main() {
         let (im, ti) = median_time(|| order(&d.paths, home, OrderArg::Improved));
         let greedy = Drawing { paths: g }.travel_from(home);
         let improved = Drawing { paths: im }.travel_from(home);
-        println!("| {name} | {n} | {tg:.3} | {ti:.3} | {none:.0} | {vpype:.0} | {greedy:.0} | {improved:.0} | {:.3} |", improved / vpype);
+        println!(
+            "| {name} | {n} | {tg:.3} | {ti:.3} | {none:.0} | {vpype:.0} | {greedy:.0} | {improved:.0} | {:.3} |",
+            improved / vpype
+        );
     }
 }

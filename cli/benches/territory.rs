@@ -11,9 +11,17 @@ use zetafill_cli::territory::model::{Growth, Model};
 use zetafill_cli::territory::render;
 
 fn main() {
-    let clip = Clip::Rect { x0: 0.0, y0: 0.0, x1: 200.0, y1: 200.0 };
+    let clip = Clip::Rect {
+        x0: 0.0,
+        y0: 0.0,
+        x1: 200.0,
+        y1: 200.0,
+    };
     let seeds = [[60.0, 60.0], [140.0, 80.0], [90.0, 150.0]];
-    println!("{:>8} {:>8} {:>12} {:>14} {:>12} {:>10} {:>12}", "points", "mode", "points/s", "visits/point", "max visits", "repairs", "boundary ms");
+    println!(
+        "{:>8} {:>8} {:>12} {:>14} {:>12} {:>10} {:>12}",
+        "points", "mode", "points/s", "visits/point", "max visits", "repairs", "boundary ms"
+    );
     for n in [10_000usize, 100_000] {
         for uniform in [false, true] {
             let reps = if n <= 10_000 { 5 } else { 2 };
@@ -21,9 +29,14 @@ fn main() {
             let mut last = None;
             for _ in 0..reps {
                 let mut m = Model::new(&seeds).unwrap_or_else(|e| panic!("{e}"));
-                let g = Growth { points: n, uniform, ..Growth::default() };
+                let g = Growth {
+                    points: n,
+                    uniform,
+                    ..Growth::default()
+                };
                 let t = Instant::now();
-                m.grow(&clip, &g, &mut zetafill::rng_from_seed(1), |_| {}).unwrap_or_else(|e| panic!("{e}"));
+                m.grow(&clip, &g, &mut zetafill::rng_from_seed(1), |_| {})
+                    .unwrap_or_else(|e| panic!("{e}"));
                 best = best.min(t.elapsed().as_secs_f64());
                 last = Some(m);
             }

@@ -47,8 +47,19 @@ pub fn svg(doc: &FillDoc, pen_width: f64, outline: bool) -> Result<Vec<u8>, CliE
     let f = Frame::of(&clip);
     let lines = polylines(doc)?;
     let p = &doc.params;
-    let title = format!("zetafill: Voronoi cobblestones of {} {}, c = {}, N = {}, seed {}", doc.shapes.len(), p.shape, p.c, p.n_offset, p.seed);
-    let desc = format!("{} --voronoi --pen-width {}", crate::output::svg::command_line(doc), num(pen_width, 4));
+    let title = format!(
+        "zetafill: Voronoi cobblestones of {} {}, c = {}, N = {}, seed {}",
+        doc.shapes.len(),
+        p.shape,
+        p.c,
+        p.n_offset,
+        p.seed
+    );
+    let desc = format!(
+        "{} --voronoi --pen-width {}",
+        crate::output::svg::command_line(doc),
+        num(pen_width, 4)
+    );
     let mut d = document(&clip, &title, &desc).add(stroke_layer("cobblestones", polyline_d(&f, &lines), pen_width));
     if outline {
         d = d.add(stroke_layer("outline", vec![region_d(&f, &clip)], pen_width));

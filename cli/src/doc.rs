@@ -149,12 +149,15 @@ impl FillDoc {
     pub fn bbox(&self) -> (f64, f64, f64, f64) {
         match &self.region {
             RegionDoc::Rect { width, height, .. } => (0.0, 0.0, *width, *height),
-            RegionDoc::Circle { center, radius: r } | RegionDoc::Annulus { center, radius_outer: r, .. } => {
-                (center[0] - r, center[1] - r, center[0] + r, center[1] + r)
-            }
+            RegionDoc::Circle { center, radius: r }
+            | RegionDoc::Annulus {
+                center, radius_outer: r, ..
+            } => (center[0] - r, center[1] - r, center[0] + r, center[1] + r),
             RegionDoc::Polygon { vertices, holes, outers } => {
                 let all = vertices.iter().chain(holes.iter().flatten()).chain(outers.iter().flatten());
-                all.fold((f64::MAX, f64::MAX, f64::MIN, f64::MIN), |b, v| (b.0.min(v[0]), b.1.min(v[1]), b.2.max(v[0]), b.3.max(v[1])))
+                all.fold((f64::MAX, f64::MAX, f64::MIN, f64::MIN), |b, v| {
+                    (b.0.min(v[0]), b.1.min(v[1]), b.2.max(v[0]), b.3.max(v[1]))
+                })
             }
         }
     }

@@ -147,7 +147,11 @@ impl FillArgs {
             (None, None, None) => Some(2000),
             (c, _, _) => c,
         };
-        Stop { count, fill: self.fill, min_size: self.min_size }
+        Stop {
+            count,
+            fill: self.fill,
+            min_size: self.min_size,
+        }
     }
 }
 
@@ -182,7 +186,10 @@ fn capacity(params: &Params, area: f64, stop: &Stop) -> Result<u64, CliError> {
             hi *= 2;
         }
         if hi > MAX_SHAPES {
-            return Err(CliError::arg("--fill", format!("{f} needs more than {MAX_SHAPES} shapes at this c; lower it or raise --c")));
+            return Err(CliError::arg(
+                "--fill",
+                format!("{f} needs more than {MAX_SHAPES} shapes at this c; lower it or raise --c"),
+            ));
         }
         need = need.min(hi);
     }
@@ -197,7 +204,10 @@ fn capacity(params: &Params, area: f64, stop: &Stop) -> Result<u64, CliError> {
             hi *= 2;
         }
         if hi > MAX_SHAPES {
-            return Err(CliError::arg("--min-size", format!("{m} mm needs more than {MAX_SHAPES} shapes; raise it")));
+            return Err(CliError::arg(
+                "--min-size",
+                format!("{m} mm needs more than {MAX_SHAPES} shapes; raise it"),
+            ));
         }
         need = need.min(hi);
     }
@@ -223,7 +233,17 @@ fn shape_doc(kind: &ShapeKind, geo: &Geo<f64>, p: &Placed<f64>, index: u64, area
         Geo::Ring { r, inner, .. } => (Some(*r), Some(*inner), None, None),
         Geo::Poly { .. } => (None, None, Some(p.angle), Some(geo.vertices().iter().map(|v| [v.x, v.y]).collect())),
     };
-    ShapeDoc { index, kind: name, center: [p.x, p.y], radius, inner_radius, angle, area, trials, vertices }
+    ShapeDoc {
+        index,
+        kind: name,
+        center: [p.x, p.y],
+        radius,
+        inner_radius,
+        angle,
+        area,
+        trials,
+        vertices,
+    }
 }
 
 /// A region resolved from its flag: owns the outline vertices the core borrows.
@@ -248,15 +268,25 @@ impl RegionData {
     /// The core region (validating polygons).
     pub fn region(&self, periodic: bool) -> Result<Region<'_>, CliError> {
         if periodic && !matches!(self.spec, RegionSpec::Rect { .. }) {
-            return Err(CliError::arg("--periodic", "only rect:W:H regions can be periodic; remove --periodic or use a rect region"));
+            return Err(CliError::arg(
+                "--periodic",
+                "only rect:W:H regions can be periodic; remove --periodic or use a rect region",
+            ));
         }
         Ok(match &self.spec {
-            RegionSpec::Rect { width, height } => Region::Rect { width: *width, height: *height, periodic },
+            RegionSpec::Rect { width, height } => Region::Rect {
+                width: *width,
+                height: *height,
+                periodic,
+            },
             RegionSpec::Circle { radius } => Region::Circle { radius: *radius },
-            RegionSpec::Annulus { outer, inner } => Region::Annulus { outer: *outer, inner: *inner },
-            RegionSpec::Polygon { points, ends } => {
-                Region::Polygon(PolygonRegion::new(points, ends).map_err(|e| CliError::arg("--region", format!("{e}; give a simple outline")))?)
-            }
+            RegionSpec::Annulus { outer, inner } => Region::Annulus {
+                outer: *outer,
+                inner: *inner,
+            },
+            RegionSpec::Polygon { points, ends } => Region::Polygon(
+                PolygonRegion::new(points, ends).map_err(|e| CliError::arg("--region", format!("{e}; give a simple outline")))?,
+            ),
             RegionSpec::Svg(_) => return Err(CliError::Io("internal: SVG region not loaded".into())),
         })
     }
@@ -265,15 +295,26 @@ impl RegionData {
     pub fn doc(&self, region: &Region<'_>) -> RegionDoc {
         match *region {
             Region::Rect { width, height, periodic } => RegionDoc::Rect { width, height, periodic },
-            Region::Circle { radius } => RegionDoc::Circle { center: [radius, radius], radius },
-            Region::Annulus { outer, inner } => RegionDoc::Annulus { center: [outer, outer], radius_outer: outer, radius_inner: inner },
+            Region::Circle { radius } => RegionDoc::Circle {
+                center: [radius, radius],
+                radius,
+            },
+            Region::Annulus { outer, inner } => RegionDoc::Annulus {
+                center: [outer, outer],
+                radius_outer: outer,
+                radius_inner: inner,
+            },
             Region::Polygon(p) => {
                 let rings: Vec<&[zetafill::Point<f64>]> = p.rings().collect();
                 let as_vec = |r: &[zetafill::Point<f64>]| r.iter().map(|q| [q.x, q.y]).collect::<Vec<_>>();
                 let (mut vertices, mut holes, mut outers) = (Vec::new(), Vec::new(), Vec::new());
                 for (i, r) in rings.iter().enumerate() {
                     let probe = r.first().copied().unwrap_or_default();
-                    let depth = rings.iter().enumerate().filter(|(j, o)| *j != i && zetafill::geom::point_in_poly(probe, o)).count();
+                    let depth = rings
+                        .iter()
+                        .enumerate()
+                        .filter(|(j, o)| *j != i && zetafill::geom::point_in_poly(probe, o))
+                        .count();
                     if depth % 2 == 1 {
                         holes.push(as_vec(r));
                     } else if vertices.is_empty() {
@@ -312,12 +353,24 @@ fn first_two_fit(kind: &ShapeKind, a0: f64, a1: f64, w: f64, h: f64, gap: f64) -
 /// Refuses parameters whose first two shapes certainly cannot both fit, naming the largest c
 /// that works for this shape, N and region.
 fn check_known_limit(params: &Params, region: &Region<'_>) -> Result<(), CliError> {
-    let (Region::Rect { width, height, periodic: false }, [kind]) = (region, params.shape.kinds()) else { return Ok(()) };
+    let (
+        Region::Rect {
+            width,
+            height,
+            periodic: false,
+        },
+        [kind],
+    ) = (region, params.shape.kinds())
+    else {
+        return Ok(());
+    };
     if params.rotate && kind.rotates() {
         return Ok(());
     }
     let fits = |c: f64| {
-        let Ok(z) = zetafill::zeta::zeta(c, params.n_offset) else { return false };
+        let Ok(z) = zetafill::zeta::zeta(c, params.n_offset) else {
+            return false;
+        };
         let a = |i: f64| width * height / (z * zetafill::scalar::powf(i + params.n_offset, c));
         first_two_fit(kind, a(0.0), a(1.0), *width, *height, params.gap)
     };
@@ -326,7 +379,13 @@ fn check_known_limit(params: &Params, region: &Region<'_>) -> Result<(), CliErro
     }
     let (mut lo, mut hi) = (1.0 + 1e-9, params.c);
     if !fits(lo) {
-        return Err(CliError::arg("--n-offset", format!("the first two {}s cannot both fit this region for any c; raise --n-offset or enlarge --region", spec::kind_name(kind))));
+        return Err(CliError::arg(
+            "--n-offset",
+            format!(
+                "the first two {}s cannot both fit this region for any c; raise --n-offset or enlarge --region",
+                spec::kind_name(kind)
+            ),
+        ));
     }
     for _ in 0..60 {
         let mid = 0.5 * (lo + hi);
@@ -381,7 +440,11 @@ fn geo_f64<S: zetafill::Scalar>(g: &Geo<S>) -> Geo<f64> {
     let pt = |p: zetafill::Point<S>| zetafill::Point::new(p.x.to_f64(), p.y.to_f64());
     match *g {
         Geo::Circle { c, r } => Geo::Circle { c: pt(c), r: r.to_f64() },
-        Geo::Ring { c, r, inner } => Geo::Ring { c: pt(c), r: r.to_f64(), inner: inner.to_f64() },
+        Geo::Ring { c, r, inner } => Geo::Ring {
+            c: pt(c),
+            r: r.to_f64(),
+            inner: inner.to_f64(),
+        },
         Geo::Poly { v, n, convex } => {
             let mut out = [zetafill::Point::new(0.0, 0.0); zetafill::geom::MAX_VERTS];
             for (o, p) in out.iter_mut().zip(v.iter()) {
@@ -393,11 +456,21 @@ fn geo_f64<S: zetafill::Scalar>(g: &Geo<S>) -> Geo<f64> {
 }
 
 /// Runs the engine on scalar `S` with the CLI's storage, progress bar and known-limit check.
-fn run_engine<S: zetafill::Scalar>(a: &FillArgs, params: Params, region: Region<'_>, stop: &Stop, cap: usize) -> Result<EngineRun, CliError> {
+fn run_engine<S: zetafill::Scalar>(
+    a: &FillArgs,
+    params: Params,
+    region: Region<'_>,
+    stop: &Stop,
+    cap: usize,
+) -> Result<EngineRun, CliError> {
     let mut shapes = vec![Placed::<S>::default(); cap];
     let mut index = vec![0u32; index_words(cap)];
     let mut coverage = vec![0u64; COVERAGE_WORDS];
-    let storage = Storage { shapes: &mut shapes, index: &mut index, coverage: &mut coverage };
+    let storage = Storage {
+        shapes: &mut shapes,
+        index: &mut index,
+        coverage: &mut coverage,
+    };
     let mut engine = Engine::<S>::new(params, region, storage).map_err(param_error)?;
     check_known_limit(&params, &region)?;
     let mut rng = zetafill::rng_from_seed(a.seed);
@@ -418,7 +491,12 @@ fn run_engine<S: zetafill::Scalar>(a: &FillArgs, params: Params, region: Region<
         .enumerate()
         .filter_map(|(i, p)| {
             let g = geo_f64(&engine.geo(i)?);
-            let pf = Placed { x: p.x.to_f64(), y: p.y.to_f64(), scale: p.scale.to_f64(), angle: p.angle.to_f64() };
+            let pf = Placed {
+                x: p.x.to_f64(),
+                y: p.y.to_f64(),
+                scale: p.scale.to_f64(),
+                angle: p.angle.to_f64(),
+            };
             let i = i as u64;
             let t = trials.get(i as usize).copied().unwrap_or(0);
             Some(shape_doc(&engine.kind_of(i), &g, &pf, i, engine.area_of(i), t))
@@ -442,14 +520,28 @@ pub fn compute(a: &FillArgs) -> Result<(FillDoc, Option<StepError>), CliError> {
         MixArg::Cycle => MixOrder::Cycle,
         MixArg::Random => MixOrder::Random,
     };
-    let params = Params { c: a.c(), n_offset: a.n_offset, shape: a.shape.list(order, a.seed), rotate: a.rotate(), gap: a.gap, max_trials: a.max_trials };
+    let params = Params {
+        c: a.c(),
+        n_offset: a.n_offset,
+        shape: a.shape.list(order, a.seed),
+        rotate: a.rotate(),
+        gap: a.gap,
+        max_trials: a.max_trials,
+    };
     let stop = a.stop();
     let cap = capacity(&params, region.area(), &stop)? as usize;
     let run = match a.scalar {
         ScalarArg::F64 => run_engine::<f64>(a, params, region, &stop, cap)?,
         ScalarArg::Fixed => run_engine::<zetafill::Fixed>(a, params, region, &stop, cap)?,
     };
-    let EngineRun { shapes: shapes_doc, stats: st, reason, zeta, area, digest } = run;
+    let EngineRun {
+        shapes: shapes_doc,
+        stats: st,
+        reason,
+        zeta,
+        area,
+        digest,
+    } = run;
     let (stop_name, halt) = match reason {
         StopReason::Count => ("count", None),
         StopReason::Fill => ("fill", None),
@@ -461,7 +553,10 @@ pub fn compute(a: &FillArgs) -> Result<(FillDoc, Option<StepError>), CliError> {
             let s = kind.scale_for_area(a0);
             return Err(CliError::arg(
                 "--c",
-                format!("the first shape (area {a0:.4} mm², width {:.4} mm) does not fit the region; lower --c or raise --n-offset", kind.min_width(s)),
+                format!(
+                    "the first shape (area {a0:.4} mm², width {:.4} mm) does not fit the region; lower --c or raise --n-offset",
+                    kind.min_width(s)
+                ),
             ));
         }
         StopReason::Step(e @ StepError::CannotFit { .. }) => ("halted", Some(e)),
@@ -489,7 +584,13 @@ pub fn compute(a: &FillArgs) -> Result<(FillDoc, Option<StepError>), CliError> {
         area,
         zeta,
         shapes: shapes_doc,
-        stats: StatsDoc { placed: st.placed, trials: st.trials, fill_fraction: st.fill_fraction, halted: halt.is_some(), stop: stop_name },
+        stats: StatsDoc {
+            placed: st.placed,
+            trials: st.trials,
+            fill_fraction: st.fill_fraction,
+            halted: halt.is_some(),
+            stop: stop_name,
+        },
         digest: Some(digest),
     };
     Ok((doc, halt))
@@ -515,7 +616,10 @@ pub fn render(doc: &FillDoc, format: Format, a: &FillArgs) -> Result<Vec<u8>, Cl
         return match format {
             Format::Svg => crate::cobble::svg(doc, a.pen_width, a.boundary),
             Format::Png => output::png::render(&crate::cobble::svg(doc, a.pen_width, a.boundary)?, a.dpi),
-            _ => Err(CliError::arg("--voronoi", "cobblestones are drawn as SVG or PNG; write .svg or .png, or drop --voronoi")),
+            _ => Err(CliError::arg(
+                "--voronoi",
+                "cobblestones are drawn as SVG or PNG; write .svg or .png, or drop --voronoi",
+            )),
         };
     }
     Ok(match format {

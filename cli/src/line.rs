@@ -3,8 +3,8 @@
 //! its outputs: SVG (dashes, circles, bars or zoom rows), PNG, JSON, CSV and the digest.
 
 use crate::error::CliError;
-use crate::output::{self, num, Format};
 use crate::output::svg::Style;
+use crate::output::{self, num, Format};
 use crate::spec;
 use crate::write::Dest;
 use clap::{Args, ValueEnum};
@@ -117,7 +117,9 @@ pub fn dimension_1d(s: &str) -> Result<f64, String> {
     if v > 0.0 && v < 1.0 {
         Ok(v)
     } else {
-        Err(format!("the dimension of a 1D fill must be between 0 and 1, exclusive (got {s}); c = 1/D"))
+        Err(format!(
+            "the dimension of a 1D fill must be between 0 and 1, exclusive (got {s}); c = 1/D"
+        ))
     }
 }
 
@@ -136,7 +138,11 @@ impl LineArgs {
             (None, None, None) => Some(2000),
             (c, _, _) => c,
         };
-        Stop { count, fill: self.fill, min_size: self.min_size }
+        Stop {
+            count,
+            fill: self.fill,
+            min_size: self.min_size,
+        }
     }
 }
 
@@ -255,7 +261,10 @@ fn capacity(c: f64, n: f64, length: f64, stop: &Stop) -> Result<u64, CliError> {
             hi *= 2;
         }
         if hi > MAX_SEGMENTS {
-            return Err(CliError::arg("--fill", format!("{f} needs more than {MAX_SEGMENTS} segments at this c; lower it or raise --c")));
+            return Err(CliError::arg(
+                "--fill",
+                format!("{f} needs more than {MAX_SEGMENTS} segments at this c; lower it or raise --c"),
+            ));
         }
         need = need.min(hi);
     }
@@ -266,7 +275,10 @@ fn capacity(c: f64, n: f64, length: f64, stop: &Stop) -> Result<u64, CliError> {
             hi *= 2;
         }
         if hi > MAX_SEGMENTS {
-            return Err(CliError::arg("--min-size", format!("{m} mm needs more than {MAX_SEGMENTS} segments; raise it")));
+            return Err(CliError::arg(
+                "--min-size",
+                format!("{m} mm needs more than {MAX_SEGMENTS} segments; raise it"),
+            ));
         }
         need = need.min(hi);
     }
@@ -275,16 +287,38 @@ fn capacity(c: f64, n: f64, length: f64, stop: &Stop) -> Result<u64, CliError> {
 
 /// Runs the fill and returns the document (and the halt, if any). Nothing is written.
 pub fn compute(a: &LineArgs) -> Result<(LineDoc, Option<StepError>), CliError> {
-    let params = LineParams { c: a.c(), n_offset: a.n_offset, gap: a.gap, max_trials: a.max_trials };
-    let interval = Interval { length: a.length, periodic: a.periodic };
+    let params = LineParams {
+        c: a.c(),
+        n_offset: a.n_offset,
+        gap: a.gap,
+        max_trials: a.max_trials,
+    };
+    let interval = Interval {
+        length: a.length,
+        periodic: a.periodic,
+    };
     if 2.0 * a.gap >= a.length {
-        return Err(CliError::arg("--gap", format!("{} mm leaves no room in a {} mm interval; it must be under half the length", a.gap, a.length)));
+        return Err(CliError::arg(
+            "--gap",
+            format!(
+                "{} mm leaves no room in a {} mm interval; it must be under half the length",
+                a.gap, a.length
+            ),
+        ));
     }
     let stop = a.stop();
     let cap = capacity(params.c, params.n_offset, a.length, &stop)? as usize;
     let mut segs = vec![Segment::<f64>::default(); cap];
     let mut index = vec![0u32; line_index_words(cap)];
-    let mut engine = LineEngine::<f64>::new(params, interval, LineStorage { segments: &mut segs, index: &mut index }).map_err(param_error)?;
+    let mut engine = LineEngine::<f64>::new(
+        params,
+        interval,
+        LineStorage {
+            segments: &mut segs,
+            index: &mut index,
+        },
+    )
+    .map_err(param_error)?;
     let mut rng = zetafill::rng_from_seed(a.seed);
     let bar = progress_bar(a.quiet, stop.count);
     let mut trials = Vec::with_capacity(cap);
@@ -320,7 +354,13 @@ pub fn compute(a: &LineArgs) -> Result<(LineDoc, Option<StepError>), CliError> {
         .placed()
         .iter()
         .enumerate()
-        .map(|(i, s)| SegmentDoc { index: i as u64, kind: "segment", start: s.start, length: s.length, trials: trials.get(i).copied().unwrap_or(0) })
+        .map(|(i, s)| SegmentDoc {
+            index: i as u64,
+            kind: "segment",
+            start: s.start,
+            length: s.length,
+            trials: trials.get(i).copied().unwrap_or(0),
+        })
         .collect();
     let st = engine.stats();
     let doc = LineDoc {
@@ -337,10 +377,20 @@ pub fn compute(a: &LineArgs) -> Result<(LineDoc, Option<StepError>), CliError> {
             max_trials: params.max_trials,
             dimension: 1.0 / params.c,
         },
-        region: IntervalDoc { kind: "interval", length: a.length, periodic: a.periodic },
+        region: IntervalDoc {
+            kind: "interval",
+            length: a.length,
+            periodic: a.periodic,
+        },
         zeta: engine.zeta(),
         shapes,
-        stats: LineStatsDoc { placed: st.placed, trials: st.trials, fill_fraction: st.fill_fraction, halted: halt.is_some(), stop: stop_name },
+        stats: LineStatsDoc {
+            placed: st.placed,
+            trials: st.trials,
+            fill_fraction: st.fill_fraction,
+            halted: halt.is_some(),
+            stop: stop_name,
+        },
     };
     Ok((doc, halt))
 }
@@ -427,19 +477,30 @@ pub fn command_line(doc: &LineDoc) -> String {
 }
 
 fn stroke_group(id: &str, pen: f64) -> Group {
-    Group::new().set("id", id).set("fill", "none").set("stroke", "black").set("stroke-width", num(pen, P)).set("stroke-linecap", "butt")
+    Group::new()
+        .set("id", id)
+        .set("fill", "none")
+        .set("stroke", "black")
+        .set("stroke-width", num(pen, P))
+        .set("stroke-linecap", "butt")
 }
 
 fn circle_group(id: &str, opt: &LineSvgOptions) -> Group {
     let g = Group::new().set("id", id);
     match opt.style {
-        Style::Outline => g.set("fill", "none").set("stroke", "black").set("stroke-width", num(opt.pen_width, P)),
+        Style::Outline => g
+            .set("fill", "none")
+            .set("stroke", "black")
+            .set("stroke-width", num(opt.pen_width, P)),
         Style::Filled => g.set("fill", "black").set("stroke", "none"),
     }
 }
 
 fn circle(cx: f64, cy: f64, r: f64) -> svg::node::element::Circle {
-    svg::node::element::Circle::new().set("cx", num(cx, P)).set("cy", num(cy, P)).set("r", num(r, P))
+    svg::node::element::Circle::new()
+        .set("cx", num(cx, P))
+        .set("cy", num(cy, P))
+        .set("r", num(r, P))
 }
 
 /// Renders a 1D fill as SVG (mm units; the line runs left to right at x = 0 ... L).
@@ -458,7 +519,13 @@ pub fn render_svg(doc: &LineDoc, opt: &LineSvgOptions) -> Vec<u8> {
             for s in &doc.shapes {
                 for (a, b) in pieces(s, l, periodic) {
                     if b - a >= INVISIBLE {
-                        g = g.add(Line::new().set("x1", num(a, P)).set("y1", num(y, P)).set("x2", num(b, P)).set("y2", num(y, P)));
+                        g = g.add(
+                            Line::new()
+                                .set("x1", num(a, P))
+                                .set("y1", num(y, P))
+                                .set("x2", num(b, P))
+                                .set("y2", num(y, P)),
+                        );
                     }
                 }
             }
@@ -471,7 +538,11 @@ pub fn render_svg(doc: &LineDoc, opt: &LineSvgOptions) -> Vec<u8> {
                 for (a, b) in pieces(s, l, periodic) {
                     if b - a >= INVISIBLE {
                         g = g.add(
-                            Rectangle::new().set("x", num(a, P)).set("y", 0).set("width", num(b - a, P)).set("height", num(opt.bar_height, P)),
+                            Rectangle::new()
+                                .set("x", num(a, P))
+                                .set("y", 0)
+                                .set("width", num(b - a, P))
+                                .set("height", num(opt.bar_height, P)),
                         );
                     }
                 }
@@ -493,7 +564,11 @@ pub fn render_svg(doc: &LineDoc, opt: &LineSvgOptions) -> Vec<u8> {
                 }
             }
             if periodic {
-                defs = defs.add(ClipPath::new().set("id", "interval").add(Rectangle::new().set("width", num(l, P)).set("height", num(height, P))));
+                defs = defs.add(
+                    ClipPath::new()
+                        .set("id", "interval")
+                        .add(Rectangle::new().set("width", num(l, P)).set("height", num(height, P))),
+                );
                 g = g.set("clip-path", "url(#interval)");
             }
             body.push(g);
@@ -514,9 +589,13 @@ pub fn render_svg(doc: &LineDoc, opt: &LineSvgOptions) -> Vec<u8> {
                 let cy = y0 + row_h / 2.0;
                 let id = format!("row{k}");
                 defs = defs.add(
-                    ClipPath::new()
-                        .set("id", format!("clip-{id}"))
-                        .add(Rectangle::new().set("x", 0).set("y", num(y0, P)).set("width", num(l, P)).set("height", num(row_h, P))),
+                    ClipPath::new().set("id", format!("clip-{id}")).add(
+                        Rectangle::new()
+                            .set("x", 0)
+                            .set("y", num(y0, P))
+                            .set("width", num(l, P))
+                            .set("height", num(row_h, P)),
+                    ),
                 );
                 let mut g = circle_group(&id, opt).set("clip-path", format!("url(#clip-{id})"));
                 for s in &doc.shapes {
@@ -540,7 +619,11 @@ pub fn render_svg(doc: &LineDoc, opt: &LineSvgOptions) -> Vec<u8> {
                     let at = (mid - a) * scale;
                     for x in [at - half, at + half] {
                         marks = marks.add(
-                            Line::new().set("x1", num(x, P)).set("y1", num(y0 + row_h, P)).set("x2", num(x, P)).set("y2", num(y0 + row_h + spacing, P)),
+                            Line::new()
+                                .set("x1", num(x, P))
+                                .set("y1", num(y0 + row_h, P))
+                                .set("x2", num(x, P))
+                                .set("y2", num(y0 + row_h + spacing, P)),
                         );
                     }
                 }
@@ -571,7 +654,13 @@ pub fn render_svg(doc: &LineDoc, opt: &LineSvgOptions) -> Vec<u8> {
     if opt.boundary {
         let mut g = stroke_group("boundary", opt.pen_width);
         for x in [0.0, l] {
-            g = g.add(Line::new().set("x1", num(x, P)).set("y1", 0).set("x2", num(x, P)).set("y2", num(height, P)));
+            g = g.add(
+                Line::new()
+                    .set("x1", num(x, P))
+                    .set("y1", 0)
+                    .set("x2", num(x, P))
+                    .set("y2", num(height, P)),
+            );
         }
         d = d.add(g);
     }
@@ -592,7 +681,16 @@ pub fn render_json(doc: &LineDoc) -> Result<Vec<u8>, CliError> {
 pub fn render_csv(doc: &LineDoc) -> Vec<u8> {
     let mut s = String::from("index,kind,start,end,length,trials\n");
     for sh in &doc.shapes {
-        let _ = writeln!(s, "{},{},{},{},{},{}", sh.index, sh.kind, sh.start, sh.start + sh.length, sh.length, sh.trials);
+        let _ = writeln!(
+            s,
+            "{},{},{},{},{},{}",
+            sh.index,
+            sh.kind,
+            sh.start,
+            sh.start + sh.length,
+            sh.length,
+            sh.trials
+        );
     }
     s.into_bytes()
 }
@@ -656,10 +754,20 @@ pub fn drawing(doc: &LineDoc, opt: &LineSvgOptions) -> Result<(crate::plot::Draw
         Render::Zoom => return Err(CliError::arg("--render", "zoom has no G-code form; use dashes, circles or bars")),
     };
     // Circles may reach past the ends of the interval: the frame holds them all.
-    let mut frame = Bounds { x0: 0.0, y0: 0.0, x1: l, y1: height };
+    let mut frame = Bounds {
+        x0: 0.0,
+        y0: 0.0,
+        x1: l,
+        y1: height,
+    };
     for p in &paths {
         let b = p.bounds();
-        frame = Bounds { x0: frame.x0.min(b.x0), y0: frame.y0.min(b.y0), x1: frame.x1.max(b.x1), y1: frame.y1.max(b.y1) };
+        frame = Bounds {
+            x0: frame.x0.min(b.x0),
+            y0: frame.y0.min(b.y0),
+            x1: frame.x1.max(b.x1),
+            y1: frame.y1.max(b.y1),
+        };
     }
     Ok((Drawing { paths }, frame))
 }
@@ -699,14 +807,22 @@ pub fn render(doc: &LineDoc, format: Format, a: &LineArgs) -> Result<Vec<u8>, Cl
         Format::Png => output::png::render(&render_svg(doc, &opt), a.dpi)?,
         Format::Gcode => render_gcode(doc, &opt, a)?,
         #[allow(unreachable_patterns)]
-        f => return Err(CliError::arg("--format", format!("{f:?} is not available for a 1D fill; use svg, png, json, csv or digest"))),
+        f => {
+            return Err(CliError::arg(
+                "--format",
+                format!("{f:?} is not available for a 1D fill; use svg, png, json, csv or digest"),
+            ))
+        }
     })
 }
 
 /// `zetafill line`.
 pub fn run(a: &LineArgs) -> Result<(), CliError> {
     if a.zoom_center.is_some_and(|x| x > a.length) {
-        return Err(CliError::arg("--zoom-center", format!("must lie in the interval [0, {}]", a.length)));
+        return Err(CliError::arg(
+            "--zoom-center",
+            format!("must lie in the interval [0, {}]", a.length),
+        ));
     }
     let dest = Dest::parse(&a.output);
     dest.check("--output", &[])?;

@@ -82,7 +82,8 @@ fn count(what: &str, s: &str, lo: u8, hi: u8) -> Result<u8, String> {
     }
 }
 
-const SHAPES: &str = "circle, square, rect:ASPECT, triangle, polygon:SIDES, star:POINTS:INNER_RATIO, ring:INNER_RATIO, blob:DELTA or mix:SHAPE,SHAPE,...";
+const SHAPES: &str =
+    "circle, square, rect:ASPECT, triangle, polygon:SIDES, star:POINTS:INNER_RATIO, ring:INNER_RATIO, blob:DELTA or mix:SHAPE,SHAPE,...";
 
 /// One shape: `circle | square | rect:ASPECT | triangle | polygon:SIDES |
 /// star:POINTS:INNER_RATIO | ring:INNER_RATIO | blob:DELTA`.
@@ -98,13 +99,22 @@ pub fn one_shape(s: &str) -> Result<ShapeKind, String> {
             let aspect = positive(a).map_err(|e| format!("rect:ASPECT: the aspect ratio {e}"))?;
             ShapeKind::Rect { aspect }
         }
-        ("polygon", [n]) => ShapeKind::Polygon { sides: count("polygon:SIDES: SIDES", n, 3, 32)? },
-        ("star", [p, r]) => ShapeKind::Star { points: count("star:POINTS:INNER_RATIO: POINTS", p, 2, 16)?, inner: ratio("star:POINTS:INNER_RATIO: INNER_RATIO", r)? },
-        ("ring", [r]) => ShapeKind::Ring { inner: ratio("ring:INNER_RATIO: INNER_RATIO", r)? },
+        ("polygon", [n]) => ShapeKind::Polygon {
+            sides: count("polygon:SIDES: SIDES", n, 3, 32)?,
+        },
+        ("star", [p, r]) => ShapeKind::Star {
+            points: count("star:POINTS:INNER_RATIO: POINTS", p, 2, 16)?,
+            inner: ratio("star:POINTS:INNER_RATIO: INNER_RATIO", r)?,
+        },
+        ("ring", [r]) => ShapeKind::Ring {
+            inner: ratio("ring:INNER_RATIO: INNER_RATIO", r)?,
+        },
         ("blob", [d]) => {
             let delta = finite(d).map_err(|e| format!("blob:DELTA: {e}"))?;
             if !(0.0..1.0 / 3.0).contains(&delta) {
-                return Err(format!("blob:DELTA: DELTA must be at least 0 and below 1/3 so that r(θ) stays positive (got {d})"));
+                return Err(format!(
+                    "blob:DELTA: DELTA must be at least 0 and below 1/3 so that r(θ) stays positive (got {d})"
+                ));
             }
             ShapeKind::Blob { delta }
         }
@@ -221,7 +231,11 @@ pub fn region(s: &str) -> Result<RegionSpec, String> {
         return Ok(RegionSpec::Svg(file.into()));
     }
     if let Some(list) = s.strip_prefix("polygon:") {
-        let nums = list.split(',').map(finite).collect::<Result<Vec<f64>, _>>().map_err(|e| format!("polygon:X1,Y1,...: {e}"))?;
+        let nums = list
+            .split(',')
+            .map(finite)
+            .collect::<Result<Vec<f64>, _>>()
+            .map_err(|e| format!("polygon:X1,Y1,...: {e}"))?;
         if nums.len() % 2 != 0 {
             return Err("polygon:X1,Y1,X2,Y2,...: give an even count of numbers (x,y pairs)".into());
         }
@@ -240,18 +254,24 @@ pub fn region(s: &str) -> Result<RegionSpec, String> {
             Ok(RegionSpec::Rect { width, height })
         }
         ["rect", ..] => Err("write rect:W:H with sizes in mm, for example rect:200:150".into()),
-        ["circle", r] => Ok(RegionSpec::Circle { radius: positive(r).map_err(|e| format!("circle:R: the radius {e}"))? }),
+        ["circle", r] => Ok(RegionSpec::Circle {
+            radius: positive(r).map_err(|e| format!("circle:R: the radius {e}"))?,
+        }),
         ["circle", ..] => Err("write circle:R with the radius in mm, for example circle:100".into()),
         ["annulus", ro, ri] => {
             let outer = positive(ro).map_err(|e| format!("annulus:R_OUTER:R_INNER: R_OUTER {e}"))?;
             let inner = positive(ri).map_err(|e| format!("annulus:R_OUTER:R_INNER: R_INNER {e}"))?;
             if inner >= outer {
-                return Err(format!("annulus:R_OUTER:R_INNER: R_INNER ({ri}) must be smaller than R_OUTER ({ro})"));
+                return Err(format!(
+                    "annulus:R_OUTER:R_INNER: R_INNER ({ri}) must be smaller than R_OUTER ({ro})"
+                ));
             }
             Ok(RegionSpec::Annulus { outer, inner })
         }
         ["annulus", ..] => Err("write annulus:R_OUTER:R_INNER in mm, for example annulus:100:40".into()),
-        _ => Err(format!("unknown region '{s}'; use rect:W:H, circle:R, annulus:R_OUTER:R_INNER, polygon:X1,Y1,X2,Y2,... or svg:FILE (sizes in mm)")),
+        _ => Err(format!(
+            "unknown region '{s}'; use rect:W:H, circle:R, annulus:R_OUTER:R_INNER, polygon:X1,Y1,X2,Y2,... or svg:FILE (sizes in mm)"
+        )),
     }
 }
 
@@ -261,7 +281,18 @@ mod tests {
 
     #[test]
     fn shapes_parse_and_name_round_trip() {
-        for s in ["circle", "square", "rect:2", "rect:0.5", "triangle", "polygon:6", "star:5:0.4", "ring:0.6", "blob:0.2", "mix:circle,square"] {
+        for s in [
+            "circle",
+            "square",
+            "rect:2",
+            "rect:0.5",
+            "triangle",
+            "polygon:6",
+            "star:5:0.4",
+            "ring:0.6",
+            "blob:0.2",
+            "mix:circle,square",
+        ] {
             let k = shape(s).map(|k| k.name()).unwrap_or_default();
             assert_eq!(k, s);
         }

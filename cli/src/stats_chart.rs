@@ -91,7 +91,9 @@ pub fn trials_chart(series: &[TrialsSeries], title: &str) -> Result<Vec<u8>, Cli
                 .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], col.stroke_width(2)));
             if let Some((k, a, n0, n1)) = s.fit {
                 let line = [(n0, a * n0.powf(k)), (n1, a * n1.powf(k))];
-                chart.draw_series(LineSeries::new(line, BLACK.stroke_width(1))).map_err(chart_error)?;
+                chart
+                    .draw_series(LineSeries::new(line, BLACK.stroke_width(1)))
+                    .map_err(chart_error)?;
             }
         }
         chart
@@ -121,7 +123,11 @@ pub fn halting_chart(series: &[HaltingSeries], title: &str) -> Result<Vec<u8>, C
     let mut out = String::new();
     let cs = series.iter().flat_map(|s| s.points.iter().map(|p| p.0));
     let (cmin, cmax) = cs.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), c| (a.min(c), b.max(c)));
-    let (cmin, cmax) = if cmin.is_finite() && cmax > cmin { (cmin, cmax) } else { (cmin - 0.05, cmin + 0.05) };
+    let (cmin, cmax) = if cmin.is_finite() && cmax > cmin {
+        (cmin, cmax)
+    } else {
+        (cmin - 0.05, cmin + 0.05)
+    };
     let pad = (cmax - cmin) * 0.04;
     {
         let root = SVGBackend::with_string(&mut out, SIZE).into_drawing_area();

@@ -75,17 +75,28 @@ impl Shape2 {
     fn bbox(&self) -> (f64, f64, f64, f64) {
         match self {
             Shape2::Disc { c, r } | Shape2::Ring { c, r, .. } => (c[0] - r, c[1] - r, c[0] + r, c[1] + r),
-            Shape2::Poly { v } => v.iter().fold((f64::INFINITY, f64::INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY), |b, p| {
-                (b.0.min(p[0]), b.1.min(p[1]), b.2.max(p[0]), b.3.max(p[1]))
-            }),
+            Shape2::Poly { v } => v
+                .iter()
+                .fold((f64::INFINITY, f64::INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY), |b, p| {
+                    (b.0.min(p[0]), b.1.min(p[1]), b.2.max(p[0]), b.3.max(p[1]))
+                }),
         }
     }
 
     fn shifted(&self, dx: f64, dy: f64) -> Shape2 {
         match self {
-            Shape2::Disc { c, r } => Shape2::Disc { c: [c[0] + dx, c[1] + dy], r: *r },
-            Shape2::Ring { c, r, ri } => Shape2::Ring { c: [c[0] + dx, c[1] + dy], r: *r, ri: *ri },
-            Shape2::Poly { v } => Shape2::Poly { v: v.iter().map(|p| [p[0] + dx, p[1] + dy]).collect() },
+            Shape2::Disc { c, r } => Shape2::Disc {
+                c: [c[0] + dx, c[1] + dy],
+                r: *r,
+            },
+            Shape2::Ring { c, r, ri } => Shape2::Ring {
+                c: [c[0] + dx, c[1] + dy],
+                r: *r,
+                ri: *ri,
+            },
+            Shape2::Poly { v } => Shape2::Poly {
+                v: v.iter().map(|p| [p[0] + dx, p[1] + dy]).collect(),
+            },
         }
     }
 
@@ -126,7 +137,10 @@ fn bad(what: impl std::fmt::Display) -> CliError {
 }
 
 fn num(v: &Value, key: &str) -> Result<f64, CliError> {
-    v.get(key).and_then(Value::as_f64).filter(|x| x.is_finite()).ok_or_else(|| bad(format!("'{key}' is missing or not a finite number")))
+    v.get(key)
+        .and_then(Value::as_f64)
+        .filter(|x| x.is_finite())
+        .ok_or_else(|| bad(format!("'{key}' is missing or not a finite number")))
 }
 
 fn point(v: &Value) -> Option<[f64; 2]> {
@@ -136,15 +150,29 @@ fn point(v: &Value) -> Option<[f64; 2]> {
 
 /// Reads a fill document (`"mode": "fill"` with a rect region, or `"mode": "line"`) and its c.
 pub fn read_set(doc: &Value) -> Result<(FillSet, f64), CliError> {
-    let c = doc.get("params").map(|p| num(p, "c")).transpose()?.ok_or_else(|| bad("no 'params' with 'c'"))?;
+    let c = doc
+        .get("params")
+        .map(|p| num(p, "c"))
+        .transpose()?
+        .ok_or_else(|| bad("no 'params' with 'c'"))?;
     let region = doc.get("region").ok_or_else(|| bad("no 'region'"))?;
     let periodic = region.get("periodic").and_then(Value::as_bool).unwrap_or(false);
     let shapes = doc.get("shapes").and_then(Value::as_array).ok_or_else(|| bad("no 'shapes' list"))?;
     match doc.get("mode").and_then(Value::as_str) {
         Some("line") => {
             let length = num(region, "length")?;
-            let segments = shapes.iter().map(|s| Ok((num(s, "start")?, num(s, "length")?))).collect::<Result<Vec<_>, CliError>>()?;
-            Ok((FillSet::Line { length, periodic, segments }, c))
+            let segments = shapes
+                .iter()
+                .map(|s| Ok((num(s, "start")?, num(s, "length")?)))
+                .collect::<Result<Vec<_>, CliError>>()?;
+            Ok((
+                FillSet::Line {
+                    length,
+                    periodic,
+                    segments,
+                },
+                c,
+            ))
         }
         Some("fill") => {
             if region.get("kind").and_then(Value::as_str) != Some("rect") {
@@ -156,7 +184,11 @@ pub fn read_set(doc: &Value) -> Result<(FillSet, f64), CliError> {
                 let kind = s.get("kind").and_then(Value::as_str).unwrap_or("");
                 let centre = s.get("center").and_then(point);
                 let shape = if let Some(vs) = s.get("vertices").and_then(Value::as_array) {
-                    let v = vs.iter().map(point).collect::<Option<Vec<_>>>().ok_or_else(|| bad("a vertex is not [x, y]"))?;
+                    let v = vs
+                        .iter()
+                        .map(point)
+                        .collect::<Option<Vec<_>>>()
+                        .ok_or_else(|| bad("a vertex is not [x, y]"))?;
                     Shape2::Poly { v }
                 } else if let (Some(c), Some(r)) = (centre, s.get("radius").and_then(Value::as_f64)) {
                     match s.get("inner_radius").and_then(Value::as_f64) {
@@ -168,9 +200,19 @@ pub fn read_set(doc: &Value) -> Result<(FillSet, f64), CliError> {
                 };
                 out.push(shape);
             }
-            Ok((FillSet::Plane { w, h, periodic, shapes: out }, c))
+            Ok((
+                FillSet::Plane {
+                    w,
+                    h,
+                    periodic,
+                    shapes: out,
+                },
+                c,
+            ))
         }
-        other => Err(bad(format!("mode {other:?} is not a fill; give a JSON file written by zetafill fill or zetafill line"))),
+        other => Err(bad(format!(
+            "mode {other:?} is not a fill; give a JSON file written by zetafill fill or zetafill line"
+        ))),
     }
 }
 
@@ -254,8 +296,7 @@ fn box_inside(s: &Shape2, x0: f64, y0: f64, x1: f64, y1: f64) -> bool {
             outer && (nx - c[0]).powi(2) + (ny - c[1]).powi(2) >= ri * ri
         }
         Shape2::Poly { v } => {
-            corners.iter().all(|p| in_poly(*p, v))
-                && (0..v.len()).all(|i| !seg_hits_box(v[i], v[(i + 1) % v.len()], x0, y0, x1, y1))
+            corners.iter().all(|p| in_poly(*p, v)) && (0..v.len()).all(|i| !seg_hits_box(v[i], v[(i + 1) % v.len()], x0, y0, x1, y1))
         }
     }
 }
@@ -369,10 +410,19 @@ pub fn estimate(set: &FillSet, c: f64, max_box: Option<f64>, min_box: Option<f64
             break;
         }
         let (total, count) = match set {
-            FillSet::Line { length, periodic, segments } => count_1d(*length, *periodic, segments, e),
+            FillSet::Line {
+                length,
+                periodic,
+                segments,
+            } => count_1d(*length, *periodic, segments, e),
             FillSet::Plane { w, h, periodic, shapes } => count_2d(*w, *h, *periodic, shapes, e),
         };
-        boxes.push(BoxCount { size: e, total, count, used: true });
+        boxes.push(BoxCount {
+            size: e,
+            total,
+            count,
+            used: true,
+        });
     }
     if max_box.is_none() {
         // Leave out the saturated large sizes (more than half the boxes meet the gasket),
@@ -387,20 +437,31 @@ pub fn estimate(set: &FillSet, c: f64, max_box: Option<f64>, min_box: Option<f64
             }
         }
     }
-    let pts: Vec<(f64, f64)> = boxes.iter().filter(|b| b.used && b.count > 0).map(|b| ((1.0 / b.size).ln(), (b.count as f64).ln())).collect();
+    let pts: Vec<(f64, f64)> = boxes
+        .iter()
+        .filter(|b| b.used && b.count > 0)
+        .map(|b| ((1.0 / b.size).ln(), (b.count as f64).ln()))
+        .collect();
     let d = zetafill::stats::least_squares(&pts).map(|(k, _)| k).ok_or_else(|| {
         CliError::arg(
             "--min-box",
             format!("box sizes from {hi} down to {lo} mm give fewer than two levels; place more shapes or widen the range"),
         )
     })?;
-    Ok(DimensionDoc { box_counting: d, exact, c, mode, boxes })
+    Ok(DimensionDoc {
+        box_counting: d,
+        exact,
+        c,
+        mode,
+        boxes,
+    })
 }
 
 /// `zetafill stats dimension`.
 pub fn run(a: &DimensionArgs) -> Result<(), CliError> {
     let bytes = std::fs::read(&a.input).map_err(|e| CliError::arg("FILE", format!("cannot read '{}': {e}", a.input.display())))?;
-    let doc: Value = serde_json::from_slice(&bytes).map_err(|e| CliError::arg("FILE", format!("'{}' is not JSON: {e}", a.input.display())))?;
+    let doc: Value =
+        serde_json::from_slice(&bytes).map_err(|e| CliError::arg("FILE", format!("'{}' is not JSON: {e}", a.input.display())))?;
     let (set, c) = read_set(&doc)?;
     if let (Some(hi), Some(lo)) = (a.max_box, a.min_box) {
         if lo >= hi {

@@ -104,7 +104,10 @@ pub fn c_values(from: f64, to: f64, step: f64) -> Result<Vec<f64>, CliError> {
     }
     let k = ((to - from) / step + 1e-9).floor();
     if !(k.is_finite() && k < MAX_POINTS as f64) {
-        return Err(CliError::arg("--c-step", format!("{step} gives more than {MAX_POINTS} values of c; raise it")));
+        return Err(CliError::arg(
+            "--c-step",
+            format!("{step} gives more than {MAX_POINTS} values of c; raise it"),
+        ));
     }
     Ok((0..=k as u64).map(|i| from + i as f64 * step).collect())
 }
@@ -140,17 +143,20 @@ pub fn scan(a: &HaltingArgs) -> Result<Vec<PointDoc>, CliError> {
         .build()
         .map_err(|e| CliError::Io(format!("cannot start worker threads: {e}")))?;
     let show = !a.quiet && std::io::stderr().is_terminal();
-    let bar = if show { indicatif::ProgressBar::new(jobs.len() as u64) } else { indicatif::ProgressBar::hidden() };
-    let results: Vec<Result<Option<u64>, CliError>> =
-        pool.install(|| {
-            jobs.par_iter()
-                .map(|(_, s)| {
-                    let r = run_2d(s).map(|r| r.halted_at);
-                    bar.inc(1);
-                    r
-                })
-                .collect()
-        });
+    let bar = if show {
+        indicatif::ProgressBar::new(jobs.len() as u64)
+    } else {
+        indicatif::ProgressBar::hidden()
+    };
+    let results: Vec<Result<Option<u64>, CliError>> = pool.install(|| {
+        jobs.par_iter()
+            .map(|(_, s)| {
+                let r = run_2d(s).map(|r| r.halted_at);
+                bar.inc(1);
+                r
+            })
+            .collect()
+    });
     bar.finish_and_clear();
     let mut halts: Vec<Vec<u64>> = vec![Vec::new(); cs.len()];
     for ((k, _), res) in jobs.iter().zip(results) {
@@ -164,7 +170,13 @@ pub fn scan(a: &HaltingArgs) -> Result<Vec<PointDoc>, CliError> {
         .map(|(&c, mut h)| {
             h.sort_unstable();
             let halted = h.len() as u64;
-            PointDoc { c, runs: a.runs, halted, fraction: halted as f64 / a.runs as f64, median_halt: h.get(h.len() / 2).copied() }
+            PointDoc {
+                c,
+                runs: a.runs,
+                halted,
+                fraction: halted as f64 / a.runs as f64,
+                median_halt: h.get(h.len() / 2).copied(),
+            }
         })
         .collect())
 }
@@ -187,9 +199,20 @@ pub fn run(a: &HaltingArgs) -> Result<(), CliError> {
     if let Some((dest, f)) = out {
         let bytes = match f {
             Format::Svg => {
-                let label = format!("{}{} N = {}", if a.periodic { "periodic, " } else { "inclusive, " }, shape_label(&a.shape), a.n_offset);
-                let series = [HaltingSeries { label, points: points.iter().map(|p| (p.c, p.fraction)).collect() }];
-                let title = format!("halting: {} runs per c, {} shapes, {} trials per placement at most", a.runs, a.count, a.max_trials);
+                let label = format!(
+                    "{}{} N = {}",
+                    if a.periodic { "periodic, " } else { "inclusive, " },
+                    shape_label(&a.shape),
+                    a.n_offset
+                );
+                let series = [HaltingSeries {
+                    label,
+                    points: points.iter().map(|p| (p.c, p.fraction)).collect(),
+                }];
+                let title = format!(
+                    "halting: {} runs per c, {} shapes, {} trials per placement at most",
+                    a.runs, a.count, a.max_trials
+                );
                 chart::halting_chart(&series, &title)?
             }
             _ => {

@@ -33,8 +33,12 @@ pub fn shape_2d(s: &str) -> Result<ShapeKind, String> {
     match s.split(':').collect::<Vec<_>>().as_slice() {
         ["circle"] => Ok(ShapeKind::Circle),
         ["square"] => Ok(ShapeKind::Square),
-        ["rect", a] => Ok(ShapeKind::Rect { aspect: spec::positive(a).map_err(|e| format!("rect:ASPECT: the aspect ratio {e}"))? }),
-        _ => Err(format!("unknown shape '{s}'; the statistics runs take circle, square or rect:ASPECT")),
+        ["rect", a] => Ok(ShapeKind::Rect {
+            aspect: spec::positive(a).map_err(|e| format!("rect:ASPECT: the aspect ratio {e}"))?,
+        }),
+        _ => Err(format!(
+            "unknown shape '{s}'; the statistics runs take circle, square or rect:ASPECT"
+        )),
     }
 }
 
@@ -106,16 +110,27 @@ pub fn run_2d(r: &RunSpec) -> Result<RunResult, CliError> {
     params.shape = r.shape.into();
     params.rotate = r.rotate && r.shape.rotates();
     params.max_trials = r.max_trials;
-    let region = Region::Rect { width: r.size.0, height: r.size.1, periodic: r.periodic };
+    let region = Region::Rect {
+        width: r.size.0,
+        height: r.size.1,
+        periodic: r.periodic,
+    };
     let cap = r.count.saturating_add(1) as usize;
     let mut shapes = vec![Placed::<f64>::default(); cap];
     let mut index = vec![0u32; index_words(cap)];
     let mut coverage = vec![0u64; COVERAGE_WORDS];
-    let storage = Storage { shapes: &mut shapes, index: &mut index, coverage: &mut coverage };
+    let storage = Storage {
+        shapes: &mut shapes,
+        index: &mut index,
+        coverage: &mut coverage,
+    };
     let mut engine = Engine::<f64>::new(params, region, storage).map_err(|e| CliError::arg("--c", e))?;
     let mut rng = zetafill::rng_from_seed(r.seed);
     let mut trials = Vec::with_capacity(cap);
-    let stop = Stop { count: Some(r.count), ..Stop::default() };
+    let stop = Stop {
+        count: Some(r.count),
+        ..Stop::default()
+    };
     let reason = engine.run(&mut rng, &stop, |p| trials.push(p.trials));
     let (halted_at, halted_trials) = match reason {
         StopReason::Step(StepError::Halted { index, trials: t }) => (Some(index), t),
@@ -123,7 +138,11 @@ pub fn run_2d(r: &RunSpec) -> Result<RunResult, CliError> {
         StopReason::Step(StepError::Capacity { .. }) => return Err(CliError::Io("internal: storage full".into())),
         _ => (None, 0),
     };
-    Ok(RunResult { trials, halted_at, halted_trials })
+    Ok(RunResult {
+        trials,
+        halted_at,
+        halted_trials,
+    })
 }
 
 /// Arguments of `stats trials`.
@@ -195,7 +214,11 @@ pub struct SeriesDoc {
 
 /// The fit over `n >= from`: `(k, a)` of `cum = a n^k`.
 fn fit(cum: &[(f64, f64)], from: f64) -> Option<(f64, f64)> {
-    let pts: Vec<(f64, f64)> = cum.iter().filter(|p| p.0 >= from && p.1 > 0.0).map(|p| (p.0.ln(), p.1.ln())).collect();
+    let pts: Vec<(f64, f64)> = cum
+        .iter()
+        .filter(|p| p.0 >= from && p.1 > 0.0)
+        .map(|p| (p.0.ln(), p.1.ln()))
+        .collect();
     zetafill::stats::least_squares(&pts).map(|(k, b)| (k, b.exp()))
 }
 
@@ -216,31 +239,33 @@ pub fn run(a: &TrialsArgs) -> Result<(), CliError> {
     let (w, h) = a.region;
     let from = a.fit_from.unwrap_or((a.count / 10).max(1));
     if from >= a.count {
-        return Err(CliError::arg("--fit-from", format!("{from} leaves nothing to fit; it must be below --count {}", a.count)));
+        return Err(CliError::arg(
+            "--fit-from",
+            format!("{from} leaves nothing to fit; it must be below --count {}", a.count),
+        ));
     }
-    let jobs: Vec<(usize, u64, RunSpec)> = a
-        .c
-        .0
-        .iter()
-        .enumerate()
-        .flat_map(|(k, &c)| {
-            (0..a.runs).map(move |r| {
-                let seed = a.seed.wrapping_add((k as u64).wrapping_mul(a.runs)).wrapping_add(r);
-                let spec = RunSpec {
-                    shape: a.shape,
-                    rotate: a.rotate == Rotate::Random,
-                    size: (w, h),
-                    periodic: a.periodic,
-                    c,
-                    n_offset: a.n_offset,
-                    count: a.count,
-                    max_trials: a.max_trials,
-                    seed,
-                };
-                (k, r, spec)
+    let jobs: Vec<(usize, u64, RunSpec)> =
+        a.c.0
+            .iter()
+            .enumerate()
+            .flat_map(|(k, &c)| {
+                (0..a.runs).map(move |r| {
+                    let seed = a.seed.wrapping_add((k as u64).wrapping_mul(a.runs)).wrapping_add(r);
+                    let spec = RunSpec {
+                        shape: a.shape,
+                        rotate: a.rotate == Rotate::Random,
+                        size: (w, h),
+                        periodic: a.periodic,
+                        c,
+                        n_offset: a.n_offset,
+                        count: a.count,
+                        max_trials: a.max_trials,
+                        seed,
+                    };
+                    (k, r, spec)
+                })
             })
-        })
-        .collect();
+            .collect();
     let results: Vec<Result<RunResult, CliError>> = jobs.par_iter().map(|(_, _, s)| run_2d(s)).collect();
     let mut docs = Vec::new();
     let mut curves = Vec::new();
@@ -258,8 +283,20 @@ pub fn run(a: &TrialsArgs) -> Result<(), CliError> {
         total = total.saturating_add(res.halted_trials);
         let f = fit(&cum, from as f64);
         let label = format!("c = {}{}", spec.c, if a.runs > 1 { format!(", run {r}") } else { String::new() });
-        curves.push(TrialsSeries { label, fit: f.map(|(k, amp)| (k, amp, from as f64, placed.max(1) as f64)), points: cum });
-        docs.push(SeriesDoc { c: spec.c, run: *r, seed: spec.seed, placed, trials: total, exponent: f.map(|x| x.0), halted_at: res.halted_at });
+        curves.push(TrialsSeries {
+            label,
+            fit: f.map(|(k, amp)| (k, amp, from as f64, placed.max(1) as f64)),
+            points: cum,
+        });
+        docs.push(SeriesDoc {
+            c: spec.c,
+            run: *r,
+            seed: spec.seed,
+            placed,
+            trials: total,
+            exponent: f.map(|x| x.0),
+            halted_at: res.halted_at,
+        });
     }
     if let Some((dest, f)) = out {
         let bytes = match f {
@@ -287,7 +324,10 @@ pub fn run(a: &TrialsArgs) -> Result<(), CliError> {
         for d in &docs {
             let e = d.exponent.map_or("n/a".to_string(), |e| format!("{e:.4}"));
             let halt = d.halted_at.map_or(String::new(), |i| format!(", halted at placement {i}"));
-            println!("c = {} run {} (seed {}): {} placed, {} trials, exponent {e} (n >= {from}){halt}", d.c, d.run, d.seed, d.placed, d.trials);
+            println!(
+                "c = {} run {} (seed {}): {} placed, {} trials, exponent {e} (n >= {from}){halt}",
+                d.c, d.run, d.seed, d.placed, d.trials
+            );
         }
     }
     Ok(())

@@ -27,7 +27,13 @@ pub fn read_outline(path: &Path) -> Result<(Vec<Point<f64>>, Vec<usize>), CliErr
     collect(tree.root(), height, &mut rings);
     rings.retain(|r| r.len() >= 3);
     if rings.is_empty() {
-        return Err(CliError::arg(arg, format!("'{}' has no closed path; draw the outline as a closed path (ending in Z)", path.display())));
+        return Err(CliError::arg(
+            arg,
+            format!(
+                "'{}' has no closed path; draw the outline as a closed path (ending in Z)",
+                path.display()
+            ),
+        ));
     }
     let mut points = Vec::new();
     let mut ends = Vec::new();
@@ -52,7 +58,14 @@ fn flatten(p: &usvg::Path, height: f64, rings: &mut Vec<Vec<Point<f64>>>) {
     let ts = p.abs_transform();
     let map = |x: f32, y: f32| {
         let (x, y) = (f64::from(x), f64::from(y));
-        let (sx, ky, kx, sy, tx, ty) = (f64::from(ts.sx), f64::from(ts.ky), f64::from(ts.kx), f64::from(ts.sy), f64::from(ts.tx), f64::from(ts.ty));
+        let (sx, ky, kx, sy, tx, ty) = (
+            f64::from(ts.sx),
+            f64::from(ts.ky),
+            f64::from(ts.kx),
+            f64::from(ts.sy),
+            f64::from(ts.tx),
+            f64::from(ts.ty),
+        );
         let (px, py) = (sx * x + kx * y + tx, ky * x + sy * y + ty);
         // usvg works in f32: round to 1e-4 mm (0.1 µm) so that "90" reads back as 90.
         let snap = |v: f64| (v * 1e4).round() / 1e4;
@@ -89,7 +102,10 @@ fn flatten(p: &usvg::Path, height: f64, rings: &mut Vec<Vec<Point<f64>>>) {
                 for k in 1..=n {
                     let t = k as f64 / n as f64;
                     let u = 1.0 - t;
-                    cur.push(Point::new(u * u * last.x + 2.0 * u * t * b.x + t * t * c.x, u * u * last.y + 2.0 * u * t * b.y + t * t * c.y));
+                    cur.push(Point::new(
+                        u * u * last.x + 2.0 * u * t * b.x + t * t * c.x,
+                        u * u * last.y + 2.0 * u * t * b.y + t * t * c.y,
+                    ));
                 }
                 last = c;
             }
@@ -120,6 +136,9 @@ fn flatten(p: &usvg::Path, height: f64, rings: &mut Vec<Vec<Point<f64>>>) {
 
 /// Pieces for a curve with this control polygon: chords of at most 0.5 mm, at least 8.
 fn pieces(ctrl: &[Point<f64>]) -> usize {
-    let len: f64 = ctrl.windows(2).map(|w| ((w[1].x - w[0].x).powi(2) + (w[1].y - w[0].y).powi(2)).sqrt()).sum();
+    let len: f64 = ctrl
+        .windows(2)
+        .map(|w| ((w[1].x - w[0].x).powi(2) + (w[1].y - w[0].y).powi(2)).sqrt())
+        .sum();
     ((len / MAX_CHORD_MM).ceil() as usize).clamp(8, 10_000)
 }

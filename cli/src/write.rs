@@ -38,7 +38,10 @@ impl Dest {
         }
         for i in inputs {
             if same_file(p, i) {
-                return Err(CliError::arg(arg, format!("'{}' is also an input; choose another output path", p.display())));
+                return Err(CliError::arg(
+                    arg,
+                    format!("'{}' is also an input; choose another output path", p.display()),
+                ));
             }
         }
         Ok(())
@@ -49,7 +52,9 @@ impl Dest {
         match self {
             Dest::Stdout => {
                 let mut out = std::io::stdout().lock();
-                out.write_all(bytes).and_then(|_| out.flush()).map_err(|e| CliError::Io(format!("writing to standard output: {e}")))
+                out.write_all(bytes)
+                    .and_then(|_| out.flush())
+                    .map_err(|e| CliError::Io(format!("writing to standard output: {e}")))
             }
             Dest::File(p) => write_atomic(p, bytes),
         }

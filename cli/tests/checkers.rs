@@ -15,7 +15,9 @@ fn run(args: &[&str]) -> Value {
 }
 
 fn shape_mut(doc: &mut Value, i: usize) -> &mut Value {
-    doc.get_mut("shapes").and_then(|s| s.get_mut(i)).unwrap_or_else(|| panic!("no shape {i}"))
+    doc.get_mut("shapes")
+        .and_then(|s| s.get_mut(i))
+        .unwrap_or_else(|| panic!("no shape {i}"))
 }
 
 /// Moves shape `i` (centre and vertices) by (dx, dy).
@@ -61,7 +63,10 @@ fn overlap_checker_catches_a_shape_moved_onto_another() {
             let step = cl + 0.01;
             move_shape(&mut bad, 1, gx / d * step, gy / d * step);
             let errs = check_overlaps(&bad);
-            assert!(errs.iter().any(|e| e.contains("shapes 0 and 1")), "{args:?}: nudge not caught (clearance {cl}): {errs:?}");
+            assert!(
+                errs.iter().any(|e| e.contains("shapes 0 and 1")),
+                "{args:?}: nudge not caught (clearance {cl}): {errs:?}"
+            );
         }
     }
 }
@@ -102,7 +107,9 @@ fn circle(x: f64, y: f64, r: f64) -> Value {
 }
 
 fn poly(vs: &[[f64; 2]]) -> Value {
-    let c = vs.iter().fold([0.0, 0.0], |a, v| [a[0] + v[0] / vs.len() as f64, a[1] + v[1] / vs.len() as f64]);
+    let c = vs
+        .iter()
+        .fold([0.0, 0.0], |a, v| [a[0] + v[0] / vs.len() as f64, a[1] + v[1] / vs.len() as f64]);
     json!({ "center": c, "vertices": vs })
 }
 
@@ -153,7 +160,10 @@ fn polygon_clearance_is_exact() {
     assert!((clearance(&s1, &c) - (2f64.sqrt() - 0.5)).abs() < 1e-12);
     assert!(clearance(&s1, &G::Circle { c: [0.5, 0.5], r: 0.1 }) < 0.0);
     // The gap: 0.28 mm apart passes a 0.2 gap and fails a 0.3 gap.
-    let two = vec![poly(&[[1.0, 0.0], [0.0, 1.0], [-1.0, 0.0], [0.0, -1.0]]), poly(&[[2.2, 1.2], [1.2, 2.2], [0.2, 1.2], [1.2, 0.2]])];
+    let two = vec![
+        poly(&[[1.0, 0.0], [0.0, 1.0], [-1.0, 0.0], [0.0, -1.0]]),
+        poly(&[[2.2, 1.2], [1.2, 2.2], [0.2, 1.2], [1.2, 0.2]]),
+    ];
     assert!(check_overlaps(&doc_of(10.0, 10.0, false, 0.2, two.clone())).is_empty());
     assert_eq!(check_overlaps(&doc_of(10.0, 10.0, false, 0.3, two)).len(), 1);
 }

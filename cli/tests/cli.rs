@@ -29,7 +29,12 @@ impl Case<'_> {
         if self.periodic {
             a.push("--periodic".into());
         }
-        a.extend(["--count".to_string(), self.count.to_string(), "--seed".into(), self.seed.to_string()]);
+        a.extend([
+            "--count".to_string(),
+            self.count.to_string(),
+            "--seed".into(),
+            self.seed.to_string(),
+        ]);
         a
     }
 
@@ -115,7 +120,11 @@ fn check_svg(doc: &Value, bytes: &[u8]) {
     let (pw, ph) = (w * 96.0 / 25.4, h * 96.0 / 25.4);
     let size = tree.size();
     assert!((size.width() as f64 - pw).abs() < 1e-3, "SVG width {} px, want {pw}", size.width());
-    assert!((size.height() as f64 - ph).abs() < 1e-3, "SVG height {} px, want {ph}", size.height());
+    assert!(
+        (size.height() as f64 - ph).abs() < 1e-3,
+        "SVG height {} px, want {ph}",
+        size.height()
+    );
 
     // One path per shape (per visible image in a periodic region), inside the view.
     let list = shapes(doc);
@@ -132,9 +141,15 @@ fn check_svg(doc: &Value, bytes: &[u8]) {
     for (i, bb) in boxes.iter().enumerate() {
         let (l, t, r, btm) = (bb.left() as f64, bb.top() as f64, bb.right() as f64, bb.bottom() as f64);
         if periodic {
-            assert!(r > -tol && l < pw + tol && btm > -tol && t < ph + tol, "path {i} {bb:?} does not show in the view");
+            assert!(
+                r > -tol && l < pw + tol && btm > -tol && t < ph + tol,
+                "path {i} {bb:?} does not show in the view"
+            );
         } else {
-            assert!(l >= -tol && t >= -tol && r <= pw + tol && btm <= ph + tol, "path {i} {bb:?} leaves the view {pw}x{ph}");
+            assert!(
+                l >= -tol && t >= -tol && r <= pw + tol && btm <= ph + tol,
+                "path {i} {bb:?} leaves the view {pw}x{ph}"
+            );
         }
     }
 
@@ -145,8 +160,14 @@ fn check_svg(doc: &Value, bytes: &[u8]) {
     let p = doc.get("params").unwrap_or(&Value::Null);
     let seed = u(p, "seed").to_string();
     let c = f(p, "c");
-    assert!(desc.windows(2).any(|x| x[0] == "--seed" && x[1] == seed), "desc {desc:?} lacks the seed {seed}");
-    assert!(desc.windows(2).any(|x| x[0] == "--c" && x[1].parse::<f64>().ok() == Some(c)), "desc {desc:?} lacks c = {c}");
+    assert!(
+        desc.windows(2).any(|x| x[0] == "--seed" && x[1] == seed),
+        "desc {desc:?} lacks the seed {seed}"
+    );
+    assert!(
+        desc.windows(2).any(|x| x[0] == "--c" && x[1].parse::<f64>().ok() == Some(c)),
+        "desc {desc:?} lacks c = {c}"
+    );
 
     // The first shape, drawn with y flipped and four decimals: its elements come first (one
     // per visible image in a periodic region, the unshifted one among them).
@@ -161,7 +182,10 @@ fn check_svg(doc: &Value, bytes: &[u8]) {
             G::Circle { c, r } => vec![r4(c[0] + dx), r4(h - (c[1] + dy)), r4(*r)],
             G::Poly(vs) => vs.iter().flat_map(|v| [r4(v[0] + dx), r4(h - (v[1] + dy))]).collect(),
         };
-        assert!(mine.contains(&want), "shape 0 shifted by ({dx}, {dy}): {want:?} not among the first elements {mine:?}");
+        assert!(
+            mine.contains(&want),
+            "shape 0 shifted by ({dx}, {dy}): {want:?} not among the first elements {mine:?}"
+        );
     }
 }
 
@@ -260,58 +284,121 @@ fn full_case(case: Case) {
     check_csv(&doc, &csv);
 
     // Nothing else left behind (no temporary files).
-    let names: Vec<String> = listing(d).iter().filter_map(|p| p.file_name().map(|n| n.to_string_lossy().into_owned())).collect();
+    let names: Vec<String> = listing(d)
+        .iter()
+        .filter_map(|p| p.file_name().map(|n| n.to_string_lossy().into_owned()))
+        .collect();
     assert_eq!(names, ["out.csv", "out.json", "out.svg"]);
 }
 
 #[test]
 fn circles_inclusive_all_formats() {
-    full_case(Case { shape: "circle", rotate: None, periodic: false, count: 300, seed: 7 });
+    full_case(Case {
+        shape: "circle",
+        rotate: None,
+        periodic: false,
+        count: 300,
+        seed: 7,
+    });
 }
 
 #[test]
 fn circles_periodic_all_formats() {
-    full_case(Case { shape: "circle", rotate: None, periodic: true, count: 300, seed: 7 });
+    full_case(Case {
+        shape: "circle",
+        rotate: None,
+        periodic: true,
+        count: 300,
+        seed: 7,
+    });
 }
 
 #[test]
 fn squares_rotated_inclusive_all_formats() {
-    full_case(Case { shape: "square", rotate: None, periodic: false, count: 250, seed: 3 });
+    full_case(Case {
+        shape: "square",
+        rotate: None,
+        periodic: false,
+        count: 250,
+        seed: 3,
+    });
 }
 
 #[test]
 fn squares_rotated_periodic_all_formats() {
-    full_case(Case { shape: "square", rotate: Some("random"), periodic: true, count: 250, seed: 3 });
+    full_case(Case {
+        shape: "square",
+        rotate: Some("random"),
+        periodic: true,
+        count: 250,
+        seed: 3,
+    });
 }
 
 #[test]
 fn squares_unrotated_inclusive_all_formats() {
-    full_case(Case { shape: "square", rotate: Some("none"), periodic: false, count: 250, seed: 11 });
+    full_case(Case {
+        shape: "square",
+        rotate: Some("none"),
+        periodic: false,
+        count: 250,
+        seed: 11,
+    });
 }
 
 #[test]
 fn squares_unrotated_periodic_all_formats() {
-    full_case(Case { shape: "square", rotate: Some("none"), periodic: true, count: 250, seed: 11 });
+    full_case(Case {
+        shape: "square",
+        rotate: Some("none"),
+        periodic: true,
+        count: 250,
+        seed: 11,
+    });
 }
 
 #[test]
 fn rects_inclusive_all_formats() {
-    full_case(Case { shape: "rect:2.5", rotate: None, periodic: false, count: 200, seed: 5 });
+    full_case(Case {
+        shape: "rect:2.5",
+        rotate: None,
+        periodic: false,
+        count: 200,
+        seed: 5,
+    });
 }
 
 #[test]
 fn rects_periodic_all_formats() {
-    full_case(Case { shape: "rect:2.5", rotate: None, periodic: true, count: 200, seed: 5 });
+    full_case(Case {
+        shape: "rect:2.5",
+        rotate: None,
+        periodic: true,
+        count: 200,
+        seed: 5,
+    });
 }
 
 #[test]
 fn rects_unrotated_inclusive_all_formats() {
-    full_case(Case { shape: "rect:2.5", rotate: Some("none"), periodic: false, count: 200, seed: 2 });
+    full_case(Case {
+        shape: "rect:2.5",
+        rotate: Some("none"),
+        periodic: false,
+        count: 200,
+        seed: 2,
+    });
 }
 
 #[test]
 fn rects_unrotated_periodic_all_formats() {
-    full_case(Case { shape: "rect:2.5", rotate: Some("none"), periodic: true, count: 200, seed: 2 });
+    full_case(Case {
+        shape: "rect:2.5",
+        rotate: Some("none"),
+        periodic: true,
+        count: 200,
+        seed: 2,
+    });
 }
 
 #[test]
@@ -347,13 +434,35 @@ fn gap_is_kept_between_shapes_and_to_the_boundary() {
     for shape in ["circle", "square", "rect:2.5"] {
         for periodic in [false, true] {
             let dir = tmp();
-            let mut a = vec!["--shape", shape, "--region", REGION, "--gap", "0.3", "--n-offset", "4", "--count", "120", "--seed", "4"];
+            let mut a = vec![
+                "--shape",
+                shape,
+                "--region",
+                REGION,
+                "--gap",
+                "0.3",
+                "--n-offset",
+                "4",
+                "--count",
+                "120",
+                "--seed",
+                "4",
+            ];
             if periodic {
                 a.push("--periodic");
             }
             let doc = fill_json(dir.path(), &a);
             let rotate = if shape == "circle" { "none" } else { "random" };
-            let e = Expect { shape, rotate, seed: 4, periodic, n_offset: 4.0, count: Some(120), gap: 0.3, ..Expect::default() };
+            let e = Expect {
+                shape,
+                rotate,
+                seed: 4,
+                periodic,
+                n_offset: 4.0,
+                count: Some(120),
+                gap: 0.3,
+                ..Expect::default()
+            };
             check_doc(&doc, &e);
             assert_geometry(&doc);
         }
@@ -400,7 +509,11 @@ fn reruns_are_byte_identical_and_seeds_differ_rects() {
 fn svg_desc_reproduces_the_run() {
     let dir = tmp();
     let d = dir.path();
-    for extra in [&[][..], &["--periodic", "--shape", "rect:2.5"][..], &["--fill", "0.6", "--shape", "square"][..]] {
+    for extra in [
+        &[][..],
+        &["--periodic", "--shape", "rect:2.5"][..],
+        &["--fill", "0.6", "--shape", "square"][..],
+    ] {
         let mut a = vec!["--region", REGION, "--seed", "21"];
         a.extend_from_slice(extra);
         if !extra.contains(&"--fill") {
@@ -415,7 +528,11 @@ fn svg_desc_reproduces_the_run() {
         let mut again: Vec<&str> = words[1..].to_vec();
         again.extend_from_slice(&["-o", "again.svg"]);
         zf_ok(d, &again);
-        assert_eq!(read(&d.join("again.svg")), svg, "the desc command line {words:?} does not reproduce the file");
+        assert_eq!(
+            read(&d.join("again.svg")),
+            svg,
+            "the desc command line {words:?} does not reproduce the file"
+        );
     }
 }
 
@@ -434,7 +551,10 @@ fn prefix_stability() {
         assert_eq!(s.len(), 50);
         assert_eq!(l.len(), 200);
         for i in 0..50 {
-            assert_eq!(s[i], l[i], "{shape} periodic={periodic}: shape {i} differs between --count 50 and 200");
+            assert_eq!(
+                s[i], l[i],
+                "{shape} periodic={periodic}: shape {i} differs between --count 50 and 200"
+            );
         }
     }
 }
@@ -444,12 +564,23 @@ fn dimension_is_c_two_over_d() {
     let dir = tmp();
     let d = dir.path();
     for ext in ["json", "svg", "csv"] {
-        let a = fill_to(d, &format!("d.{ext}"), &["--region", REGION, "--count", "150", "--dimension", "1.6"]);
+        let a = fill_to(
+            d,
+            &format!("d.{ext}"),
+            &["--region", REGION, "--count", "150", "--dimension", "1.6"],
+        );
         let b = fill_to(d, &format!("c.{ext}"), &["--region", REGION, "--count", "150", "--c", "1.25"]);
         assert_eq!(a, b, "{ext}: --dimension 1.6 differs from --c 1.25");
     }
     let doc = parse_json(&read(&d.join("d.json")));
-    check_doc(&doc, &Expect { c: 1.25, count: Some(150), ..Expect::default() });
+    check_doc(
+        &doc,
+        &Expect {
+            c: 1.25,
+            count: Some(150),
+            ..Expect::default()
+        },
+    );
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -463,9 +594,20 @@ fn prefix_fraction(doc: &Value, k: usize) -> f64 {
 fn fill_stops_at_the_first_shape_reaching_the_fraction() {
     let dir = tmp();
     for (shape, fill) in [("circle", 0.5), ("circle", 0.8), ("square", 0.5), ("rect:2.5", 0.7)] {
-        let doc = fill_json(dir.path(), &["--shape", shape, "--region", REGION, "--fill", &fill.to_string(), "--seed", "3"]);
+        let doc = fill_json(
+            dir.path(),
+            &["--shape", shape, "--region", REGION, "--fill", &fill.to_string(), "--seed", "3"],
+        );
         let rotate = if shape == "circle" { "none" } else { "random" };
-        assert!(!check_doc(&doc, &Expect { shape, rotate, seed: 3, ..Expect::default() }));
+        assert!(!check_doc(
+            &doc,
+            &Expect {
+                shape,
+                rotate,
+                seed: 3,
+                ..Expect::default()
+            }
+        ));
         assert_geometry(&doc);
         let p = doc.get("params").unwrap_or(&Value::Null);
         assert_eq!(f(p, "fill"), fill);
@@ -475,7 +617,11 @@ fn fill_stops_at_the_first_shape_reaching_the_fraction() {
         let ff = f(doc.get("stats").unwrap_or(&Value::Null), "fill_fraction");
         assert!(ff >= fill, "{shape}: stopped at {ff} < {fill}");
         assert!(prefix_fraction(&doc, n) >= fill);
-        assert!(prefix_fraction(&doc, n - 1) < fill, "{shape}: {n} shapes, but {} already reached {fill}", n - 1);
+        assert!(
+            prefix_fraction(&doc, n - 1) < fill,
+            "{shape}: {n} shapes, but {} already reached {fill}",
+            n - 1
+        );
     }
 }
 
@@ -483,9 +629,20 @@ fn fill_stops_at_the_first_shape_reaching_the_fraction() {
 fn min_size_stops_before_the_first_narrower_shape() {
     let dir = tmp();
     for shape in ["circle", "square", "rect:2.5"] {
-        let doc = fill_json(dir.path(), &["--shape", shape, "--region", REGION, "--min-size", "2", "--seed", "8"]);
+        let doc = fill_json(
+            dir.path(),
+            &["--shape", shape, "--region", REGION, "--min-size", "2", "--seed", "8"],
+        );
         let rotate = if shape == "circle" { "none" } else { "random" };
-        assert!(!check_doc(&doc, &Expect { shape, rotate, seed: 8, ..Expect::default() }));
+        assert!(!check_doc(
+            &doc,
+            &Expect {
+                shape,
+                rotate,
+                seed: 8,
+                ..Expect::default()
+            }
+        ));
         assert_geometry(&doc);
         assert_eq!(f(doc.get("params").unwrap_or(&Value::Null), "min_size"), 2.0);
         let aspect = aspect_of(shape);
@@ -506,7 +663,11 @@ fn min_size_stops_before_the_first_narrower_shape() {
         }
         let (zeta, area) = (f(&doc, "zeta"), f(&doc, "area"));
         let next = area / (zeta * (n as f64 + 1.0).powf(1.3));
-        assert!(width(next) < 2.0, "{shape}: stopped at {n} although shape {n} is {} mm wide", width(next));
+        assert!(
+            width(next) < 2.0,
+            "{shape}: stopped at {n} although shape {n} is {} mm wide",
+            width(next)
+        );
     }
 }
 
@@ -552,5 +713,13 @@ fn stats_zeta_other_offsets_match_fill() {
     assert!(rel(z, head + tail) < 1e-8, "zeta(1.4, 2.5) = {z}, direct {}", head + tail);
     let doc = fill_json(d, &["--region", REGION, "--count", "5", "--c", "1.4", "--n-offset", "2.5"]);
     assert_eq!(f(&doc, "zeta"), z);
-    check_doc(&doc, &Expect { c: 1.4, n_offset: 2.5, count: Some(5), ..Expect::default() });
+    check_doc(
+        &doc,
+        &Expect {
+            c: 1.4,
+            n_offset: 2.5,
+            count: Some(5),
+            ..Expect::default()
+        },
+    );
 }

@@ -16,7 +16,9 @@ fn fill_doc(args: &[&str]) -> FillDoc {
     a.extend_from_slice(args);
     a.extend_from_slice(&["-o", "unused.svg"]);
     let cli = Cli::try_parse_from(a).unwrap_or_else(|e| panic!("{e}"));
-    let zetafill_cli::Command::Fill(f) = cli.command else { panic!("not fill") };
+    let zetafill_cli::Command::Fill(f) = cli.command else {
+        panic!("not fill")
+    };
     let (doc, halt) = fill::compute(&f).unwrap_or_else(|e| panic!("{e}"));
     assert!(halt.is_none());
     doc
@@ -118,7 +120,12 @@ fn cobblestones_are_the_voronoi_edges_of_the_centres() {
 /// The crossings of the drawing with the line x = v (or y = v): the other coordinate of every
 /// polyline end that lies on it, sorted.
 fn ends_on(lines: &[Vec<Pt>], axis: usize, v: f64) -> Vec<f64> {
-    let mut out: Vec<f64> = lines.iter().flat_map(|l| [l[0], l[l.len() - 1]]).filter(|p| (p[axis] - v).abs() < 1e-9).map(|p| p[1 - axis]).collect();
+    let mut out: Vec<f64> = lines
+        .iter()
+        .flat_map(|l| [l[0], l[l.len() - 1]])
+        .filter(|p| (p[axis] - v).abs() < 1e-9)
+        .map(|p| p[1 - axis])
+        .collect();
     out.sort_by(f64::total_cmp);
     out
 }
@@ -141,10 +148,17 @@ fn periodic_cobblestones_tile_seamlessly() {
     let doc = fill_doc(&["--count", "300", "--region", "rect:100:80", "--periodic", "--seed", "5"]);
     let lines = cobble::polylines(&doc).unwrap_or_else(|e| panic!("{e}"));
     assert_eq!(seam_errors(&lines, 100.0, 80.0), 0);
-    assert!(lines.iter().flatten().all(|p| (0.0..=100.0).contains(&p[0]) && (0.0..=80.0).contains(&p[1])));
+    assert!(lines
+        .iter()
+        .flatten()
+        .all(|p| (0.0..=100.0).contains(&p[0]) && (0.0..=80.0).contains(&p[1])));
     // The same centres without their periodic copies do not tile: the checker sees it.
     let mut flat = doc.clone();
-    flat.region = zetafill_cli::doc::RegionDoc::Rect { width: 100.0, height: 80.0, periodic: false };
+    flat.region = zetafill_cli::doc::RegionDoc::Rect {
+        width: 100.0,
+        height: 80.0,
+        periodic: false,
+    };
     let plain = cobble::polylines(&flat).unwrap_or_else(|e| panic!("{e}"));
     assert!(seam_errors(&plain, 100.0, 80.0) > 0);
 }
@@ -155,11 +169,19 @@ fn disc_region_clips_exactly() {
     let lines = cobble::polylines(&doc).unwrap_or_else(|e| panic!("{e}"));
     let r = |p: &Pt| (p[0] - 50.0).hypot(p[1] - 50.0);
     assert!(lines.iter().flatten().all(|p| r(p) <= 50.0 + 1e-9));
-    assert!(lines.iter().flat_map(|l| [l[0], l[l.len() - 1]]).filter(|p| r(p) > 49.99).all(|p| (r(&p) - 50.0).abs() < 1e-9));
+    assert!(lines
+        .iter()
+        .flat_map(|l| [l[0], l[l.len() - 1]])
+        .filter(|p| r(p) > 49.99)
+        .all(|p| (r(&p) - 50.0).abs() < 1e-9));
 }
 
 fn run(dir: &Path, args: &[&str]) -> (i32, String) {
-    let o = Command::new(env!("CARGO_BIN_EXE_zetafill")).args(args).current_dir(dir).output().unwrap_or_else(|e| panic!("{e}"));
+    let o = Command::new(env!("CARGO_BIN_EXE_zetafill"))
+        .args(args)
+        .current_dir(dir)
+        .output()
+        .unwrap_or_else(|e| panic!("{e}"));
     (o.status.code().unwrap_or(-1), String::from_utf8_lossy(&o.stderr).into_owned())
 }
 
@@ -167,7 +189,10 @@ fn run(dir: &Path, args: &[&str]) -> (i32, String) {
 fn cli_writes_svg_and_png_identically_on_rerun_and_refuses_other_formats() {
     let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
     for name in ["a.svg", "b.svg", "a.png", "b.png"] {
-        let (code, err) = run(dir.path(), &["fill", "--count", "500", "--periodic", "--voronoi", "--boundary", "-o", name]);
+        let (code, err) = run(
+            dir.path(),
+            &["fill", "--count", "500", "--periodic", "--voronoi", "--boundary", "-o", name],
+        );
         assert_eq!(code, 0, "{err}");
     }
     let read = |n: &str| std::fs::read(dir.path().join(n)).unwrap_or_default();

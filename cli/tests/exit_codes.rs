@@ -101,7 +101,11 @@ fn extreme_values_get_clear_messages() {
         (&["--region", "rect:1e300:1e300"][..], "--region"),
     ] {
         let o = bad(args, &[flag]);
-        assert!(!o.stderr.contains("NaN") && !o.stderr.contains("inf mm"), "zetafill {args:?}: {}", o.stderr);
+        assert!(
+            !o.stderr.contains("NaN") && !o.stderr.contains("inf mm"),
+            "zetafill {args:?}: {}",
+            o.stderr
+        );
     }
 }
 
@@ -143,9 +147,16 @@ fn bad_dimension() {
 #[test]
 fn first_shape_that_cannot_fit() {
     let o = bad(&["--c", "2.9", "--region", "rect:10:10"], &["--c", "--n-offset"]);
-    assert!(o.stderr.contains("lower --c") && o.stderr.contains("raise --n-offset"), "advice: {}", o.stderr);
+    assert!(
+        o.stderr.contains("lower --c") && o.stderr.contains("raise --n-offset"),
+        "advice: {}",
+        o.stderr
+    );
     // Also for squares and a periodic region.
-    bad(&["--c", "2.9", "--region", "rect:10:5", "--shape", "square"], &["--c", "--n-offset"]);
+    bad(
+        &["--c", "2.9", "--region", "rect:10:5", "--shape", "square"],
+        &["--c", "--n-offset"],
+    );
     bad(&["--c", "2.9", "--region", "rect:10:10", "--periodic"], &["--c", "--n-offset"]);
 }
 
@@ -269,7 +280,10 @@ fn halting_case(args: &[&str], e: Expect, min_index: usize) {
     let o = run("h.svg");
     assert_eq!(halt_index(&o.stderr), k);
     let svg = read(&d.join("h.svg"));
-    assert!(usvg::Tree::from_data(&svg, &usvg::Options::default()).is_ok(), "the halted SVG parses");
+    assert!(
+        usvg::Tree::from_data(&svg, &usvg::Options::default()).is_ok(),
+        "the halted SVG parses"
+    );
     let text = String::from_utf8_lossy(&svg).into_owned();
     let n = text.matches("<circle ").count() + text.matches("<polygon ").count();
     if !e.periodic {
@@ -287,7 +301,14 @@ fn halting_case(args: &[&str], e: Expect, min_index: usize) {
 fn halting_exits_3_with_the_shapes_placed_so_far() {
     halting_case(
         &["--c", "1.45", "--count", "300", "--max-trials", "50", "--seed", "1"],
-        Expect { c: 1.45, w: 200.0, h: 200.0, count: Some(300), max_trials: 50, ..Expect::default() },
+        Expect {
+            c: 1.45,
+            w: 200.0,
+            h: 200.0,
+            count: Some(300),
+            max_trials: 50,
+            ..Expect::default()
+        },
         1,
     );
 }
@@ -295,8 +316,23 @@ fn halting_exits_3_with_the_shapes_placed_so_far() {
 #[test]
 fn halting_late_in_a_long_run() {
     halting_case(
-        &["--c", "1.3", "--count", "3000", "--max-trials", "1000", "--region", "rect:100:80", "--seed", "1"],
-        Expect { count: Some(3000), max_trials: 1000, ..Expect::default() },
+        &[
+            "--c",
+            "1.3",
+            "--count",
+            "3000",
+            "--max-trials",
+            "1000",
+            "--region",
+            "rect:100:80",
+            "--seed",
+            "1",
+        ],
+        Expect {
+            count: Some(3000),
+            max_trials: 1000,
+            ..Expect::default()
+        },
         100,
     );
 }
@@ -304,8 +340,30 @@ fn halting_late_in_a_long_run() {
 #[test]
 fn halting_squares_periodic() {
     halting_case(
-        &["--shape", "square", "--periodic", "--c", "1.3", "--count", "5000", "--max-trials", "300", "--region", "rect:100:80", "--seed", "2"],
-        Expect { shape: "square", rotate: "random", seed: 2, periodic: true, count: Some(5000), max_trials: 300, ..Expect::default() },
+        &[
+            "--shape",
+            "square",
+            "--periodic",
+            "--c",
+            "1.3",
+            "--count",
+            "5000",
+            "--max-trials",
+            "300",
+            "--region",
+            "rect:100:80",
+            "--seed",
+            "2",
+        ],
+        Expect {
+            shape: "square",
+            rotate: "random",
+            seed: 2,
+            periodic: true,
+            count: Some(5000),
+            max_trials: 300,
+            ..Expect::default()
+        },
         1,
     );
 }

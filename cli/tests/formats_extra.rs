@@ -25,7 +25,11 @@ fn png_preview_has_the_page_size_at_the_dpi() {
     assert_eq!(a, b, "PNG reruns are byte-identical");
     let hi = fill_to(d, "hi.png", &[&base[..], &["--dpi", "150"]].concat());
     assert_eq!(png_size(&hi), (591, 473), "100 x 80 mm at 150 dpi");
-    let other = fill_to(d, "c.png", &["--shape", "circle", "--region", "rect:100:80", "--count", "60", "--seed", "5"]);
+    let other = fill_to(
+        d,
+        "c.png",
+        &["--shape", "circle", "--region", "rect:100:80", "--count", "60", "--seed", "5"],
+    );
     assert_ne!(a, other, "another seed gives another picture");
     let o = zf_ok(d, &[&["fill"][..], &base[..], &["-o", "-", "--format", "png"]].concat());
     assert_eq!(o.stdout, a, "PNG on stdout");
@@ -49,10 +53,25 @@ fn png_bad_dpi() {
 fn digest_line() {
     let dir = tmp();
     let d = dir.path();
-    let base = ["fill", "--shape", "square", "--region", "rect:100:80", "--count", "80", "--seed", "6", "--format", "digest"];
+    let base = [
+        "fill",
+        "--shape",
+        "square",
+        "--region",
+        "rect:100:80",
+        "--count",
+        "80",
+        "--seed",
+        "6",
+        "--format",
+        "digest",
+    ];
     let a = zf_ok(d, &[&base[..], &["-o", "-"]].concat()).stdout;
     let text = String::from_utf8_lossy(&a).into_owned();
-    let (count, hex) = text.trim_end_matches('\n').split_once(' ').unwrap_or_else(|| panic!("digest line: {text:?}"));
+    let (count, hex) = text
+        .trim_end_matches('\n')
+        .split_once(' ')
+        .unwrap_or_else(|| panic!("digest line: {text:?}"));
     assert_eq!(count, "80");
     assert_eq!(hex.len(), 16);
     assert!(hex.chars().all(|c| c.is_ascii_hexdigit() && !c.is_ascii_uppercase()), "{hex}");

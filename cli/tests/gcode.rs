@@ -43,7 +43,9 @@ fn toml_f(v: &toml::Value, path: &[&str]) -> f64 {
     for k in path {
         cur = cur.get(k).unwrap_or_else(|| panic!("profile lacks {path:?}"));
     }
-    cur.as_float().or_else(|| cur.as_integer().map(|i| i as f64)).unwrap_or_else(|| panic!("{path:?} is not a number"))
+    cur.as_float()
+        .or_else(|| cur.as_integer().map(|i| i as f64))
+        .unwrap_or_else(|| panic!("{path:?} is not a number"))
 }
 
 fn profile_from_toml(text: &str) -> Profile {
@@ -75,7 +77,11 @@ fn profile_from_toml(text: &str) -> Profile {
             }
         }
     }
-    Profile { decimals: if inch { 4 } else { 3 }, bed, tool }
+    Profile {
+        decimals: if inch { 4 } else { 3 },
+        bed,
+        tool,
+    }
 }
 
 fn builtin_profile(d: &Path, name: &str) -> (Profile, String) {
@@ -161,9 +167,16 @@ fn check_numbers(text: &str, decimals: usize, errors: &mut Vec<String>) {
             }
             let num = &line[start..end];
             let letter = c.to_ascii_uppercase();
-            let want = if matches!(letter, 'X' | 'Y' | 'I' | 'J') { Some(decimals) } else { None };
+            let want = if matches!(letter, 'X' | 'Y' | 'I' | 'J') {
+                Some(decimals)
+            } else {
+                None
+            };
             if !plain(num, want) {
-                errors.push(format!("line {}: '{letter}{num}' is not a plain number with the fixed precision ({raw})", n + 1));
+                errors.push(format!(
+                    "line {}: '{letter}{num}' is not a plain number with the fixed precision ({raw})",
+                    n + 1
+                ));
             }
         }
     }
@@ -177,7 +190,11 @@ fn arc_extreme_angles(from: f64, span: f64) -> Vec<f64> {
 
 fn replay(text: &str, p: &Profile) -> Replay {
     let empty = [f64::INFINITY, f64::INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY];
-    let mut r = Replay { bounds: empty, drawn: empty, ..Replay::default() };
+    let mut r = Replay {
+        bounds: empty,
+        drawn: empty,
+        ..Replay::default()
+    };
     check_numbers(text, p.decimals, &mut r.errors);
     let prog = match gcode::parse(text) {
         Ok(p) => p,
@@ -264,12 +281,23 @@ fn replay(text: &str, p: &Profile) -> Replay {
             continue;
         }
         let visit = |q: [f64; 2], what: &str, r: &mut Replay| {
-            r.bounds = [r.bounds[0].min(q[0]), r.bounds[1].min(q[1]), r.bounds[2].max(q[0]), r.bounds[3].max(q[1])];
+            r.bounds = [
+                r.bounds[0].min(q[0]),
+                r.bounds[1].min(q[1]),
+                r.bounds[2].max(q[0]),
+                r.bounds[3].max(q[1]),
+            ];
             if on {
-                r.drawn = [r.drawn[0].min(q[0]), r.drawn[1].min(q[1]), r.drawn[2].max(q[0]), r.drawn[3].max(q[1])];
+                r.drawn = [
+                    r.drawn[0].min(q[0]),
+                    r.drawn[1].min(q[1]),
+                    r.drawn[2].max(q[0]),
+                    r.drawn[3].max(q[1]),
+                ];
             }
             if q[0] < bx0 - eps || q[0] > bx1 + eps || q[1] < by0 - eps || q[1] > by1 + eps {
-                r.errors.push(format!("line {line}: {what} ({}, {}) is outside the bed", q[0], q[1]));
+                r.errors
+                    .push(format!("line {line}: {what} ({}, {}) is outside the bed", q[0], q[1]));
             }
         };
         if on {
@@ -300,7 +328,8 @@ fn replay(text: &str, p: &Profile) -> Replay {
                 let rad = i.hypot(j);
                 let rad_end = (to[0] - c[0]).hypot(to[1] - c[1]);
                 if (rad - rad_end).abs() > 0.005_f64.max(rad * 1e-3) {
-                    r.errors.push(format!("line {line}: arc radius {rad} at the start, {rad_end} at the end"));
+                    r.errors
+                        .push(format!("line {line}: arc radius {rad} at the start, {rad_end} at the end"));
                 }
                 let a0 = (pos[1] - c[1]).atan2(pos[0] - c[0]);
                 let a1 = (to[1] - c[1]).atan2(to[0] - c[0]);
@@ -337,7 +366,12 @@ fn replay(text: &str, p: &Profile) -> Replay {
 
 fn assert_safe(text: &str, p: &Profile, what: &str) -> Replay {
     let r = replay(text, p);
-    assert!(r.errors.is_empty(), "{what}: {} violations, first: {:?}", r.errors.len(), &r.errors[..r.errors.len().min(5)]);
+    assert!(
+        r.errors.is_empty(),
+        "{what}: {} violations, first: {:?}",
+        r.errors.len(),
+        &r.errors[..r.errors.len().min(5)]
+    );
     assert!(r.cuts > 0, "{what}: nothing drawn");
     r
 }
@@ -352,7 +386,10 @@ fn gcode_to(d: &Path, name: &str, args: &[&str]) -> (String, Out) {
 
 fn circles_json(d: &Path, args: &[&str]) -> Vec<([f64; 2], f64)> {
     let doc = fill_json(d, args);
-    shapes(&doc).iter().map(|s| (pt(s.get("center").unwrap_or(&serde_json::Value::Null)), f(s, "radius"))).collect()
+    shapes(&doc)
+        .iter()
+        .map(|s| (pt(s.get("center").unwrap_or(&serde_json::Value::Null)), f(s, "radius")))
+        .collect()
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -360,13 +397,23 @@ fn circles_json(d: &Path, args: &[&str]) -> Vec<([f64; 2], f64)> {
 
 #[test]
 fn checkers_fail_on_broken_programs() {
-    let laser = Profile { decimals: 3, bed: [0.0, 0.0, 100.0, 100.0], tool: ToolModel::Laser };
+    let laser = Profile {
+        decimals: 3,
+        bed: [0.0, 0.0, 100.0, 100.0],
+        tool: ToolModel::Laser,
+    };
     let good = "G90\nG21\nM5 S0\nG0 X10.000 Y10.000\nM4 S800\nG1 X20.000 Y10.000 F1000\nG2 X10.000 Y10.000 I-5.000 J0.000\nM5 S0\nM2\n";
     assert!(replay(good, &laser).errors.is_empty(), "{:?}", replay(good, &laser).errors);
     let cases: [(&str, String); 8] = [
-        ("G0 with the tool on", good.replace("G2 X10.000 Y10.000 I-5.000 J0.000", "G0 X30.000 Y30.000")),
+        (
+            "G0 with the tool on",
+            good.replace("G2 X10.000 Y10.000 I-5.000 J0.000", "G0 X30.000 Y30.000"),
+        ),
         ("outside the bed", good.replace("G1 X20.000 Y10.000", "G1 X120.000 Y10.000")),
-        ("outside the bed", good.replace("G2 X10.000 Y10.000 I-5.000 J0.000", "G2 X20.000 Y10.000 I0.000 J95.000")),
+        (
+            "outside the bed",
+            good.replace("G2 X10.000 Y10.000 I-5.000 J0.000", "G2 X20.000 Y10.000 I0.000 J95.000"),
+        ),
         ("not a plain number", good.replace("X20.000", "X2.0e1")),
         ("not a plain number", good.replace("X20.000", "X-0.000")),
         ("not a plain number", good.replace("X20.000", "X20.0")),
@@ -375,18 +422,39 @@ fn checkers_fail_on_broken_programs() {
     ];
     for (want, text) in cases {
         let errs = replay(&text, &laser).errors;
-        assert!(errs.iter().any(|e| e.contains(want)), "expected '{want}' for:\n{text}\ngot {errs:?}");
+        assert!(
+            errs.iter().any(|e| e.contains(want)),
+            "expected '{want}' for:\n{text}\ngot {errs:?}"
+        );
     }
     // Pens: a servo angle other than the up angle is down; a Z below the up height is down.
-    let servo = Profile { tool: ToolModel::Servo { up: 30.0 }, ..laser.clone() };
+    let servo = Profile {
+        tool: ToolModel::Servo { up: 30.0 },
+        ..laser.clone()
+    };
     let pen = "G90\nM3 S30\nG0 X10.000 Y10.000\nM3 S90\nG1 X20.000 Y10.000 F1000\nM3 S30\nG0 X0.000 Y0.000\nM2\n";
     assert!(replay(pen, &servo).errors.is_empty());
-    assert!(replay(&pen.replace("M3 S30\nG0 X0.000", "G0 X0.000"), &servo).errors.iter().any(|e| e.contains("G0 with the tool on")));
-    let zpen = Profile { tool: ToolModel::Z { up: 3.0 }, ..laser };
+    assert!(replay(&pen.replace("M3 S30\nG0 X0.000", "G0 X0.000"), &servo)
+        .errors
+        .iter()
+        .any(|e| e.contains("G0 with the tool on")));
+    let zpen = Profile {
+        tool: ToolModel::Z { up: 3.0 },
+        ..laser
+    };
     let zp = "G90\nG0 Z3.000\nG0 X10.000 Y10.000\nG1 Z0.000 F600\nG1 X20.000 Y10.000 F1000\nG0 Z3.000\nG0 X0.000 Y0.000\n";
     assert!(replay(zp, &zpen).errors.is_empty());
-    assert!(replay(&zp.replace("G0 Z3.000\nG0 X0.000", "G0 X0.000"), &zpen).errors.iter().any(|e| e.contains("G0 with the tool on")));
-    assert!(replay(&zp.replace("G0 Z3.000\nG0 X10", "G0 X10"), &zpen).errors.iter().any(|e| e.contains("G0 with the tool on")), "pen state unknown at start counts as down");
+    assert!(replay(&zp.replace("G0 Z3.000\nG0 X0.000", "G0 X0.000"), &zpen)
+        .errors
+        .iter()
+        .any(|e| e.contains("G0 with the tool on")));
+    assert!(
+        replay(&zp.replace("G0 Z3.000\nG0 X10", "G0 X10"), &zpen)
+            .errors
+            .iter()
+            .any(|e| e.contains("G0 with the tool on")),
+        "pen state unknown at start counts as down"
+    );
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -398,10 +466,54 @@ fn every_builtin_profile_replays_safely() {
     let d = dir.path();
     let scenes: [&[&str]; 5] = [
         &["--region", "rect:150:120", "--count", "300", "--seed", "3"],
-        &["--region", "rect:150:120", "--shape", "star:5:0.5", "--c", "1.2", "--n-offset", "2", "--count", "150", "--seed", "4"],
-        &["--region", "rect:150:120", "--shape", "ring:0.5", "--periodic", "--count", "200", "--seed", "5"],
-        &["--region", "circle:60", "--count", "200", "--seed", "6", "--no-arcs", "--passes", "2"],
-        &["--region", "rect:100:100", "--shape", "square", "--count", "80", "--seed", "7", "--hatch", "1:30"],
+        &[
+            "--region",
+            "rect:150:120",
+            "--shape",
+            "star:5:0.5",
+            "--c",
+            "1.2",
+            "--n-offset",
+            "2",
+            "--count",
+            "150",
+            "--seed",
+            "4",
+        ],
+        &[
+            "--region",
+            "rect:150:120",
+            "--shape",
+            "ring:0.5",
+            "--periodic",
+            "--count",
+            "200",
+            "--seed",
+            "5",
+        ],
+        &[
+            "--region",
+            "circle:60",
+            "--count",
+            "200",
+            "--seed",
+            "6",
+            "--no-arcs",
+            "--passes",
+            "2",
+        ],
+        &[
+            "--region",
+            "rect:100:100",
+            "--shape",
+            "square",
+            "--count",
+            "80",
+            "--seed",
+            "7",
+            "--hatch",
+            "1:30",
+        ],
     ];
     for machine in ["grbl-laser", "grbl-servo-pen", "z-lift-pen"] {
         let (prof, _) = builtin_profile(d, machine);
@@ -432,7 +544,11 @@ fn stdout_and_quiet() {
     let args = ["fill", "--region", "rect:100:100", "--count", "50", "--format", "gcode", "-o", "-"];
     let o = zf_ok(d, &args);
     let (file, _) = gcode_to(d, "x.nc", &["--region", "rect:100:100", "--count", "50"]);
-    assert_eq!(String::from_utf8_lossy(&o.stdout), file, "-o - writes the same program; .nc is G-code");
+    assert_eq!(
+        String::from_utf8_lossy(&o.stdout),
+        file,
+        "-o - writes the same program; .nc is G-code"
+    );
     let q = zf_ok(d, &[&args[..], &["--quiet"]].concat());
     assert!(q.stderr.is_empty(), "--quiet: {}", q.stderr);
 }
@@ -448,8 +564,17 @@ fn circles_become_one_arc_each_and_lengths_add_up() {
     let r = assert_safe(&text, &prof, "circles");
     let want: f64 = circles.iter().map(|c| TAU * c.1).sum();
     // Arcs are written for circles of radius >= 0.01 mm, the rest as chords.
-    assert!(r.arcs <= circles.len() && r.arcs + 5 >= circles.len(), "{} arcs for {} circles", r.arcs, circles.len());
-    assert!((r.down - want).abs() < 1e-3 * want, "pen-down {} mm, circumferences {want} mm", r.down);
+    assert!(
+        r.arcs <= circles.len() && r.arcs + 5 >= circles.len(),
+        "{} arcs for {} circles",
+        r.arcs,
+        circles.len()
+    );
+    assert!(
+        (r.down - want).abs() < 1e-3 * want,
+        "pen-down {} mm, circumferences {want} mm",
+        r.down
+    );
     // Without arcs: chords within the tolerance, so slightly shorter.
     let (poly, _) = gcode_to(d, "p.gcode", &[&base[..], &["--no-arcs", "--chord-tolerance", "0.05"]].concat());
     let rp = assert_safe(&poly, &prof, "chords");
@@ -476,7 +601,11 @@ fn min_feature_leaves_out_small_shapes() {
     let base = ["--region", "rect:150:150", "--count", "400", "--seed", "12"];
     let circles = circles_json(d, &base);
     let (prof, _) = builtin_profile(d, "grbl-laser");
-    let (text, _) = gcode_to(d, "m.gcode", &[&base[..], &["--machine", "grbl-laser", "--min-feature", "2"]].concat());
+    let (text, _) = gcode_to(
+        d,
+        "m.gcode",
+        &[&base[..], &["--machine", "grbl-laser", "--min-feature", "2"]].concat(),
+    );
     let r = assert_safe(&text, &prof, "min-feature");
     let kept: Vec<_> = circles.iter().filter(|c| 2.0 * c.1 >= 2.0).collect();
     assert!(kept.len() < circles.len());
@@ -491,10 +620,26 @@ fn hatch_lines_stay_inside_their_shapes() {
     let d = dir.path();
     let base = ["--region", "rect:120:120", "--shape", "ring:0.5", "--count", "120", "--seed", "13"];
     let doc = fill_json(d, &base);
-    let rings: Vec<([f64; 2], f64, f64)> =
-        shapes(&doc).iter().map(|s| (pt(s.get("center").unwrap_or(&serde_json::Value::Null)), f(s, "radius"), f(s, "inner_radius"))).collect();
+    let rings: Vec<([f64; 2], f64, f64)> = shapes(&doc)
+        .iter()
+        .map(|s| {
+            (
+                pt(s.get("center").unwrap_or(&serde_json::Value::Null)),
+                f(s, "radius"),
+                f(s, "inner_radius"),
+            )
+        })
+        .collect();
     let (prof, _) = builtin_profile(d, "grbl-laser");
-    let (text, _) = gcode_to(d, "h.gcode", &[&base[..], &["--machine", "grbl-laser", "--hatch", "0.4:20", "--hatch-only", "--power", "300"]].concat());
+    let (text, _) = gcode_to(
+        d,
+        "h.gcode",
+        &[
+            &base[..],
+            &["--machine", "grbl-laser", "--hatch", "0.4:20", "--hatch-only", "--power", "300"],
+        ]
+        .concat(),
+    );
     assert!(text.contains("M4 S300"), "--power sets S");
     let r = assert_safe(&text, &prof, "hatch");
     assert_eq!(r.arcs, 0, "hatch only: no outlines");
@@ -518,10 +663,17 @@ fn periodic_fill_is_clipped_to_the_tile() {
     let dir = tmp();
     let d = dir.path();
     let (prof, _) = builtin_profile(d, "grbl-servo-pen");
-    let (text, _) = gcode_to(d, "p.gcode", &["--region", "rect:100:80", "--periodic", "--count", "300", "--seed", "14"]);
+    let (text, _) = gcode_to(
+        d,
+        "p.gcode",
+        &["--region", "rect:100:80", "--periodic", "--count", "300", "--seed", "14"],
+    );
     let r = assert_safe(&text, &prof, "periodic");
     let b = r.drawn;
-    assert!(b[0] >= 0.0 && b[1] >= 0.0 && b[2] <= 100.0 && b[3] <= 80.0, "drawn inside the tile: {b:?}");
+    assert!(
+        b[0] >= 0.0 && b[1] >= 0.0 && b[2] <= 100.0 && b[3] <= 80.0,
+        "drawn inside the tile: {b:?}"
+    );
     assert!(b[0] < 0.5 && b[2] > 99.5, "edge-crossing shapes reach the tile's edges: {b:?}");
 }
 
@@ -564,13 +716,25 @@ fn too_big_is_refused_unless_fitted() {
     assert!(b[0] >= 5.0 - 1e-9 && b[2] <= 295.0 + 1e-9, "{b:?}");
     assert!(b[2] - b[0] > 250.0, "scaled to the bed's width: {b:?}");
     // A drawing of the right size in the wrong place: refused, placed by --center.
-    let far = ["fill", "--region", "polygon:400,400,480,400,480,470,400,470", "--count", "60", "-o", "far.gcode"];
+    let far = [
+        "fill",
+        "--region",
+        "polygon:400,400,480,400,480,470,400,470",
+        "--count",
+        "60",
+        "-o",
+        "far.gcode",
+    ];
     let o = zf(d, &far);
     assert_eq!(o.code, 2, "{}", o.stderr);
     zf_ok(d, &[&far[..], &["--center"]].concat());
     let text = String::from_utf8_lossy(&read(&d.join("far.gcode"))).into_owned();
     let r = assert_safe(&text, &prof, "center");
-    assert!(r.drawn[0] > 100.0 && r.drawn[2] < 200.0, "centred (the 80 mm region at x 110..190): {:?}", r.drawn);
+    assert!(
+        r.drawn[0] > 100.0 && r.drawn[2] < 200.0,
+        "centred (the 80 mm region at x 110..190): {:?}",
+        r.drawn
+    );
 }
 
 #[test]
@@ -578,7 +742,12 @@ fn other_origins_and_inches() {
     let dir = tmp();
     let d = dir.path();
     let (_, servo) = builtin_profile(d, "grbl-servo-pen");
-    for (origin, units, travel) in [("top-left", "mm", "rapid"), ("center", "mm", "rapid"), ("bottom-left", "inch", "rapid"), ("bottom-left", "mm", "feed")] {
+    for (origin, units, travel) in [
+        ("top-left", "mm", "rapid"),
+        ("center", "mm", "rapid"),
+        ("bottom-left", "inch", "rapid"),
+        ("bottom-left", "mm", "feed"),
+    ] {
         let text = servo
             .replace("travel = \"rapid\"", &format!("travel = \"{travel}\""))
             .replace("origin = \"bottom-left\"", &format!("origin = \"{origin}\""))
@@ -586,14 +755,40 @@ fn other_origins_and_inches() {
             .replace("name = \"grbl-servo-pen\"", "name = \"custom\"");
         std::fs::write(d.join("m.toml"), &text).unwrap_or_else(|e| panic!("{e}"));
         let prof = profile_from_toml(&text);
-        let (g, _) = gcode_to(d, "o.gcode", &["--region", "rect:120:100", "--count", "200", "--seed", "16", "--machine", "m.toml"]);
+        let (g, _) = gcode_to(
+            d,
+            "o.gcode",
+            &["--region", "rect:120:100", "--count", "200", "--seed", "16", "--machine", "m.toml"],
+        );
         let r = assert_safe(&g, &prof, &format!("{origin} {units} {travel}"));
         if travel == "feed" {
             // Travel as G1 at the travel feed (6000 mm/min), tool off; only the park is a rapid.
             assert_eq!(r.g0, 1, "one G0 (the park)");
             assert!(g.contains(" F6000"), "travel feed stated");
-            let travel_feed = zf_ok(d, &["fill", "--region", "rect:120:100", "--count", "200", "--seed", "16", "--machine", "m.toml", "--travel-feed", "2500", "-o", "-", "--format", "gcode"]);
-            assert!(String::from_utf8_lossy(&travel_feed.stdout).contains(" F2500"), "--travel-feed overrides it");
+            let travel_feed = zf_ok(
+                d,
+                &[
+                    "fill",
+                    "--region",
+                    "rect:120:100",
+                    "--count",
+                    "200",
+                    "--seed",
+                    "16",
+                    "--machine",
+                    "m.toml",
+                    "--travel-feed",
+                    "2500",
+                    "-o",
+                    "-",
+                    "--format",
+                    "gcode",
+                ],
+            );
+            assert!(
+                String::from_utf8_lossy(&travel_feed.stdout).contains(" F2500"),
+                "--travel-feed overrides it"
+            );
         }
         assert!(g.contains(if units == "inch" { "G20" } else { "G21" }));
         if origin == "center" {
@@ -619,7 +814,11 @@ fn machines_lists_and_shows_profiles() {
         let (_, text) = builtin_profile(d, m);
         // What `show` prints is a valid profile: use it as a file.
         std::fs::write(d.join("copy.toml"), &text).unwrap_or_else(|e| panic!("{e}"));
-        let (g, _) = gcode_to(d, "copy.gcode", &["--region", "rect:100:100", "--count", "30", "--machine", "copy.toml"]);
+        let (g, _) = gcode_to(
+            d,
+            "copy.gcode",
+            &["--region", "rect:100:100", "--count", "30", "--machine", "copy.toml"],
+        );
         let (b, _) = gcode_to(d, "builtin.gcode", &["--region", "rect:100:100", "--count", "30", "--machine", m]);
         assert_eq!(g, b, "{m}: the shown TOML is the built-in");
     }
@@ -643,7 +842,11 @@ fn bad_input_names_the_flag_and_writes_nothing() {
     let dir = tmp();
     let d = dir.path();
     let (_, servo) = builtin_profile(d, "grbl-servo-pen");
-    std::fs::write(d.join("missing.toml"), servo.replace("tool_off = \"\"\"\nM3 S30\nG4 P0.15\n\"\"\"\n", "")).unwrap_or_else(|e| panic!("{e}"));
+    std::fs::write(
+        d.join("missing.toml"),
+        servo.replace("tool_off = \"\"\"\nM3 S30\nG4 P0.15\n\"\"\"\n", ""),
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
     std::fs::write(d.join("wrong.toml"), servo.replace("draw = 3000.0", "draw = \"fast\"")).unwrap_or_else(|e| panic!("{e}"));
     std::fs::write(d.join("extra.toml"), servo.replace("arcs = true", "arcs = true\nspeed = 3")).unwrap_or_else(|e| panic!("{e}"));
     std::fs::write(d.join("negfeed.toml"), servo.replace("draw = 3000.0", "draw = 0.0")).unwrap_or_else(|e| panic!("{e}"));
@@ -684,8 +887,14 @@ fn bad_input_names_the_flag_and_writes_nothing() {
     let o = zf(d, &["fill", "--count", "20", "-o", "dir.gcode"]);
     assert_eq!(o.code, 2);
     assert!(names_flag(&o.stderr, "--output"), "{}", o.stderr);
-    let names: Vec<String> = listing(d).iter().filter_map(|p| p.file_name().map(|n| n.to_string_lossy().into_owned())).collect();
-    assert!(names.iter().all(|n| !n.starts_with(".zetafill-")), "no temporary files left: {names:?}");
+    let names: Vec<String> = listing(d)
+        .iter()
+        .filter_map(|p| p.file_name().map(|n| n.to_string_lossy().into_owned()))
+        .collect();
+    assert!(
+        names.iter().all(|n| !n.starts_with(".zetafill-")),
+        "no temporary files left: {names:?}"
+    );
 }
 
 #[test]
@@ -708,7 +917,19 @@ fn line_gcode_replays_safely() {
         let (prof, _) = builtin_profile(d, machine);
         for render in ["dashes", "circles", "bars"] {
             for periodic in [false, true] {
-                let mut args = vec!["line", "--count", "200", "--seed", "9", "--render", render, "--machine", machine, "-o", "l.gcode"];
+                let mut args = vec![
+                    "line",
+                    "--count",
+                    "200",
+                    "--seed",
+                    "9",
+                    "--render",
+                    render,
+                    "--machine",
+                    machine,
+                    "-o",
+                    "l.gcode",
+                ];
                 if periodic {
                     // A wrapping segment's circle reaches past x = 0: centre the drawing.
                     args.extend_from_slice(&["--periodic", "--center"]);
@@ -716,11 +937,20 @@ fn line_gcode_replays_safely() {
                 zf_ok(d, &args);
                 let text = String::from_utf8_lossy(&read(&d.join("l.gcode"))).into_owned();
                 let r = assert_safe(&text, &prof, &format!("line {render} on {machine}"));
-                assert!(text.contains("zetafill line") && text.contains("--seed 9"), "the header names the run");
+                assert!(
+                    text.contains("zetafill line") && text.contains("--seed 9"),
+                    "the header names the run"
+                );
                 if render == "dashes" && !periodic {
                     assert!(r.cuts >= 200, "one stroke per segment");
                 }
-                zf_ok(d, &args[..args.len()].iter().map(|s| if *s == "l.gcode" { "m.gcode" } else { s }).collect::<Vec<_>>());
+                zf_ok(
+                    d,
+                    &args[..args.len()]
+                        .iter()
+                        .map(|s| if *s == "l.gcode" { "m.gcode" } else { s })
+                        .collect::<Vec<_>>(),
+                );
                 assert_eq!(read(&d.join("l.gcode")), read(&d.join("m.gcode")), "byte-identical rerun");
             }
         }

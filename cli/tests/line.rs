@@ -14,8 +14,16 @@ struct Out {
 }
 
 fn zf(dir: &Path, args: &[&str]) -> Out {
-    let o = Command::new(env!("CARGO_BIN_EXE_zetafill")).args(args).current_dir(dir).output().unwrap_or_else(|e| panic!("cannot run: {e}"));
-    Out { code: o.status.code().unwrap_or(-1), stdout: o.stdout, stderr: String::from_utf8_lossy(&o.stderr).into_owned() }
+    let o = Command::new(env!("CARGO_BIN_EXE_zetafill"))
+        .args(args)
+        .current_dir(dir)
+        .output()
+        .unwrap_or_else(|e| panic!("cannot run: {e}"));
+    Out {
+        code: o.status.code().unwrap_or(-1),
+        stdout: o.stdout,
+        stderr: String::from_utf8_lossy(&o.stderr).into_owned(),
+    }
 }
 
 fn ok(dir: &Path, args: &[&str]) -> Out {
@@ -25,7 +33,10 @@ fn ok(dir: &Path, args: &[&str]) -> Out {
 }
 
 fn tmp() -> tempfile::TempDir {
-    tempfile::Builder::new().prefix("zetafill-line-test-").tempdir().unwrap_or_else(|e| panic!("{e}"))
+    tempfile::Builder::new()
+        .prefix("zetafill-line-test-")
+        .tempdir()
+        .unwrap_or_else(|e| panic!("{e}"))
 }
 
 fn line(dir: &Path, name: &str, args: &[&str]) -> Vec<u8> {
@@ -42,7 +53,11 @@ fn json(bytes: &[u8]) -> Value {
 
 /// `(start, length)` of every segment of a line document.
 fn segments(doc: &Value) -> Vec<(f64, f64)> {
-    doc["shapes"].as_array().map_or(vec![], |v| v.iter().map(|s| (s["start"].as_f64().unwrap_or(f64::NAN), s["length"].as_f64().unwrap_or(f64::NAN))).collect())
+    doc["shapes"].as_array().map_or(vec![], |v| {
+        v.iter()
+            .map(|s| (s["start"].as_f64().unwrap_or(f64::NAN), s["length"].as_f64().unwrap_or(f64::NAN)))
+            .collect()
+    })
 }
 
 /// Independent checker: every segment inside `[gap, L - gap]` (periodic: starts in `[0, L)`),
@@ -52,14 +67,22 @@ fn check_line(doc: &Value) -> Result<(), String> {
     let l = doc["region"]["length"].as_f64().ok_or("no length")?;
     let periodic = doc["region"]["periodic"].as_bool().ok_or("no periodic")?;
     let gap = doc["params"]["gap"].as_f64().ok_or("no gap")?;
-    let (c, n, z) = (doc["params"]["c"].as_f64().ok_or("c")?, doc["params"]["n_offset"].as_f64().ok_or("N")?, doc["zeta"].as_f64().ok_or("zeta")?);
+    let (c, n, z) = (
+        doc["params"]["c"].as_f64().ok_or("c")?,
+        doc["params"]["n_offset"].as_f64().ok_or("N")?,
+        doc["zeta"].as_f64().ok_or("zeta")?,
+    );
     let segs = segments(doc);
     for (i, &(s, len)) in segs.iter().enumerate() {
         let want = l / (z * (i as f64 + n).powf(c));
         if !(((len - want) / want).abs() < 1e-12) {
             return Err(format!("segment {i}: length {len}, expected {want}"));
         }
-        let inside = if periodic { s >= 0.0 && s < l && len + gap < l } else { s >= gap && s + len <= l - gap };
+        let inside = if periodic {
+            s >= 0.0 && s < l && len + gap < l
+        } else {
+            s >= gap && s + len <= l - gap
+        };
         if !inside {
             return Err(format!("segment {i} [{s}, {}] is outside", s + len));
         }
@@ -123,7 +146,11 @@ fn periodic_fills_wrap_and_thirty_thousand_segments_are_routine() {
     let mut wrapped = segments(&doc).iter().filter(|s| s.0 + s.1 > l).count();
     for seed in 2..30 {
         let s = seed.to_string();
-        let doc = json(&line(d.path(), "q.json", &["--c", "1.2", "--count", "200", "--periodic", "--seed", &s]));
+        let doc = json(&line(
+            d.path(),
+            "q.json",
+            &["--c", "1.2", "--count", "200", "--periodic", "--seed", &s],
+        ));
         check_line(&doc).unwrap_or_else(|e| panic!("{e}"));
         wrapped += segments(&doc).iter().filter(|s| s.0 + s.1 > l).count();
     }
@@ -167,11 +194,28 @@ fn csv_and_digest_agree_with_json_and_the_core() {
     let out = String::from_utf8(ok(d.path(), &a).stdout).unwrap_or_default();
     let mut segs = vec![zetafill::Segment::<f64>::default(); 401];
     let mut index = vec![0u32; zetafill::line_index_words(401)];
-    let storage = zetafill::LineStorage { segments: &mut segs, index: &mut index };
-    let mut e = zetafill::LineEngine::new(zetafill::LineParams::new(1.5, 1.0), zetafill::Interval { length: 200.0, periodic: true }, storage)
-        .unwrap_or_else(|e| panic!("{e}"));
+    let storage = zetafill::LineStorage {
+        segments: &mut segs,
+        index: &mut index,
+    };
+    let mut e = zetafill::LineEngine::new(
+        zetafill::LineParams::new(1.5, 1.0),
+        zetafill::Interval {
+            length: 200.0,
+            periodic: true,
+        },
+        storage,
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
     let mut rng = zetafill::rng_from_seed(3);
-    e.run(&mut rng, &zetafill::Stop { count: Some(400), ..zetafill::Stop::default() }, |_| {});
+    e.run(
+        &mut rng,
+        &zetafill::Stop {
+            count: Some(400),
+            ..zetafill::Stop::default()
+        },
+        |_| {},
+    );
     let (n, h) = zetafill::line::line_digest(&e);
     assert_eq!(out.trim(), format!("{n} {h:016x}"));
 }
@@ -195,7 +239,10 @@ fn every_render_is_valid_svg_in_mm() {
             }
             let bytes = line(d.path(), "a.svg", &args);
             let tree = usvg::Tree::from_data(&bytes, &usvg::Options::default()).unwrap_or_else(|e| panic!("{render}: {e}"));
-            assert!((tree.size().width() - 200.0 / 25.4 * 96.0).abs() < 0.01, "{render}: width is not 200 mm");
+            assert!(
+                (tree.size().width() - 200.0 / 25.4 * 96.0).abs() < 0.01,
+                "{render}: width is not 200 mm"
+            );
             let svg = String::from_utf8(bytes).unwrap_or_default();
             assert!(svg.contains("width=\"200mm\""));
             assert!(svg.contains("zetafill line --length 200"), "no command line in the metadata");
@@ -263,7 +310,10 @@ fn bad_input_exits_2_names_the_flag_and_writes_nothing() {
 fn halting_exits_3_with_a_valid_partial_file() {
     let d = tmp();
     // At c = 3 the first segments leave little room: with 3 trials per placement it halts.
-    let o = zf(d.path(), &["line", "--c", "3", "--count", "500", "--max-trials", "3", "-o", "h.json"]);
+    let o = zf(
+        d.path(),
+        &["line", "--c", "3", "--count", "500", "--max-trials", "3", "-o", "h.json"],
+    );
     assert_eq!(o.code, 3, "{}", o.stderr);
     assert!(o.stderr.contains("halted at placement"), "{}", o.stderr);
     let doc = json(&std::fs::read(d.path().join("h.json")).unwrap_or_default());
@@ -307,7 +357,10 @@ fn the_checker_fails_on_broken_fills() {
     assert!(check_line(&synthetic(10.0, true, &[1.0, 7.5, 0.1])).is_ok());
     let broken: [(&str, Value); 6] = [
         ("overlap", synthetic(10.0, false, &[1.0, 6.5, 9.2])),
-        ("touching", synthetic(10.0, false, &[1.0, 10.0 / (std::f64::consts::PI.powi(2) / 6.0) + 1.0, 9.2])),
+        (
+            "touching",
+            synthetic(10.0, false, &[1.0, 10.0 / (std::f64::consts::PI.powi(2) / 6.0) + 1.0, 9.2]),
+        ),
         ("outside", synthetic(10.0, false, &[1.0, 7.5, 9.5])),
         ("wraps onto the first", synthetic(10.0, true, &[1.0, 9.6])),
         ("start outside the period", synthetic(10.0, true, &[1.0, 10.0])),

@@ -24,9 +24,16 @@ fn paths(g: &usvg::Group, out: &mut Vec<usvg::Rect>) {
 }
 
 fn union(boxes: &[usvg::Rect]) -> [f64; 4] {
-    boxes.iter().fold([f64::INFINITY, f64::INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY], |b, r| {
-        [b[0].min(r.left() as f64), b[1].min(r.top() as f64), b[2].max(r.right() as f64), b[3].max(r.bottom() as f64)]
-    })
+    boxes
+        .iter()
+        .fold([f64::INFINITY, f64::INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY], |b, r| {
+            [
+                b[0].min(r.left() as f64),
+                b[1].min(r.top() as f64),
+                b[2].max(r.right() as f64),
+                b[3].max(r.bottom() as f64),
+            ]
+        })
 }
 
 /// The region's box on the page in mm (x0, y0 from the top-left, x1, y1), from the shapes
@@ -49,10 +56,19 @@ fn page_presets_place_the_drawing_inside_the_margins() {
     let base = ["--region", "rect:150:100", "--count", "300", "--seed", "21"];
     let doc = fill_json(d, &base);
     let n = shapes(&doc).len();
-    for (page, w, h) in [("a4", 210.0, 297.0), ("a3", 297.0, 420.0), ("letter", 215.9, 279.4), ("a4-landscape", 297.0, 210.0), ("180x130", 180.0, 130.0)] {
+    for (page, w, h) in [
+        ("a4", 210.0, 297.0),
+        ("a3", 297.0, 420.0),
+        ("letter", 215.9, 279.4),
+        ("a4-landscape", 297.0, 210.0),
+        ("180x130", 180.0, 130.0),
+    ] {
         let svg = fill_to(d, "p.svg", &[&base[..], &["--page", page, "--margin", "12"]].concat());
         let text = String::from_utf8_lossy(&svg).into_owned();
-        assert!(text.contains(&format!("width=\"{w}mm\"")) && text.contains(&format!("height=\"{h}mm\"")), "{page}: size in mm");
+        assert!(
+            text.contains(&format!("width=\"{w}mm\"")) && text.contains(&format!("height=\"{h}mm\"")),
+            "{page}: size in mm"
+        );
         assert!(text.contains(&format!("viewBox=\"0 0 {w} {h}\"")), "{page}: a viewBox in mm");
         let t = tree(&svg);
         let (pw, ph) = size_mm(&t);
@@ -65,7 +81,11 @@ fn page_presets_place_the_drawing_inside_the_margins() {
         let pen = 0.3 / 2.0 + 1e-3;
         assert!(b[0] >= 12.0 - pen && b[1] >= 12.0 - pen, "{page}: {b:?}");
         assert!(b[2] <= 12.0 + 150.0 + pen && b[3] <= 12.0 + 100.0 + pen, "{page}: {b:?}");
-        assert_eq!(svg, fill_to(d, "q.svg", &[&base[..], &["--page", page, "--margin", "12"]].concat()), "{page}: byte-identical rerun");
+        assert_eq!(
+            svg,
+            fill_to(d, "q.svg", &[&base[..], &["--page", page, "--margin", "12"]].concat()),
+            "{page}: byte-identical rerun"
+        );
     }
 }
 
@@ -78,8 +98,14 @@ fn center_and_fit() {
     let c = tree(&fill_to(d, "c.svg", &[&base[..], &["--page", "a4", "--center"]].concat()));
     let b = drawn_mm(&c);
     let pen = 0.3 / 2.0 + 1e-3;
-    assert!((b[0] - (210.0 - 150.0) / 2.0).abs() <= pen && (b[2] - (210.0 + 150.0) / 2.0).abs() <= pen, "{b:?}");
-    assert!((b[1] - (297.0 - 100.0) / 2.0).abs() <= pen && (b[3] - (297.0 + 100.0) / 2.0).abs() <= pen, "{b:?}");
+    assert!(
+        (b[0] - (210.0 - 150.0) / 2.0).abs() <= pen && (b[2] - (210.0 + 150.0) / 2.0).abs() <= pen,
+        "{b:?}"
+    );
+    assert!(
+        (b[1] - (297.0 - 100.0) / 2.0).abs() <= pen && (b[3] - (297.0 + 100.0) / 2.0).abs() <= pen,
+        "{b:?}"
+    );
     // --fit scales to the page less margins: 150 mm wide becomes 190 mm on A4 with 10 mm margins.
     let f = tree(&fill_to(d, "f.svg", &[&base[..], &["--page", "a4", "--fit"]].concat()));
     let b = drawn_mm(&f);
@@ -87,7 +113,10 @@ fn center_and_fit() {
     assert!(((b[3] - b[1]) - 190.0 * 100.0 / 150.0).abs() <= 2.0 * pen, "{b:?}");
     // Too big for the page: refused, naming --page, nothing written.
     std::fs::write(d.join("big.svg"), b"keep").unwrap_or_else(|e| panic!("{e}"));
-    let o = zf(d, &["fill", "--region", "rect:300:100", "--count", "20", "--page", "a4", "-o", "big.svg"]);
+    let o = zf(
+        d,
+        &["fill", "--region", "rect:300:100", "--count", "20", "--page", "a4", "-o", "big.svg"],
+    );
     assert_eq!(o.code, 2, "{}", o.stderr);
     assert!(names_flag(&o.stderr, "--page") && o.stderr.contains("--fit"), "{}", o.stderr);
     assert_eq!(read(&d.join("big.svg")), b"keep");
@@ -114,7 +143,10 @@ fn layers_split_shapes_by_size() {
     let text = String::from_utf8_lossy(&svg).into_owned();
     assert_eq!(text.matches("inkscape:groupmode=\"layer\"").count(), 3, "three Inkscape layers");
     for k in 1..=3 {
-        assert!(text.contains(&format!("id=\"layer{k}\"")) && text.contains(&format!("inkscape:label=\"{k} ")), "layer {k}");
+        assert!(
+            text.contains(&format!("id=\"layer{k}\"")) && text.contains(&format!("inkscape:label=\"{k} ")),
+            "layer {k}"
+        );
     }
     let t = tree(&svg);
     // Each layer is a top-level group (usvg keeps groups with an id).
@@ -135,14 +167,23 @@ fn layers_split_shapes_by_size() {
     layers(t.root(), &mut per_layer);
     let ids: Vec<&str> = per_layer.iter().map(|(i, _)| i.as_str()).collect();
     assert_eq!(ids, ["layer1", "layer2", "layer3"]);
-    assert_eq!(per_layer.iter().map(|(_, v)| v.len()).sum::<usize>(), n, "every shape in exactly one layer");
+    assert_eq!(
+        per_layer.iter().map(|(_, v)| v.len()).sum::<usize>(),
+        n,
+        "every shape in exactly one layer"
+    );
     assert!(per_layer.iter().all(|(_, v)| !v.is_empty()));
     // Largest first: every shape of a layer is at least as large as every shape of the next.
     let size = |r: &usvg::Rect| r.width().max(r.height()) as f64;
     for w in per_layer.windows(2) {
         let smallest = w[0].1.iter().map(size).fold(f64::INFINITY, f64::min);
         let largest_next = w[1].1.iter().map(size).fold(0.0, f64::max);
-        assert!(smallest >= largest_next - 1e-3, "{} then {}: {smallest} < {largest_next}", w[0].0, w[1].0);
+        assert!(
+            smallest >= largest_next - 1e-3,
+            "{} then {}: {smallest} < {largest_next}",
+            w[0].0,
+            w[1].0
+        );
     }
     assert!(per_layer[0].1.len() < per_layer[2].1.len(), "few large shapes, many small ones");
     // Layers without a page work too, and keep the region's size.
@@ -158,22 +199,58 @@ fn layers_split_shapes_by_size() {
 fn periodic_on_a_page_clips_to_the_tile() {
     let dir = tmp();
     let d = dir.path();
-    let svg = fill_to(d, "t.svg", &["--region", "rect:100:80", "--periodic", "--count", "200", "--seed", "24", "--page", "a4", "--center"]);
+    let svg = fill_to(
+        d,
+        "t.svg",
+        &[
+            "--region",
+            "rect:100:80",
+            "--periodic",
+            "--count",
+            "200",
+            "--seed",
+            "24",
+            "--page",
+            "a4",
+            "--center",
+        ],
+    );
     let t = tree(&svg);
     let b = drawn_mm(&t);
     // The tile is centred: x 55..155, y 108.5..188.5 on A4. Images of edge-crossing shapes are
     // cut exactly to it (plotter tools ignore clip-path), so nothing is drawn outside.
     let pen = 0.3 / 2.0 + 1e-3;
-    assert!(b[0] >= 55.0 - pen && b[2] <= 155.0 + pen && b[1] >= 108.5 - pen && b[3] <= 188.5 + pen, "{b:?}");
+    assert!(
+        b[0] >= 55.0 - pen && b[2] <= 155.0 + pen && b[1] >= 108.5 - pen && b[3] <= 188.5 + pen,
+        "{b:?}"
+    );
     assert!(b[0] < 55.5 && b[2] > 154.5, "cut shapes reach the tile's edges: {b:?}");
     let text = String::from_utf8_lossy(&svg).into_owned();
     assert!(!text.contains("clip-path"), "no clip-path for plotters");
     // The same with layers and no page: the tile is the page.
-    let l = tree(&fill_to(d, "tl.svg", &["--region", "rect:100:80", "--periodic", "--count", "200", "--seed", "24", "--layers", "size-bands:2"]));
+    let l = tree(&fill_to(
+        d,
+        "tl.svg",
+        &[
+            "--region",
+            "rect:100:80",
+            "--periodic",
+            "--count",
+            "200",
+            "--seed",
+            "24",
+            "--layers",
+            "size-bands:2",
+        ],
+    ));
     let b = drawn_mm(&l);
     assert!(b[0] >= -pen && b[2] <= 100.0 + pen && b[1] >= -pen && b[3] <= 80.0 + pen, "{b:?}");
     // Without page and layers: the clip-path as before.
-    let plain = fill_to(d, "tp.svg", &["--region", "rect:100:80", "--periodic", "--count", "200", "--seed", "24"]);
+    let plain = fill_to(
+        d,
+        "tp.svg",
+        &["--region", "rect:100:80", "--periodic", "--count", "200", "--seed", "24"],
+    );
     assert!(String::from_utf8_lossy(&plain).contains("clip-path=\"url(#region)\""));
     // PNG previews follow the page.
     let png = fill_to(d, "t.png", &["--region", "rect:100:80", "--count", "50", "--page", "a5"]);

@@ -6,8 +6,24 @@ mod common;
 use common::*;
 use serde_json::Value;
 
-const SHAPES: [&str; 9] = ["circle", "square", "rect:2", "triangle", "polygon:7", "star:5:0.45", "ring:0.6", "blob:0.2", "mix:circle,star:4:0.5,ring:0.5"];
-const REGIONS: [&str; 5] = ["rect:120:90", "circle:60", "annulus:60:20", "polygon:0,0,120,0,120,120,60,50,0,120", "SVG"];
+const SHAPES: [&str; 9] = [
+    "circle",
+    "square",
+    "rect:2",
+    "triangle",
+    "polygon:7",
+    "star:5:0.45",
+    "ring:0.6",
+    "blob:0.2",
+    "mix:circle,star:4:0.5,ring:0.5",
+];
+const REGIONS: [&str; 5] = [
+    "rect:120:90",
+    "circle:60",
+    "annulus:60:20",
+    "polygon:0,0,120,0,120,120,60,50,0,120",
+    "SVG",
+];
 
 const OUTLINE: &str = r#"<svg xmlns="http://www.w3.org/2000/svg" width="120mm" height="120mm" viewBox="0 0 120 120">
 <path d="M 0 0 L 120 0 L 120 120 L 0 120 Z M 40 40 C 50 30 70 30 80 40 L 80 80 L 40 80 Z"/></svg>"#;
@@ -25,12 +41,23 @@ fn check_kinds(doc: &Value) {
                 assert!(rel(std::f64::consts::PI * (r * r - ri * ri), area) < 1e-9);
             }
             _ => {
-                let vs: Vec<[f64; 2]> = sh["vertices"].as_array().unwrap_or_else(|| panic!("{kind} has no vertices")).iter().map(pt).collect();
+                let vs: Vec<[f64; 2]> = sh["vertices"]
+                    .as_array()
+                    .unwrap_or_else(|| panic!("{kind} has no vertices"))
+                    .iter()
+                    .map(pt)
+                    .collect();
                 let want = match kind {
                     "square" | "rect" => 4,
                     "triangle" => 3,
                     "polygon" => 7,
-                    "star" => if vs.len() == 8 { 8 } else { 10 },
+                    "star" => {
+                        if vs.len() == 8 {
+                            8
+                        } else {
+                            10
+                        }
+                    }
                     "blob" => 32,
                     other => panic!("unknown kind {other}"),
                 };
@@ -48,7 +75,22 @@ fn every_shape_in_every_region_end_to_end() {
     for region in REGIONS {
         let region_arg = if region == "SVG" { "svg:outline.svg" } else { region };
         for shape in SHAPES {
-            let args = ["--shape", shape, "--region", region_arg, "--c", "1.2", "--n-offset", "5", "--count", "60", "--seed", "3", "--gap", "0.3"];
+            let args = [
+                "--shape",
+                shape,
+                "--region",
+                region_arg,
+                "--c",
+                "1.2",
+                "--n-offset",
+                "5",
+                "--count",
+                "60",
+                "--seed",
+                "3",
+                "--gap",
+                "0.3",
+            ];
             let doc = fill_json(dir.path(), &args);
             assert_eq!(shapes(&doc).len(), 60, "{shape} in {region}");
             check_kinds(&doc);
@@ -61,7 +103,11 @@ fn every_shape_in_every_region_end_to_end() {
             };
             assert_eq!(kind, want);
             if region == "SVG" {
-                assert_eq!(doc["region"]["holes"].as_array().map(Vec::len), Some(1), "the SVG's inner outline is a hole");
+                assert_eq!(
+                    doc["region"]["holes"].as_array().map(Vec::len),
+                    Some(1),
+                    "the SVG's inner outline is a hole"
+                );
                 // 120 x 120 minus the hole: a 40 x 40 square plus the bulge of its curved top
                 // (a cubic 10 mm high at its control points: about 210 mm²).
                 let a = f(&doc, "area");
@@ -84,8 +130,16 @@ fn mixes_cycle_in_order_and_random_mixes_are_reproducible() {
     for (i, k) in kinds.iter().enumerate() {
         assert_eq!(*k, ["circle", "square", "triangle"][i % 3]);
     }
-    let a = fill_to(dir.path(), "a.json", &["--shape", "mix:circle,square", "--mix-order", "random", "--count", "40"]);
-    let b = fill_to(dir.path(), "b.json", &["--shape", "mix:circle,square", "--mix-order", "random", "--count", "40"]);
+    let a = fill_to(
+        dir.path(),
+        "a.json",
+        &["--shape", "mix:circle,square", "--mix-order", "random", "--count", "40"],
+    );
+    let b = fill_to(
+        dir.path(),
+        "b.json",
+        &["--shape", "mix:circle,square", "--mix-order", "random", "--count", "40"],
+    );
     assert_eq!(a, b);
     let doc = parse_json(&a);
     let circles = shapes(&doc).iter().filter(|sh| s(sh, "kind") == "circle").count();
@@ -95,19 +149,43 @@ fn mixes_cycle_in_order_and_random_mixes_are_reproducible() {
 #[test]
 fn squares_beyond_the_hard_limit_are_refused_before_running() {
     let dir = tmp();
-    let o = zf(dir.path(), &["fill", "--shape", "square", "--rotate", "none", "--c", "1.53", "-o", "x.json"]);
+    let o = zf(
+        dir.path(),
+        &["fill", "--shape", "square", "--rotate", "none", "--c", "1.53", "-o", "x.json"],
+    );
     assert_eq!(o.code, 2, "{}", o.stderr);
     assert!(o.stderr.contains("1.5224"), "{}", o.stderr);
     assert!(!dir.path().join("x.json").exists());
     // Just below the limit the first two squares can fit (the run may still halt later).
-    let o = zf(dir.path(), &["fill", "--shape", "square", "--rotate", "none", "--c", "1.52", "--count", "2", "--max-trials", "100000000", "-o", "y.json"]);
+    let o = zf(
+        dir.path(),
+        &[
+            "fill",
+            "--shape",
+            "square",
+            "--rotate",
+            "none",
+            "--c",
+            "1.52",
+            "--count",
+            "2",
+            "--max-trials",
+            "100000000",
+            "-o",
+            "y.json",
+        ],
+    );
     assert!(o.code == 0 || o.code == 3, "{}", o.stderr);
 }
 
 #[test]
 fn bad_shapes_and_regions_exit_2_naming_the_flag() {
     let dir = tmp();
-    std::fs::write(dir.path().join("open.svg"), r#"<svg xmlns="http://www.w3.org/2000/svg"><path d="M 0 0 L 10 10 L 20 0"/></svg>"#).unwrap_or_default();
+    std::fs::write(
+        dir.path().join("open.svg"),
+        r#"<svg xmlns="http://www.w3.org/2000/svg"><path d="M 0 0 L 10 10 L 20 0"/></svg>"#,
+    )
+    .unwrap_or_default();
     std::fs::write(dir.path().join("broken.svg"), "<svg this is not xml").unwrap_or_default();
     std::fs::write(dir.path().join("out.json"), "keep me").unwrap_or_default();
     let cases: &[(&[&str], &str)] = &[

@@ -15,18 +15,30 @@ struct Out {
 }
 
 fn zf(dir: &Path, args: &[&str]) -> Out {
-    let o = Command::new(env!("CARGO_BIN_EXE_zetafill")).args(args).current_dir(dir).output().unwrap_or_else(|e| panic!("cannot run: {e}"));
-    Out { code: o.status.code().unwrap_or(-1), stdout: o.stdout, stderr: String::from_utf8_lossy(&o.stderr).into_owned() }
+    let o = Command::new(env!("CARGO_BIN_EXE_zetafill"))
+        .args(args)
+        .current_dir(dir)
+        .output()
+        .unwrap_or_else(|e| panic!("cannot run: {e}"));
+    Out {
+        code: o.status.code().unwrap_or(-1),
+        stdout: o.stdout,
+        stderr: String::from_utf8_lossy(&o.stderr).into_owned(),
+    }
 }
 
 fn ok_json(dir: &Path, args: &[&str]) -> Value {
     let o = zf(dir, args);
     assert_eq!(o.code, 0, "zetafill {args:?}: {}", o.stderr);
-    serde_json::from_slice(&o.stdout).unwrap_or_else(|e| panic!("{args:?}: not one JSON object ({e}): {}", String::from_utf8_lossy(&o.stdout)))
+    serde_json::from_slice(&o.stdout)
+        .unwrap_or_else(|e| panic!("{args:?}: not one JSON object ({e}): {}", String::from_utf8_lossy(&o.stdout)))
 }
 
 fn tmp() -> tempfile::TempDir {
-    tempfile::Builder::new().prefix("zetafill-stats-test-").tempdir().unwrap_or_else(|e| panic!("{e}"))
+    tempfile::Builder::new()
+        .prefix("zetafill-stats-test-")
+        .tempdir()
+        .unwrap_or_else(|e| panic!("{e}"))
 }
 
 fn f(v: &Value) -> f64 {
@@ -36,7 +48,12 @@ fn f(v: &Value) -> f64 {
 #[test]
 fn gasket_reproduces_table1_entries() {
     let d = tmp();
-    for (c, n, want) in [("1.24", "10", 0.6024), ("1.32", "100000", 0.2700), ("1.48", "1000000", 0.1387), ("1.40", "1000", 0.2096)] {
+    for (c, n, want) in [
+        ("1.24", "10", 0.6024),
+        ("1.32", "100000", 0.2700),
+        ("1.48", "1000000", 0.1387),
+        ("1.40", "1000", 0.2096),
+    ] {
         let v = ok_json(d.path(), &["stats", "gasket", "--c", c, "--n-offset", "1", "--n", n, "--json"]);
         assert_eq!((f(&v["b"]) * 1e4).round(), (want * 1e4_f64).round(), "c={c} n={n}: {v}");
     }
@@ -51,7 +68,10 @@ fn gasket_reproduces_table1_entries() {
 #[test]
 fn trials_fits_an_exponent_near_c_and_writes_csv_and_svg() {
     let d = tmp();
-    let v = ok_json(d.path(), &["stats", "trials", "--c", "1.3", "--count", "3000", "--json", "-o", "t.csv"]);
+    let v = ok_json(
+        d.path(),
+        &["stats", "trials", "--c", "1.3", "--count", "3000", "--json", "-o", "t.csv"],
+    );
     assert_eq!(v["placed"], 3000);
     let k = f(&v["exponent"]);
     assert!((k - 1.3).abs() < 0.15, "exponent {k} is not near c = 1.3");
@@ -71,7 +91,12 @@ fn trials_fits_an_exponent_near_c_and_writes_csv_and_svg() {
     assert_eq!(rows, 3000);
     assert_eq!(v["trials"], sum);
     // Several curves in one chart, a valid SVG.
-    let v = ok_json(d.path(), &["stats", "trials", "--c", "1.2,1.3", "--runs", "2", "--count", "500", "--json", "-o", "t.svg"]);
+    let v = ok_json(
+        d.path(),
+        &[
+            "stats", "trials", "--c", "1.2,1.3", "--runs", "2", "--count", "500", "--json", "-o", "t.svg",
+        ],
+    );
     let series = v["series"].as_array().cloned().unwrap_or_default();
     assert_eq!(series.len(), 4);
     let seeds: Vec<u64> = series.iter().filter_map(|s| s["seed"].as_u64()).collect();
@@ -80,7 +105,12 @@ fn trials_fits_an_exponent_near_c_and_writes_csv_and_svg() {
     assert!(usvg::Tree::from_data(&svg, &usvg::Options::default()).is_ok());
     assert!(String::from_utf8_lossy(&svg).contains("c = 1.3, run 1"));
     // The same call again gives the same bytes.
-    ok_json(d.path(), &["stats", "trials", "--c", "1.2,1.3", "--runs", "2", "--count", "500", "--json", "-o", "u.svg"]);
+    ok_json(
+        d.path(),
+        &[
+            "stats", "trials", "--c", "1.2,1.3", "--runs", "2", "--count", "500", "--json", "-o", "u.svg",
+        ],
+    );
     assert_eq!(std::fs::read(d.path().join("u.svg")).unwrap_or_default(), svg);
 }
 
@@ -91,7 +121,25 @@ fn squares_halt_in_every_run_above_1_5224() {
     let d = tmp();
     let v = ok_json(
         d.path(),
-        &["stats", "halting", "--shape", "square", "--c-from", "1.53", "--c-to", "1.59", "--c-step", "0.02", "--runs", "6", "--count", "20", "--max-trials", "20000", "--json"],
+        &[
+            "stats",
+            "halting",
+            "--shape",
+            "square",
+            "--c-from",
+            "1.53",
+            "--c-to",
+            "1.59",
+            "--c-step",
+            "0.02",
+            "--runs",
+            "6",
+            "--count",
+            "20",
+            "--max-trials",
+            "20000",
+            "--json",
+        ],
     );
     let pts = v["points"].as_array().cloned().unwrap_or_default();
     assert_eq!(pts.len(), 4);
@@ -103,7 +151,25 @@ fn squares_halt_in_every_run_above_1_5224() {
     }
     let v = ok_json(
         d.path(),
-        &["stats", "halting", "--shape", "square", "--c-from", "1.2", "--c-to", "1.2", "--c-step", "0.1", "--runs", "6", "--count", "30", "--max-trials", "1000000", "--json"],
+        &[
+            "stats",
+            "halting",
+            "--shape",
+            "square",
+            "--c-from",
+            "1.2",
+            "--c-to",
+            "1.2",
+            "--c-step",
+            "0.1",
+            "--runs",
+            "6",
+            "--count",
+            "30",
+            "--max-trials",
+            "1000000",
+            "--json",
+        ],
     );
     assert_eq!(v["points"][0]["halted"], 0, "{v}");
 }
@@ -115,7 +181,25 @@ fn halting_checker_fails_when_a_run_does_not_halt() {
     let d = tmp();
     let v = ok_json(
         d.path(),
-        &["stats", "halting", "--shape", "square", "--c-from", "1.3", "--c-to", "1.3", "--c-step", "0.1", "--runs", "6", "--count", "20", "--max-trials", "20000", "--json"],
+        &[
+            "stats",
+            "halting",
+            "--shape",
+            "square",
+            "--c-from",
+            "1.3",
+            "--c-to",
+            "1.3",
+            "--c-step",
+            "0.1",
+            "--runs",
+            "6",
+            "--count",
+            "20",
+            "--max-trials",
+            "20000",
+            "--json",
+        ],
     );
     assert_ne!(v["points"][0]["halted"], 6);
 }
@@ -123,7 +207,23 @@ fn halting_checker_fails_when_a_run_does_not_halt() {
 #[test]
 fn halting_is_reproducible_whatever_the_threads_and_writes_csv_and_svg() {
     let d = tmp();
-    let args = ["stats", "halting", "--c-from", "1.44", "--c-to", "1.5", "--c-step", "0.03", "--runs", "5", "--count", "40", "--max-trials", "30000", "--json"];
+    let args = [
+        "stats",
+        "halting",
+        "--c-from",
+        "1.44",
+        "--c-to",
+        "1.5",
+        "--c-step",
+        "0.03",
+        "--runs",
+        "5",
+        "--count",
+        "40",
+        "--max-trials",
+        "30000",
+        "--json",
+    ];
     let mut one = args.to_vec();
     one.extend_from_slice(&["--threads", "1", "-o", "h.csv"]);
     let a = ok_json(d.path(), &one);
@@ -148,7 +248,11 @@ fn halting_is_reproducible_whatever_the_threads_and_writes_csv_and_svg() {
 #[test]
 fn box_counting_is_within_0_1_of_the_exact_dimension() {
     let d = tmp();
-    for (cmd, c, n, exact) in [("fill", "1.3", "20000", 2.0 / 1.3), ("line", "1.4", "30000", 1.0 / 1.4), ("line", "2", "3000", 0.5)] {
+    for (cmd, c, n, exact) in [
+        ("fill", "1.3", "20000", 2.0 / 1.3),
+        ("line", "1.4", "30000", 1.0 / 1.4),
+        ("line", "2", "3000", 0.5),
+    ] {
         let o = zf(d.path(), &[cmd, "--c", c, "--count", n, "-o", "a.json"]);
         assert_eq!(o.code, 0, "{}", o.stderr);
         let v = ok_json(d.path(), &["stats", "dimension", "a.json", "--json"]);
@@ -160,7 +264,10 @@ fn box_counting_is_within_0_1_of_the_exact_dimension() {
         doc["params"]["c"] = Value::from(if cmd == "fill" { 1.1 } else { 1.2 });
         std::fs::write(d.path().join("b.json"), doc.to_string()).unwrap_or_default();
         let w = ok_json(d.path(), &["stats", "dimension", "b.json", "--json"]);
-        assert!((f(&w["box_counting"]) - f(&w["exact"])).abs() >= 0.1, "the check did not fail on a wrong c: {w}");
+        assert!(
+            (f(&w["box_counting"]) - f(&w["exact"])).abs() >= 0.1,
+            "the check did not fail on a wrong c: {w}"
+        );
     }
 }
 
@@ -168,7 +275,11 @@ fn box_counting_is_within_0_1_of_the_exact_dimension() {
 fn dimension_bad_input_exits_2() {
     let d = tmp();
     std::fs::write(d.path().join("x.json"), "not json").unwrap_or_default();
-    std::fs::write(d.path().join("y.json"), r#"{"mode": "territory", "params": {"c": 1.3}, "region": {}, "shapes": []}"#).unwrap_or_default();
+    std::fs::write(
+        d.path().join("y.json"),
+        r#"{"mode": "territory", "params": {"c": 1.3}, "region": {}, "shapes": []}"#,
+    )
+    .unwrap_or_default();
     for file in ["missing.json", "x.json", "y.json"] {
         let o = zf(d.path(), &["stats", "dimension", file]);
         assert_eq!(o.code, 2, "{file}: {}", o.stderr);
@@ -178,7 +289,9 @@ fn dimension_bad_input_exits_2() {
         vec!["stats", "halting", "--c-from", "1.4", "--c-to", "1.3", "--c-step", "0.1"],
         vec!["stats", "halting", "--c-from", "1", "--c-to", "1.3", "--c-step", "0.1"],
         vec!["stats", "halting", "--c-from", "1.2", "--c-to", "1.3", "--c-step", "0"],
-        vec!["stats", "halting", "--c-from", "1.2", "--c-to", "1.3", "--c-step", "0.1", "-o", "h.png"],
+        vec![
+            "stats", "halting", "--c-from", "1.2", "--c-to", "1.3", "--c-step", "0.1", "-o", "h.png",
+        ],
         vec!["stats", "trials", "--c", "1.3,0.9"],
         vec!["stats", "trials", "--shape", "hexagon"],
     ] {

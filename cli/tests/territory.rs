@@ -22,8 +22,15 @@ struct Out {
 }
 
 fn zf(dir: &Path, args: &[&str]) -> Out {
-    let o = Command::new(env!("CARGO_BIN_EXE_zetafill")).args(args).current_dir(dir).output().unwrap_or_else(|e| panic!("cannot run: {e}"));
-    Out { code: o.status.code().unwrap_or(-1), stderr: String::from_utf8_lossy(&o.stderr).into_owned() }
+    let o = Command::new(env!("CARGO_BIN_EXE_zetafill"))
+        .args(args)
+        .current_dir(dir)
+        .output()
+        .unwrap_or_else(|e| panic!("cannot run: {e}"));
+    Out {
+        code: o.status.code().unwrap_or(-1),
+        stderr: String::from_utf8_lossy(&o.stderr).into_owned(),
+    }
 }
 
 fn ok(dir: &Path, args: &[&str]) {
@@ -32,7 +39,10 @@ fn ok(dir: &Path, args: &[&str]) {
 }
 
 fn tmp() -> tempfile::TempDir {
-    tempfile::Builder::new().prefix("zetafill-territory-test-").tempdir().unwrap_or_else(|e| panic!("{e}"))
+    tempfile::Builder::new()
+        .prefix("zetafill-territory-test-")
+        .tempdir()
+        .unwrap_or_else(|e| panic!("{e}"))
 }
 
 fn json(path: &Path) -> Value {
@@ -46,7 +56,10 @@ fn sites_of(doc: &Value) -> (Vec<Pt>, Vec<u32>, Vec<u32>, Vec<[f64; 3]>) {
     let pts = arr.iter().map(|s| [f(&s["point"][0]), f(&s["point"][1])]).collect();
     let ter = arr.iter().map(|s| s["territory"].as_u64().unwrap_or(u64::MAX) as u32).collect();
     let dist = arr.iter().map(|s| s["distance"].as_u64().unwrap_or(u64::MAX) as u32).collect();
-    let col = arr.iter().map(|s| [f(&s["color"][0]), f(&s["color"][1]), f(&s["color"][2])]).collect();
+    let col = arr
+        .iter()
+        .map(|s| [f(&s["color"][0]), f(&s["color"][1]), f(&s["color"][2])])
+        .collect();
     (pts, ter, dist, col)
 }
 
@@ -106,7 +119,16 @@ fn every_territory_is_connected_and_holds_its_seed() {
         &["--sites", "5", "--points", "3000", "--seed", "3", "--uniform"],
         &["--sites", "8", "--points", "5000", "--seed", "4", "--n0", "200", "--boost", "50"],
         &["--sites", "4", "--points", "3000", "--seed", "5", "--region", "circle:80"],
-        &["--sites", "3", "--points", "3000", "--seed", "6", "--region", "polygon:0,0,100,0,100,100,60,100,60,40,40,40,40,100,0,100"],
+        &[
+            "--sites",
+            "3",
+            "--points",
+            "3000",
+            "--seed",
+            "6",
+            "--region",
+            "polygon:0,0,100,0,100,100,60,100,60,40,40,40,40,100,0,100",
+        ],
     ];
     let mut reassigned = 0;
     for (i, args) in cases.iter().enumerate() {
@@ -129,13 +151,29 @@ fn every_territory_is_connected_and_holds_its_seed() {
 #[test]
 fn connectivity_checker_fails_on_a_cut_off_site() {
     let mut m = Model::new(&[[20.0, 50.0], [80.0, 50.0]]).unwrap_or_else(|e| panic!("{e}"));
-    let clip = Clip::Rect { x0: 0.0, y0: 0.0, x1: 100.0, y1: 100.0 };
-    m.grow(&clip, &Growth { points: 800, ..Growth::default() }, &mut zetafill::rng_from_seed(9), |_| {}).unwrap_or_else(|e| panic!("{e}"));
+    let clip = Clip::Rect {
+        x0: 0.0,
+        y0: 0.0,
+        x1: 100.0,
+        y1: 100.0,
+    };
+    m.grow(
+        &clip,
+        &Growth {
+            points: 800,
+            ..Growth::default()
+        },
+        &mut zetafill::rng_from_seed(9),
+        |_| {},
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
     let adj = delaunay_graph(&m.sites);
     assert!(connectivity_problems(&adj, &m.territory, 2).is_empty());
     // A site deep inside territory 0 (every neighbour in 0) moved to territory 1: cut off.
     let mut broken = m.territory.clone();
-    let deep = (2..broken.len()).find(|&i| broken[i] == 0 && adj[i].iter().all(|&j| broken[j] == 0)).unwrap_or_else(|| panic!("no deep site"));
+    let deep = (2..broken.len())
+        .find(|&i| broken[i] == 0 && adj[i].iter().all(|&j| broken[j] == 0))
+        .unwrap_or_else(|| panic!("no deep site"));
     broken[deep] = 1;
     assert!(!connectivity_problems(&adj, &broken, 2).is_empty());
     // A seed moved out of its territory.
@@ -157,7 +195,9 @@ fn oracle(sites: &[Pt], k: usize) -> (Vec<u32>, usize) {
         if i < k {
             ter.push(i as u32);
         } else {
-            let near = (0..i).min_by(|&a, &b| dist2(sites[a], *p).total_cmp(&dist2(sites[b], *p))).unwrap_or(0);
+            let near = (0..i)
+                .min_by(|&a, &b| dist2(sites[a], *p).total_cmp(&dist2(sites[b], *p)))
+                .unwrap_or(0);
             ter.push(ter[near]);
         }
         tri.insert(Point2::new(p[0], p[1])).unwrap_or_else(|e| panic!("{e:?}"));
@@ -165,7 +205,12 @@ fn oracle(sites: &[Pt], k: usize) -> (Vec<u32>, usize) {
             continue;
         }
         let j = ter[i];
-        let adj = |v: usize| -> Vec<usize> { tri.vertex(spade::handles::FixedVertexHandle::from_index(v)).out_edges().map(|e| e.to().fix().index()).collect() };
+        let adj = |v: usize| -> Vec<usize> {
+            tri.vertex(spade::handles::FixedVertexHandle::from_index(v))
+                .out_edges()
+                .map(|e| e.to().fix().index())
+                .collect()
+        };
         let mut any = false;
         for l in 0..k as u32 {
             if l == j {
@@ -201,13 +246,36 @@ fn dist2(a: Pt, b: Pt) -> f64 {
 #[test]
 fn incremental_repair_equals_the_rule_recomputed_from_scratch() {
     // Many small territories make cut-offs frequent enough to test.
-    let clip = Clip::Rect { x0: 0.0, y0: 0.0, x1: 200.0, y1: 200.0 };
+    let clip = Clip::Rect {
+        x0: 0.0,
+        y0: 0.0,
+        x1: 200.0,
+        y1: 200.0,
+    };
     let mut total = 0;
     for seed in [1u64, 2, 3] {
         let mut rng = zetafill::rng_from_seed(seed);
-        let seeds: Vec<Pt> = (0..30).map(|_| [zetafill::rng::uniform(&mut rng, 0.0, 200.0), zetafill::rng::uniform(&mut rng, 0.0, 200.0)]).collect();
+        let seeds: Vec<Pt> = (0..30)
+            .map(|_| {
+                [
+                    zetafill::rng::uniform(&mut rng, 0.0, 200.0),
+                    zetafill::rng::uniform(&mut rng, 0.0, 200.0),
+                ]
+            })
+            .collect();
         let mut m = Model::new(&seeds).unwrap_or_else(|e| panic!("{e}"));
-        m.grow(&clip, &Growth { points: 2500, n0: 100, boost: 50.0, ..Growth::default() }, &mut rng, |_| {}).unwrap_or_else(|e| panic!("{e}"));
+        m.grow(
+            &clip,
+            &Growth {
+                points: 2500,
+                n0: 100,
+                boost: 50.0,
+                ..Growth::default()
+            },
+            &mut rng,
+            |_| {},
+        )
+        .unwrap_or_else(|e| panic!("{e}"));
         let (want, handovers) = oracle(&m.sites, 30);
         assert_eq!(m.territory, want, "seed {seed}");
         assert_eq!(m.counters.repairs as usize, handovers, "seed {seed}");
@@ -217,10 +285,15 @@ fn incremental_repair_equals_the_rule_recomputed_from_scratch() {
         if handovers > 0 {
             let mut plain: Vec<u32> = (0..30).collect();
             for i in 30..m.sites.len() {
-                let near = (0..i).min_by(|&a, &b| dist2(m.sites[a], m.sites[i]).total_cmp(&dist2(m.sites[b], m.sites[i]))).unwrap_or(0);
+                let near = (0..i)
+                    .min_by(|&a, &b| dist2(m.sites[a], m.sites[i]).total_cmp(&dist2(m.sites[b], m.sites[i])))
+                    .unwrap_or(0);
                 plain.push(plain[near]);
             }
-            assert!(!connectivity_problems(&delaunay_graph(&m.sites), &plain, 30).is_empty(), "seed {seed}");
+            assert!(
+                !connectivity_problems(&delaunay_graph(&m.sites), &plain, 30).is_empty(),
+                "seed {seed}"
+            );
         }
         total += handovers;
     }
@@ -291,7 +364,8 @@ fn segment_mismatch(got: &[(Pt, Pt)], want: &[(Pt, Pt)], tol: f64) -> Vec<String
     let mut used = vec![false; got.len()];
     let mut problems = Vec::new();
     for w in want {
-        let hit = (0..got.len()).find(|&g| !used[g] && ((close(got[g].0, w.0) && close(got[g].1, w.1)) || (close(got[g].0, w.1) && close(got[g].1, w.0))));
+        let hit = (0..got.len())
+            .find(|&g| !used[g] && ((close(got[g].0, w.0) && close(got[g].1, w.1)) || (close(got[g].0, w.1) && close(got[g].1, w.0))));
         match hit {
             Some(g) => used[g] = true,
             None => problems.push(format!("missing {w:?}")),
@@ -311,18 +385,50 @@ fn segments(lines: &[Vec<Pt>]) -> Vec<(Pt, Pt)> {
 
 #[test]
 fn boundaries_are_exactly_the_voronoi_edges_between_territories() {
-    for (seed, (w, h), k, n) in [(1u64, (100.0, 100.0), 3usize, 120usize), (2, (160.0, 60.0), 2, 200), (3, (50.0, 90.0), 5, 300), (4, (100.0, 100.0), 4, 60)] {
-        let clip = Clip::Rect { x0: 0.0, y0: 0.0, x1: w, y1: h };
+    for (seed, (w, h), k, n) in [
+        (1u64, (100.0, 100.0), 3usize, 120usize),
+        (2, (160.0, 60.0), 2, 200),
+        (3, (50.0, 90.0), 5, 300),
+        (4, (100.0, 100.0), 4, 60),
+    ] {
+        let clip = Clip::Rect {
+            x0: 0.0,
+            y0: 0.0,
+            x1: w,
+            y1: h,
+        };
         let mut rng = zetafill::rng_from_seed(seed);
-        let seeds: Vec<Pt> = (0..k).map(|i| [w * (0.1 + 0.8 * i as f64 / k as f64), h * (0.2 + 0.6 * ((i * 7) % k) as f64 / k as f64)]).collect();
+        let seeds: Vec<Pt> = (0..k)
+            .map(|i| {
+                [
+                    w * (0.1 + 0.8 * i as f64 / k as f64),
+                    h * (0.2 + 0.6 * ((i * 7) % k) as f64 / k as f64),
+                ]
+            })
+            .collect();
         let mut m = Model::new(&seeds).unwrap_or_else(|e| panic!("{e}"));
-        m.grow(&clip, &Growth { points: n, n0: 30, ..Growth::default() }, &mut rng, |_| {}).unwrap_or_else(|e| panic!("{e}"));
+        m.grow(
+            &clip,
+            &Growth {
+                points: n,
+                n0: 30,
+                ..Growth::default()
+            },
+            &mut rng,
+            |_| {},
+        )
+        .unwrap_or_else(|e| panic!("{e}"));
         let lines = render::boundaries(&m, &clip);
         let got = segments(&lines);
         let want = brute_boundaries(&m.sites, &m.territory, clip.bbox());
         assert!(!want.is_empty());
         let problems = segment_mismatch(&got, &want, 1e-7);
-        assert!(problems.is_empty(), "seed {seed}: {} problems, first {:?}", problems.len(), &problems[..problems.len().min(4)]);
+        assert!(
+            problems.is_empty(),
+            "seed {seed}: {} problems, first {:?}",
+            problems.len(),
+            &problems[..problems.len().min(4)]
+        );
         // Merged: fewer polylines than edges (long lines), each edge once (checked above).
         assert!(lines.len() < got.len(), "{} polylines for {} edges", lines.len(), got.len());
         // Every point inside the region.
@@ -332,9 +438,23 @@ fn boundaries_are_exactly_the_voronoi_edges_between_territories() {
 
 #[test]
 fn boundary_checker_fails_on_a_missing_a_doubled_or_a_wrong_edge() {
-    let clip = Clip::Rect { x0: 0.0, y0: 0.0, x1: 100.0, y1: 100.0 };
+    let clip = Clip::Rect {
+        x0: 0.0,
+        y0: 0.0,
+        x1: 100.0,
+        y1: 100.0,
+    };
     let mut m = Model::new(&[[30.0, 30.0], [70.0, 70.0]]).unwrap_or_else(|e| panic!("{e}"));
-    m.grow(&clip, &Growth { points: 80, ..Growth::default() }, &mut zetafill::rng_from_seed(5), |_| {}).unwrap_or_else(|e| panic!("{e}"));
+    m.grow(
+        &clip,
+        &Growth {
+            points: 80,
+            ..Growth::default()
+        },
+        &mut zetafill::rng_from_seed(5),
+        |_| {},
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
     let got = segments(&render::boundaries(&m, &clip));
     let want = brute_boundaries(&m.sites, &m.territory, clip.bbox());
     assert!(segment_mismatch(&got, &want, 1e-7).is_empty());
@@ -358,12 +478,26 @@ fn boundary_checker_fails_on_a_missing_a_doubled_or_a_wrong_edge() {
 fn boundaries_are_clipped_exactly_to_a_disc() {
     let clip = Clip::Circle { c: [50.0, 50.0], r: 50.0 };
     let mut m = Model::new(&[[30.0, 50.0], [70.0, 50.0], [50.0, 80.0]]).unwrap_or_else(|e| panic!("{e}"));
-    m.grow(&clip, &Growth { points: 2000, ..Growth::default() }, &mut zetafill::rng_from_seed(3), |_| {}).unwrap_or_else(|e| panic!("{e}"));
+    m.grow(
+        &clip,
+        &Growth {
+            points: 2000,
+            ..Growth::default()
+        },
+        &mut zetafill::rng_from_seed(3),
+        |_| {},
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
     let lines = render::boundaries(&m, &clip);
     let r = |p: &Pt| (p[0] - 50.0).hypot(p[1] - 50.0);
     assert!(lines.iter().flatten().all(|p| r(p) <= 50.0 + 1e-9));
     // Lines that end on the outline end exactly on it (to rounding).
-    let ends: Vec<f64> = lines.iter().flat_map(|l| [l[0], l[l.len() - 1]]).map(|p| r(&p)).filter(|&d| d > 49.9).collect();
+    let ends: Vec<f64> = lines
+        .iter()
+        .flat_map(|l| [l[0], l[l.len() - 1]])
+        .map(|p| r(&p))
+        .filter(|&d| d > 49.9)
+        .collect();
     assert!(!ends.is_empty() && ends.iter().all(|d| (d - 50.0).abs() < 1e-9), "{ends:?}");
 }
 
@@ -388,7 +522,13 @@ fn expected_colour(c: [f64; 3], d: [f64; 3], dist: u32) -> [f64; 3] {
 fn colour_problems(doc: &Value) -> usize {
     let (_, ter, dist, col) = sites_of(doc);
     let rules = doc["params"]["colors"].as_array().cloned().unwrap_or_default();
-    let v3 = |v: &Value| [v[0].as_f64().unwrap_or(f64::NAN), v[1].as_f64().unwrap_or(f64::NAN), v[2].as_f64().unwrap_or(f64::NAN)];
+    let v3 = |v: &Value| {
+        [
+            v[0].as_f64().unwrap_or(f64::NAN),
+            v[1].as_f64().unwrap_or(f64::NAN),
+            v[2].as_f64().unwrap_or(f64::NAN),
+        ]
+    };
     (0..ter.len())
         .filter(|&i| {
             let r = &rules[ter[i] as usize];
@@ -405,7 +545,19 @@ fn colours_wrap_the_hue_and_clamp_saturation_and_brightness() {
     // below 0 and brightness below 0.
     ok(
         dir.path(),
-        &["territory", "--sites", "2", "--points", "3000", "--color", "0.9,0.5,0.5:0.05,0.05,0", "--color", "0.1,0.5,0.9:-0.05,0,-0.05", "-o", "c.json"],
+        &[
+            "territory",
+            "--sites",
+            "2",
+            "--points",
+            "3000",
+            "--color",
+            "0.9,0.5,0.5:0.05,0.05,0",
+            "--color",
+            "0.1,0.5,0.9:-0.05,0,-0.05",
+            "-o",
+            "c.json",
+        ],
     );
     let doc = json(&dir.path().join("c.json"));
     assert_eq!(colour_problems(&doc), 0);
@@ -429,7 +581,9 @@ fn colours_wrap_the_hue_and_clamp_saturation_and_brightness() {
     }
     // The checker fails on a colour that was clamped instead of wrapped.
     let mut broken = doc.clone();
-    let i = (0..ter.len()).find(|&i| ter[i] == 0 && 0.9 + 0.05 * f64::from(dist[i]) > 1.0).unwrap_or(0);
+    let i = (0..ter.len())
+        .find(|&i| ter[i] == 0 && 0.9 + 0.05 * f64::from(dist[i]) > 1.0)
+        .unwrap_or(0);
     broken["sites"][i]["color"][0] = Value::from(1.0);
     assert_eq!(colour_problems(&broken), 1);
     // The library's rules agree at the edges.
@@ -446,7 +600,11 @@ fn colours_wrap_the_hue_and_clamp_saturation_and_brightness() {
 fn seg_dist(p: Pt, a: Pt, b: Pt) -> f64 {
     let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
     let l2 = dx * dx + dy * dy;
-    let t = if l2 > 0.0 { (((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / l2).clamp(0.0, 1.0) } else { 0.0 };
+    let t = if l2 > 0.0 {
+        (((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / l2).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
     (p[0] - a[0] - t * dx).hypot(p[1] - a[1] - t * dy)
 }
 
@@ -485,9 +643,24 @@ fn concentration(sites: &[Pt], lines: &[Vec<Pt>], w: f64, delta: f64) -> f64 {
 }
 
 fn grown(seed: u64, uniform: bool) -> (Model, Vec<Vec<Pt>>) {
-    let clip = Clip::Rect { x0: 0.0, y0: 0.0, x1: 200.0, y1: 200.0 };
+    let clip = Clip::Rect {
+        x0: 0.0,
+        y0: 0.0,
+        x1: 200.0,
+        y1: 200.0,
+    };
     let mut m = Model::new(&[[60.0, 60.0], [140.0, 80.0], [90.0, 150.0]]).unwrap_or_else(|e| panic!("{e}"));
-    m.grow(&clip, &Growth { points: 7000, uniform, ..Growth::default() }, &mut zetafill::rng_from_seed(seed), |_| {}).unwrap_or_else(|e| panic!("{e}"));
+    m.grow(
+        &clip,
+        &Growth {
+            points: 7000,
+            uniform,
+            ..Growth::default()
+        },
+        &mut zetafill::rng_from_seed(seed),
+        |_| {},
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
     let lines = render::boundaries(&m, &clip);
     (m, lines)
 }
@@ -512,7 +685,9 @@ fn concentration_checker_tells_even_from_crowded() {
     // Points on a grid against a boundary down the middle: ratio about 1. The same points
     // squeezed towards the middle: well above 1.
     let line = vec![vec![[100.0, 0.0], [100.0, 200.0]]];
-    let even: Vec<Pt> = (0..4000).map(|i| [(i % 63) as f64 * 200.0 / 63.0 + 1.0, (i / 63) as f64 * 200.0 / 64.0 + 1.0]).collect();
+    let even: Vec<Pt> = (0..4000)
+        .map(|i| [(i % 63) as f64 * 200.0 / 63.0 + 1.0, (i / 63) as f64 * 200.0 / 64.0 + 1.0])
+        .collect();
     let crowded: Vec<Pt> = even.iter().map(|p| [100.0 + (p[0] - 100.0) * 0.3, p[1]]).collect();
     let e = concentration(&even, &line, 200.0, 3.0);
     let c = concentration(&crowded, &line, 200.0, 3.0);
@@ -526,9 +701,23 @@ fn concentration_checker_tells_even_from_crowded() {
 #[test]
 fn repair_work_per_point_stays_flat() {
     let per_point = |n: usize| {
-        let clip = Clip::Rect { x0: 0.0, y0: 0.0, x1: 200.0, y1: 200.0 };
+        let clip = Clip::Rect {
+            x0: 0.0,
+            y0: 0.0,
+            x1: 200.0,
+            y1: 200.0,
+        };
         let mut m = Model::new(&[[50.0, 50.0], [150.0, 60.0], [100.0, 150.0], [40.0, 160.0]]).unwrap_or_else(|e| panic!("{e}"));
-        m.grow(&clip, &Growth { points: n, ..Growth::default() }, &mut zetafill::rng_from_seed(11), |_| {}).unwrap_or_else(|e| panic!("{e}"));
+        m.grow(
+            &clip,
+            &Growth {
+                points: n,
+                ..Growth::default()
+            },
+            &mut zetafill::rng_from_seed(11),
+            |_| {},
+        )
+        .unwrap_or_else(|e| panic!("{e}"));
         m.counters.visited as f64 / n as f64
     };
     let (small, large) = (per_point(10_000), per_point(80_000));
@@ -541,9 +730,31 @@ fn repair_work_per_point_stays_flat() {
 #[test]
 fn reruns_are_byte_identical_and_seeds_matter() {
     let dir = tmp();
-    for (render, ext) in [("boundaries", "svg"), ("cells", "svg"), ("filled", "svg"), ("filled", "png"), ("boundaries", "json")] {
+    for (render, ext) in [
+        ("boundaries", "svg"),
+        ("cells", "svg"),
+        ("filled", "svg"),
+        ("filled", "png"),
+        ("boundaries", "json"),
+    ] {
         let run = |name: &str, seed: &str| {
-            ok(dir.path(), &["territory", "--points", "3000", "--seed", seed, "--render", render, "--region", "annulus:60:20", "--boundary", "-o", name]);
+            ok(
+                dir.path(),
+                &[
+                    "territory",
+                    "--points",
+                    "3000",
+                    "--seed",
+                    seed,
+                    "--render",
+                    render,
+                    "--region",
+                    "annulus:60:20",
+                    "--boundary",
+                    "-o",
+                    name,
+                ],
+            );
             std::fs::read(dir.path().join(name)).unwrap_or_else(|e| panic!("{e}"))
         };
         let a = run(&format!("a.{ext}"), "4");
@@ -557,7 +768,24 @@ fn reruns_are_byte_identical_and_seeds_matter() {
 #[test]
 fn json_has_the_documented_fields() {
     let dir = tmp();
-    ok(dir.path(), &["territory", "--site", "20,20", "--site", "180,150", "--site", "100,100", "--points", "1500", "--seed", "3", "-o", "t.json"]);
+    ok(
+        dir.path(),
+        &[
+            "territory",
+            "--site",
+            "20,20",
+            "--site",
+            "180,150",
+            "--site",
+            "100,100",
+            "--points",
+            "1500",
+            "--seed",
+            "3",
+            "-o",
+            "t.json",
+        ],
+    );
     let doc = json(&dir.path().join("t.json"));
     assert_eq!(doc["version"], 1);
     assert_eq!(doc["mode"], "territory");
@@ -581,7 +809,20 @@ fn json_has_the_documented_fields() {
 #[test]
 fn svg_layers_parse_and_stay_on_the_page() {
     let dir = tmp();
-    ok(dir.path(), &["territory", "--points", "2000", "--render", "cells", "--region", "rect:150:100", "-o", "c.svg"]);
+    ok(
+        dir.path(),
+        &[
+            "territory",
+            "--points",
+            "2000",
+            "--render",
+            "cells",
+            "--region",
+            "rect:150:100",
+            "-o",
+            "c.svg",
+        ],
+    );
     let text = String::from_utf8(std::fs::read(dir.path().join("c.svg")).unwrap_or_default()).unwrap_or_default();
     assert!(text.contains("id=\"cells\"") && text.contains("id=\"boundaries\"") && text.contains("inkscape:groupmode=\"layer\""));
     let tree = usvg::Tree::from_str(&text, &usvg::Options::default()).unwrap_or_else(|e| panic!("{e}"));
@@ -599,10 +840,56 @@ fn svg_layers_parse_and_stay_on_the_page() {
 #[test]
 fn sites_from_a_fill_colour_its_shapes() {
     let dir = tmp();
-    ok(dir.path(), &["fill", "--count", "400", "--c", "1.25", "--seed", "2", "-o", "fill.json"]);
-    ok(dir.path(), &["territory", "--sites-from", "fill.json", "--sites", "3", "--seed", "7", "-o", "t.json"]);
-    ok(dir.path(), &["territory", "--sites-from", "fill.json", "--sites", "3", "--seed", "7", "--render", "shapes", "-o", "t.svg"]);
-    ok(dir.path(), &["territory", "--sites-from", "fill.json", "--site", "10,10", "--site", "190,190", "--render", "filled", "-o", "f.svg"]);
+    ok(
+        dir.path(),
+        &["fill", "--count", "400", "--c", "1.25", "--seed", "2", "-o", "fill.json"],
+    );
+    ok(
+        dir.path(),
+        &[
+            "territory",
+            "--sites-from",
+            "fill.json",
+            "--sites",
+            "3",
+            "--seed",
+            "7",
+            "-o",
+            "t.json",
+        ],
+    );
+    ok(
+        dir.path(),
+        &[
+            "territory",
+            "--sites-from",
+            "fill.json",
+            "--sites",
+            "3",
+            "--seed",
+            "7",
+            "--render",
+            "shapes",
+            "-o",
+            "t.svg",
+        ],
+    );
+    ok(
+        dir.path(),
+        &[
+            "territory",
+            "--sites-from",
+            "fill.json",
+            "--site",
+            "10,10",
+            "--site",
+            "190,190",
+            "--render",
+            "filled",
+            "-o",
+            "f.svg",
+        ],
+    );
     let fill = json(&dir.path().join("fill.json"));
     let doc = json(&dir.path().join("t.json"));
     let shapes = fill["shapes"].as_array().unwrap_or_else(|| panic!("shapes"));
@@ -632,7 +919,10 @@ fn bad_input_exits_2_names_the_flag_and_writes_nothing() {
         (&["--sites", "0"], "--sites"),
         (&["--site", "10,10"], "--site"),
         (&["--sites", "5", "--points", "4"], "--sites"),
-        (&["--site", "10,10", "--site", "20,20", "--site", "30,30", "--points", "2"], "--site"),
+        (
+            &["--site", "10,10", "--site", "20,20", "--site", "30,30", "--points", "2"],
+            "--site",
+        ),
         (&["--site", "10,10", "--site", "250,20"], "--site"),
         (&["--site", "10,10", "--site", "-1,20"], "--site"),
         (&["--site", "10,10", "--site", "10,10"], "--site"),
@@ -645,7 +935,10 @@ fn bad_input_exits_2_names_the_flag_and_writes_nothing() {
         (&["--color", "0.1,nan,0.3"], "--color"),
         (&["--color", "0.1,0.2,0.3:0,0,inf"], "--color"),
         (&["--color", "-0.1,0.2,0.3"], "--color"),
-        (&["--sites", "2", "--color", "0,0,0", "--color", "0,0,0", "--color", "0,0,0"], "--color"),
+        (
+            &["--sites", "2", "--color", "0,0,0", "--color", "0,0,0", "--color", "0,0,0"],
+            "--color",
+        ),
         (&["--sites-from", "missing.json"], "--sites-from"),
         (&["--sites-from", "notfill.json"], "--sites-from"),
         (&["--sites-from", "small.json"], "--sites-from"),
@@ -670,7 +963,10 @@ fn bad_input_exits_2_names_the_flag_and_writes_nothing() {
 #[test]
 fn gcode_draws_the_boundaries_safely_inside_the_bed() {
     let dir = tmp();
-    ok(dir.path(), &["territory", "--points", "3000", "--seed", "2", "--boundary", "-q", "-o", "t.gcode"]);
+    ok(
+        dir.path(),
+        &["territory", "--points", "3000", "--seed", "2", "--boundary", "-q", "-o", "t.gcode"],
+    );
     ok(dir.path(), &["territory", "--points", "3000", "--seed", "2", "-o", "t.json"]);
     let text = String::from_utf8(std::fs::read(dir.path().join("t.gcode")).unwrap_or_default()).unwrap_or_default();
     let doc = json(&dir.path().join("t.json"));
@@ -681,7 +977,10 @@ fn gcode_draws_the_boundaries_safely_inside_the_bed() {
     assert!(gcode_check(&pen_down_rapid).is_err());
     assert!(gcode_check(&text.replacen("G1 X", "G1 X-", 1)).is_err());
     let want = doc["stats"]["boundary_length"].as_f64().unwrap_or(0.0) + 800.0;
-    assert!((drawn - want).abs() < 0.01 * want, "drew {drawn} mm, boundaries and outline are {want} mm");
+    assert!(
+        (drawn - want).abs() < 0.01 * want,
+        "drew {drawn} mm, boundaries and outline are {want} mm"
+    );
     // Filled cells cannot be plotted: exit 2, no file.
     let o = zf(dir.path(), &["territory", "--render", "filled", "-o", "f.gcode"]);
     assert_eq!(o.code, 2);
@@ -693,8 +992,16 @@ fn gcode_draws_the_boundaries_safely_inside_the_bed() {
 /// end, a feed before the first cutting move, plain numbers. Returns the pen-down length.
 fn gcode_check(text: &str) -> Result<f64, String> {
     let (mut down, mut pos, mut drawn, mut feed_set) = (false, [0.0f64, 0.0], 0.0, false);
-    for line in text.lines().map(|l| l.split(';').next().unwrap_or("").trim()).filter(|l| !l.is_empty()) {
-        let word = |c: char| line.split_whitespace().find(|w| w.starts_with(c)).and_then(|w| w[1..].parse::<f64>().ok());
+    for line in text
+        .lines()
+        .map(|l| l.split(';').next().unwrap_or("").trim())
+        .filter(|l| !l.is_empty())
+    {
+        let word = |c: char| {
+            line.split_whitespace()
+                .find(|w| w.starts_with(c))
+                .and_then(|w| w[1..].parse::<f64>().ok())
+        };
         if line.contains('e') || line.contains("NaN") {
             return Err(format!("not a plain number: {line}"));
         }

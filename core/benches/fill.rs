@@ -18,27 +18,56 @@ struct Row {
 }
 
 fn run(label: &str, shape: ShapeKind, n: u64, periodic: bool) -> Row {
-    let c = if matches!(shape, ShapeKind::Star { .. } | ShapeKind::Blob { .. } | ShapeKind::Ring { .. }) { 1.2 } else { 1.3 };
+    let c = if matches!(shape, ShapeKind::Star { .. } | ShapeKind::Blob { .. } | ShapeKind::Ring { .. }) {
+        1.2
+    } else {
+        1.3
+    };
     let cap = n as usize;
     let mut shapes = vec![Placed::<f64>::default(); cap];
     let mut index = vec![0u32; index_words(cap)];
     let mut coverage = vec![0u64; COVERAGE_WORDS];
     // Concave shapes need room for their first placements: N = 3 (with N = 1 the first stars
     // often cannot all fit, and the fill halts).
-    let n_offset = if matches!(shape, ShapeKind::Star { .. } | ShapeKind::Blob { .. } | ShapeKind::Ring { .. }) { 3.0 } else { 1.0 };
+    let n_offset = if matches!(shape, ShapeKind::Star { .. } | ShapeKind::Blob { .. } | ShapeKind::Ring { .. }) {
+        3.0
+    } else {
+        1.0
+    };
     let mut params = Params::circles(c, n_offset);
     params.shape = shape.into();
     params.rotate = shape.rotates();
     params.max_trials = 100_000_000;
-    let region = Region::Rect { width: 200.0, height: 200.0, periodic };
-    let storage = Storage { shapes: &mut shapes, index: &mut index, coverage: &mut coverage };
+    let region = Region::Rect {
+        width: 200.0,
+        height: 200.0,
+        periodic,
+    };
+    let storage = Storage {
+        shapes: &mut shapes,
+        index: &mut index,
+        coverage: &mut coverage,
+    };
     let t = Instant::now();
     let mut e = Engine::<f64>::new(params, region, storage).expect("valid parameters");
     let mut rng = zetafill::rng_from_seed(1);
-    let _ = e.run(&mut rng, &Stop { count: Some(n), ..Stop::default() }, |_| {});
+    let _ = e.run(
+        &mut rng,
+        &Stop {
+            count: Some(n),
+            ..Stop::default()
+        },
+        |_| {},
+    );
     let secs = t.elapsed().as_secs_f64();
     let s = e.stats();
-    Row { label: label.into(), n: s.placed, secs, trials: s.trials, fill: s.fill_fraction }
+    Row {
+        label: label.into(),
+        n: s.placed,
+        secs,
+        trials: s.trials,
+        fill: s.fill_fraction,
+    }
 }
 
 fn main() {

@@ -47,7 +47,16 @@ impl<'a, S: Scalar> Coverage<'a, S> {
         let (cw, ch) = (w / gs, h / gs);
         // A margin of 2^-16 cell keeps marking conservative far beyond rounding error.
         let margin = cw.min(ch) * S::from_f64(1.0 / 65536.0);
-        Coverage { bits, g, origin, cw, ch, inv_w: S::ONE / cw, inv_h: S::ONE / ch, margin }
+        Coverage {
+            bits,
+            g,
+            origin,
+            cw,
+            ch,
+            inv_w: S::ONE / cw,
+            inv_h: S::ONE / ch,
+            margin,
+        }
     }
 
     /// Fraction of the grid's cells that are marked (0 when off).
@@ -209,7 +218,9 @@ impl<'a, S: Scalar> Coverage<'a, S> {
                     // polygon with margin m on every side.
                     let vs = geo.vertices();
                     let m = self.margin;
-                    let (Some((l0, r0)), Some((l1, r1))) = (x_range(vs, ya - m), x_range(vs, yb + m)) else { continue };
+                    let (Some((l0, r0)), Some((l1, r1))) = (x_range(vs, ya - m), x_range(vs, yb + m)) else {
+                        continue;
+                    };
                     let (lo, hi) = (l0.max(l1) + m, r0.min(r1) - m);
                     if hi <= lo {
                         continue;

@@ -41,7 +41,14 @@ pub struct Params {
 impl Params {
     /// Circles with the given exponent and offset, no gap, the default trial limit.
     pub fn circles(c: f64, n_offset: f64) -> Self {
-        Params { c, n_offset, shape: ShapeKind::Circle.into(), rotate: false, gap: 0.0, max_trials: 10_000_000 }
+        Params {
+            c,
+            n_offset,
+            shape: ShapeKind::Circle.into(),
+            rotate: false,
+            gap: 0.0,
+            max_trials: 10_000_000,
+        }
     }
 
     /// c for a fractal dimension D in 2D (c = 2 / D).
@@ -251,7 +258,12 @@ impl<'a, S: Scalar> Engine<'a, S> {
         let (next, heads) = index.split_at_mut(shapes.len());
         let hash = SpatialHash::new(heads, next, S::from_f64(w.max(h))).map_err(|_| ParamError::Storage)?;
         let (x0, y0, _, _) = region.bbox();
-        let mut coverage = Coverage::new(coverage, Point::new(S::from_f64(x0), S::from_f64(y0)), S::from_f64(w), S::from_f64(h));
+        let mut coverage = Coverage::new(
+            coverage,
+            Point::new(S::from_f64(x0), S::from_f64(y0)),
+            S::from_f64(w),
+            S::from_f64(h),
+        );
         coverage.mark_outside(&region);
         Ok(Engine {
             params,
@@ -313,7 +325,11 @@ impl<'a, S: Scalar> Engine<'a, S> {
 
     /// Statistics so far.
     pub fn stats(&self) -> Stats {
-        Stats { placed: self.len as u64, trials: self.trials, fill_fraction: self.placed_area / self.area }
+        Stats {
+            placed: self.len as u64,
+            trials: self.trials,
+            fill_fraction: self.placed_area / self.area,
+        }
     }
 
     /// Fraction of the region's bounding box marked in the coverage bitmap (0 without one).
@@ -333,13 +349,14 @@ impl<'a, S: Scalar> Engine<'a, S> {
         let gap = self.gap;
         // Tests candidate `gi`, centred at (qx, qy), against every shape the hash lists.
         let test = |level: usize, reach: S, gi: &Geo<S>, qx: S, qy: S| {
-            self.hash.query(level, [qx - reach, qy - reach, qx + reach, qy + reach], total, |j| {
-                let Some(p) = self.shapes.get(j as usize) else { return true };
-                let kind = self.kind_of(u64::from(j));
-                let lim = r + kind.bounding_radius(p.scale) + gap;
-                let (dx, dy) = (p.x - qx, p.y - qy);
-                dx * dx + dy * dy > lim * lim || separated(gi, &kind.geo(Point::new(p.x, p.y), p.scale, p.angle), gap)
-            })
+            self.hash
+                .query(level, [qx - reach, qy - reach, qx + reach, qy + reach], total, |j| {
+                    let Some(p) = self.shapes.get(j as usize) else { return true };
+                    let kind = self.kind_of(u64::from(j));
+                    let lim = r + kind.bounding_radius(p.scale) + gap;
+                    let (dx, dy) = (p.x - qx, p.y - qy);
+                    dx * dx + dy * dy > lim * lim || separated(gi, &kind.geo(Point::new(p.x, p.y), p.scale, p.angle), gap)
+                })
         };
         if !self.region.periodic() {
             return self.hash.occupied().all(|(level, max_r)| test(level, r + max_r + gap, g, x, y));
@@ -400,15 +417,26 @@ impl<'a, S: Scalar> Engine<'a, S> {
             return true;
         }
         match self.region {
-            Region::Rect { periodic: false, width, height } => {
+            Region::Rect {
+                periodic: false,
+                width,
+                height,
+            } => {
                 // Rectangles: the narrowest bounding boxes are at 0 and 90 degrees (or only at
                 // 0 when unrotated); every other kind is tested at angle 0 and reported only if
                 // its inscribed circle cannot fit (above).
-                if !matches!(kind, ShapeKind::Square | ShapeKind::Rect { .. } | ShapeKind::Circle | ShapeKind::Ring { .. }) {
+                if !matches!(
+                    kind,
+                    ShapeKind::Square | ShapeKind::Rect { .. } | ShapeKind::Circle | ShapeKind::Ring { .. }
+                ) {
                     return false;
                 }
                 let quarter = S::from_f64(core::f64::consts::FRAC_PI_2);
-                let angles: &[S] = if self.params.rotate && kind.rotates() { &[S::ZERO, quarter] } else { &[S::ZERO] };
+                let angles: &[S] = if self.params.rotate && kind.rotates() {
+                    &[S::ZERO, quarter]
+                } else {
+                    &[S::ZERO]
+                };
                 let (w, h) = (S::from_f64(width), S::from_f64(height));
                 !angles.iter().any(|&a| {
                     let (x0, y0, x1, y1) = kind.geo(Point::new(S::ZERO, S::ZERO), scale, a).bounds();
@@ -422,7 +450,11 @@ impl<'a, S: Scalar> Engine<'a, S> {
             // A regular shape's smallest enclosing circle is its circumcircle (a blob's is not
             // known, so only its inscribed circle is used).
             Region::Circle { radius } => {
-                let r = if matches!(kind, ShapeKind::Blob { .. }) { kind.inradius(scale) } else { kind.bounding_radius(scale) };
+                let r = if matches!(kind, ShapeKind::Blob { .. }) {
+                    kind.inradius(scale)
+                } else {
+                    kind.bounding_radius(scale)
+                };
                 r + self.gap > S::from_f64(radius)
             }
             Region::Annulus { outer, inner } => {
@@ -447,7 +479,9 @@ impl<'a, S: Scalar> Engine<'a, S> {
         let i = self.len;
         let index = i as u64;
         if i >= self.shapes.len() {
-            return Err(StepError::Capacity { capacity: self.shapes.len() as u64 });
+            return Err(StepError::Capacity {
+                capacity: self.shapes.len() as u64,
+            });
         }
         let kind = self.kind_of(index);
         let area = self.area_of(index);
@@ -469,7 +503,10 @@ impl<'a, S: Scalar> Engine<'a, S> {
             let (x0, y0, x1, y1) = kind.geo(Point::new(S::ZERO, S::ZERO), base_scale, S::ZERO).bounds();
             ((-x0).max(x1), (-y0).max(y1))
         };
-        let range = self.region.centre_range(ex, ey, self.gap).unwrap_or((S::ZERO, S::ZERO, S::ZERO, S::ZERO));
+        let range = self
+            .region
+            .centre_range(ex, ey, self.gap)
+            .unwrap_or((S::ZERO, S::ZERO, S::ZERO, S::ZERO));
         let base_r = kind.bounding_radius(base_scale);
         let period = if self.region.periodic() { Some(self.period) } else { None };
         let mut trials = 0u64;
@@ -503,7 +540,12 @@ impl<'a, S: Scalar> Engine<'a, S> {
             if !self.clear(&g, c.x, c.y, r) {
                 continue;
             }
-            let shape = Placed { x: c.x, y: c.y, scale, angle };
+            let shape = Placed {
+                x: c.x,
+                y: c.y,
+                scale,
+                angle,
+            };
             if let Some(slot) = self.shapes.get_mut(i) {
                 *slot = shape;
             }
@@ -511,7 +553,12 @@ impl<'a, S: Scalar> Engine<'a, S> {
             self.coverage.mark(&g, c, kind.inradius(scale), period);
             self.len += 1;
             self.placed_area += area;
-            return Ok(Placement { index, shape, area, trials });
+            return Ok(Placement {
+                index,
+                shape,
+                area,
+                trials,
+            });
         }
     }
 

@@ -133,7 +133,14 @@ fn mul31(a: i64, b: i64) -> i64 {
 /// sin and cos of `theta` in `[0, π/4]`, all in 1.31 fixed point.
 fn sin_cos_octant(theta: i64) -> (i64, i64) {
     const S: [i64; 5] = [q31(1, 6), q31(1, 120), q31(1, 5040), q31(1, 362_880), q31(1, 39_916_800)];
-    const C: [i64; 6] = [q31(1, 2), q31(1, 24), q31(1, 720), q31(1, 40_320), q31(1, 3_628_800), q31(1, 479_001_600)];
+    const C: [i64; 6] = [
+        q31(1, 2),
+        q31(1, 24),
+        q31(1, 720),
+        q31(1, 40_320),
+        q31(1, 3_628_800),
+        q31(1, 479_001_600),
+    ];
     let t = mul31(theta, theta);
     // sin θ = θ (1 - t/6 + t²/120 - ...), Horner from the highest term, alternating signs.
     let mut acc = 0i64;
@@ -324,11 +331,26 @@ mod tests {
         use crate::{index_words, Engine, Params, Placed, Region, Stop, Storage};
         let mut shapes = [Placed::<Fixed>::default(); 200];
         let mut index = [0u32; index_words(200)];
-        let region = Region::Rect { width: 200.0, height: 200.0, periodic: false };
-        let storage = Storage { shapes: &mut shapes, index: &mut index, coverage: &mut [] };
+        let region = Region::Rect {
+            width: 200.0,
+            height: 200.0,
+            periodic: false,
+        };
+        let storage = Storage {
+            shapes: &mut shapes,
+            index: &mut index,
+            coverage: &mut [],
+        };
         let mut e = Engine::<Fixed>::new(Params::circles(1.3, 1.0), region, storage).unwrap();
         let mut rng = crate::rng_from_seed(1);
-        let stop = e.run(&mut rng, &Stop { count: Some(200), ..Stop::default() }, |_| {});
+        let stop = e.run(
+            &mut rng,
+            &Stop {
+                count: Some(200),
+                ..Stop::default()
+            },
+            |_| {},
+        );
         assert_eq!(stop, crate::StopReason::Count);
         let placed = e.placed();
         for (i, p) in placed.iter().enumerate() {

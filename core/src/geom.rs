@@ -91,7 +91,11 @@ impl<S: Scalar> Geo<S> {
     pub fn shift(&self, dx: S, dy: S) -> Self {
         match *self {
             Geo::Circle { c, r } => Geo::Circle { c: c.shift(dx, dy), r },
-            Geo::Ring { c, r, inner } => Geo::Ring { c: c.shift(dx, dy), r, inner },
+            Geo::Ring { c, r, inner } => Geo::Ring {
+                c: c.shift(dx, dy),
+                r,
+                inner,
+            },
             Geo::Poly { mut v, n, convex } => {
                 for p in v.iter_mut().take(n) {
                     *p = p.shift(dx, dy);
@@ -197,7 +201,10 @@ pub fn seg_seg_dist2<S: Scalar>(p1: Point<S>, p2: Point<S>, q1: Point<S>, q2: Po
     if segments_intersect(p1, p2, q1, q2) {
         return S::ZERO;
     }
-    seg_dist2(p1, q1, q2).min(seg_dist2(p2, q1, q2)).min(seg_dist2(q1, p1, p2)).min(seg_dist2(q2, p1, p2))
+    seg_dist2(p1, q1, q2)
+        .min(seg_dist2(p2, q1, q2))
+        .min(seg_dist2(q1, p1, p2))
+        .min(seg_dist2(q2, p1, p2))
 }
 
 /// Whether `p` is inside a simple polygon (even-odd rule; points on the boundary may go
@@ -348,8 +355,14 @@ mod tests {
 
     #[test]
     fn touching_is_not_separated() {
-        let a = Geo::Circle { c: Point::new(0.0, 0.0), r: 1.0 };
-        let b = Geo::Circle { c: Point::new(2.0, 0.0), r: 1.0 };
+        let a = Geo::Circle {
+            c: Point::new(0.0, 0.0),
+            r: 1.0,
+        };
+        let b = Geo::Circle {
+            c: Point::new(2.0, 0.0),
+            r: 1.0,
+        };
         assert!(!separated(&a, &b, 0.0));
         assert!(separated(&a, &b.shift(1e-9, 0.0), 0.0));
         for conv in [false, true] {
@@ -373,7 +386,10 @@ mod tests {
 
     #[test]
     fn containment_is_overlap() {
-        let a = Geo::Circle { c: Point::new(0.0, 0.0), r: 0.1 };
+        let a = Geo::Circle {
+            c: Point::new(0.0, 0.0),
+            r: 0.1,
+        };
         assert!(!separated(&a, &sq(0.0, 0.0, 1.0), 0.0));
         assert!(!separated(&sq(0.0, 0.0, 1.0), &a, 0.0));
         assert!(!separated(&as_concave(sq(0.0, 0.0, 0.1)), &as_concave(sq(0.0, 0.0, 1.0)), 0.0));
@@ -381,17 +397,43 @@ mod tests {
 
     #[test]
     fn shapes_nest_in_a_ring_hole() {
-        let ring = Geo::Ring { c: Point::new(0.0, 0.0), r: 3.0, inner: 2.0 };
-        let small = Geo::Circle { c: Point::new(0.5, 0.0), r: 1.0 };
+        let ring = Geo::Ring {
+            c: Point::new(0.0, 0.0),
+            r: 3.0,
+            inner: 2.0,
+        };
+        let small = Geo::Circle {
+            c: Point::new(0.5, 0.0),
+            r: 1.0,
+        };
         assert!(separated(&ring, &small, 0.0));
         assert!(separated(&small, &ring, 0.4));
         assert!(!separated(&small, &ring, 0.5));
-        assert!(!separated(&ring, &Geo::Circle { c: Point::new(0.0, 0.0), r: 2.5 }, 0.0));
+        assert!(!separated(
+            &ring,
+            &Geo::Circle {
+                c: Point::new(0.0, 0.0),
+                r: 2.5
+            },
+            0.0
+        ));
         assert!(separated(&ring, &sq(0.0, 0.0, 1.0), 0.0));
         assert!(!separated(&ring, &sq(0.0, 0.0, 1.5), 0.0));
-        let inner_ring = Geo::Ring { c: Point::new(0.2, 0.0), r: 1.5, inner: 1.0 };
+        let inner_ring = Geo::Ring {
+            c: Point::new(0.2, 0.0),
+            r: 1.5,
+            inner: 1.0,
+        };
         assert!(separated(&ring, &inner_ring, 0.0));
         assert!(separated(&inner_ring, &ring, 0.0));
-        assert!(!separated(&ring, &Geo::Ring { c: Point::new(1.0, 0.0), r: 1.5, inner: 1.0 }, 0.0));
+        assert!(!separated(
+            &ring,
+            &Geo::Ring {
+                c: Point::new(1.0, 0.0),
+                r: 1.5,
+                inner: 1.0
+            },
+            0.0
+        ));
     }
 }

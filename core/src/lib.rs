@@ -49,7 +49,7 @@ pub mod stats;
 pub mod zeta;
 
 pub use self::fixed::Fixed;
-pub use engine::{index_words, Storage, Engine, ParamError, Params, Placement, StepError, Stop, StopReason};
+pub use engine::{index_words, Engine, ParamError, Params, Placement, StepError, Stop, StopReason, Storage};
 pub use geom::{Geo, Point};
 pub use line::{line_index_words, Interval, LineEngine, LineParams, LinePlacement, LineStorage, Segment};
 pub use region::{PolygonRegion, Region, RegionError};

@@ -23,7 +23,7 @@
 //! [`StepError`] with everything placed so far intact); the same seed and parameters give the
 //! same bits on every target; the first `k` segments never depend on how many are asked for.
 
-use crate::digest::{Fnv1a, add_shape};
+use crate::digest::{add_shape, Fnv1a};
 use crate::engine::{ParamError, Stats, StepError, Stop, StopReason};
 use crate::rng;
 use crate::scalar::{powf, Scalar};
@@ -51,7 +51,12 @@ pub struct LineParams {
 impl LineParams {
     /// Exponent and offset, no gap, the default trial limit (10^7).
     pub fn new(c: f64, n_offset: f64) -> Self {
-        LineParams { c, n_offset, gap: 0.0, max_trials: 10_000_000 }
+        LineParams {
+            c,
+            n_offset,
+            gap: 0.0,
+            max_trials: 10_000_000,
+        }
     }
 
     /// c for a fractal dimension D in 1D (c = 1 / D).
@@ -140,14 +145,24 @@ impl<'a, S: Scalar> LineHash<'a, S> {
         }
         heads.iter_mut().for_each(|h| *h = NIL);
         next.iter_mut().for_each(|n| *n = NIL);
-        let mut levels = [Level { cell: extent, inv: S::ONE, count: 0, max_len: S::ZERO }; LINE_LEVELS];
+        let mut levels = [Level {
+            cell: extent,
+            inv: S::ONE,
+            count: 0,
+            max_len: S::ZERO,
+        }; LINE_LEVELS];
         let mut cell = extent;
         for lv in levels.iter_mut() {
             lv.cell = cell;
             lv.inv = S::ONE / cell;
             cell = cell.half();
         }
-        Some(LineHash { heads, next, mask: pow - 1, levels })
+        Some(LineHash {
+            heads,
+            next,
+            mask: pow - 1,
+            levels,
+        })
     }
 
     fn level_for(&self, len: S) -> usize {
@@ -299,7 +314,11 @@ impl<'a, S: Scalar> LineEngine<'a, S> {
 
     /// Statistics so far (`fill_fraction` is placed length over L).
     pub fn stats(&self) -> Stats {
-        Stats { placed: self.len as u64, trials: self.trials, fill_fraction: self.placed_length / self.interval.length }
+        Stats {
+            placed: self.len as u64,
+            trials: self.trials,
+            fill_fraction: self.placed_length / self.interval.length,
+        }
     }
 
     /// The storage capacity in segments.
@@ -310,10 +329,11 @@ impl<'a, S: Scalar> LineEngine<'a, S> {
     /// Whether the candidate `[a, b]` keeps more than `gap` from every placed segment.
     fn clear_at(&self, a: S, b: S) -> bool {
         let gap = self.gap;
-        self.hash.query(a - gap, b + gap, self.len as u32, |j| match self.segments.get(j as usize) {
-            Some(s) => a > s.end() + gap || b + gap < s.start,
-            None => true,
-        })
+        self.hash
+            .query(a - gap, b + gap, self.len as u32, |j| match self.segments.get(j as usize) {
+                Some(s) => a > s.end() + gap || b + gap < s.start,
+                None => true,
+            })
     }
 
     /// Whether the candidate `[a, b]` (with `a` in `[0, L)`) is clear, with every periodic
@@ -353,14 +373,20 @@ impl<'a, S: Scalar> LineEngine<'a, S> {
         let i = self.len;
         let index = i as u64;
         if i >= self.segments.len() {
-            return Err(StepError::Capacity { capacity: self.segments.len() as u64 });
+            return Err(StepError::Capacity {
+                capacity: self.segments.len() as u64,
+            });
         }
         let length = self.length_of(index);
         let len = S::from_f64(length);
         if !(len > S::ZERO && len.is_finite() && self.can_fit(len)) {
             return Err(StepError::CannotFit { index });
         }
-        let (lo, hi) = if self.interval.periodic { (S::ZERO, self.total) } else { (self.gap, self.total - self.gap - len) };
+        let (lo, hi) = if self.interval.periodic {
+            (S::ZERO, self.total)
+        } else {
+            (self.gap, self.total - self.gap - len)
+        };
         let mut trials = 0u64;
         loop {
             if trials >= self.params.max_trials {
@@ -389,7 +415,12 @@ impl<'a, S: Scalar> LineEngine<'a, S> {
             self.max_end = self.max_end.max(b);
             self.len += 1;
             self.placed_length += length;
-            return Ok(LinePlacement { index, segment, length, trials });
+            return Ok(LinePlacement {
+                index,
+                segment,
+                length,
+                trials,
+            });
         }
     }
 
@@ -433,12 +464,22 @@ mod tests {
     fn run(periodic: bool, k: usize, seed: u64) -> (u64, u64) {
         let mut segs = [Segment::<f64>::default(); 64];
         let mut idx = [0u32; line_index_words(64)];
-        let storage = LineStorage { segments: &mut segs, index: &mut idx };
+        let storage = LineStorage {
+            segments: &mut segs,
+            index: &mut idx,
+        };
         let Ok(mut e) = LineEngine::new(LineParams::new(1.4, 1.0), Interval { length: 100.0, periodic }, storage) else {
             return (0, 0);
         };
         let mut rng = crate::rng_from_seed(seed);
-        e.run(&mut rng, &Stop { count: Some(k as u64), ..Stop::default() }, |_| {});
+        e.run(
+            &mut rng,
+            &Stop {
+                count: Some(k as u64),
+                ..Stop::default()
+            },
+            |_| {},
+        );
         line_digest(&e)
     }
 
@@ -455,8 +496,18 @@ mod tests {
     fn lengths_sum_to_the_interval() {
         let mut segs = [Segment::<f64>::default(); 1];
         let mut idx = [0u32; 4];
-        let storage = LineStorage { segments: &mut segs, index: &mut idx };
-        let Ok(e) = LineEngine::new(LineParams::new(2.0, 1.0), Interval { length: 1.0, periodic: false }, storage) else {
+        let storage = LineStorage {
+            segments: &mut segs,
+            index: &mut idx,
+        };
+        let Ok(e) = LineEngine::new(
+            LineParams::new(2.0, 1.0),
+            Interval {
+                length: 1.0,
+                periodic: false,
+            },
+            storage,
+        ) else {
             panic!("engine")
         };
         let s: f64 = (0..100_000u64).rev().map(|i| e.length_of(i)).sum();

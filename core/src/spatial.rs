@@ -62,7 +62,12 @@ impl<'a, S: Scalar> SpatialHash<'a, S> {
         for n in next.iter_mut() {
             *n = NIL;
         }
-        let mut levels = [Level { cell: extent, inv: S::ONE, count: 0, max_r: S::ZERO }; LEVELS];
+        let mut levels = [Level {
+            cell: extent,
+            inv: S::ONE,
+            count: 0,
+            max_r: S::ZERO,
+        }; LEVELS];
         let mut cell = extent;
         for lv in levels.iter_mut() {
             lv.cell = cell;
@@ -71,7 +76,12 @@ impl<'a, S: Scalar> SpatialHash<'a, S> {
             lv.inv = S::ONE / cell;
             cell = cell.half();
         }
-        Ok(SpatialHash { heads, next, mask: pow - 1, levels })
+        Ok(SpatialHash {
+            heads,
+            next,
+            mask: pow - 1,
+            levels,
+        })
     }
 
     fn level_for(&self, r: S) -> usize {
@@ -122,7 +132,12 @@ impl<'a, S: Scalar> SpatialHash<'a, S> {
     /// pays: a candidate that reaches the exact tests usually sits in the gasket, next to the
     /// small shapes that were placed last.
     pub fn occupied(&self) -> impl Iterator<Item = (usize, S)> + '_ {
-        self.levels.iter().enumerate().rev().filter(|(_, v)| v.count > 0).map(|(i, v)| (i, v.max_r))
+        self.levels
+            .iter()
+            .enumerate()
+            .rev()
+            .filter(|(_, v)| v.count > 0)
+            .map(|(i, v)| (i, v.max_r))
     }
 
     /// Calls `f` with every shape index at `level` whose cell meets the box
@@ -134,7 +149,10 @@ impl<'a, S: Scalar> SpatialHash<'a, S> {
         let Some(lv) = self.levels.get(level) else { return true };
         let (cx0, cx1) = ((x0 * lv.inv).floor_i64(), (x1 * lv.inv).floor_i64());
         let (cy0, cy1) = ((y0 * lv.inv).floor_i64(), (y1 * lv.inv).floor_i64());
-        let span = cx1.saturating_sub(cx0).saturating_add(1).saturating_mul(cy1.saturating_sub(cy0).saturating_add(1));
+        let span = cx1
+            .saturating_sub(cx0)
+            .saturating_add(1)
+            .saturating_mul(cy1.saturating_sub(cy0).saturating_add(1));
         if span > i64::from(total) {
             return (0..total).all(f);
         }

@@ -76,10 +76,7 @@ pub fn zeta(s: f64, a: f64) -> Result<f64, ZetaError> {
 /// The table entry for exactly (s, a), if there is one.
 pub fn table_lookup(s: f64, a: f64) -> Option<f64> {
     let (sb, ab) = (s.to_bits(), a.to_bits());
-    ZETA_TABLE
-        .iter()
-        .find(|e| e.0 == sb && e.1 == ab)
-        .map(|e| f64::from_bits(e.2))
+    ZETA_TABLE.iter().find(|e| e.0 == sb && e.1 == ab).map(|e| f64::from_bits(e.2))
 }
 
 /// The precomputed table as (s, a, zeta(s, a)) bit patterns.

@@ -39,7 +39,11 @@ fn check_pairs(segs: &[(f64, f64)], l: f64, gap: f64, periodic: bool) -> Result<
             let shifts: &[f64] = if periodic { &[0.0, l, -l] } else { &[0.0] };
             for &d in shifts {
                 if !sep(b + d, blen, a, alen) {
-                    return Err(format!("segments {i} [{a}, {}] and {j} [{b}, {}] (shift {d}) are not {gap} apart", a + alen, b + blen));
+                    return Err(format!(
+                        "segments {i} [{a}, {}] and {j} [{b}, {}] (shift {d}) are not {gap} apart",
+                        a + alen,
+                        b + blen
+                    ));
                 }
             }
         }
@@ -57,7 +61,13 @@ fn check_sorted(segs: &[(f64, f64)], l: f64, gap: f64, periodic: bool) -> Result
     v.sort_by(|a, b| a.0.total_cmp(&b.0));
     for w in v.windows(2) {
         if !(w[0].0 + w[0].1 + gap < w[1].0) {
-            return Err(format!("[{}, {}] and [{}, {}] are not {gap} apart", w[0].0, w[0].0 + w[0].1, w[1].0, w[1].0 + w[1].1));
+            return Err(format!(
+                "[{}, {}] and [{}, {}] are not {gap} apart",
+                w[0].0,
+                w[0].0 + w[0].1,
+                w[1].0,
+                w[1].0 + w[1].1
+            ));
         }
     }
     if let (Some(first), Some(last)) = (v.first(), v.last()) {
@@ -107,13 +117,29 @@ struct Case {
 
 impl Case {
     fn new(seed: u64, c: f64, periodic: bool) -> Self {
-        Case { seed, c, n: 1.0, gap: 0.0, l: 200.0, periodic, max_trials: 10_000_000 }
+        Case {
+            seed,
+            c,
+            n: 1.0,
+            gap: 0.0,
+            l: 200.0,
+            periodic,
+            max_trials: 10_000_000,
+        }
     }
     fn params(&self) -> LineParams {
-        LineParams { c: self.c, n_offset: self.n, gap: self.gap, max_trials: self.max_trials }
+        LineParams {
+            c: self.c,
+            n_offset: self.n,
+            gap: self.gap,
+            max_trials: self.max_trials,
+        }
     }
     fn interval(&self) -> Interval {
-        Interval { length: self.l, periodic: self.periodic }
+        Interval {
+            length: self.l,
+            periodic: self.periodic,
+        }
     }
 }
 
@@ -129,17 +155,33 @@ struct Fill {
 fn run_with(case: &Case, stop: &Stop, cap: usize, index_len: usize) -> Result<Fill, ParamError> {
     let mut segs = vec![Segment::<f64>::default(); cap];
     let mut index = vec![0u32; index_len];
-    let mut e = LineEngine::new(case.params(), case.interval(), LineStorage { segments: &mut segs, index: &mut index })?;
+    let mut e = LineEngine::new(
+        case.params(),
+        case.interval(),
+        LineStorage {
+            segments: &mut segs,
+            index: &mut index,
+        },
+    )?;
     let mut rng = rng_from_seed(case.seed);
     let mut trials = Vec::new();
     let reason = e.run(&mut rng, stop, |p| trials.push(p.trials));
     let digest = line_digest(&e);
     let fill_fraction = e.stats().fill_fraction;
-    Ok(Fill { segs: e.placed().to_vec(), trials, reason, digest, fill_fraction })
+    Ok(Fill {
+        segs: e.placed().to_vec(),
+        trials,
+        reason,
+        digest,
+        fill_fraction,
+    })
 }
 
 fn run(case: &Case, k: usize) -> Fill {
-    let stop = Stop { count: Some(k as u64), ..Stop::default() };
+    let stop = Stop {
+        count: Some(k as u64),
+        ..Stop::default()
+    };
     run_with(case, &stop, k + 1, line_index_words(k + 1)).unwrap_or_else(|e| panic!("{case:?}: {e}"))
 }
 
@@ -283,14 +325,32 @@ fn the_first_start_is_uniform() {
 #[test]
 fn stop_conditions() {
     let case = Case::new(3, 1.3, false);
-    let f = run_with(&case, &Stop { fill: Some(0.8), ..Stop::default() }, 10_000, line_index_words(10_000)).unwrap_or_else(|e| panic!("{e}"));
+    let f = run_with(
+        &case,
+        &Stop {
+            fill: Some(0.8),
+            ..Stop::default()
+        },
+        10_000,
+        line_index_words(10_000),
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
     assert_eq!(f.reason, StopReason::Fill);
     assert!(f.fill_fraction >= 0.8);
     let len = f.segs.len();
     let z = hurwitz_zeta(1.3, 1.0).unwrap_or(0.0);
     let before: f64 = (0..len - 1).map(|i| 1.0 / (z * (i as f64 + 1.0).powf(1.3))).sum();
     assert!(before < 0.8, "stopped late");
-    let f = run_with(&case, &Stop { min_size: Some(0.5), ..Stop::default() }, 10_000, line_index_words(10_000)).unwrap_or_else(|e| panic!("{e}"));
+    let f = run_with(
+        &case,
+        &Stop {
+            min_size: Some(0.5),
+            ..Stop::default()
+        },
+        10_000,
+        line_index_words(10_000),
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
     assert_eq!(f.reason, StopReason::MinSize);
     assert!(f.segs.iter().all(|s| s.length >= 0.5));
     let next = 200.0 / (z * (f.segs.len() as f64 + 1.0).powf(1.3));
@@ -300,7 +360,10 @@ fn stop_conditions() {
 #[test]
 fn halting_capacity_and_cannot_fit_are_errors() {
     // At c = 3 the third segment rarely finds room within 50 trials... or any: run until halt.
-    let case = Case { max_trials: 50, ..Case::new(1, 3.0, false) };
+    let case = Case {
+        max_trials: 50,
+        ..Case::new(1, 3.0, false)
+    };
     let f = run(&case, 2000);
     match f.reason {
         StopReason::Step(StepError::Halted { index, trials }) => {
@@ -310,14 +373,36 @@ fn halting_capacity_and_cannot_fit_are_errors() {
         r => panic!("expected a halt, got {r:?}"),
     }
     // Capacity: 5 slots, asked for 10.
-    let f = run_with(&Case::new(1, 1.3, false), &Stop { count: Some(10), ..Stop::default() }, 5, line_index_words(5)).unwrap_or_else(|e| panic!("{e}"));
+    let f = run_with(
+        &Case::new(1, 1.3, false),
+        &Stop {
+            count: Some(10),
+            ..Stop::default()
+        },
+        5,
+        line_index_words(5),
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
     assert_eq!(f.reason, StopReason::Step(StepError::Capacity { capacity: 5 }));
     assert_eq!(f.segs.len(), 5);
     // A gap that leaves no room for the first segment.
-    let f = run(&Case { gap: 80.0, ..Case::new(1, 1.3, false) }, 10);
+    let f = run(
+        &Case {
+            gap: 80.0,
+            ..Case::new(1, 1.3, false)
+        },
+        10,
+    );
     assert_eq!(f.reason, StopReason::Step(StepError::CannotFit { index: 0 }));
     // Periodic: a first segment that would meet its own image.
-    let f = run(&Case { gap: 10.0, n: 0.3, ..Case::new(1, 3.0, true) }, 10);
+    let f = run(
+        &Case {
+            gap: 10.0,
+            n: 0.3,
+            ..Case::new(1, 3.0, true)
+        },
+        10,
+    );
     assert_eq!(f.reason, StopReason::Step(StepError::CannotFit { index: 0 }));
 }
 
@@ -327,7 +412,15 @@ fn bad_parameters_are_named() {
     let try_new = |case: Case, cap: usize, idx: usize| {
         let mut segs = vec![Segment::<f64>::default(); cap];
         let mut index = vec![0u32; idx];
-        LineEngine::new(case.params(), case.interval(), LineStorage { segments: &mut segs, index: &mut index }).map(|_| ())
+        LineEngine::new(
+            case.params(),
+            case.interval(),
+            LineStorage {
+                segments: &mut segs,
+                index: &mut index,
+            },
+        )
+        .map(|_| ())
     };
     assert_eq!(try_new(Case { c: 1.0, ..ok }, 4, 13), Err(ParamError::Exponent));
     assert_eq!(try_new(Case { c: f64::NAN, ..ok }, 4, 13), Err(ParamError::Exponent));

@@ -2,7 +2,12 @@
 //! hash, coverage bitmap and containment test.
 
 // Negated comparisons are deliberate: they treat NaN as a failure.
-#![allow(clippy::neg_cmp_op_on_partial_ord, clippy::nonminimal_bool, clippy::collapsible_match, clippy::collapsible_if)]
+#![allow(
+    clippy::neg_cmp_op_on_partial_ord,
+    clippy::nonminimal_bool,
+    clippy::collapsible_match,
+    clippy::collapsible_if
+)]
 
 use proptest::prelude::*;
 use proptest::test_runner::RngSeed;
@@ -11,8 +16,8 @@ use std::panic::{catch_unwind, AssertUnwindSafe};
 use zetafill::engine::Stats;
 use zetafill::geom::separated;
 use zetafill::{
-    index_words, rng_from_seed, Engine, Geo, ParamError, Params, Placed, Placement, Point, Region, ShapeKind,
-    StepError, Stop, StopReason, Storage, ZetaRng,
+    index_words, rng_from_seed, Engine, Geo, ParamError, Params, Placed, Placement, Point, Region, ShapeKind, StepError, Stop, StopReason,
+    Storage, ZetaRng,
 };
 
 // ---------------------------------------------------------------------------------------------
@@ -205,13 +210,27 @@ struct Case {
 
 impl Case {
     fn params(&self) -> Params {
-        Params { c: self.c, n_offset: self.n, shape: self.shape.into(), rotate: self.rotate, gap: self.gap, max_trials: self.max_trials }
+        Params {
+            c: self.c,
+            n_offset: self.n,
+            shape: self.shape.into(),
+            rotate: self.rotate,
+            gap: self.gap,
+            max_trials: self.max_trials,
+        }
     }
     fn region(&self) -> Region<'static> {
-        Region::Rect { width: self.w, height: self.h, periodic: self.periodic }
+        Region::Rect {
+            width: self.w,
+            height: self.h,
+            periodic: self.periodic,
+        }
     }
     fn stop(&self, k: u64) -> Stop {
-        Stop { count: Some(k), ..Stop::default() }
+        Stop {
+            count: Some(k),
+            ..Stop::default()
+        }
     }
 }
 
@@ -241,14 +260,26 @@ fn run_with(case: &Case, cap: usize, stop: &Stop, cov_words: usize, index: Index
     let mut e = Engine::<f64>::new(
         case.params(),
         case.region(),
-        Storage { shapes: &mut shapes, index: &mut idx, coverage: &mut cov },
+        Storage {
+            shapes: &mut shapes,
+            index: &mut idx,
+            coverage: &mut cov,
+        },
     )?;
     let mut rng = rng_from_seed(case.seed);
     let mut placements = Vec::new();
     let reason = e.run(&mut rng, stop, |p| placements.push(*p));
     let placed = e.placed().to_vec();
     let items = items_of(&e);
-    Ok(Run { placed, items, placements, reason, stats: e.stats(), zeta: e.zeta(), area: e.total_area() })
+    Ok(Run {
+        placed,
+        items,
+        placements,
+        reason,
+        stats: e.stats(),
+        zeta: e.zeta(),
+        area: e.total_area(),
+    })
 }
 
 /// The placed shapes as the checker sees them, through `Engine::geo`.
@@ -257,7 +288,10 @@ fn items_of(e: &Engine<'_, f64>) -> Vec<Item> {
         .map(|i| {
             let p = e.placed()[i];
             let geo = e.geo(i).unwrap_or_else(|| panic!("no geometry for placed shape {i}"));
-            Item { centre: Point::new(p.x, p.y), geo }
+            Item {
+                centre: Point::new(p.x, p.y),
+                geo,
+            }
         })
         .collect()
 }
@@ -281,7 +315,13 @@ fn stats_bits(s: &Stats) -> (u64, u64, u64) {
 /// Bitwise equality of two runs (shapes, placements, stop reason, statistics).
 fn same_run(a: &Run, b: &Run) -> Result<(), String> {
     if a.placed.len() != b.placed.len() {
-        return Err(format!("{} vs {} shapes ({:?} / {:?})", a.placed.len(), b.placed.len(), a.reason, b.reason));
+        return Err(format!(
+            "{} vs {} shapes ({:?} / {:?})",
+            a.placed.len(),
+            b.placed.len(),
+            a.reason,
+            b.reason
+        ));
     }
     for (i, (p, q)) in a.placed.iter().zip(&b.placed).enumerate() {
         if placed_bits(p) != placed_bits(q) {
@@ -357,7 +397,11 @@ fn check_run(case: &Case, r: &Run) -> Result<(), String> {
         _ => {}
     }
     if r.stats.placed != n as u64 || r.stats.trials != trials || r.stats.fill_fraction.to_bits() != (sum / a_tot).to_bits() {
-        return Err(format!("stats {:?}, expected placed {n}, trials {trials}, fill {}", r.stats, sum / a_tot));
+        return Err(format!(
+            "stats {:?}, expected placed {n}, trials {trials}, fill {}",
+            r.stats,
+            sum / a_tot
+        ));
     }
     Ok(())
 }
@@ -433,7 +477,12 @@ fn replay(case: &Case, r: &Run, e_area_of: impl Fn(u64) -> f64) -> Result<(), St
             let g = kind.geo_sc(c, scale, sin, cos);
             let accepted = brute_accepts(case, &r.items[..i], &g);
             if accepted && t == pl.trials {
-                let s = Placed { x: c.x, y: c.y, scale, angle };
+                let s = Placed {
+                    x: c.x,
+                    y: c.y,
+                    scale,
+                    angle,
+                };
                 if placed_bits(&s) != placed_bits(&pl.shape) {
                     return Err(format!("placement {i}: replayed {s:?}, engine placed {:?}", pl.shape));
                 }
@@ -453,8 +502,16 @@ fn replay(case: &Case, r: &Run, e_area_of: impl Fn(u64) -> f64) -> Result<(), St
 fn engine_area_of(case: &Case) -> impl Fn(u64) -> f64 {
     let mut shapes = [Placed::<f64>::default(); 1];
     let mut idx = [0u32; 4];
-    let e = Engine::<f64>::new(case.params(), case.region(), Storage { shapes: &mut shapes, index: &mut idx, coverage: &mut [] })
-        .unwrap_or_else(|e| panic!("{case:?}: {e:?}"));
+    let e = Engine::<f64>::new(
+        case.params(),
+        case.region(),
+        Storage {
+            shapes: &mut shapes,
+            index: &mut idx,
+            coverage: &mut [],
+        },
+    )
+    .unwrap_or_else(|e| panic!("{case:?}: {e:?}"));
     let (a, z, n, c) = (e.total_area(), e.zeta(), case.n, case.c);
     // Same expression as the engine's `area_of` (checked against it below).
     let f = move |i: u64| a / (z * libm::pow(i as f64 + n, c));
@@ -522,11 +579,49 @@ fn varied_cases() -> Vec<Case> {
     let b = base_case();
     vec![
         b,
-        Case { seed: 11, shape: ShapeKind::Square, rotate: true, gap: 0.1, ..b },
-        Case { seed: 12, shape: ShapeKind::Rect { aspect: 3.0 }, rotate: true, periodic: true, w: 80.0, h: 50.0, ..b },
-        Case { seed: 13, c: 1.2, n: 2.0, periodic: true, gap: 0.05, w: 60.0, h: 120.0, ..b },
-        Case { seed: 14, shape: ShapeKind::Rect { aspect: 0.4 }, c: 1.4, n: 1.5, w: 40.0, h: 150.0, ..b },
-        Case { seed: 15, shape: ShapeKind::Square, periodic: true, c: 1.35, n: 0.6, ..b },
+        Case {
+            seed: 11,
+            shape: ShapeKind::Square,
+            rotate: true,
+            gap: 0.1,
+            ..b
+        },
+        Case {
+            seed: 12,
+            shape: ShapeKind::Rect { aspect: 3.0 },
+            rotate: true,
+            periodic: true,
+            w: 80.0,
+            h: 50.0,
+            ..b
+        },
+        Case {
+            seed: 13,
+            c: 1.2,
+            n: 2.0,
+            periodic: true,
+            gap: 0.05,
+            w: 60.0,
+            h: 120.0,
+            ..b
+        },
+        Case {
+            seed: 14,
+            shape: ShapeKind::Rect { aspect: 0.4 },
+            c: 1.4,
+            n: 1.5,
+            w: 40.0,
+            h: 150.0,
+            ..b
+        },
+        Case {
+            seed: 15,
+            shape: ShapeKind::Square,
+            periodic: true,
+            c: 1.35,
+            n: 0.6,
+            ..b
+        },
     ]
 }
 
@@ -577,7 +672,10 @@ fn coverage_sizes_never_change_results() {
 fn prefix_stability() {
     for (j, base) in varied_cases().into_iter().enumerate() {
         for k in [1u64, 37, 150] {
-            let case = Case { seed: base.seed + 100 * j as u64 + k, ..base };
+            let case = Case {
+                seed: base.seed + 100 * j as u64 + k,
+                ..base
+            };
             let short = run(&case, k, 1 << 12);
             let long = run(&case, 2 * k, 1 << 12);
             assert_eq!(short.reason, StopReason::Count, "{case:?}");
@@ -585,7 +683,11 @@ fn prefix_stability() {
             assert!(long.placed.len() as u64 >= k);
             for i in 0..k as usize {
                 assert_eq!(placed_bits(&short.placed[i]), placed_bits(&long.placed[i]), "{case:?}: shape {i}");
-                assert_eq!(placement_bits(&short.placements[i]), placement_bits(&long.placements[i]), "{case:?}: placement {i}");
+                assert_eq!(
+                    placement_bits(&short.placements[i]),
+                    placement_bits(&long.placements[i]),
+                    "{case:?}: placement {i}"
+                );
             }
             let t: u64 = long.placements[..k as usize].iter().map(|p| p.trials).sum();
             assert_eq!(short.stats.trials, t);
@@ -599,7 +701,14 @@ fn determinism() {
         let a = run(&case, 200, 1 << 12);
         let b = run(&case, 200, 1 << 12);
         same_run(&a, &b).unwrap_or_else(|e| panic!("{case:?}: same seed, different runs: {e}"));
-        let other = run(&Case { seed: case.seed ^ 0x5555, ..case }, 200, 1 << 12);
+        let other = run(
+            &Case {
+                seed: case.seed ^ 0x5555,
+                ..case
+            },
+            200,
+            1 << 12,
+        );
         assert!(same_run(&a, &other).is_err(), "{case:?}: different seeds gave the same run");
         assert_ne!(placed_bits(&a.placed[0]), placed_bits(&other.placed[0]), "{case:?}");
     }
@@ -660,8 +769,16 @@ fn capacity_stops_with_all_shapes_valid() {
     let case = base_case();
     let mut shapes = vec![Placed::<f64>::default(); 3];
     let mut idx = vec![0u32; index_words(3)];
-    let mut e = Engine::<f64>::new(case.params(), case.region(), Storage { shapes: &mut shapes, index: &mut idx, coverage: &mut [] })
-        .unwrap_or_else(|e| panic!("{e:?}"));
+    let mut e = Engine::<f64>::new(
+        case.params(),
+        case.region(),
+        Storage {
+            shapes: &mut shapes,
+            index: &mut idx,
+            coverage: &mut [],
+        },
+    )
+    .unwrap_or_else(|e| panic!("{e:?}"));
     let mut rng = rng_from_seed(1);
     for _ in 0..3 {
         assert!(e.step(&mut rng).is_ok());
@@ -678,7 +795,10 @@ fn capacity_stops_with_all_shapes_valid() {
 #[test]
 fn fill_fraction_stop() {
     for case in varied_cases() {
-        let stop = Stop { fill: Some(0.5), ..Stop::default() };
+        let stop = Stop {
+            fill: Some(0.5),
+            ..Stop::default()
+        };
         let r = run_with(&case, 5000, &stop, 1 << 12, IndexSize::Full).unwrap_or_else(|e| panic!("{e:?}"));
         assert_eq!(r.reason, StopReason::Fill, "{case:?}");
         check_run(&case, &r).unwrap_or_else(|e| panic!("{case:?}: {e}"));
@@ -690,16 +810,38 @@ fn fill_fraction_stop() {
         for p in &r.placements[..n - 1] {
             sum += p.area;
         }
-        assert!(sum < 0.5 * r.area, "{case:?}: already {} filled before the last shape", sum / r.area);
+        assert!(
+            sum < 0.5 * r.area,
+            "{case:?}: already {} filled before the last shape",
+            sum / r.area
+        );
         assert!(sum + r.placements[n - 1].area >= 0.5 * r.area);
         // One fewer shape: the fill stop does not hold yet.
-        let fewer = run_with(&case, 5000, &Stop { count: Some(n as u64 - 1), ..stop }, 1 << 12, IndexSize::Full)
-            .unwrap_or_else(|e| panic!("{e:?}"));
+        let fewer = run_with(
+            &case,
+            5000,
+            &Stop {
+                count: Some(n as u64 - 1),
+                ..stop
+            },
+            1 << 12,
+            IndexSize::Full,
+        )
+        .unwrap_or_else(|e| panic!("{e:?}"));
         assert_eq!(fewer.reason, StopReason::Count, "{case:?}");
         assert!(fewer.stats.fill_fraction < 0.5, "{:?}", fewer.stats);
         // count and fill together: whichever holds first.
-        let both = run_with(&case, 5000, &Stop { count: Some(n as u64 + 5), ..stop }, 1 << 12, IndexSize::Full)
-            .unwrap_or_else(|e| panic!("{e:?}"));
+        let both = run_with(
+            &case,
+            5000,
+            &Stop {
+                count: Some(n as u64 + 5),
+                ..stop
+            },
+            1 << 12,
+            IndexSize::Full,
+        )
+        .unwrap_or_else(|e| panic!("{e:?}"));
         same_run(&r, &both).unwrap_or_else(|e| panic!("{case:?}: {e}"));
     }
 }
@@ -710,12 +852,14 @@ fn min_size_stop() {
         // A minimum width that the 40th shape is just above and the 41st below (roughly).
         let kind = case.shape;
         let width_of = |i: u64| {
-            let a = case.w * case.h
-                / (zetafill::zeta::hurwitz_zeta(case.c, case.n).unwrap_or(f64::NAN) * (i as f64 + case.n).powf(case.c));
+            let a = case.w * case.h / (zetafill::zeta::hurwitz_zeta(case.c, case.n).unwrap_or(f64::NAN) * (i as f64 + case.n).powf(case.c));
             kind.min_width(kind.scale_for_area(a))
         };
         let m = 0.5 * (width_of(40) + width_of(41));
-        let stop = Stop { min_size: Some(m), ..Stop::default() };
+        let stop = Stop {
+            min_size: Some(m),
+            ..Stop::default()
+        };
         let r = run_with(&case, 5000, &stop, 1 << 12, IndexSize::Full).unwrap_or_else(|e| panic!("{e:?}"));
         assert_eq!(r.reason, StopReason::MinSize, "{case:?}");
         check_run(&case, &r).unwrap_or_else(|e| panic!("{case:?}: {e}"));
@@ -728,8 +872,17 @@ fn min_size_stop() {
         assert!(next < m, "{case:?}: next shape width {next} >= {m}");
         // A minimum exactly at a shape's width keeps that shape (stop is strictly below).
         let exact = kind.min_width(kind.scale_for_area(area_of(10)));
-        let r = run_with(&case, 5000, &Stop { min_size: Some(exact), ..stop }, 1 << 12, IndexSize::Full)
-            .unwrap_or_else(|e| panic!("{e:?}"));
+        let r = run_with(
+            &case,
+            5000,
+            &Stop {
+                min_size: Some(exact),
+                ..stop
+            },
+            1 << 12,
+            IndexSize::Full,
+        )
+        .unwrap_or_else(|e| panic!("{e:?}"));
         assert_eq!(r.placed.len(), 11, "{case:?}");
     }
 }
@@ -738,9 +891,18 @@ fn min_size_stop() {
 fn stop_conditions_checked_before_the_first_step() {
     let case = base_case();
     for stop in [
-        Stop { count: Some(0), ..Stop::default() },
-        Stop { min_size: Some(f64::INFINITY), ..Stop::default() },
-        Stop { fill: Some(0.0), ..Stop::default() },
+        Stop {
+            count: Some(0),
+            ..Stop::default()
+        },
+        Stop {
+            min_size: Some(f64::INFINITY),
+            ..Stop::default()
+        },
+        Stop {
+            fill: Some(0.0),
+            ..Stop::default()
+        },
     ] {
         let r = run_with(&case, 10, &stop, 0, IndexSize::Full).unwrap_or_else(|e| panic!("{e:?}"));
         assert!(r.placed.is_empty(), "{stop:?}");
@@ -774,11 +936,22 @@ fn halting_at_one_trial_keeps_everything_before() {
 #[test]
 fn step_after_halt_continues() {
     // A halted step places nothing; stepping again draws new candidates.
-    let case = Case { max_trials: 1, ..base_case() };
+    let case = Case {
+        max_trials: 1,
+        ..base_case()
+    };
     let mut shapes = vec![Placed::<f64>::default(); 100];
     let mut idx = vec![0u32; index_words(100)];
-    let mut e = Engine::<f64>::new(case.params(), case.region(), Storage { shapes: &mut shapes, index: &mut idx, coverage: &mut [] })
-        .unwrap_or_else(|e| panic!("{e:?}"));
+    let mut e = Engine::<f64>::new(
+        case.params(),
+        case.region(),
+        Storage {
+            shapes: &mut shapes,
+            index: &mut idx,
+            coverage: &mut [],
+        },
+    )
+    .unwrap_or_else(|e| panic!("{e:?}"));
     let mut rng = rng_from_seed(3);
     let mut halts = 0;
     let mut trials = 0;
@@ -803,7 +976,14 @@ fn step_after_halt_continues() {
 #[test]
 fn first_shape_too_large_cannot_fit() {
     // A square of almost the whole area cannot fit in a thin region.
-    let case = Case { c: 1.9, n: 0.05, shape: ShapeKind::Square, w: 100.0, h: 10.0, ..base_case() };
+    let case = Case {
+        c: 1.9,
+        n: 0.05,
+        shape: ShapeKind::Square,
+        w: 100.0,
+        h: 10.0,
+        ..base_case()
+    };
     let r = run_with(&case, 10, &case.stop(10), 0, IndexSize::Full).unwrap_or_else(|e| panic!("{e:?}"));
     assert_eq!(r.reason, StopReason::Step(StepError::CannotFit { index: 0 }));
     assert!(r.placed.is_empty());
@@ -815,17 +995,28 @@ fn first_shape_too_large_cannot_fit() {
 // ---------------------------------------------------------------------------------------------
 
 fn circle(x: f64, y: f64, r: f64) -> Item {
-    Item { centre: Point::new(x, y), geo: Geo::Circle { c: Point::new(x, y), r } }
+    Item {
+        centre: Point::new(x, y),
+        geo: Geo::Circle { c: Point::new(x, y), r },
+    }
 }
 
 fn square(x: f64, y: f64, half: f64) -> Item {
     let g = ShapeKind::Square.geo(Point::new(x, y), half, 0.0);
-    Item { centre: Point::new(x, y), geo: g }
+    Item {
+        centre: Point::new(x, y),
+        geo: g,
+    }
 }
 
 #[test]
 fn checker_accepts_valid_sets() {
-    let items = [circle(10.0, 10.0, 5.0), circle(30.0, 10.0, 5.0), square(50.0, 50.0, 10.0), square(80.0, 20.0, 9.0)];
+    let items = [
+        circle(10.0, 10.0, 5.0),
+        circle(30.0, 10.0, 5.0),
+        square(50.0, 50.0, 10.0),
+        square(80.0, 20.0, 9.0),
+    ];
     assert_eq!(check_fill(&items, 100.0, 100.0, 0.0, false), Ok(()));
     assert_eq!(check_fill(&items, 100.0, 100.0, 0.9, false), Ok(()));
     assert_eq!(check_fill(&items, 100.0, 100.0, 0.0, true), Ok(()));
@@ -860,7 +1051,17 @@ fn checker_detects_shape_outside_region() {
     assert!(check_fill(&[circle(50.0, 100.0 - 5.0 + 1e-9, 5.0)], 100.0, 100.0, 0.0, false).is_err());
     // A rotated square whose corner pokes out.
     let g = ShapeKind::Square.geo(Point::new(94.5, 50.0), 5.0, 0.3);
-    assert!(check_fill(&[Item { centre: Point::new(94.5, 50.0), geo: g }], 100.0, 100.0, 0.0, false).is_err());
+    assert!(check_fill(
+        &[Item {
+            centre: Point::new(94.5, 50.0),
+            geo: g
+        }],
+        100.0,
+        100.0,
+        0.0,
+        false
+    )
+    .is_err());
 }
 
 #[test]
@@ -885,7 +1086,10 @@ fn checker_detects_periodic_violations() {
     // An overlap only with an image two periods away (a long thin diagonal rectangle).
     let r = ShapeKind::Rect { aspect: 40.0 };
     let g = r.geo(Point::new(10.0, 10.0), 0.6, libm::atan2(20.0, 40.0));
-    let long = Item { centre: Point::new(10.0, 10.0), geo: g };
+    let long = Item {
+        centre: Point::new(10.0, 10.0),
+        geo: g,
+    };
     assert!(check_fill(&[long], 20.0, 20.0, 0.0, true).is_err());
     // A centre that does not match its geometry.
     let mut bad = circle(10.0, 10.0, 1.0);
@@ -992,7 +1196,10 @@ fn any_shape() -> impl Strategy<Value = ShapeKind> {
 fn any_region(width: f64, height: f64, periodic: bool, pick: u8) -> Region<'static> {
     match pick % 8 {
         6 => Region::Circle { radius: width },
-        7 => Region::Annulus { outer: width, inner: height },
+        7 => Region::Annulus {
+            outer: width,
+            inner: height,
+        },
         _ => Region::Rect { width, height, periodic },
     }
 }
@@ -1014,14 +1221,23 @@ fn wild_strategy() -> impl Strategy<Value = Wild> {
         (any_f64(0.0..200.0), any_f64(0.0..200.0), any::<bool>(), any::<u8>()),
         (0usize..5, 0usize..20, 0usize..4, any::<u64>()),
     )
-        .prop_map(|((c, n_offset, shape, rotate, gap), max_trials, (width, height, periodic, pick), (shapes, index, coverage, seed))| Wild {
-            params: Params { c, n_offset, shape: shape.into(), rotate, gap, max_trials },
-            region: any_region(width, height, periodic, pick),
-            shapes,
-            index,
-            coverage,
-            seed,
-        })
+        .prop_map(
+            |((c, n_offset, shape, rotate, gap), max_trials, (width, height, periodic, pick), (shapes, index, coverage, seed))| Wild {
+                params: Params {
+                    c,
+                    n_offset,
+                    shape: shape.into(),
+                    rotate,
+                    gap,
+                    max_trials,
+                },
+                region: any_region(width, height, periodic, pick),
+                shapes,
+                index,
+                coverage,
+                seed,
+            },
+        )
 }
 
 /// Mostly valid values, with edge values that are still valid and an occasional wild one.
@@ -1051,15 +1267,34 @@ fn near_valid_strategy() -> impl Strategy<Value = Wild> {
             prop_oneof![3 => Just(0.0), 2 => 0.0f64..1.0, 1 => near_valid(0.0..1.0, &[5e-324, 1e-300, 1e300])],
         ),
         prop_oneof![1u64..1000, Just(u64::MAX), any::<u64>()],
-        (near_valid(0.0..200.0, &SIZES), near_valid(0.0..200.0, &SIZES), any::<bool>(), 0.0f64..0.5, any::<bool>(), any::<u8>()),
+        (
+            near_valid(0.0..200.0, &SIZES),
+            near_valid(0.0..200.0, &SIZES),
+            any::<bool>(),
+            0.0f64..0.5,
+            any::<bool>(),
+            any::<u8>(),
+        ),
         (1usize..8, 0usize..16, 0usize..4, any::<u64>()),
     )
         .prop_map(
-            |((c, n_offset, shape, rotate, gap), max_trials, (width, height, periodic, g, gap_rel, pick), (shapes, extra, coverage, seed))| {
+            |(
+                (c, n_offset, shape, rotate, gap),
+                max_trials,
+                (width, height, periodic, g, gap_rel, pick),
+                (shapes, extra, coverage, seed),
+            )| {
                 // Half the time the gap is a fraction of the region (up to just under half).
                 let gap = if gap_rel { g * width.min(height) } else { gap };
                 Wild {
-                    params: Params { c, n_offset, shape: shape.into(), rotate, gap, max_trials },
+                    params: Params {
+                        c,
+                        n_offset,
+                        shape: shape.into(),
+                        rotate,
+                        gap,
+                        max_trials,
+                    },
                     region: any_region(width, height, periodic, pick),
                     shapes,
                     index: shapes + 1 + extra,
@@ -1075,15 +1310,39 @@ fn wild_run(w: &Wild) -> Result<Option<(StopReason, Stats)>, ParamError> {
     let mut shapes = vec![Placed::<f64>::default(); w.shapes];
     let mut idx = vec![0u32; w.index];
     let mut cov = vec![0u64; w.coverage];
-    let mut e = Engine::<f64>::new(w.params, w.region, Storage { shapes: &mut shapes, index: &mut idx, coverage: &mut cov })?;
-    let mut rng = BudgetRng { inner: rng_from_seed(w.seed), left: 30_000 };
-    let reason = e.run(&mut rng, &Stop { count: Some(5), ..Stop::default() }, |p| {
-        let _ = p.area;
-    });
+    let mut e = Engine::<f64>::new(
+        w.params,
+        w.region,
+        Storage {
+            shapes: &mut shapes,
+            index: &mut idx,
+            coverage: &mut cov,
+        },
+    )?;
+    let mut rng = BudgetRng {
+        inner: rng_from_seed(w.seed),
+        left: 30_000,
+    };
+    let reason = e.run(
+        &mut rng,
+        &Stop {
+            count: Some(5),
+            ..Stop::default()
+        },
+        |p| {
+            let _ = p.area;
+        },
+    );
     for i in 0..e.placed().len() + 2 {
         let _ = e.geo(i);
     }
-    let _ = (e.coverage_fraction(), e.area_of(u64::MAX), e.capacity(), e.zeta(), format!("{reason:?}"));
+    let _ = (
+        e.coverage_fraction(),
+        e.area_of(u64::MAX),
+        e.capacity(),
+        e.zeta(),
+        format!("{reason:?}"),
+    );
     if let StopReason::Step(s) = reason {
         let _ = s.to_string();
     }
@@ -1194,7 +1453,12 @@ fn periodic_images_beyond_one_period_are_tested() {
     // More of the same: narrow tori, rotated rectangles within the proptest's ranges.
     for (aspect, w) in [(4.0, 25.0), (5.0, 25.0), (3.0, 25.0)] {
         for seed in 0..100u64 {
-            let case = Case { seed, shape: ShapeKind::Rect { aspect }, w, ..case };
+            let case = Case {
+                seed,
+                shape: ShapeKind::Rect { aspect },
+                w,
+                ..case
+            };
             let r = run(&case, 100, 0);
             check_fill(&r.items, case.w, case.h, case.gap, case.periodic).unwrap_or_else(|e| panic!("{case:?}: {e}"));
         }

@@ -7,7 +7,9 @@
 //! membership written here, that every shape lies inside its region with its gap.
 
 use zetafill::geom::separated;
-use zetafill::{index_words, rng_from_seed, Engine, Geo, Params, Placed, Point, PolygonRegion, Region, ShapeKind, Stop, StopReason, Storage};
+use zetafill::{
+    index_words, rng_from_seed, Engine, Geo, Params, Placed, Point, PolygonRegion, Region, ShapeKind, Stop, StopReason, Storage,
+};
 
 const KINDS: [ShapeKind; 8] = [
     ShapeKind::Circle,
@@ -25,10 +27,12 @@ const KINDS: [ShapeKind; 8] = [
 
 fn outline(g: &Geo<f64>, per_edge: usize) -> Vec<Point<f64>> {
     let circle = |c: Point<f64>, r: f64, n: usize| -> Vec<Point<f64>> {
-        (0..n).map(|k| {
-            let t = k as f64 / n as f64 * std::f64::consts::TAU;
-            Point::new(c.x + r * t.cos(), c.y + r * t.sin())
-        }).collect()
+        (0..n)
+            .map(|k| {
+                let t = k as f64 / n as f64 * std::f64::consts::TAU;
+                Point::new(c.x + r * t.cos(), c.y + r * t.sin())
+            })
+            .collect()
     };
     match *g {
         Geo::Circle { c, r } => circle(c, r, per_edge * 16),
@@ -105,7 +109,11 @@ fn pair_table_every_kind_against_every_kind() {
             for &(angle_a, angle_b) in &[(0.0, 0.0), (0.4, 1.9)] {
                 let a = at(ka, 0.0, 0.0, 10.0, angle_a);
                 // Overlapping: B on A's material (a ring's band, not its hole).
-                let band = if let ShapeKind::Ring { .. } = ka { ka.scale_for_area(10.0) * 0.8 } else { 0.0 };
+                let band = if let ShapeKind::Ring { .. } = ka {
+                    ka.scale_for_area(10.0) * 0.8
+                } else {
+                    0.0
+                };
                 let b = at(kb, band, 0.0, 4.0, angle_b);
                 assert!(!separated(&a, &b, 0.0) && !separated(&b, &a, 0.0), "{ka:?} / {kb:?} overlap missed");
                 // Far apart.
@@ -154,10 +162,25 @@ fn every_kind_nests_in_a_ring_hole() {
 #[test]
 fn sampled_distance_detects_overlap_and_measures_gaps() {
     // The independent measure itself: two unit circles 3 apart are 1 apart; overlapping ones 0.
-    let a = Geo::Circle { c: Point::new(0.0, 0.0), r: 1.0 };
-    let b = Geo::Circle { c: Point::new(3.0, 0.0), r: 1.0 };
+    let a = Geo::Circle {
+        c: Point::new(0.0, 0.0),
+        r: 1.0,
+    };
+    let b = Geo::Circle {
+        c: Point::new(3.0, 0.0),
+        r: 1.0,
+    };
     assert!((sampled_distance(&a, &b) - 1.0).abs() < 1e-3);
-    assert_eq!(sampled_distance(&a, &Geo::Circle { c: Point::new(1.5, 0.0), r: 1.0 }), 0.0);
+    assert_eq!(
+        sampled_distance(
+            &a,
+            &Geo::Circle {
+                c: Point::new(1.5, 0.0),
+                r: 1.0
+            }
+        ),
+        0.0
+    );
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -255,11 +278,29 @@ fn fill(kind: ShapeKind, region: Region<'_>, gap: f64, count: u64, seed: u64) ->
     let mut shapes = vec![Placed::<f64>::default(); cap];
     let mut index = vec![0u32; index_words(cap)];
     let mut cov = vec![0u64; 1 << 12];
-    let params = Params { c: 1.2, n_offset: 4.0, shape: kind.into(), rotate: true, gap, max_trials: 200_000 };
-    let storage = Storage { shapes: &mut shapes, index: &mut index, coverage: &mut cov };
+    let params = Params {
+        c: 1.2,
+        n_offset: 4.0,
+        shape: kind.into(),
+        rotate: true,
+        gap,
+        max_trials: 200_000,
+    };
+    let storage = Storage {
+        shapes: &mut shapes,
+        index: &mut index,
+        coverage: &mut cov,
+    };
     let mut e = Engine::<f64>::new(params, region, storage).unwrap_or_else(|err| panic!("{kind:?}: {err}"));
     let mut rng = rng_from_seed(seed);
-    let reason = e.run(&mut rng, &Stop { count: Some(count), ..Stop::default() }, |_| {});
+    let reason = e.run(
+        &mut rng,
+        &Stop {
+            count: Some(count),
+            ..Stop::default()
+        },
+        |_| {},
+    );
     ((0..e.placed().len()).filter_map(|i| e.geo(i)).collect(), reason)
 }
 
@@ -273,12 +314,25 @@ fn every_shape_in_every_region() {
             Point::new(100.0 + r * t.cos(), 100.0 + r * t.sin())
         })
         .collect();
-    pts.extend([Point::new(90.0, 90.0), Point::new(90.0, 110.0), Point::new(110.0, 110.0), Point::new(110.0, 90.0)]);
+    pts.extend([
+        Point::new(90.0, 90.0),
+        Point::new(90.0, 110.0),
+        Point::new(110.0, 110.0),
+        Point::new(110.0, 90.0),
+    ]);
     let ends = vec![10, 14];
     let poly = PolygonRegion::new(&pts, &ends).unwrap_or_else(|e| panic!("{e}"));
     let regions = [
-        Region::Rect { width: 160.0, height: 120.0, periodic: false },
-        Region::Rect { width: 160.0, height: 120.0, periodic: true },
+        Region::Rect {
+            width: 160.0,
+            height: 120.0,
+            periodic: false,
+        },
+        Region::Rect {
+            width: 160.0,
+            height: 120.0,
+            periodic: true,
+        },
         Region::Circle { radius: 80.0 },
         Region::Annulus { outer: 90.0, inner: 35.0 },
         Region::Polygon(poly),
@@ -288,8 +342,15 @@ fn every_shape_in_every_region() {
         for (ki, &kind) in KINDS.iter().enumerate() {
             for gap in [0.0, 0.8] {
                 let (geos, reason) = fill(kind, *region, gap, 100, 1 + ri as u64 * 10 + ki as u64);
-                assert!(!matches!(reason, StopReason::Step(zetafill::StepError::CannotFit { .. })), "{kind:?} in region {ri}: {reason:?}");
-                assert!(geos.len() >= 20, "{kind:?} in region {ri} gap {gap}: only {} shapes ({reason:?})", geos.len());
+                assert!(
+                    !matches!(reason, StopReason::Step(zetafill::StepError::CannotFit { .. })),
+                    "{kind:?} in region {ri}: {reason:?}"
+                );
+                assert!(
+                    geos.len() >= 20,
+                    "{kind:?} in region {ri} gap {gap}: only {} shapes ({reason:?})",
+                    geos.len()
+                );
                 total += check(&geos, region, gap, &pts, &ends).unwrap_or_else(|e| panic!("{kind:?} in region {ri} gap {gap}: {e}"));
             }
         }
@@ -299,14 +360,22 @@ fn every_shape_in_every_region() {
 
 #[test]
 fn rings_nest_in_fills() {
-    let region = Region::Rect { width: 200.0, height: 200.0, periodic: false };
+    let region = Region::Rect {
+        width: 200.0,
+        height: 200.0,
+        periodic: false,
+    };
     let (geos, _) = fill(ShapeKind::Ring { inner: 0.7 }, region, 0.0, 600, 5);
     let nested = geos
         .iter()
         .enumerate()
         .filter(|(i, g)| {
-            let (Geo::Ring { c, .. } | Geo::Circle { c, .. }) = g else { return false };
-            geos[..*i].iter().any(|o| matches!(o, Geo::Ring { c: oc, inner, .. } if oc.dist2(*c).sqrt() < *inner))
+            let (Geo::Ring { c, .. } | Geo::Circle { c, .. }) = g else {
+                return false;
+            };
+            geos[..*i]
+                .iter()
+                .any(|o| matches!(o, Geo::Ring { c: oc, inner, .. } if oc.dist2(*c).sqrt() < *inner))
         })
         .count();
     assert!(nested > 10, "only {nested} rings placed inside another ring's hole");
@@ -314,19 +383,48 @@ fn rings_nest_in_fills() {
 
 #[test]
 fn the_fill_checker_can_fail() {
-    let region = Region::Rect { width: 100.0, height: 100.0, periodic: false };
-    let a = Geo::Circle { c: Point::new(30.0, 30.0), r: 10.0 };
-    let b = Geo::Circle { c: Point::new(45.0, 30.0), r: 6.0 };
+    let region = Region::Rect {
+        width: 100.0,
+        height: 100.0,
+        periodic: false,
+    };
+    let a = Geo::Circle {
+        c: Point::new(30.0, 30.0),
+        r: 10.0,
+    };
+    let b = Geo::Circle {
+        c: Point::new(45.0, 30.0),
+        r: 6.0,
+    };
     assert!(check(&[a, b], &region, 0.0, &[], &[]).is_err(), "overlap not found");
     assert!(check(&[a, b.shift(2.0, 0.0)], &region, 0.0, &[], &[]).is_ok());
     assert!(check(&[a, b.shift(2.0, 0.0)], &region, 1.5, &[], &[]).is_err(), "gap not enforced");
-    let out = Geo::Circle { c: Point::new(95.0, 50.0), r: 6.0 };
+    let out = Geo::Circle {
+        c: Point::new(95.0, 50.0),
+        r: 6.0,
+    };
     assert!(check(&[out], &region, 0.0, &[], &[]).is_err(), "outside not found");
-    let near = Geo::Circle { c: Point::new(93.0, 50.0), r: 6.0 };
+    let near = Geo::Circle {
+        c: Point::new(93.0, 50.0),
+        r: 6.0,
+    };
     assert!(check(&[near], &region, 0.0, &[], &[]).is_ok());
     assert!(check(&[near], &region, 1.5, &[], &[]).is_err(), "boundary gap not enforced");
-    let torus = Region::Rect { width: 100.0, height: 100.0, periodic: true };
-    let edge = Geo::Circle { c: Point::new(2.0, 50.0), r: 5.0 };
-    let other = Geo::Circle { c: Point::new(97.0, 50.0), r: 4.0 };
-    assert!(check(&[edge, other], &torus, 0.0, &[], &[]).is_err(), "overlap across the edge not found");
+    let torus = Region::Rect {
+        width: 100.0,
+        height: 100.0,
+        periodic: true,
+    };
+    let edge = Geo::Circle {
+        c: Point::new(2.0, 50.0),
+        r: 5.0,
+    };
+    let other = Geo::Circle {
+        c: Point::new(97.0, 50.0),
+        r: 4.0,
+    };
+    assert!(
+        check(&[edge, other], &torus, 0.0, &[], &[]).is_err(),
+        "overlap across the edge not found"
+    );
 }

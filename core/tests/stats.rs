@@ -77,7 +77,22 @@ fn gasket_agrees_with_its_definition_summed_term_by_term() {
 fn monotone_violations(b: impl Fn(f64, u64) -> f64) -> Vec<String> {
     let mut bad = Vec::new();
     let cs: Vec<f64> = (0..=40).map(|k| 1.05 + 0.025 * k as f64).collect();
-    let ns: Vec<u64> = [1u64, 2, 3, 5, 10, 30, 100, 1_000, 10_000, 100_000, 1_000_000, 10_000_000, 1_000_000_000].to_vec();
+    let ns: Vec<u64> = [
+        1u64,
+        2,
+        3,
+        5,
+        10,
+        30,
+        100,
+        1_000,
+        10_000,
+        100_000,
+        1_000_000,
+        10_000_000,
+        1_000_000_000,
+    ]
+    .to_vec();
     for &c in &cs {
         for w in ns.windows(2) {
             let (a, z) = (b(c, w[0]), b(c, w[1]));
@@ -104,7 +119,10 @@ fn gasket_falls_with_n_and_with_c() {
     let bad = monotone_violations(|c, n| gasket_width(c, 3.0, n).unwrap_or(f64::NAN));
     assert!(bad.is_empty(), "{}", bad.join("\n"));
     // The paper: at c = 1.32, b drops by only 0.9 percent from n = 10^5 to 10^6.
-    let (a, z) = (gasket_width(1.32, 1.0, 100_000).unwrap_or(0.0), gasket_width(1.32, 1.0, 1_000_000).unwrap_or(0.0));
+    let (a, z) = (
+        gasket_width(1.32, 1.0, 100_000).unwrap_or(0.0),
+        gasket_width(1.32, 1.0, 1_000_000).unwrap_or(0.0),
+    );
     assert!(((a - z) / a - 0.009).abs() < 0.0015, "{a} {z}");
 }
 
@@ -116,7 +134,15 @@ fn monotone_checker_fails_on_a_rising_function() {
 
 #[test]
 fn gasket_rejects_bad_arguments_without_panicking() {
-    for (c, n) in [(1.0, 1.0), (0.5, 1.0), (f64::NAN, 1.0), (f64::INFINITY, 1.0), (1.3, 0.0), (1.3, -1.0), (1.3, f64::NAN)] {
+    for (c, n) in [
+        (1.0, 1.0),
+        (0.5, 1.0),
+        (f64::NAN, 1.0),
+        (f64::INFINITY, 1.0),
+        (1.3, 0.0),
+        (1.3, -1.0),
+        (1.3, f64::NAN),
+    ] {
         assert!(gasket_width(c, n, 10).is_err(), "c={c} N={n}");
     }
     assert!(gasket_width(1.3, 1.0, 0).is_err(), "no perimeter before the first placement");

@@ -32,11 +32,20 @@ fn parse(csv: &str, header: &str, with_n: bool) -> Vec<Row> {
             assert_eq!(f.len(), if with_n { 4 } else { 3 }, "bad row {l:?}");
             let num = |t: &str| -> f64 { t.parse().unwrap_or_else(|e| panic!("bad number {t:?} in {l:?}: {e}")) };
             let (n, want) = if with_n {
-                (Some(f[2].parse::<u64>().unwrap_or_else(|e| panic!("bad n in {l:?}: {e}"))), num(f[3]))
+                (
+                    Some(f[2].parse::<u64>().unwrap_or_else(|e| panic!("bad n in {l:?}: {e}"))),
+                    num(f[3]),
+                )
             } else {
                 (None, num(f[2]))
             };
-            Row { line: l.to_string(), s: num(f[0]), a: num(f[1]), n, want }
+            Row {
+                line: l.to_string(),
+                s: num(f[0]),
+                a: num(f[1]),
+                n,
+                want,
+            }
         })
         .collect()
 }
@@ -198,7 +207,13 @@ const PARTIAL_CANCELLATION: [(f64, f64, u64, f64); 7] = [
 fn partial_sum_near_s_1_is_accurate() {
     let rows: Vec<Row> = PARTIAL_CANCELLATION
         .iter()
-        .map(|&(s, a, n, want)| Row { line: format!("{s},{a},{n},{want}"), s, a, n: Some(n), want })
+        .map(|&(s, a, n, want)| Row {
+            line: format!("{s},{a},{n},{want}"),
+            s,
+            a,
+            n: Some(n),
+            want,
+        })
         .collect();
     if let Err(e) = check(&rows, TOL) {
         panic!("partial_sum disagrees with the reference:\n{e}");

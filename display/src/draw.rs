@@ -63,7 +63,15 @@ impl View {
         let (kx, ky) = (pw / w, ph / h);
         let k = if kx < ky { kx } else { ky };
         let k = if k.is_finite() && k > 0.0 { k } else { 0.0 };
-        View { k, x0, y0, w, h, bottom: ph, periodic: region.periodic() }
+        View {
+            k,
+            x0,
+            y0,
+            w,
+            h,
+            bottom: ph,
+            periodic: region.periodic(),
+        }
     }
 
     /// Pixels per mm.
@@ -95,7 +103,13 @@ impl View {
         Ok(())
     }
 
-    fn draw_at<S: Scalar, D: DrawTarget<Color = BinaryColor>>(&self, geo: &Geo<S>, dx: f64, dy: f64, target: &mut D) -> Result<(), D::Error> {
+    fn draw_at<S: Scalar, D: DrawTarget<Color = BinaryColor>>(
+        &self,
+        geo: &Geo<S>,
+        dx: f64,
+        dy: f64,
+        target: &mut D,
+    ) -> Result<(), D::Error> {
         let style = PrimitiveStyle::with_stroke(BinaryColor::On, 1);
         let circle = |c: zetafill::Point<S>, r: S| {
             let centre = self.pixel(c.x.to_f64() + dx, c.y.to_f64() + dy);
@@ -135,7 +149,15 @@ mod tests {
 
     #[test]
     fn region_corners_map_to_display_corners() {
-        let v = View::new(&Region::Rect { width: 200.0, height: 100.0, periodic: false }, 128, 128);
+        let v = View::new(
+            &Region::Rect {
+                width: 200.0,
+                height: 100.0,
+                periodic: false,
+            },
+            128,
+            128,
+        );
         assert_eq!(v.pixel(0.0, 0.0), Px::new(0, 127));
         assert_eq!(v.pixel(200.0, 0.0), Px::new(127, 127));
         // 127 - 100 * 0.635 = 63.5, floored.
@@ -144,7 +166,15 @@ mod tests {
 
     #[test]
     fn a_square_is_drawn_as_its_outline_and_a_circle_round() {
-        let view = View::new(&Region::Rect { width: 127.0, height: 63.0, periodic: false }, 128, 64);
+        let view = View::new(
+            &Region::Rect {
+                width: 127.0,
+                height: 63.0,
+                periodic: false,
+            },
+            128,
+            64,
+        );
         let mut f = Frame::new();
         let p = |x, y| Point::new(x, y);
         let mut v = [p(0.0, 0.0); zetafill::geom::MAX_VERTS];
@@ -159,7 +189,15 @@ mod tests {
         assert_eq!(g.pixel(Px::new(64, 31)), Some(BinaryColor::Off));
         assert!(ink(&g) > 50);
         let mut r = Frame::new();
-        view.draw(&Geo::Ring { c: p(64.0, 32.0), r: 10.0, inner: 5.0 }, &mut r).unwrap();
+        view.draw(
+            &Geo::Ring {
+                c: p(64.0, 32.0),
+                r: 10.0,
+                inner: 5.0,
+            },
+            &mut r,
+        )
+        .unwrap();
         assert!(ink(&r) > ink(&g));
     }
 
@@ -168,9 +206,29 @@ mod tests {
         let p = |x, y| Point::new(x, y);
         let c = Geo::Circle { c: p(1.0, 32.0), r: 5.0 };
         let mut inc = Frame::new();
-        View::new(&Region::Rect { width: 127.0, height: 63.0, periodic: false }, 128, 64).draw(&c, &mut inc).unwrap();
+        View::new(
+            &Region::Rect {
+                width: 127.0,
+                height: 63.0,
+                periodic: false,
+            },
+            128,
+            64,
+        )
+        .draw(&c, &mut inc)
+        .unwrap();
         let mut per = Frame::new();
-        View::new(&Region::Rect { width: 127.0, height: 63.0, periodic: true }, 128, 64).draw(&c, &mut per).unwrap();
+        View::new(
+            &Region::Rect {
+                width: 127.0,
+                height: 63.0,
+                periodic: true,
+            },
+            128,
+            64,
+        )
+        .draw(&c, &mut per)
+        .unwrap();
         assert!(ink(&per) > ink(&inc));
         let right_edge = |f: &Frame| (120..128).any(|x| (0..64).any(|y| f.pixel(Px::new(x, y)) == Some(BinaryColor::On)));
         assert!(right_edge(&per) && !right_edge(&inc));

@@ -101,7 +101,12 @@ impl Scene {
     /// The engine parameters (default trial limit); a mix cycles through [`Scene::shapes`].
     pub fn params(&self) -> Result<Params, ParamError> {
         let shape = ShapeList::mix(self.shapes, MixOrder::Cycle, 0).ok_or(ParamError::Shape)?;
-        Ok(Params { shape, rotate: self.rotate, gap: self.gap, ..Params::circles(self.c, self.n_offset) })
+        Ok(Params {
+            shape,
+            rotate: self.rotate,
+            gap: self.gap,
+            ..Params::circles(self.c, self.n_offset)
+        })
     }
 }
 
@@ -114,8 +119,30 @@ const fn torus(w: f64, h: f64) -> SceneRegion {
 }
 
 #[allow(clippy::too_many_arguments)]
-const fn scene(name: &'static str, scalar: ScalarKind, shapes: &'static [ShapeKind], rotate: bool, region: SceneRegion, c: f64, n_offset: f64, gap: f64, seed: u64, count: u64) -> Scene {
-    Scene { name, scalar, shapes, rotate, region, c, n_offset, gap, seed, count }
+const fn scene(
+    name: &'static str,
+    scalar: ScalarKind,
+    shapes: &'static [ShapeKind],
+    rotate: bool,
+    region: SceneRegion,
+    c: f64,
+    n_offset: f64,
+    gap: f64,
+    seed: u64,
+    count: u64,
+) -> Scene {
+    Scene {
+        name,
+        scalar,
+        shapes,
+        rotate,
+        region,
+        c,
+        n_offset,
+        gap,
+        seed,
+        count,
+    }
 }
 
 const fn pt(x: f64, y: f64) -> Point<f64> {
@@ -124,8 +151,16 @@ const fn pt(x: f64, y: f64) -> Point<f64> {
 
 /// An L-shaped room 120 x 100 mm with a square pillar (a hole): the polygon region.
 const ROOM: [Point<f64>; 10] = [
-    pt(0.0, 0.0), pt(120.0, 0.0), pt(120.0, 40.0), pt(60.0, 40.0), pt(60.0, 100.0), pt(0.0, 100.0),
-    pt(20.0, 20.0), pt(20.0, 35.0), pt(35.0, 35.0), pt(35.0, 20.0),
+    pt(0.0, 0.0),
+    pt(120.0, 0.0),
+    pt(120.0, 40.0),
+    pt(60.0, 40.0),
+    pt(60.0, 100.0),
+    pt(0.0, 100.0),
+    pt(20.0, 20.0),
+    pt(20.0, 35.0),
+    pt(35.0, 35.0),
+    pt(35.0, 20.0),
 ];
 const ROOM_RINGS: [usize; 2] = [6, 10];
 
@@ -236,7 +271,12 @@ pub fn run<S: Scalar, D: DrawTarget<Color = BinaryColor>>(
         }
     }
     let (count, digest) = digest::engine_digest(&engine);
-    Ok(Outcome { count, digest, trials: engine.stats().trials, ticks })
+    Ok(Outcome {
+        count,
+        digest,
+        trials: engine.stats().trials,
+        ticks,
+    })
 }
 
 #[cfg(test)]
@@ -252,7 +292,11 @@ mod tests {
         let mut shapes = vec![Placed::<f64>::default(); CAPACITY];
         let mut index = vec![0u32; INDEX_WORDS];
         let mut frame = Frame::new();
-        let storage = Storage { shapes: &mut shapes, index: &mut index, coverage: &mut [] };
+        let storage = Storage {
+            shapes: &mut shapes,
+            index: &mut index,
+            coverage: &mut [],
+        };
         (run(s, storage, &mut frame, || 0).unwrap(), frame)
     }
 
@@ -281,7 +325,11 @@ mod tests {
         let mut shapes = vec![Placed::<f64>::default(); 3];
         let mut index = vec![0u32; 8];
         let mut frame = Frame::new();
-        let storage = Storage { shapes: &mut shapes, index: &mut index, coverage: &mut [] };
+        let storage = Storage {
+            shapes: &mut shapes,
+            index: &mut index,
+            coverage: &mut [],
+        };
         let e = run(&s, storage, &mut frame, || 0).unwrap_err();
         assert_eq!(e, RunError::Step(StepError::Capacity { capacity: 3 }));
     }

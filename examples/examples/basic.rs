@@ -10,8 +10,16 @@ fn main() {
     // The caller owns every buffer: here Vecs, on a microcontroller static arrays.
     let mut shapes = vec![Placed::<f64>::default(); CAP];
     let mut index = vec![0u32; index_words(CAP)];
-    let storage = Storage { shapes: &mut shapes, index: &mut index, coverage: &mut [] };
-    let region = Region::Rect { width: 100.0, height: 100.0, periodic: false };
+    let storage = Storage {
+        shapes: &mut shapes,
+        index: &mut index,
+        coverage: &mut [],
+    };
+    let region = Region::Rect {
+        width: 100.0,
+        height: 100.0,
+        periodic: false,
+    };
     let mut engine = match Engine::<f64>::new(Params::circles(1.3, 1.0), region, storage) {
         Ok(e) => e,
         Err(e) => {
@@ -20,9 +28,24 @@ fn main() {
         }
     };
     let mut rng = zetafill::rng_from_seed(7);
-    let reason = engine.run(&mut rng, &Stop { count: Some(CAP as u64), ..Stop::default() }, |p| {
-        println!("{:4} x={:8.3} y={:8.3} r={:7.4} trials={}", p.index, p.shape.x, p.shape.y, p.shape.scale, p.trials);
-    });
+    let reason = engine.run(
+        &mut rng,
+        &Stop {
+            count: Some(CAP as u64),
+            ..Stop::default()
+        },
+        |p| {
+            println!(
+                "{:4} x={:8.3} y={:8.3} r={:7.4} trials={}",
+                p.index, p.shape.x, p.shape.y, p.shape.scale, p.trials
+            );
+        },
+    );
     let s = engine.stats();
-    println!("stopped: {reason:?}; {} shapes, {} trials, {:.1}% filled", s.placed, s.trials, 100.0 * s.fill_fraction);
+    println!(
+        "stopped: {reason:?}; {} shapes, {} trials, {:.1}% filled",
+        s.placed,
+        s.trials,
+        100.0 * s.fill_fraction
+    );
 }

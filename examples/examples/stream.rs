@@ -13,12 +13,22 @@ fn main() {
     const CAP: usize = 400;
     let mut shapes = [Placed::<f64>::default(); CAP];
     let mut index = [0u32; index_words(CAP)];
-    let storage = Storage { shapes: &mut shapes, index: &mut index, coverage: &mut [] };
+    let storage = Storage {
+        shapes: &mut shapes,
+        index: &mut index,
+        coverage: &mut [],
+    };
     let mut params = Params::circles(1.25, 2.0);
     params.shape = ShapeKind::Square.into();
     params.rotate = true;
-    let region = Region::Rect { width: 2.0 * H as f64, height: H as f64, periodic: true };
-    let Ok(mut engine) = Engine::<f64>::new(params, region, storage) else { return };
+    let region = Region::Rect {
+        width: 2.0 * H as f64,
+        height: H as f64,
+        periodic: true,
+    };
+    let Ok(mut engine) = Engine::<f64>::new(params, region, storage) else {
+        return;
+    };
     let mut rng = zetafill::rng_from_seed(3);
     let mut fb = [[b' '; W]; H];
     for _ in 0..CAP {

@@ -59,7 +59,10 @@ impl Board {
 
     /// A clock counting ticks from now.
     pub fn clock(&self) -> Clock {
-        Clock { last: SYST::get_current(), total: 0 }
+        Clock {
+            last: SYST::get_current(),
+            total: 0,
+        }
     }
 
     /// SysTick ticks spent on [`CALIBRATION_INSTRUCTIONS`] instructions.
@@ -75,7 +78,11 @@ impl Board {
         let top = addr_of!(_stack_start) as usize;
         let data = (addr_of!(__edata) as usize).saturating_sub(addr_of!(__sdata) as usize);
         let flash = (addr_of!(__sidata) as usize).saturating_sub(FLASH_ORIGIN) + data;
-        Memory { static_ram: sheap - RAM_ORIGIN, stack: top - deepest_changed_word(sheap, top), flash }
+        Memory {
+            static_ram: sheap - RAM_ORIGIN,
+            stack: top - deepest_changed_word(sheap, top),
+            flash,
+        }
     }
 }
 

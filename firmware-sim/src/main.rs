@@ -42,10 +42,19 @@ const FLASH_BUDGET: usize = 192 * 1024;
 
 #[entry]
 fn main() -> ! {
-    let Some(peripherals) = cortex_m::Peripherals::take() else { fail("peripherals already taken") };
+    let Some(peripherals) = cortex_m::Peripherals::take() else {
+        fail("peripherals already taken")
+    };
     let board = Board::init(peripherals.SYST);
-    defmt::info!("zetafill firmware-sim: {=usize} scenes, engine capacity {=usize} shapes", SCENES.len(), CAPACITY);
-    let cal = Calibration { instructions: CALIBRATION_INSTRUCTIONS, ticks: board.calibrate() };
+    defmt::info!(
+        "zetafill firmware-sim: {=usize} scenes, engine capacity {=usize} shapes",
+        SCENES.len(),
+        CAPACITY
+    );
+    let cal = Calibration {
+        instructions: CALIBRATION_INSTRUCTIONS,
+        ticks: board.calibrate(),
+    };
     eprintln!("clock instructions={} ticks={}", cal.instructions, cal.ticks);
     defmt::info!("clock: {=u64} instructions in {=u64} SysTick ticks", cal.instructions, cal.ticks);
     if cal.ticks == 0 {
@@ -62,13 +71,28 @@ fn main() -> ! {
             process::exit(1);
         }
         let m = board.memory();
-        eprintln!("stack {} static={} stack={} total={}", scene.name, m.static_ram, m.stack, m.static_ram + m.stack);
+        eprintln!(
+            "stack {} static={} stack={} total={}",
+            scene.name,
+            m.static_ram,
+            m.stack,
+            m.static_ram + m.stack
+        );
         deepest = deepest.max(m.stack);
     }
     let m = board.memory();
     let total = m.static_ram + deepest;
-    eprintln!("memory static={} stack={} total={} flash={} target={}", m.static_ram, deepest, total, m.flash, RAM_TARGET);
-    defmt::info!("memory: static {=usize} B + stack {=usize} B = {=usize} B, flash {=usize} B", m.static_ram, deepest, total, m.flash);
+    eprintln!(
+        "memory static={} stack={} total={} flash={} target={}",
+        m.static_ram, deepest, total, m.flash, RAM_TARGET
+    );
+    defmt::info!(
+        "memory: static {=usize} B + stack {=usize} B = {=usize} B, flash {=usize} B",
+        m.static_ram,
+        deepest,
+        total,
+        m.flash
+    );
     if total > RAM_LIMIT || m.flash > FLASH_BUDGET {
         fail("memory over budget (56 KiB RAM, 192 KiB flash)");
     }
@@ -99,7 +123,11 @@ fn run_scene<S: Scalar + Default>(scene: &Scene, board: &Board, cal: &Calibratio
     let mut shapes = [Placed::<S>::default(); CAPACITY];
     let mut index = [0u32; INDEX_WORDS];
     let mut frame = Frame::new();
-    let storage = Storage { shapes: &mut shapes, index: &mut index, coverage: &mut [] };
+    let storage = Storage {
+        shapes: &mut shapes,
+        index: &mut index,
+        coverage: &mut [],
+    };
     let mut clock = board.clock();
     let outcome = match run(scene, storage, &mut frame, || clock.now()) {
         Ok(o) => o,
@@ -139,7 +167,9 @@ fn write_frame(name: &str, frame: &Frame) -> bool {
         dst.copy_from_slice(part);
         n += part.len();
     }
-    let Some(Ok(cpath)) = path.get(..n).map(CStr::from_bytes_with_nul) else { return false };
+    let Some(Ok(cpath)) = path.get(..n).map(CStr::from_bytes_with_nul) else {
+        return false;
+    };
     let written = semihosting::fs::File::create(cpath).and_then(|mut file| {
         file.write_all(PBM_HEADER)?;
         file.write_all(frame.data())

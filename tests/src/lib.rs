@@ -28,9 +28,39 @@ pub struct Scene {
 
 /// The canonical scenes shared with the firmware (DESIGN section 4).
 pub const CANONICAL: [Scene; 3] = [
-    Scene { name: "circles", shape: ShapeKind::Circle, rotate: false, size: (200.0, 200.0), periodic: false, c: 1.3, n: 1.0, seed: 1, count: 500 },
-    Scene { name: "squares", shape: ShapeKind::Square, rotate: true, size: (100.0, 100.0), periodic: true, c: 1.25, n: 2.0, seed: 2, count: 300 },
-    Scene { name: "rects", shape: ShapeKind::Rect { aspect: 2.0 }, rotate: false, size: (150.0, 100.0), periodic: false, c: 1.2, n: 3.0, seed: 3, count: 300 },
+    Scene {
+        name: "circles",
+        shape: ShapeKind::Circle,
+        rotate: false,
+        size: (200.0, 200.0),
+        periodic: false,
+        c: 1.3,
+        n: 1.0,
+        seed: 1,
+        count: 500,
+    },
+    Scene {
+        name: "squares",
+        shape: ShapeKind::Square,
+        rotate: true,
+        size: (100.0, 100.0),
+        periodic: true,
+        c: 1.25,
+        n: 2.0,
+        seed: 2,
+        count: 300,
+    },
+    Scene {
+        name: "rects",
+        shape: ShapeKind::Rect { aspect: 2.0 },
+        rotate: false,
+        size: (150.0, 100.0),
+        periodic: false,
+        c: 1.2,
+        n: 3.0,
+        seed: 3,
+        count: 300,
+    },
 ];
 
 /// Runs a scene in the core (f64) with `coverage_words` of bitmap and returns
@@ -40,12 +70,36 @@ pub fn run_scene(s: &Scene, coverage_words: usize) -> (u64, u64, Vec<Placed<f64>
     let mut shapes = vec![Placed::<f64>::default(); cap];
     let mut index = vec![0u32; index_words(cap)];
     let mut coverage = vec![0u64; coverage_words];
-    let params = Params { c: s.c, n_offset: s.n, shape: s.shape.into(), rotate: s.rotate, gap: 0.0, max_trials: 10_000_000 };
-    let region = Region::Rect { width: s.size.0, height: s.size.1, periodic: s.periodic };
-    let storage = Storage { shapes: &mut shapes, index: &mut index, coverage: &mut coverage };
-    let Ok(mut e) = Engine::<f64>::new(params, region, storage) else { return (0, 0, Vec::new()) };
+    let params = Params {
+        c: s.c,
+        n_offset: s.n,
+        shape: s.shape.into(),
+        rotate: s.rotate,
+        gap: 0.0,
+        max_trials: 10_000_000,
+    };
+    let region = Region::Rect {
+        width: s.size.0,
+        height: s.size.1,
+        periodic: s.periodic,
+    };
+    let storage = Storage {
+        shapes: &mut shapes,
+        index: &mut index,
+        coverage: &mut coverage,
+    };
+    let Ok(mut e) = Engine::<f64>::new(params, region, storage) else {
+        return (0, 0, Vec::new());
+    };
     let mut rng = zetafill::rng_from_seed(s.seed);
-    let _ = e.run(&mut rng, &Stop { count: Some(s.count), ..Stop::default() }, |_| {});
+    let _ = e.run(
+        &mut rng,
+        &Stop {
+            count: Some(s.count),
+            ..Stop::default()
+        },
+        |_| {},
+    );
     let (n, h) = digest::engine_digest(&e);
     (n, h, e.placed().to_vec())
 }
@@ -81,7 +135,9 @@ pub fn scene_args(s: &Scene) -> Vec<String> {
 pub fn parse_fill(args: &[String]) -> zetafill_cli::fill::FillArgs {
     use clap::Parser;
     match zetafill_cli::Cli::try_parse_from(args) {
-        Ok(zetafill_cli::Cli { command: zetafill_cli::Command::Fill(a) }) => a,
+        Ok(zetafill_cli::Cli {
+            command: zetafill_cli::Command::Fill(a),
+        }) => a,
         Ok(_) => panic!("not a fill command: {args:?}"),
         Err(e) => panic!("bad arguments {args:?}: {e}"),
     }

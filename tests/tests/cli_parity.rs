@@ -46,12 +46,34 @@ fn fixed_point_digest_matches_the_core() {
     let cap = scene.count as usize;
     let mut shapes = vec![Placed::<Fixed>::default(); cap];
     let mut index = vec![0u32; index_words(cap)];
-    let params = Params { c: scene.c, n_offset: scene.n, shape: scene.shape.into(), rotate: scene.rotate, gap: 0.0, max_trials: 10_000_000 };
-    let region = Region::Rect { width: scene.size.0, height: scene.size.1, periodic: scene.periodic };
-    let storage = Storage { shapes: &mut shapes, index: &mut index, coverage: &mut [] };
+    let params = Params {
+        c: scene.c,
+        n_offset: scene.n,
+        shape: scene.shape.into(),
+        rotate: scene.rotate,
+        gap: 0.0,
+        max_trials: 10_000_000,
+    };
+    let region = Region::Rect {
+        width: scene.size.0,
+        height: scene.size.1,
+        periodic: scene.periodic,
+    };
+    let storage = Storage {
+        shapes: &mut shapes,
+        index: &mut index,
+        coverage: &mut [],
+    };
     let mut e = Engine::<Fixed>::new(params, region, storage).unwrap_or_else(|e| panic!("{e}"));
     let mut rng = zetafill::rng_from_seed(scene.seed);
-    let _ = e.run(&mut rng, &Stop { count: Some(scene.count), ..Stop::default() }, |_| {});
+    let _ = e.run(
+        &mut rng,
+        &Stop {
+            count: Some(scene.count),
+            ..Stop::default()
+        },
+        |_| {},
+    );
     let (n, h) = zetafill::digest::engine_digest(&e);
     assert_eq!(String::from_utf8_lossy(&line), format!("{n} {h:016x}\n"));
     let (_, h64, _) = run_scene(scene, 0);

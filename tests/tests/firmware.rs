@@ -49,8 +49,16 @@ fn firmware_dir() -> PathBuf {
 }
 
 fn require_tool(program: &str, install: &str) {
-    let found = Command::new(program).arg("--version").stdout(Stdio::null()).stderr(Stdio::null()).status().is_ok();
-    assert!(found, "`{program}` is not installed: the firmware tests need it ({install}, or run `bash scripts/test-all.sh`)");
+    let found = Command::new(program)
+        .arg("--version")
+        .stdout(Stdio::null())
+        .stderr(Stdio::null())
+        .status()
+        .is_ok();
+    assert!(
+        found,
+        "`{program}` is not installed: the firmware tests need it ({install}, or run `bash scripts/test-all.sh`)"
+    );
 }
 
 /// Builds the firmware and runs it once under QEMU (shared by every test in this file).
@@ -70,7 +78,10 @@ fn firmware() -> &'static Firmware {
             .env_remove("CARGO_BUILD_TARGET")
             .status()
             .expect("cargo runs");
-        assert!(status.success(), "the firmware does not build (rustup target add thumbv7m-none-eabi?)");
+        assert!(
+            status.success(),
+            "the firmware does not build (rustup target add thumbv7m-none-eabi?)"
+        );
         let elf = target.join("thumbv7m-none-eabi/release/zetafill-firmware-sim");
         let out = target.join("test-run");
         let _ = std::fs::remove_dir_all(&out);
@@ -78,7 +89,18 @@ fn firmware() -> &'static Firmware {
         let stdout = File::create(out.join("defmt.bin")).expect("defmt.bin");
         let stderr = File::create(out.join("report.txt")).expect("report.txt");
         let mut child = Command::new("qemu-system-arm")
-            .args(["-cpu", "cortex-m3", "-machine", "lm3s6965evb", "-display", "none", "-serial", "none", "-monitor", "none"])
+            .args([
+                "-cpu",
+                "cortex-m3",
+                "-machine",
+                "lm3s6965evb",
+                "-display",
+                "none",
+                "-serial",
+                "none",
+                "-monitor",
+                "none",
+            ])
             .args(["-semihosting-config", "enable=on,target=native", "-icount", "shift=0", "-kernel"])
             .arg(&elf)
             .current_dir(&out)
@@ -100,19 +122,32 @@ fn firmware() -> &'static Firmware {
         };
         let report = std::fs::read_to_string(out.join("report.txt")).expect("report");
         let defmt = std::fs::read(out.join("defmt.bin")).expect("defmt log");
-        Firmware { elf, out, report, defmt, exit: status.code() }
+        Firmware {
+            elf,
+            out,
+            report,
+            defmt,
+            exit: status.code(),
+        }
     })
 }
 
 /// The fields of every report line starting with `word`.
 fn lines<'a>(report: &'a str, word: &str) -> Vec<Vec<&'a str>> {
-    report.lines().map(|l| l.split_whitespace().collect::<Vec<_>>()).filter(|f| f.first() == Some(&word)).collect()
+    report
+        .lines()
+        .map(|l| l.split_whitespace().collect::<Vec<_>>())
+        .filter(|f| f.first() == Some(&word))
+        .collect()
 }
 
 /// The value of `key=VALUE` among the fields.
 fn field(fields: &[&str], key: &str) -> u64 {
     let prefix = format!("{key}=");
-    let v = fields.iter().find_map(|f| f.strip_prefix(prefix.as_str())).unwrap_or_else(|| panic!("no {key} in {fields:?}"));
+    let v = fields
+        .iter()
+        .find_map(|f| f.strip_prefix(prefix.as_str()))
+        .unwrap_or_else(|| panic!("no {key} in {fields:?}"));
     v.parse().unwrap_or_else(|_| panic!("{key}={v} is not a number"))
 }
 
@@ -138,7 +173,11 @@ fn host_run_on<S: Scalar + Default>(scene: &Scene) -> HostRun {
     let mut shapes = vec![Placed::<S>::default(); CAPACITY];
     let mut index = vec![0u32; INDEX_WORDS];
     let mut frame = Frame::new();
-    let storage = Storage { shapes: &mut shapes, index: &mut index, coverage: &mut [] };
+    let storage = Storage {
+        shapes: &mut shapes,
+        index: &mut index,
+        coverage: &mut [],
+    };
     let outcome = run(scene, storage, &mut frame, || 0).unwrap_or_else(|e| panic!("{}: {e}", scene.name));
     let mut pbm = PBM_HEADER.to_vec();
     pbm.extend_from_slice(frame.data());
@@ -169,7 +208,10 @@ fn digest_mismatches(fw: &BTreeMap<String, (u64, u64)>, host: &BTreeMap<&str, Ho
         let want = (h.outcome.count, h.outcome.digest);
         match fw.get(*name) {
             Some(&got) if got == want => {}
-            Some(got) => bad.push(format!("{name}: firmware {} {:016x}, host {} {:016x}", got.0, got.1, want.0, want.1)),
+            Some(got) => bad.push(format!(
+                "{name}: firmware {} {:016x}, host {} {:016x}",
+                got.0, got.1, want.0, want.1
+            )),
             None => bad.push(format!("{name}: no digest from the firmware")),
         }
     }
@@ -227,17 +269,32 @@ fn canonical_runs_are_the_golden_scenes() {
     // tests/tests/golden.rs pins), and print exactly what that reference run gives.
     let fw = parse_digests(&firmware().report);
     for c in &CANONICAL {
-        let s = SCENES.iter().find(|s| s.name == c.name).unwrap_or_else(|| panic!("{} is not a firmware scene", c.name));
+        let s = SCENES
+            .iter()
+            .find(|s| s.name == c.name)
+            .unwrap_or_else(|| panic!("{} is not a firmware scene", c.name));
         let region = SceneRegion::Rect(c.size.0, c.size.1, c.periodic);
         let same = (s.scalar, s.shapes, s.rotate, s.region, s.c, s.n_offset, s.gap, s.seed, s.count)
             == (ScalarKind::F64, &[c.shape][..], c.rotate, region, c.c, c.n, 0.0, c.seed, c.count);
         assert!(same, "{}: firmware scene {s:?} differs from the canonical {c:?}", c.name);
         let (n, h, _) = run_scene(c, 1 << 14);
-        assert_eq!(fw.get(c.name), Some(&(n, h)), "{}: firmware digest differs from the golden run", c.name);
+        assert_eq!(
+            fw.get(c.name),
+            Some(&(n, h)),
+            "{}: firmware digest differs from the golden run",
+            c.name
+        );
     }
     let circles = SCENES.iter().find(|s| s.name == "circles").expect("circles");
     let fixed = SCENES.iter().find(|s| s.name == "circles-fixed").expect("circles-fixed");
-    assert_eq!(*fixed, Scene { name: "circles-fixed", scalar: ScalarKind::Fixed, ..*circles });
+    assert_eq!(
+        *fixed,
+        Scene {
+            name: "circles-fixed",
+            scalar: ScalarKind::Fixed,
+            ..*circles
+        }
+    );
     assert_ne!(fw.get("circles"), fw.get("circles-fixed"), "the scalars are expected to differ");
 }
 
@@ -265,8 +322,10 @@ fn firmware_frames_equal_the_hosts_pixel_for_pixel() {
 fn the_comparisons_can_fail() {
     let host = host_runs();
     // A digest one bit off is reported.
-    let mut fw: BTreeMap<String, (u64, u64)> =
-        host.iter().map(|(n, r)| (n.to_string(), (r.outcome.count, r.outcome.digest))).collect();
+    let mut fw: BTreeMap<String, (u64, u64)> = host
+        .iter()
+        .map(|(n, r)| (n.to_string(), (r.outcome.count, r.outcome.digest)))
+        .collect();
     assert!(digest_mismatches(&fw, host).is_empty());
     fw.get_mut("circles-fixed").expect("scene").1 ^= 1;
     fw.remove("rects");
@@ -302,7 +361,12 @@ fn a_1024_shape_engine_fits_the_board() {
     let fw = firmware();
     let m = lines(&fw.report, "memory");
     assert_eq!(m.len(), 1, "one memory line expected:\n{}", fw.report);
-    let (stat, stack, total, flash) = (field(&m[0], "static"), field(&m[0], "stack"), field(&m[0], "total"), field(&m[0], "flash"));
+    let (stat, stack, total, flash) = (
+        field(&m[0], "static"),
+        field(&m[0], "stack"),
+        field(&m[0], "total"),
+        field(&m[0], "flash"),
+    );
     println!(
         "memory: static {stat} B + stack high-water mark {stack} B = {total} B ({:+} B against the {RAM_TARGET} B target); flash {flash} B (budget {FLASH_BUDGET})",
         total as i64 - RAM_TARGET as i64
@@ -317,12 +381,19 @@ fn a_1024_shape_engine_fits_the_board() {
     // The engine's storage lives on the stack: the painted high-water mark must hold it.
     let storage = (CAPACITY * std::mem::size_of::<Placed<f64>>() + INDEX_WORDS * 4 + FRAME_BYTES) as u64;
     for f in &per_scene {
-        assert!(field(f, "stack") >= storage, "{}: stack below the {storage} B of storage: painting is broken", f[1]);
+        assert!(
+            field(f, "stack") >= storage,
+            "{}: stack below the {storage} B of storage: painting is broken",
+            f[1]
+        );
     }
     // The firmware's flash figure (from linker symbols) agrees with the ELF's loadable bytes.
     let elf = std::fs::read(&fw.elf).expect("ELF");
     let from_elf = elf_flash_bytes(&elf);
-    assert!(from_elf.abs_diff(flash) <= 64, "ELF loads {from_elf} B of flash, firmware says {flash} B");
+    assert!(
+        from_elf.abs_diff(flash) <= 64,
+        "ELF loads {from_elf} B of flash, firmware says {flash} B"
+    );
 }
 
 #[test]
@@ -332,13 +403,23 @@ fn cost_per_placement_is_reported_for_both_scalars() {
     assert_eq!(clock.len(), 1, "{}", fw.report);
     let (instr, ticks) = (field(&clock[0], "instructions"), field(&clock[0], "ticks"));
     assert!(ticks > 0, "SysTick did not count");
-    println!("clock: {instr} instructions in {ticks} ticks ({} per tick)", instr as f64 / ticks as f64);
+    println!(
+        "clock: {instr} instructions in {ticks} ticks ({} per tick)",
+        instr as f64 / ticks as f64
+    );
     let costs = lines(&fw.report, "cost");
     assert_eq!(costs.len(), SCENES.len());
     for name in ["circles", "circles-fixed"] {
-        let c = costs.iter().find(|f| f.get(1) == Some(&name)).unwrap_or_else(|| panic!("no cost line for {name}"));
+        let c = costs
+            .iter()
+            .find(|f| f.get(1) == Some(&name))
+            .unwrap_or_else(|| panic!("no cost line for {name}"));
         let host = &host_runs()[name].outcome;
-        assert_eq!((field(c, "placements"), field(c, "trials")), (host.count, host.trials), "{name}: trials differ from the host");
+        assert_eq!(
+            (field(c, "placements"), field(c, "trials")),
+            (host.count, host.trials),
+            "{name}: trials differ from the host"
+        );
         let i = field(c, "instructions");
         assert!(i > 0);
         println!(

@@ -46,7 +46,11 @@ fn gallery_pictures_are_what_the_tool_writes() {
         }
         let committed = std::fs::read(&out).unwrap_or_default();
         if let Some(at) = first_difference(&committed, &bytes) {
-            panic!("{} differs from what {} writes now (first difference at byte {at}); rerun with ZETAFILL_REGENERATE=1 if intended", out.display(), args_file.display());
+            panic!(
+                "{} differs from what {} writes now (first difference at byte {at}); rerun with ZETAFILL_REGENERATE=1 if intended",
+                out.display(),
+                args_file.display()
+            );
         }
     }
 }

@@ -45,7 +45,10 @@ impl Format {
             Some("gcode") | Some("nc") => Ok(Format::Gcode),
             _ => Err(CliError::arg(
                 "--output",
-                format!("cannot tell the format of '{}'; end it in .svg, .png, .json, .csv, .gcode or .nc, or give --format", path.display()),
+                format!(
+                    "cannot tell the format of '{}'; end it in .svg, .png, .json, .csv, .gcode or .nc, or give --format",
+                    path.display()
+                ),
             )),
         }
     }
@@ -54,7 +57,11 @@ impl Format {
 /// A number in mm with at most `places` decimals, no trailing zeros, never `-0`.
 pub fn num(v: f64, places: usize) -> String {
     let s = format!("{v:.places$}");
-    let s = if s.contains('.') { s.trim_end_matches('0').trim_end_matches('.').to_string() } else { s };
+    let s = if s.contains('.') {
+        s.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        s
+    };
     if s == "-0" {
         "0".into()
     } else {

@@ -114,13 +114,23 @@ fn plot_d(paths: &[crate::plot::Path], f: &Frame) -> String {
                     parts.push(format!("M{}{}", body.join(" L"), if *closed { " Z" } else { "" }));
                 }
             }
-            P2::Arc { center, radius, sweep, .. } if sweep.abs() >= std::f64::consts::TAU => parts.push(circle_d(f, center[0], center[1], *radius)),
+            P2::Arc { center, radius, sweep, .. } if sweep.abs() >= std::f64::consts::TAU => {
+                parts.push(circle_d(f, center[0], center[1], *radius))
+            }
             P2::Arc { radius, sweep, .. } => {
                 let (a, b) = (p.start_point(), p.end_point());
                 // y is flipped on the page: a counter-clockwise arc has sweep-flag 0.
                 let large = u8::from(sweep.abs() > std::f64::consts::PI);
                 let flag = u8::from(*sweep < 0.0);
-                parts.push(format!("M{},{} A{},{} 0 {large} {flag} {},{}", f.x(a[0]), f.y(a[1]), f.len(*radius), f.len(*radius), f.x(b[0]), f.y(b[1])));
+                parts.push(format!(
+                    "M{},{} A{},{} 0 {large} {flag} {},{}",
+                    f.x(a[0]),
+                    f.y(a[1]),
+                    f.len(*radius),
+                    f.len(*radius),
+                    f.x(b[0]),
+                    f.y(b[1])
+                ));
             }
         }
     }
@@ -131,15 +141,35 @@ fn plot_d(paths: &[crate::plot::Path], f: &Frame) -> String {
 /// `None` when the image lies inside the tile and is drawn as it is.
 fn clipped_node(sh: &ShapeDoc, dx: f64, dy: f64, w: f64, h: f64, f: &Frame) -> Option<Option<svg::node::element::Element>> {
     use crate::plot::{clip_path, Bounds, Path as P2};
-    let tile = Bounds { x0: 0.0, y0: 0.0, x1: w, y1: h };
+    let tile = Bounds {
+        x0: 0.0,
+        y0: 0.0,
+        x1: w,
+        y1: h,
+    };
     let b = crate::plot::shape_bounds(sh);
-    if (Bounds { x0: b.x0 + dx, y0: b.y0 + dy, x1: b.x1 + dx, y1: b.y1 + dy }).inside(&tile, 0.0) {
+    if (Bounds {
+        x0: b.x0 + dx,
+        y0: b.y0 + dy,
+        x1: b.x1 + dx,
+        y1: b.y1 + dy,
+    })
+    .inside(&tile, 0.0)
+    {
         return None;
     }
     let c = [sh.center[0] + dx, sh.center[1] + dy];
     let outlines: Vec<P2> = match (sh.radius, sh.inner_radius) {
         (Some(r), inner) => std::iter::once(r).chain(inner).map(|r| P2::circle(c, r)).collect(),
-        _ => vec![P2::polyline(sh.vertices.as_deref().unwrap_or(&[]).iter().map(|v| [v[0] + dx, v[1] + dy]).collect(), true)],
+        _ => vec![P2::polyline(
+            sh.vertices
+                .as_deref()
+                .unwrap_or(&[])
+                .iter()
+                .map(|v| [v[0] + dx, v[1] + dy])
+                .collect(),
+            true,
+        )],
     };
     let pieces: Vec<P2> = outlines.iter().flat_map(|p| clip_path(p, &tile)).collect();
     let d = plot_d(&pieces, f);
@@ -168,8 +198,16 @@ fn region_node(doc: &FillDoc, f: &Frame) -> Path {
     let d = match &doc.region {
         RegionDoc::Rect { width, height, .. } => ring_d(f, &[[0.0, 0.0], [*width, 0.0], [*width, *height], [0.0, *height]]),
         RegionDoc::Circle { center, radius } => circle_d(f, center[0], center[1], *radius),
-        RegionDoc::Annulus { center, radius_outer, radius_inner } => {
-            format!("{} {}", circle_d(f, center[0], center[1], *radius_outer), circle_d(f, center[0], center[1], *radius_inner))
+        RegionDoc::Annulus {
+            center,
+            radius_outer,
+            radius_inner,
+        } => {
+            format!(
+                "{} {}",
+                circle_d(f, center[0], center[1], *radius_outer),
+                circle_d(f, center[0], center[1], *radius_inner)
+            )
         }
         RegionDoc::Polygon { vertices, holes, outers } => {
             let all: Vec<String> = std::iter::once(vertices).chain(outers).chain(holes).map(|r| ring_d(f, r)).collect();
@@ -189,7 +227,10 @@ fn images(sh: &ShapeDoc, w: f64, h: f64) -> Vec<(f64, f64)> {
         let mut ks: Vec<i64> = (k0..=k1).collect();
         // The shape itself first, then its images nearest first.
         ks.sort_by_key(|k| (k.abs(), -k));
-        ks.into_iter().map(|k| k as f64 * p).filter(|&d| hi + d > 0.0 && lo + d < p).collect()
+        ks.into_iter()
+            .map(|k| k as f64 * p)
+            .filter(|&d| hi + d > 0.0 && lo + d < p)
+            .collect()
     };
     let (xs, ys) = (shifts(x0, x1, w), shifts(y0, y1, h));
     ys.iter().flat_map(|&dy| xs.iter().map(move |&dx| (dx, dy))).collect()
@@ -200,7 +241,9 @@ fn bounds(sh: &ShapeDoc) -> (f64, f64, f64, f64) {
         return (sh.center[0] - r, sh.center[1] - r, sh.center[0] + r, sh.center[1] + r);
     }
     let vs = sh.vertices.as_deref().unwrap_or(&[]);
-    vs.iter().fold((f64::MAX, f64::MAX, f64::MIN, f64::MIN), |b, v| (b.0.min(v[0]), b.1.min(v[1]), b.2.max(v[0]), b.3.max(v[1])))
+    vs.iter().fold((f64::MAX, f64::MAX, f64::MIN, f64::MIN), |b, v| {
+        (b.0.min(v[0]), b.1.min(v[1]), b.2.max(v[0]), b.3.max(v[1]))
+    })
 }
 
 /// The `zetafill fill` command line that reproduces the document.
@@ -209,9 +252,16 @@ pub fn command_line(doc: &FillDoc) -> String {
     let region = match &doc.region {
         RegionDoc::Rect { width, height, .. } => format!("rect:{width}:{height}"),
         RegionDoc::Circle { radius, .. } => format!("circle:{radius}"),
-        RegionDoc::Annulus { radius_outer, radius_inner, .. } => format!("annulus:{radius_outer}:{radius_inner}"),
+        RegionDoc::Annulus {
+            radius_outer,
+            radius_inner,
+            ..
+        } => format!("annulus:{radius_outer}:{radius_inner}"),
         RegionDoc::Polygon { vertices, holes, outers } if holes.is_empty() && outers.is_empty() => {
-            format!("polygon:{}", vertices.iter().map(|v| format!("{},{}", v[0], v[1])).collect::<Vec<_>>().join(","))
+            format!(
+                "polygon:{}",
+                vertices.iter().map(|v| format!("{},{}", v[0], v[1])).collect::<Vec<_>>().join(",")
+            )
         }
         RegionDoc::Polygon { .. } => "svg:(outline with holes; see the JSON output)".to_string(),
     };
@@ -243,14 +293,21 @@ pub fn command_line(doc: &FillDoc) -> String {
 /// equal width in log(area), and each band's (largest, smallest) shape width in mm.
 pub fn size_bands(doc: &FillDoc, k: u32) -> (Vec<usize>, Vec<Option<(f64, f64)>>) {
     let k = k.max(1) as usize;
-    let (amax, amin) = doc.shapes.iter().fold((0.0f64, f64::INFINITY), |(a, b), s| (a.max(s.area), b.min(s.area)));
+    let (amax, amin) = doc
+        .shapes
+        .iter()
+        .fold((0.0f64, f64::INFINITY), |(a, b), s| (a.max(s.area), b.min(s.area)));
     let span = if amin > 0.0 && amax > amin { (amax / amin).ln() } else { 0.0 };
     let mut widths: Vec<Option<(f64, f64)>> = vec![None; k];
     let bands = doc
         .shapes
         .iter()
         .map(|s| {
-            let b = if span > 0.0 && s.area > 0.0 { ((k as f64 * (amax / s.area).ln() / span).floor() as usize).min(k - 1) } else { 0 };
+            let b = if span > 0.0 && s.area > 0.0 {
+                ((k as f64 * (amax / s.area).ln() / span).floor() as usize).min(k - 1)
+            } else {
+                0
+            };
             let w = crate::plot::shape_width(s);
             widths[b] = Some(match widths[b] {
                 Some((hi, lo)) => (hi.max(w), lo.min(w)),
@@ -267,15 +324,38 @@ pub fn render(doc: &FillDoc, opt: &SvgOptions) -> Vec<u8> {
     let (w, h) = doc.extent();
     let (x0, _, _, y1) = doc.bbox();
     let (frame, page_w, page_h) = match opt.page {
-        None => (Frame { x0, y1, s: 1.0, ox: 0.0, oy: 0.0 }, w, h),
+        None => (
+            Frame {
+                x0,
+                y1,
+                s: 1.0,
+                ox: 0.0,
+                oy: 0.0,
+            },
+            w,
+            h,
+        ),
         Some(pg) => {
             let ox = pg.scale * x0 + pg.dx;
             let oy = pg.height - pg.scale * y1 - pg.dy;
-            (Frame { x0, y1, s: pg.scale, ox, oy }, pg.width, pg.height)
+            (
+                Frame {
+                    x0,
+                    y1,
+                    s: pg.scale,
+                    ox,
+                    oy,
+                },
+                pg.width,
+                pg.height,
+            )
         }
     };
     let style = |g: Group| match opt.style {
-        Style::Outline => g.set("fill", "none").set("stroke", "black").set("stroke-width", num(opt.pen_width, P)),
+        Style::Outline => g
+            .set("fill", "none")
+            .set("stroke", "black")
+            .set("stroke-width", num(opt.pen_width, P)),
         Style::Filled => g.set("fill", "black").set("stroke", "none"),
     };
     // One group, or one Inkscape layer per size band (largest shapes first).
@@ -293,7 +373,12 @@ pub fn render(doc: &FillDoc, opt: &SvgOptions) -> Vec<u8> {
                     Some((hi, lo)) => format!("{} widths {}-{} mm", i + 1, num(*hi, 3), num(*lo, 3)),
                     None => format!("{} (empty)", i + 1),
                 };
-                style(Group::new().set("id", format!("layer{}", i + 1)).set("inkscape:groupmode", "layer").set("inkscape:label", label))
+                style(
+                    Group::new()
+                        .set("id", format!("layer{}", i + 1))
+                        .set("inkscape:groupmode", "layer")
+                        .set("inkscape:label", label),
+                )
             })
             .collect(),
     };
@@ -335,7 +420,9 @@ pub fn render(doc: &FillDoc, opt: &SvgOptions) -> Vec<u8> {
         if opt.page.is_some() {
             rect = rect.set("x", frame.x(x0)).set("y", frame.y(y1));
         }
-        let clip = ClipPath::new().set("id", "region").add(rect.set("width", frame.len(w)).set("height", frame.len(h)));
+        let clip = ClipPath::new()
+            .set("id", "region")
+            .add(rect.set("width", frame.len(w)).set("height", frame.len(h)));
         d = d.add(Definitions::new().add(clip));
         groups = groups.into_iter().map(|g| g.set("clip-path", "url(#region)")).collect();
     }
@@ -343,7 +430,10 @@ pub fn render(doc: &FillDoc, opt: &SvgOptions) -> Vec<u8> {
         d = d.add(g);
     }
     if opt.boundary {
-        let b = region_node(doc, &frame).set("fill", "none").set("stroke", "black").set("stroke-width", num(opt.pen_width, P));
+        let b = region_node(doc, &frame)
+            .set("fill", "none")
+            .set("stroke", "black")
+            .set("stroke-width", num(opt.pen_width, P));
         d = d.add(b);
     }
     let mut s = d.to_string();

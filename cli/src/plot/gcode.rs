@@ -146,13 +146,19 @@ impl Writer<'_> {
 
     fn block(&mut self, text: &str) {
         let power = self.o.power.map(|p| int(p, 0)).unwrap_or_else(|| "0".into());
-        let (feed, travel) = (int(self.o.feed * self.m.units.per_mm(), 1), int(self.o.travel_feed * self.m.units.per_mm(), 1));
+        let (feed, travel) = (
+            int(self.o.feed * self.m.units.per_mm(), 1),
+            int(self.o.travel_feed * self.m.units.per_mm(), 1),
+        );
         for l in text.lines() {
             let l = l.trim();
             if l.is_empty() {
                 continue;
             }
-            let l = l.replace("{power}", &power).replace("{feed}", &feed).replace("{travel_feed}", &travel);
+            let l = l
+                .replace("{power}", &power)
+                .replace("{feed}", &feed)
+                .replace("{travel_feed}", &travel);
             self.line(&l);
         }
         // A block may change the feed: state it again on the next cutting move.
@@ -288,7 +294,11 @@ impl Writer<'_> {
                 (a_s, TAU)
             } else {
                 let a_e = ((qe[1] - qc[1]) as f64).atan2((qe[0] - qc[0]) as f64);
-                let span = if ccw { (a_e - a_s).rem_euclid(TAU) } else { (a_s - a_e).rem_euclid(TAU) };
+                let span = if ccw {
+                    (a_e - a_s).rem_euclid(TAU)
+                } else {
+                    (a_s - a_e).rem_euclid(TAU)
+                };
                 (if ccw { a_s } else { a_e }, span)
             };
             // The rounded arc must still be the intended one (no end point on the start, which
@@ -322,7 +332,12 @@ impl Writer<'_> {
     fn path(&mut self, p: &Path) {
         match p {
             Path::Polyline { points, closed } => self.polyline(points, *closed),
-            Path::Arc { center, radius, start, sweep } => self.arc(*center, *radius, *start, *sweep),
+            Path::Arc {
+                center,
+                radius,
+                start,
+                sweep,
+            } => self.arc(*center, *radius, *start, *sweep),
         }
     }
 }
@@ -353,7 +368,10 @@ fn check_options(m: &Machine, o: &GcodeOptions) -> Result<(), String> {
 
 fn comment(out: &mut String, s: &str) {
     for l in s.lines() {
-        let clean: String = l.chars().map(|c| if c.is_ascii() && !c.is_ascii_control() { c } else { '?' }).collect();
+        let clean: String = l
+            .chars()
+            .map(|c| if c.is_ascii() && !c.is_ascii_control() { c } else { '?' })
+            .collect();
         let _ = writeln!(out, "; {clean}");
     }
 }
@@ -391,7 +409,13 @@ pub fn write(d: &Drawing, m: &Machine, o: &GcodeOptions) -> Result<GcodeOutput, 
         pos: None,
         tool_on: false,
         feed_stated: false,
-        fig: Figures { paths: 0, tool_ons: 0, pen_down_mm: 0.0, travel_mm: 0.0, seconds: 0.0 },
+        fig: Figures {
+            paths: 0,
+            tool_ons: 0,
+            pen_down_mm: 0.0,
+            travel_mm: 0.0,
+            seconds: 0.0,
+        },
     };
     w.line("G90");
     w.line(if m.units == Units::Mm { "G21" } else { "G20" });
@@ -408,7 +432,10 @@ pub fn write(d: &Drawing, m: &Machine, o: &GcodeOptions) -> Result<GcodeOutput, 
     }
     w.tool(false);
     if let Some(park) = m.park {
-        let q = [((park[0] * k).round() as i64).clamp(lo[0], hi[0]), ((park[1] * k).round() as i64).clamp(lo[1], hi[1])];
+        let q = [
+            ((park[0] * k).round() as i64).clamp(lo[0], hi[0]),
+            ((park[1] * k).round() as i64).clamp(lo[1], hi[1]),
+        ];
         if w.pos != Some(q) {
             let from = w.pos.unwrap_or([0, 0]);
             w.fig.travel_mm += w.grid_mm(from, q);
@@ -451,13 +478,21 @@ pub fn write(d: &Drawing, m: &Machine, o: &GcodeOptions) -> Result<GcodeOutput, 
     );
     comment(&mut head, &format!("figures: {fig}"));
     head.push_str(&body);
-    Ok(GcodeOutput { bytes: head.into_bytes(), figures: fig })
+    Ok(GcodeOutput {
+        bytes: head.into_bytes(),
+        figures: fig,
+    })
 }
 
 fn path_finite(p: &Path) -> bool {
     match p {
         Path::Polyline { points, .. } => points.iter().all(|q| q[0].is_finite() && q[1].is_finite()),
-        Path::Arc { center, radius, start, sweep } => {
+        Path::Arc {
+            center,
+            radius,
+            start,
+            sweep,
+        } => {
             center[0].is_finite() && center[1].is_finite() && radius.is_finite() && *radius > 0.0 && start.is_finite() && sweep.is_finite()
         }
     }
@@ -467,7 +502,12 @@ fn path_finite(p: &Path) -> bool {
 pub fn grid_bounds(m: &Machine) -> Bounds {
     let f = m.units.per_mm();
     let b = m.machine_bounds_mm();
-    Bounds { x0: b.x0 * f, y0: b.y0 * f, x1: b.x1 * f, y1: b.y1 * f }
+    Bounds {
+        x0: b.x0 * f,
+        y0: b.y0 * f,
+        x1: b.x1 * f,
+        y1: b.y1 * f,
+    }
 }
 
 #[cfg(test)]
@@ -490,7 +530,9 @@ mod tests {
     fn a_circle_on_the_bed_edge_falls_back_to_chords_inside() {
         let m = Machine::builtin("grbl-servo-pen").unwrap_or_else(|| panic!("built-in"));
         // Touching x = 0 exactly: the rounded circle could poke out; it must not.
-        let d = Drawing { paths: vec![Path::circle([1.0004, 50.0], 1.0004)] };
+        let d = Drawing {
+            paths: vec![Path::circle([1.0004, 50.0], 1.0004)],
+        };
         let o = GcodeOptions::new(&m);
         let out = write(&d, &m, &o).unwrap_or_else(|e| panic!("{e}"));
         let text = String::from_utf8_lossy(&out.bytes);
@@ -500,7 +542,9 @@ mod tests {
     #[test]
     fn refuses_what_is_off_the_bed() {
         let m = Machine::builtin("grbl-laser").unwrap_or_else(|| panic!("built-in"));
-        let d = Drawing { paths: vec![Path::circle([399.0, 50.0], 2.0)] };
+        let d = Drawing {
+            paths: vec![Path::circle([399.0, 50.0], 2.0)],
+        };
         assert!(write(&d, &m, &GcodeOptions::new(&m)).is_err());
     }
 }

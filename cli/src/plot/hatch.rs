@@ -24,7 +24,10 @@ impl Hatch {
             Some((a, b)) => (a, Some(b)),
             None => (s, None),
         };
-        let spacing = sp.trim().parse::<f64>().map_err(|_| format!("'{sp}' is not a number of mm (SPACING[:ANGLE])"))?;
+        let spacing = sp
+            .trim()
+            .parse::<f64>()
+            .map_err(|_| format!("'{sp}' is not a number of mm (SPACING[:ANGLE])"))?;
         if !(spacing.is_finite() && spacing > 0.0) {
             return Err(format!("spacing {spacing} mm must be positive"));
         }
@@ -32,7 +35,12 @@ impl Hatch {
             return Err(format!("spacing {spacing} mm is below 0.001 mm"));
         }
         let angle = match an {
-            Some(a) => a.trim().parse::<f64>().ok().filter(|v| v.is_finite()).ok_or_else(|| format!("'{a}' is not an angle in degrees"))?,
+            Some(a) => a
+                .trim()
+                .parse::<f64>()
+                .ok()
+                .filter(|v| v.is_finite())
+                .ok_or_else(|| format!("'{a}' is not an angle in degrees"))?,
             None => 45.0,
         };
         Ok(Hatch { spacing, angle })
@@ -61,7 +69,13 @@ impl Hatch {
                 self.annulus(c, r, hole)
             }
             _ => {
-                let vs: Vec<Pt> = sh.vertices.as_deref().unwrap_or(&[]).iter().map(|v| [v[0] + off.0, v[1] + off.1]).collect();
+                let vs: Vec<Pt> = sh
+                    .vertices
+                    .as_deref()
+                    .unwrap_or(&[])
+                    .iter()
+                    .map(|v| [v[0] + off.0, v[1] + off.1])
+                    .collect();
                 self.polygon(&vs)
             }
         }
@@ -101,7 +115,9 @@ impl Hatch {
         }
         let (u, n) = self.frame();
         let proj_n: Vec<f64> = vs.iter().map(|p| p[0] * n[0] + p[1] * n[1]).collect();
-        let (lo, hi) = proj_n.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &v| (a.min(v), b.max(v)));
+        let (lo, hi) = proj_n
+            .iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &v| (a.min(v), b.max(v)));
         let mut out = Vec::new();
         let mut xs: Vec<(f64, Pt)> = Vec::new();
         for k in self.lines(lo, hi) {
@@ -148,7 +164,10 @@ mod tests {
 
     #[test]
     fn disc_hatch_endpoints_lie_on_the_circle() {
-        let h = Hatch { spacing: 0.25, angle: 30.0 };
+        let h = Hatch {
+            spacing: 0.25,
+            angle: 30.0,
+        };
         let (c, r) = ([3.0, 4.0], 2.0);
         let segs = h.annulus(c, r, 0.0);
         assert_eq!(segs.len(), 16, "lines at k s within 4 mm of width");

@@ -143,7 +143,10 @@ const PLACEHOLDERS: &[&str] = &["{power}", "{feed}", "{travel_feed}"];
 impl Machine {
     /// A built-in profile by name.
     pub fn builtin(name: &str) -> Option<Machine> {
-        BUILTINS.iter().find(|(n, _)| *n == name).and_then(|(_, text)| Machine::parse(text).ok())
+        BUILTINS
+            .iter()
+            .find(|(n, _)| *n == name)
+            .and_then(|(_, text)| Machine::parse(text).ok())
     }
 
     /// The TOML text of a built-in.
@@ -171,7 +174,10 @@ impl Machine {
         let path = std::path::Path::new(spec);
         let looks_like_file = spec.ends_with(".toml") || spec.contains('/') || spec.contains('\\');
         if !looks_like_file {
-            return Err(format!("unknown machine '{spec}'; built-ins are {}, or give a profile FILE.toml (see `zetafill machines`)", Machine::builtin_names().join(", ")));
+            return Err(format!(
+                "unknown machine '{spec}'; built-ins are {}, or give a profile FILE.toml (see `zetafill machines`)",
+                Machine::builtin_names().join(", ")
+            ));
         }
         let text = std::fs::read_to_string(path).map_err(|e| format!("cannot read '{spec}': {e}"))?;
         Machine::parse(&text).map_err(|e| format!("'{spec}': {e}"))
@@ -198,16 +204,27 @@ impl Machine {
                 return Err(format!("power: min {} and max {} must be finite with 0 <= min < max", p.min, p.max));
             }
             if !(p.default >= p.min && p.default <= p.max) {
-                return Err(format!("power.default = {}: must be within min {} and max {}", p.default, p.min, p.max));
+                return Err(format!(
+                    "power.default = {}: must be within min {} and max {}",
+                    p.default, p.min, p.max
+                ));
             }
         }
         if let Some(park) = self.park {
             let b = self.machine_bounds_mm();
             if !(park[0] >= b.x0 && park[0] <= b.x1 && park[1] >= b.y0 && park[1] <= b.y1) {
-                return Err(format!("park = [{}, {}]: must be inside the bed (machine x {}..{}, y {}..{})", park[0], park[1], b.x0, b.x1, b.y0, b.y1));
+                return Err(format!(
+                    "park = [{}, {}]: must be inside the bed (machine x {}..{}, y {}..{})",
+                    park[0], park[1], b.x0, b.x1, b.y0, b.y1
+                ));
             }
         }
-        for (field, text) in [("start", &self.start), ("tool_on", &self.tool_on), ("tool_off", &self.tool_off), ("end", &self.end)] {
+        for (field, text) in [
+            ("start", &self.start),
+            ("tool_on", &self.tool_on),
+            ("tool_off", &self.tool_off),
+            ("end", &self.end),
+        ] {
             check_block(field, text, self.power.is_some())?;
         }
         if self.tool_on.trim().is_empty() || self.tool_off.trim().is_empty() {
@@ -218,15 +235,30 @@ impl Machine {
 
     /// The area a drawing may use in the bed frame: the bed less `margin` on every side.
     pub fn usable_area(&self, margin: f64) -> Bounds {
-        Bounds { x0: margin, y0: margin, x1: self.bed.width - margin, y1: self.bed.height - margin }
+        Bounds {
+            x0: margin,
+            y0: margin,
+            x1: self.bed.width - margin,
+            y1: self.bed.height - margin,
+        }
     }
 
     /// The bed in machine coordinates (mm).
     pub fn machine_bounds_mm(&self) -> Bounds {
         let (w, h) = (self.bed.width, self.bed.height);
         match self.origin {
-            Origin::BottomLeft | Origin::TopLeft => Bounds { x0: 0.0, y0: 0.0, x1: w, y1: h },
-            Origin::Center => Bounds { x0: -w / 2.0, y0: -h / 2.0, x1: w / 2.0, y1: h / 2.0 },
+            Origin::BottomLeft | Origin::TopLeft => Bounds {
+                x0: 0.0,
+                y0: 0.0,
+                x1: w,
+                y1: h,
+            },
+            Origin::Center => Bounds {
+                x0: -w / 2.0,
+                y0: -h / 2.0,
+                x1: w / 2.0,
+                y1: h / 2.0,
+            },
         }
     }
 
@@ -256,7 +288,12 @@ impl Machine {
             .lines()
             .map(strip_comment)
             .filter(|l| words(l).iter().any(|(c, v)| *c == 'G' && v == "4"))
-            .filter_map(|l| words(l).into_iter().find(|(c, _)| *c == 'P').and_then(|(_, v)| v.parse::<f64>().ok()))
+            .filter_map(|l| {
+                words(l)
+                    .into_iter()
+                    .find(|(c, _)| *c == 'P')
+                    .and_then(|(_, v)| v.parse::<f64>().ok())
+            })
             .sum()
     }
 }
@@ -274,7 +311,15 @@ fn words(line: &str) -> Vec<(char, String)> {
         if c.is_ascii_alphabetic() {
             let mut v = String::new();
             while let Some(&d) = chars.peek() {
-                if d.is_ascii_digit() || d == '.' || d == '-' || d == '+' || d == '{' || d == '}' || d == '_' || d.is_ascii_lowercase() && v.starts_with('{') {
+                if d.is_ascii_digit()
+                    || d == '.'
+                    || d == '-'
+                    || d == '+'
+                    || d == '{'
+                    || d == '}'
+                    || d == '_'
+                    || d.is_ascii_lowercase() && v.starts_with('{')
+                {
                     v.push(d);
                     chars.next();
                 } else {
@@ -299,10 +344,19 @@ fn check_block(field: &str, text: &str, has_power: bool) -> Result<(), String> {
         }
         let b = rest.as_bytes();
         if b.windows(2).any(|w| w[0].is_ascii_digit() && (w[1] == b'e' || w[1] == b'E')) {
-            return Err(format!("{field}, line {}: '{}': numbers must be plain decimals, not exponent notation", n + 1, raw.trim()));
+            return Err(format!(
+                "{field}, line {}: '{}': numbers must be plain decimals, not exponent notation",
+                n + 1,
+                raw.trim()
+            ));
         }
         if rest.contains('{') || rest.contains('}') {
-            return Err(format!("{field}, line {}: '{}': the only placeholders are {}", n + 1, raw.trim(), PLACEHOLDERS.join(", ")));
+            return Err(format!(
+                "{field}, line {}: '{}': the only placeholders are {}",
+                n + 1,
+                raw.trim(),
+                PLACEHOLDERS.join(", ")
+            ));
         }
         for (c, v) in words(&rest) {
             if matches!(c, 'X' | 'Y' | 'I' | 'J' | 'R') {
@@ -312,9 +366,15 @@ fn check_block(field: &str, text: &str, has_power: bool) -> Result<(), String> {
                     raw.trim()
                 ));
             }
-            let plain = !v.is_empty() && v.trim_start_matches(['-', '+']).chars().all(|d| d.is_ascii_digit() || d == '.') && v.matches('.').count() <= 1;
+            let plain = !v.is_empty()
+                && v.trim_start_matches(['-', '+']).chars().all(|d| d.is_ascii_digit() || d == '.')
+                && v.matches('.').count() <= 1;
             if !plain {
-                return Err(format!("{field}, line {}: '{}': '{c}{v}' is not a plain decimal number", n + 1, raw.trim()));
+                return Err(format!(
+                    "{field}, line {}: '{}': '{c}{v}' is not a plain decimal number",
+                    n + 1,
+                    raw.trim()
+                ));
             }
         }
     }
@@ -328,7 +388,12 @@ mod tests {
     #[test]
     fn builtins_parse_and_validate() {
         for name in Machine::builtin_names() {
-            let m = Machine::builtin(name).unwrap_or_else(|| panic!("{name} does not parse: {:?}", Machine::parse(Machine::builtin_text(name).unwrap_or(""))));
+            let m = Machine::builtin(name).unwrap_or_else(|| {
+                panic!(
+                    "{name} does not parse: {:?}",
+                    Machine::parse(Machine::builtin_text(name).unwrap_or(""))
+                )
+            });
             assert_eq!(m.name, name);
         }
         let laser = Machine::builtin("grbl-laser").map(|m| m.power.is_some());

@@ -93,7 +93,12 @@ pub struct Bounds {
 
 impl Bounds {
     /// The empty box (adding any point makes it that point).
-    pub const EMPTY: Bounds = Bounds { x0: f64::INFINITY, y0: f64::INFINITY, x1: f64::NEG_INFINITY, y1: f64::NEG_INFINITY };
+    pub const EMPTY: Bounds = Bounds {
+        x0: f64::INFINITY,
+        y0: f64::INFINITY,
+        x1: f64::NEG_INFINITY,
+        y1: f64::NEG_INFINITY,
+    };
 
     /// Grows the box to hold `p`.
     pub fn add(&mut self, p: Pt) {
@@ -120,7 +125,8 @@ impl Bounds {
 
     /// Whether this box lies inside `outer`, allowing `eps` mm of rounding.
     pub fn inside(&self, outer: &Bounds, eps: f64) -> bool {
-        self.is_empty() || (self.x0 >= outer.x0 - eps && self.y0 >= outer.y0 - eps && self.x1 <= outer.x1 + eps && self.y1 <= outer.y1 + eps)
+        self.is_empty()
+            || (self.x0 >= outer.x0 - eps && self.y0 >= outer.y0 - eps && self.x1 <= outer.x1 + eps && self.y1 <= outer.y1 + eps)
     }
 }
 
@@ -136,7 +142,12 @@ impl Path {
 
     /// A full circle drawn counter-clockwise from angle 0.
     pub fn circle(center: Pt, radius: f64) -> Path {
-        Path::Arc { center, radius, start: 0.0, sweep: TAU }
+        Path::Arc {
+            center,
+            radius,
+            start: 0.0,
+            sweep: TAU,
+        }
     }
 
     /// Whether the path ends where it starts (and may start anywhere on it).
@@ -165,7 +176,12 @@ impl Path {
                     points.last().copied().unwrap_or([0.0, 0.0])
                 }
             }
-            Path::Arc { center, radius, start, sweep } => {
+            Path::Arc {
+                center,
+                radius,
+                start,
+                sweep,
+            } => {
                 if sweep.abs() >= TAU {
                     polar(*center, *radius, *start)
                 } else {
@@ -194,7 +210,12 @@ impl Path {
         let mut b = Bounds::EMPTY;
         match self {
             Path::Polyline { points, .. } => points.iter().for_each(|p| b.add(*p)),
-            Path::Arc { center, radius, start, sweep } => {
+            Path::Arc {
+                center,
+                radius,
+                start,
+                sweep,
+            } => {
                 b.add(self.start_point());
                 b.add(self.end_point());
                 for a in arc_extremes(*start, *sweep) {
@@ -216,13 +237,31 @@ impl Path {
                 } else {
                     p.reverse();
                 }
-                Path::Polyline { points: p, closed: *closed }
+                Path::Polyline {
+                    points: p,
+                    closed: *closed,
+                }
             }
-            Path::Arc { center, radius, start, sweep } => {
+            Path::Arc {
+                center,
+                radius,
+                start,
+                sweep,
+            } => {
                 if sweep.abs() >= TAU {
-                    Path::Arc { center: *center, radius: *radius, start: *start, sweep: -sweep }
+                    Path::Arc {
+                        center: *center,
+                        radius: *radius,
+                        start: *start,
+                        sweep: -sweep,
+                    }
                 } else {
-                    Path::Arc { center: *center, radius: *radius, start: start + sweep, sweep: -sweep }
+                    Path::Arc {
+                        center: *center,
+                        radius: *radius,
+                        start: start + sweep,
+                        sweep: -sweep,
+                    }
                 }
             }
         }
@@ -233,10 +272,23 @@ impl Path {
     pub fn transformed(&self, s: f64, sy: f64, dx: f64, dy: f64) -> Path {
         let f = |p: &Pt| [s * p[0] + dx, sy * p[1] + dy];
         match self {
-            Path::Polyline { points, closed } => Path::Polyline { points: points.iter().map(f).collect(), closed: *closed },
-            Path::Arc { center, radius, start, sweep } => {
+            Path::Polyline { points, closed } => Path::Polyline {
+                points: points.iter().map(f).collect(),
+                closed: *closed,
+            },
+            Path::Arc {
+                center,
+                radius,
+                start,
+                sweep,
+            } => {
                 let (start, sweep) = if sy < 0.0 { (-start, -sweep) } else { (*start, *sweep) };
-                Path::Arc { center: f(center), radius: radius * s, start, sweep }
+                Path::Arc {
+                    center: f(center),
+                    radius: radius * s,
+                    start,
+                    sweep,
+                }
             }
         }
     }
@@ -252,7 +304,11 @@ pub fn arc_extremes(start: f64, sweep: f64) -> Vec<f64> {
     if sweep.abs() >= TAU {
         return vec![0.0, FRAC_PI_2, PI, 3.0 * FRAC_PI_2];
     }
-    let (lo, hi) = if sweep >= 0.0 { (start, start + sweep) } else { (start + sweep, start) };
+    let (lo, hi) = if sweep >= 0.0 {
+        (start, start + sweep)
+    } else {
+        (start + sweep, start)
+    };
     let k0 = (lo / FRAC_PI_2).ceil() as i64;
     let k1 = (hi / FRAC_PI_2).floor() as i64;
     (k0..=k1).map(|k| k as f64 * FRAC_PI_2).collect()
@@ -297,7 +353,9 @@ impl Drawing {
 
     /// The drawing under `p -> placement.apply(p)`.
     pub fn placed(&self, pl: &Placement) -> Drawing {
-        Drawing { paths: self.paths.iter().map(|p| p.transformed(pl.scale, pl.scale, pl.dx, pl.dy)).collect() }
+        Drawing {
+            paths: self.paths.iter().map(|p| p.transformed(pl.scale, pl.scale, pl.dx, pl.dy)).collect(),
+        }
     }
 }
 
@@ -314,7 +372,11 @@ pub struct Placement {
 
 impl Placement {
     /// No change.
-    pub const IDENTITY: Placement = Placement { scale: 1.0, dx: 0.0, dy: 0.0 };
+    pub const IDENTITY: Placement = Placement {
+        scale: 1.0,
+        dx: 0.0,
+        dy: 0.0,
+    };
 
     /// Applies the placement to a point.
     pub fn apply(&self, p: Pt) -> Pt {
@@ -342,11 +404,23 @@ pub fn place(b: &Bounds, area: &Bounds, fit: Fit) -> Result<Placement, String> {
     }
     let pl = match fit {
         Fit::AsIs => Placement::IDENTITY,
-        Fit::TopLeft => Placement { scale: 1.0, dx: area.x0 - b.x0, dy: area.y1 - b.y1 },
-        Fit::Center => Placement { scale: 1.0, dx: (area.x0 + area.x1 - b.x0 - b.x1) / 2.0, dy: (area.y0 + area.y1 - b.y0 - b.y1) / 2.0 },
+        Fit::TopLeft => Placement {
+            scale: 1.0,
+            dx: area.x0 - b.x0,
+            dy: area.y1 - b.y1,
+        },
+        Fit::Center => Placement {
+            scale: 1.0,
+            dx: (area.x0 + area.x1 - b.x0 - b.x1) / 2.0,
+            dy: (area.y0 + area.y1 - b.y0 - b.y1) / 2.0,
+        },
         Fit::Scale => {
             let sx = if b.width() > 0.0 { area.width() / b.width() } else { f64::INFINITY };
-            let sy = if b.height() > 0.0 { area.height() / b.height() } else { f64::INFINITY };
+            let sy = if b.height() > 0.0 {
+                area.height() / b.height()
+            } else {
+                f64::INFINITY
+            };
             let s = sx.min(sy);
             if !(s.is_finite() && s > 0.0) {
                 return Err("the drawing has no extent to scale".into());
@@ -358,7 +432,12 @@ pub fn place(b: &Bounds, area: &Bounds, fit: Fit) -> Result<Placement, String> {
             }
         }
     };
-    let placed = Bounds { x0: pl.apply([b.x0, b.y0])[0], y0: pl.apply([b.x0, b.y0])[1], x1: pl.apply([b.x1, b.y1])[0], y1: pl.apply([b.x1, b.y1])[1] };
+    let placed = Bounds {
+        x0: pl.apply([b.x0, b.y0])[0],
+        y0: pl.apply([b.x0, b.y0])[1],
+        x1: pl.apply([b.x1, b.y1])[0],
+        y1: pl.apply([b.x1, b.y1])[1],
+    };
     if !placed.inside(area, 1e-6) {
         return Err(format!(
             "the drawing ({:.3} x {:.3} mm at {:.3}, {:.3}) does not fit the usable area ({:.3} x {:.3} mm at {:.3}, {:.3})",
@@ -433,7 +512,10 @@ pub fn periodic_images(b: &Bounds, w: f64, h: f64) -> Vec<(f64, f64)> {
         let k1 = ((p - lo) / p).ceil() as i64;
         let mut ks: Vec<i64> = (k0..=k1).collect();
         ks.sort_by_key(|k| (k.abs(), -k));
-        ks.into_iter().map(|k| k as f64 * p).filter(|&d| hi + d > 0.0 && lo + d < p).collect()
+        ks.into_iter()
+            .map(|k| k as f64 * p)
+            .filter(|&d| hi + d > 0.0 && lo + d < p)
+            .collect()
     };
     let (xs, ys) = (shifts(b.x0, b.x1, w), shifts(b.y0, b.y1, h));
     ys.iter().flat_map(|&dy| xs.iter().map(move |&dx| (dx, dy))).collect()
@@ -480,7 +562,16 @@ pub fn shape_bounds(sh: &ShapeDoc) -> Bounds {
 /// than `min_feature` left out; periodic fills clipped exactly to the tile.
 pub fn from_fill(doc: &FillDoc, opt: &BuildOptions) -> Drawing {
     let tile = match doc.region {
-        RegionDoc::Rect { width, height, periodic: true } => Some(Bounds { x0: 0.0, y0: 0.0, x1: width, y1: height }),
+        RegionDoc::Rect {
+            width,
+            height,
+            periodic: true,
+        } => Some(Bounds {
+            x0: 0.0,
+            y0: 0.0,
+            x1: width,
+            y1: height,
+        }),
         _ => None,
     };
     let mut paths = Vec::new();
@@ -499,11 +590,21 @@ pub fn from_fill(doc: &FillDoc, opt: &BuildOptions) -> Drawing {
                 here.extend(shape_outlines(sh, off, opt.min_feature));
             }
             if let Some(h) = &opt.hatch {
-                here.extend(h.shape(sh, off, opt.min_feature).into_iter().map(|[a, b]| Path::polyline(vec![a, b], false)));
+                here.extend(
+                    h.shape(sh, off, opt.min_feature)
+                        .into_iter()
+                        .map(|[a, b]| Path::polyline(vec![a, b], false)),
+                );
             }
             match &tile {
                 Some(t) => {
-                    let inside = Bounds { x0: sb.x0 + off.0, y0: sb.y0 + off.1, x1: sb.x1 + off.0, y1: sb.y1 + off.1 }.inside(t, 0.0);
+                    let inside = Bounds {
+                        x0: sb.x0 + off.0,
+                        y0: sb.y0 + off.1,
+                        x1: sb.x1 + off.0,
+                        y1: sb.y1 + off.1,
+                    }
+                    .inside(t, 0.0);
                     if inside {
                         paths.extend(here);
                     } else {
@@ -558,7 +659,12 @@ pub fn clip_path(p: &Path, r: &Bounds) -> Vec<Path> {
     }
     match p {
         Path::Polyline { points, closed } => clip_polyline(points, *closed, r),
-        Path::Arc { center, radius, start, sweep } => clip_arc(*center, *radius, *start, *sweep, r),
+        Path::Arc {
+            center,
+            radius,
+            start,
+            sweep,
+        } => clip_arc(*center, *radius, *start, *sweep, r),
     }
 }
 
@@ -569,7 +675,11 @@ fn clip_polyline(points: &[Pt], closed: bool, r: &Bounds) -> Vec<Path> {
     }
     let inside = |p: &Pt| p[0] >= r.x0 && p[0] <= r.x1 && p[1] >= r.y0 && p[1] <= r.y1;
     // A closed polyline is walked from a vertex outside, so no piece is split at the seam.
-    let (first, edges) = if closed { (points.iter().position(|p| !inside(p)).unwrap_or(0), n) } else { (0, n - 1) };
+    let (first, edges) = if closed {
+        (points.iter().position(|p| !inside(p)).unwrap_or(0), n)
+    } else {
+        (0, n - 1)
+    };
     let mut out = Vec::new();
     let mut cur: Vec<Pt> = Vec::new();
     for k in 0..edges {
@@ -615,7 +725,11 @@ fn norm_angle(a: f64) -> f64 {
 fn clip_arc(c: Pt, rad: f64, start: f64, sweep: f64, r: &Bounds) -> Vec<Path> {
     // Work counter-clockwise; a clockwise arc is clipped reversed and turned back.
     if sweep < 0.0 && sweep.abs() < TAU {
-        return clip_arc(c, rad, start + sweep, -sweep, r).into_iter().rev().map(|p| p.reversed()).collect();
+        return clip_arc(c, rad, start + sweep, -sweep, r)
+            .into_iter()
+            .rev()
+            .map(|p| p.reversed())
+            .collect();
     }
     let full = sweep >= TAU;
     let (s0, span) = if full { (0.0, TAU) } else { (norm_angle(start), sweep) };
@@ -668,7 +782,15 @@ fn clip_arc(c: Pt, rad: f64, start: f64, sweep: f64, r: &Bounds) -> Vec<Path> {
     if full && pieces.len() == 1 && pieces[0].1 - pieces[0].0 >= TAU {
         return vec![Path::circle(c, rad)];
     }
-    pieces.into_iter().map(|(a, b)| Path::Arc { center: c, radius: rad, start: s0 + a, sweep: b - a }).collect()
+    pieces
+        .into_iter()
+        .map(|(a, b)| Path::Arc {
+            center: c,
+            radius: rad,
+            start: s0 + a,
+            sweep: b - a,
+        })
+        .collect()
 }
 
 // -------------------------------------------------------------------------------------------
@@ -707,15 +829,30 @@ pub fn parse_page(s: &str) -> Result<Page, String> {
         "a5" => (148.0, 210.0),
         "letter" => (215.9, 279.4),
         other => {
-            let (a, b) = other.split_once('x').ok_or_else(|| format!("'{s}' is not a4, a3, a5, letter or WxH in mm (for example 300x200)"))?;
-            let num = |t: &str| t.trim_end_matches("mm").parse::<f64>().ok().filter(|v| v.is_finite() && *v > 0.0 && *v <= 100_000.0);
+            let (a, b) = other
+                .split_once('x')
+                .ok_or_else(|| format!("'{s}' is not a4, a3, a5, letter or WxH in mm (for example 300x200)"))?;
+            let num = |t: &str| {
+                t.trim_end_matches("mm")
+                    .parse::<f64>()
+                    .ok()
+                    .filter(|v| v.is_finite() && *v > 0.0 && *v <= 100_000.0)
+            };
             match (num(a), num(b)) {
                 (Some(w), Some(h)) => (w, h),
-                _ => return Err(format!("'{s}': page width and height must be positive numbers of mm, as in 300x200")),
+                _ => {
+                    return Err(format!(
+                        "'{s}': page width and height must be positive numbers of mm, as in 300x200"
+                    ))
+                }
             }
         }
     };
-    Ok(if landscape { Page { width: h, height: w } } else { Page { width: w, height: h } })
+    Ok(if landscape {
+        Page { width: h, height: w }
+    } else {
+        Page { width: w, height: h }
+    })
 }
 
 /// `--layers`: none, or `size-bands:K`.
@@ -818,12 +955,20 @@ pub struct PlotArgs {
 impl PlotArgs {
     /// The hatch, if asked for (exit 2 naming --hatch when malformed).
     pub fn hatch(&self) -> Result<Option<hatch::Hatch>, CliError> {
-        self.hatch.as_deref().map(hatch::Hatch::parse).transpose().map_err(|e| CliError::arg("--hatch", e))
+        self.hatch
+            .as_deref()
+            .map(hatch::Hatch::parse)
+            .transpose()
+            .map_err(|e| CliError::arg("--hatch", e))
     }
 
     /// The drawing options.
     pub fn build_options(&self) -> Result<BuildOptions, CliError> {
-        Ok(BuildOptions { min_feature: self.min_feature, hatch: self.hatch()?, no_outline: self.hatch_only })
+        Ok(BuildOptions {
+            min_feature: self.min_feature,
+            hatch: self.hatch()?,
+            no_outline: self.hatch_only,
+        })
     }
 
     /// How the drawing is placed: as it is, centred, or scaled.
@@ -859,17 +1004,26 @@ impl PlotArgs {
         }
         if let Some(p) = self.power {
             let Some(range) = &m.power else {
-                return Err(CliError::arg("--power", format!("the profile '{}' has no power range (it is not a laser); drop --power", m.name)));
+                return Err(CliError::arg(
+                    "--power",
+                    format!("the profile '{}' has no power range (it is not a laser); drop --power", m.name),
+                ));
             };
             if p < range.min || p > range.max {
-                return Err(CliError::arg("--power", format!("{p} is outside the profile's range {} to {}", range.min, range.max)));
+                return Err(CliError::arg(
+                    "--power",
+                    format!("{p} is outside the profile's range {} to {}", range.min, range.max),
+                ));
             }
             o.power = Some(p);
         }
         o.passes = self.passes;
         o.arcs = if self.arcs {
             if !m.arcs {
-                return Err(CliError::arg("--arcs", format!("the profile '{}' does not allow arcs (arcs = false)", m.name)));
+                return Err(CliError::arg(
+                    "--arcs",
+                    format!("the profile '{}' does not allow arcs (arcs = false)", m.name),
+                ));
             }
             true
         } else if self.no_arcs {
@@ -895,16 +1049,25 @@ impl PlotArgs {
                     return Err(CliError::arg("--page", "pages are for SVG; G-code uses the machine's bed"));
                 }
                 if self.layers != Layers::None {
-                    return Err(CliError::arg("--layers", "layers are for SVG (one pen per layer); G-code draws one layer"));
+                    return Err(CliError::arg(
+                        "--layers",
+                        "layers are for SVG (one pen per layer); G-code draws one layer",
+                    ));
                 }
             }
             Format::Svg | Format::Png if self.hatch.is_some() || self.min_feature > 0.0 => {
                 let flag = if self.hatch.is_some() { "--hatch" } else { "--min-feature" };
-                return Err(CliError::arg(flag, "is for G-code output (write .gcode or .nc, or give --format gcode)"));
+                return Err(CliError::arg(
+                    flag,
+                    "is for G-code output (write .gcode or .nc, or give --format gcode)",
+                ));
             }
             Format::Svg | Format::Png if (self.fit || self.center) && self.page.is_none() => {
                 let flag = if self.fit { "--fit" } else { "--center" };
-                return Err(CliError::arg(flag, "for SVG it needs --page (without a page the drawing is the region itself)"));
+                return Err(CliError::arg(
+                    flag,
+                    "for SVG it needs --page (without a page the drawing is the region itself)",
+                ));
             }
             _ => {}
         }
@@ -913,21 +1076,45 @@ impl PlotArgs {
 
     /// SVG options from the fill's flags and these: page layout and layers.
     pub fn svg_options(&self, doc: &FillDoc, style: Style, pen_width: f64, boundary: bool) -> Result<SvgOptions, CliError> {
-        let mut o = SvgOptions { style, pen_width, boundary, page: None, layers: None };
+        let mut o = SvgOptions {
+            style,
+            pen_width,
+            boundary,
+            page: None,
+            layers: None,
+        };
         if let Layers::SizeBands(k) = self.layers {
             o.layers = Some(k);
         }
         if let Some(page) = self.page {
             let m = self.margin.unwrap_or(10.0);
             if 2.0 * m >= page.width.min(page.height) {
-                return Err(CliError::arg("--margin", format!("{m} mm leaves no room on a {} x {} mm page", page.width, page.height)));
+                return Err(CliError::arg(
+                    "--margin",
+                    format!("{m} mm leaves no room on a {} x {} mm page", page.width, page.height),
+                ));
             }
             let (x0, y0, x1, y1) = doc.bbox();
             // The page frame here has y up from the page's bottom edge.
-            let area = Bounds { x0: m, y0: m, x1: page.width - m, y1: page.height - m };
-            let pl = place(&Bounds { x0, y0, x1, y1 }, &area, self.fit(Fit::TopLeft))
-                .map_err(|e| CliError::arg("--page", format!("{e}; use --fit to scale it, or a larger --page or smaller --margin")))?;
-            o.page = Some(crate::output::svg::PageLayout { width: page.width, height: page.height, scale: pl.scale, dx: pl.dx, dy: pl.dy });
+            let area = Bounds {
+                x0: m,
+                y0: m,
+                x1: page.width - m,
+                y1: page.height - m,
+            };
+            let pl = place(&Bounds { x0, y0, x1, y1 }, &area, self.fit(Fit::TopLeft)).map_err(|e| {
+                CliError::arg(
+                    "--page",
+                    format!("{e}; use --fit to scale it, or a larger --page or smaller --margin"),
+                )
+            })?;
+            o.page = Some(crate::output::svg::PageLayout {
+                width: page.width,
+                height: page.height,
+                scale: pl.scale,
+                dx: pl.dx,
+                dy: pl.dy,
+            });
         }
         Ok(o)
     }
@@ -954,7 +1141,10 @@ pub fn drawing_gcode(drawing: &Drawing, frame: &Bounds, a: &PlotArgs, header: Ve
     let pl = place(frame, &area, a.fit(Fit::AsIs)).map_err(|e| {
         CliError::arg(
             "--machine",
-            format!("{e} of the bed of '{}' ({} x {} mm, margin {} mm); use --fit to scale it or --center to move it", m.name, m.bed.width, m.bed.height, opts.margin),
+            format!(
+                "{e} of the bed of '{}' ({} x {} mm, margin {} mm); use --fit to scale it or --center to move it",
+                m.name, m.bed.width, m.bed.height, opts.margin
+            ),
         )
     })?;
     let drawing = drawing.placed(&pl);
@@ -982,15 +1172,30 @@ mod tests {
     use super::*;
 
     fn unit() -> Bounds {
-        Bounds { x0: 0.0, y0: 0.0, x1: 10.0, y1: 10.0 }
+        Bounds {
+            x0: 0.0,
+            y0: 0.0,
+            x1: 10.0,
+            y1: 10.0,
+        }
     }
 
     #[test]
     fn arc_bounds_see_the_extremes() {
-        let p = Path::Arc { center: [0.0, 0.0], radius: 1.0, start: -0.1, sweep: 0.2 };
+        let p = Path::Arc {
+            center: [0.0, 0.0],
+            radius: 1.0,
+            start: -0.1,
+            sweep: 0.2,
+        };
         let b = p.bounds();
         assert!((b.x1 - 1.0).abs() < 1e-15, "passes angle 0: {b:?}");
-        let q = Path::Arc { center: [0.0, 0.0], radius: 1.0, start: 0.1, sweep: 0.2 };
+        let q = Path::Arc {
+            center: [0.0, 0.0],
+            radius: 1.0,
+            start: 0.1,
+            sweep: 0.2,
+        };
         assert!(q.bounds().x1 < 1.0);
     }
 
@@ -1022,7 +1227,12 @@ mod tests {
 
     #[test]
     fn placement_refuses_what_does_not_fit() {
-        let b = Bounds { x0: 0.0, y0: 0.0, x1: 20.0, y1: 5.0 };
+        let b = Bounds {
+            x0: 0.0,
+            y0: 0.0,
+            x1: 20.0,
+            y1: 5.0,
+        };
         assert!(place(&b, &unit(), Fit::AsIs).is_err());
         assert!(place(&b, &unit(), Fit::Center).is_err());
         let pl = place(&b, &unit(), Fit::Scale).unwrap_or(Placement::IDENTITY);
@@ -1032,9 +1242,27 @@ mod tests {
 
     #[test]
     fn pages_and_layers_parse() {
-        assert_eq!(parse_page("a4"), Ok(Page { width: 210.0, height: 297.0 }));
-        assert_eq!(parse_page("A4-landscape"), Ok(Page { width: 297.0, height: 210.0 }));
-        assert_eq!(parse_page("300x200"), Ok(Page { width: 300.0, height: 200.0 }));
+        assert_eq!(
+            parse_page("a4"),
+            Ok(Page {
+                width: 210.0,
+                height: 297.0
+            })
+        );
+        assert_eq!(
+            parse_page("A4-landscape"),
+            Ok(Page {
+                width: 297.0,
+                height: 210.0
+            })
+        );
+        assert_eq!(
+            parse_page("300x200"),
+            Ok(Page {
+                width: 300.0,
+                height: 200.0
+            })
+        );
         assert!(parse_page("0x5").is_err());
         assert!(parse_page("b5").is_err());
         assert_eq!(parse_layers("size-bands:3"), Ok(Layers::SizeBands(3)));
@@ -1047,7 +1275,12 @@ mod tests {
         let r = p.reversed();
         assert_eq!(r.start_point(), [0.0, 0.0]);
         assert_eq!(r, Path::polyline(vec![[0.0, 0.0], [1.0, 1.0], [1.0, 0.0]], true));
-        let a = Path::Arc { center: [0.0, 0.0], radius: 1.0, start: 0.0, sweep: 1.0 };
+        let a = Path::Arc {
+            center: [0.0, 0.0],
+            radius: 1.0,
+            start: 0.0,
+            sweep: 1.0,
+        };
         let ra = a.reversed();
         assert!(dist(ra.start_point(), a.end_point()) < 1e-15);
         assert!(dist(ra.end_point(), a.start_point()) < 1e-15);

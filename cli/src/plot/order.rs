@@ -83,7 +83,16 @@ impl PointIndex {
                 }
             }
         }
-        PointIndex { pts, rad, ids, tags, alive: vec![true; n], leaf, nodes, pos_of }
+        PointIndex {
+            pts,
+            rad,
+            ids,
+            tags,
+            alive: vec![true; n],
+            leaf,
+            nodes,
+            pos_of,
+        }
     }
 
     /// The tree position of input item `i`.
@@ -123,7 +132,11 @@ impl PointIndex {
             }
             k = parent;
             let (l, r) = (self.nodes[k as usize].left as usize, self.nodes[k as usize].right as usize);
-            let rmax = if had_radius { self.nodes[l].rmax.max(self.nodes[r].rmax) } else { self.nodes[k as usize].rmax };
+            let rmax = if had_radius {
+                self.nodes[l].rmax.max(self.nodes[r].rmax)
+            } else {
+                self.nodes[k as usize].rmax
+            };
             let nd = &mut self.nodes[k as usize];
             nd.alive -= 1;
             nd.rmax = rmax;
@@ -268,11 +281,23 @@ fn build(items: &[(Pt, f64, u32, u32)], perm: &mut [u32], lo: usize, hi: usize, 
         rmax = rmax.max(r);
     }
     let k = nodes.len() as u32;
-    nodes.push(Node { lo: lo as u32, hi: hi as u32, min, max, rmax, alive: (hi - lo) as u32, left: NONE, right: NONE, parent });
+    nodes.push(Node {
+        lo: lo as u32,
+        hi: hi as u32,
+        min,
+        max,
+        rmax,
+        alive: (hi - lo) as u32,
+        left: NONE,
+        right: NONE,
+        parent,
+    });
     if hi - lo > LEAF {
         let axis = usize::from(max[1] - min[1] > max[0] - min[0]);
         let mid = (lo + hi) / 2;
-        perm[lo..hi].select_nth_unstable_by(mid - lo, |&a, &b| items[a as usize].0[axis].total_cmp(&items[b as usize].0[axis]).then(a.cmp(&b)));
+        perm[lo..hi].select_nth_unstable_by(mid - lo, |&a, &b| {
+            items[a as usize].0[axis].total_cmp(&items[b as usize].0[axis]).then(a.cmp(&b))
+        });
         let l = build(items, perm, lo, mid, k, nodes);
         let r = build(items, perm, mid, hi, k, nodes);
         nodes[k as usize].left = l;
@@ -314,7 +339,9 @@ fn ends(p: &Path, e: Entry) -> [Pt; 2] {
         Entry::Forward => [p.start_point(), p.end_point()],
         Entry::Backward => [p.end_point(), p.start_point()],
         Entry::Vertex(v, _) => {
-            let q = closed_polyline(p).and_then(|pts| pts.get(v).copied()).unwrap_or_else(|| p.start_point());
+            let q = closed_polyline(p)
+                .and_then(|pts| pts.get(v).copied())
+                .unwrap_or_else(|| p.start_point());
             [q, q]
         }
         Entry::Angle(a, _) => {
@@ -352,7 +379,12 @@ fn materialize(p: &Path, e: Entry) -> Path {
         }
         Entry::Angle(a, rev) => match p {
             Path::Arc { center, radius, sweep, .. } => {
-                let q = Path::Arc { center: *center, radius: *radius, start: a, sweep: sweep.abs() };
+                let q = Path::Arc {
+                    center: *center,
+                    radius: *radius,
+                    start: a,
+                    sweep: sweep.abs(),
+                };
                 if rev {
                     q.reversed()
                 } else {
@@ -561,7 +593,14 @@ fn two_opt(paths: &[Path], seq: &[(usize, Entry)], home: Pt) -> Vec<(usize, Entr
     for (p, &v) in t.iter().enumerate() {
         pos[v as usize] = p as u32;
     }
-    let mut tour = Tour { paths, entry, ends: ends_v, t, pos, swaps: 0 };
+    let mut tour = Tour {
+        paths,
+        entry,
+        ends: ends_v,
+        t,
+        pos,
+        swaps: 0,
+    };
     // Budgets, not a clock: the same input always does the same work.
     let max_evals = 60 * (n as u64) * K as u64;
     let max_swaps = 200 * n as u64 + 2_000_000;
@@ -612,8 +651,16 @@ fn two_opt(paths: &[Path], seq: &[(usize, Entry)], home: Pt) -> Vec<(usize, Entr
 fn polish(paths: &[Path], seq: &mut [(usize, Entry)], home: Pt) {
     let n = seq.len();
     for k in 0..n {
-        let prev = if k == 0 { home } else { ends(&paths[seq[k - 1].0], seq[k - 1].1)[1] };
-        let next = if k + 1 < n { Some(ends(&paths[seq[k + 1].0], seq[k + 1].1)[0]) } else { None };
+        let prev = if k == 0 {
+            home
+        } else {
+            ends(&paths[seq[k - 1].0], seq[k - 1].1)[1]
+        };
+        let next = if k + 1 < n {
+            Some(ends(&paths[seq[k + 1].0], seq[k + 1].1)[0])
+        } else {
+            None
+        };
         let (i, e) = seq[k];
         let p = &paths[i];
         let through = |q: [Pt; 2]| dist(prev, q[0]) + next.map_or(0.0, |x| dist(q[1], x));
@@ -764,7 +811,12 @@ mod tests {
     fn improved_beats_greedy_beats_none_and_is_deterministic() {
         let paths = scene(3000);
         let home = [0.0, 0.0];
-        let t = |m| Drawing { paths: order(&paths, home, m) }.travel_from(home);
+        let t = |m| {
+            Drawing {
+                paths: order(&paths, home, m),
+            }
+            .travel_from(home)
+        };
         let (none, greedy, improved) = (t(OrderArg::None), t(OrderArg::Greedy), t(OrderArg::Improved));
         assert!(greedy < none / 5.0, "greedy {greedy} vs none {none}");
         assert!(improved < greedy * 0.97, "improved {improved} vs greedy {greedy}");

@@ -5,9 +5,9 @@
 
 use super::geom::neighbours;
 use super::model::Tri;
-use zetafill::ZetaRng;
 use std::collections::VecDeque;
 use zetafill::rng::uniform;
+use zetafill::ZetaRng;
 
 /// A territory's colour rule: the seed's colour c^k and the step d^k per unit of distance.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -76,7 +76,11 @@ pub fn distances(tri: &Tri, territory: &[u32], k: usize) -> Vec<u32> {
 pub fn random_rule(rng: &mut ZetaRng, max_dist: u32) -> Rule {
     let c = [uniform(rng, 0.0, 1.0), uniform(rng, 0.35, 0.95), uniform(rng, 0.55, 1.0)];
     let span = f64::from(max_dist.max(1));
-    let d = [uniform(rng, -1.0, 1.0) / span, uniform(rng, -0.5, 0.5) / span, uniform(rng, -0.5, 0.5) / span];
+    let d = [
+        uniform(rng, -1.0, 1.0) / span,
+        uniform(rng, -0.5, 0.5) / span,
+        uniform(rng, -0.5, 0.5) / span,
+    ];
     Rule { c, d }
 }
 
@@ -111,7 +115,9 @@ pub fn parse_rule(s: &str) -> Result<(/* c */ [f64; 3], Option<[f64; 3]>), Strin
     let triple = |part: &str, what: &str| -> Result<[f64; 3], String> {
         let v: Vec<&str> = part.split(',').collect();
         if v.len() != 3 {
-            return Err(format!("{what} needs three comma-separated numbers (got '{part}'); write H,S,B or H,S,B:DH,DS,DB"));
+            return Err(format!(
+                "{what} needs three comma-separated numbers (got '{part}'); write H,S,B or H,S,B:DH,DS,DB"
+            ));
         }
         let mut out = [0.0; 3];
         for (o, x) in out.iter_mut().zip(&v) {
@@ -156,7 +162,10 @@ mod tests {
 
     #[test]
     fn saturation_and_brightness_clamp() {
-        let r = Rule { c: [0.9, 0.5, 0.5], d: [0.1, 0.2, -0.2] };
+        let r = Rule {
+            c: [0.9, 0.5, 0.5],
+            d: [0.1, 0.2, -0.2],
+        };
         assert_eq!(colour(&r, 0), [0.9, 0.5, 0.5]);
         let c3 = colour(&r, 3);
         assert!((c3[0] - 0.2).abs() < 1e-12 && c3[1] == 1.0 && c3[2] == 0.0, "{c3:?}");

@@ -53,12 +53,25 @@ impl Clip {
     /// The clip region of a document's region (periodic rectangles clip to their tile).
     pub fn from_doc(r: &RegionDoc) -> Clip {
         match r {
-            RegionDoc::Rect { width, height, .. } => Clip::Rect { x0: 0.0, y0: 0.0, x1: *width, y1: *height },
+            RegionDoc::Rect { width, height, .. } => Clip::Rect {
+                x0: 0.0,
+                y0: 0.0,
+                x1: *width,
+                y1: *height,
+            },
             RegionDoc::Circle { center, radius } => Clip::Circle { c: *center, r: *radius },
-            RegionDoc::Annulus { center, radius_outer, radius_inner } => Clip::Annulus { c: *center, ro: *radius_outer, ri: *radius_inner },
-            RegionDoc::Polygon { vertices, holes, outers } => {
-                Clip::Polygon { rings: std::iter::once(vertices).chain(outers).chain(holes).cloned().collect() }
-            }
+            RegionDoc::Annulus {
+                center,
+                radius_outer,
+                radius_inner,
+            } => Clip::Annulus {
+                c: *center,
+                ro: *radius_outer,
+                ri: *radius_inner,
+            },
+            RegionDoc::Polygon { vertices, holes, outers } => Clip::Polygon {
+                rings: std::iter::once(vertices).chain(outers).chain(holes).cloned().collect(),
+            },
         }
     }
 
@@ -67,10 +80,9 @@ impl Clip {
         match self {
             Clip::Rect { x0, y0, x1, y1 } => (*x0, *y0, *x1, *y1),
             Clip::Circle { c, r } | Clip::Annulus { c, ro: r, .. } => (c[0] - r, c[1] - r, c[0] + r, c[1] + r),
-            Clip::Polygon { rings } => rings
-                .iter()
-                .flatten()
-                .fold((f64::MAX, f64::MAX, f64::MIN, f64::MIN), |b, v| (b.0.min(v[0]), b.1.min(v[1]), b.2.max(v[0]), b.3.max(v[1]))),
+            Clip::Polygon { rings } => rings.iter().flatten().fold((f64::MAX, f64::MAX, f64::MIN, f64::MIN), |b, v| {
+                (b.0.min(v[0]), b.1.min(v[1]), b.2.max(v[0]), b.3.max(v[1]))
+            }),
         }
     }
 
@@ -364,7 +376,10 @@ impl Dual {
                 }
             };
             let (a, b) = (u.fix().index(), v.fix().index());
-            edges.push(DualEdge { sites: (a.min(b), a.max(b)), ends });
+            edges.push(DualEdge {
+                sites: (a.min(b), a.max(b)),
+                ends,
+            });
         }
         Dual { points, edges }
     }
@@ -490,7 +505,9 @@ pub fn neighbours<T>(tri: &T, v: usize) -> impl Iterator<Item = usize> + '_
 where
     T: Triangulation,
 {
-    tri.vertex(FixedVertexHandle::from_index(v)).out_edges().map(|e| e.to().fix().index())
+    tri.vertex(FixedVertexHandle::from_index(v))
+        .out_edges()
+        .map(|e| e.to().fix().index())
 }
 
 /// A site position as spade's point.
@@ -504,15 +521,27 @@ mod tests {
 
     #[test]
     fn rect_clip_is_one_interval() {
-        let c = Clip::Rect { x0: 0.0, y0: 0.0, x1: 10.0, y1: 10.0 };
+        let c = Clip::Rect {
+            x0: 0.0,
+            y0: 0.0,
+            x1: 10.0,
+            y1: 10.0,
+        };
         assert_eq!(c.segment([-5.0, 5.0], [15.0, 5.0]), vec![(0.25, 0.75)]);
         assert!(c.segment([-5.0, -5.0], [-1.0, 20.0]).is_empty());
-        assert_eq!(c.polyline(&[[-5.0, 5.0], [5.0, 5.0], [5.0, 15.0]]), vec![vec![[0.0, 5.0], [5.0, 5.0], [5.0, 10.0]]]);
+        assert_eq!(
+            c.polyline(&[[-5.0, 5.0], [5.0, 5.0], [5.0, 15.0]]),
+            vec![vec![[0.0, 5.0], [5.0, 5.0], [5.0, 10.0]]]
+        );
     }
 
     #[test]
     fn annulus_clip_splits_a_chord() {
-        let c = Clip::Annulus { c: [0.0, 0.0], ro: 2.0, ri: 1.0 };
+        let c = Clip::Annulus {
+            c: [0.0, 0.0],
+            ro: 2.0,
+            ri: 1.0,
+        };
         let iv = c.segment([-3.0, 0.0], [3.0, 0.0]);
         assert_eq!(iv.len(), 2);
         let pts: Vec<f64> = iv.iter().flat_map(|&(a, b)| [-3.0 + 6.0 * a, -3.0 + 6.0 * b]).collect();
@@ -524,7 +553,16 @@ mod tests {
     #[test]
     fn polygon_clip_handles_concave_outlines() {
         // A U shape: the segment across the notch leaves and re-enters.
-        let u = vec![[0.0, 0.0], [3.0, 0.0], [3.0, 3.0], [2.0, 3.0], [2.0, 1.0], [1.0, 1.0], [1.0, 3.0], [0.0, 3.0]];
+        let u = vec![
+            [0.0, 0.0],
+            [3.0, 0.0],
+            [3.0, 3.0],
+            [2.0, 3.0],
+            [2.0, 1.0],
+            [1.0, 1.0],
+            [1.0, 3.0],
+            [0.0, 3.0],
+        ];
         let c = Clip::Polygon { rings: vec![u] };
         let iv = c.segment([-1.0, 2.0], [4.0, 2.0]);
         assert_eq!(iv.len(), 2, "{iv:?}");

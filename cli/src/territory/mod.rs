@@ -53,7 +53,13 @@ impl TerritoryFormat {
             Some("png") => Ok(TerritoryFormat::Png),
             Some("json") => Ok(TerritoryFormat::Json),
             Some("gcode" | "nc") => Ok(TerritoryFormat::Gcode),
-            _ => Err(CliError::arg("--output", format!("cannot tell the format of '{}'; end it in .svg, .png, .json, .gcode or .nc, or give --format", path.display()))),
+            _ => Err(CliError::arg(
+                "--output",
+                format!(
+                    "cannot tell the format of '{}'; end it in .svg, .png, .json, .gcode or .nc, or give --format",
+                    path.display()
+                ),
+            )),
         }
     }
 }
@@ -151,7 +157,10 @@ fn check_plot(a: &TerritoryArgs, format: TerritoryFormat) -> Result<(), CliError
         let m = p.machine()?;
         p.gcode_options(&m)?;
     } else if p.fit || p.center {
-        return Err(CliError::arg(if p.fit { "--fit" } else { "--center" }, "places the drawing on a machine's bed: it is for G-code output"));
+        return Err(CliError::arg(
+            if p.fit { "--fit" } else { "--center" },
+            "places the drawing on a machine's bed: it is for G-code output",
+        ));
     }
     Ok(())
 }
@@ -167,7 +176,11 @@ fn gcode(o: &Outcome, a: &TerritoryArgs, desc: String) -> Result<Vec<u8>, CliErr
     if a.render == Render::Cells {
         let dual = geom::Dual::of(&o.model.tri, o.clip.bbox());
         let t = &o.model.territory;
-        lines = geom::polylines(&dual, (0..dual.edges.len()).filter(|&i| t[dual.edges[i].sites.0] == t[dual.edges[i].sites.1]), &o.clip);
+        lines = geom::polylines(
+            &dual,
+            (0..dual.edges.len()).filter(|&i| t[dual.edges[i].sites.0] == t[dual.edges[i].sites.1]),
+            &o.clip,
+        );
     }
     lines.extend(o.boundaries.iter().cloned());
     let mut paths: Vec<PlotPath> = lines.into_iter().map(|l| PlotPath::polyline(l, false)).collect();
@@ -186,7 +199,10 @@ fn gcode(o: &Outcome, a: &TerritoryArgs, desc: String) -> Result<Vec<u8>, CliErr
     let pl = place(&Bounds { x0, y0, x1, y1 }, &area, fit).map_err(|e| {
         CliError::arg(
             "--machine",
-            format!("{e} of the bed of '{}' ({} x {} mm, margin {} mm); use --fit to scale it or --center to move it", m.name, m.bed.width, m.bed.height, opts.margin),
+            format!(
+                "{e} of the bed of '{}' ({} x {} mm, margin {} mm); use --fit to scale it or --center to move it",
+                m.name, m.bed.width, m.bed.height, opts.margin
+            ),
         )
     })?;
     let drawing = Drawing { paths }.placed(&pl);
@@ -219,7 +235,9 @@ fn boost(s: &str) -> Result<f64, String> {
     if v >= 1.0 {
         Ok(v)
     } else {
-        Err(format!("must be 1 or more (got {s}); 1 means no preference, like --uniform after n0"))
+        Err(format!(
+            "must be 1 or more (got {s}); 1 means no preference, like --uniform after n0"
+        ))
     }
 }
 
@@ -364,20 +382,36 @@ fn load_source(path: &Path) -> Result<Source, CliError> {
     let bytes = std::fs::read(path).map_err(|e| bad_from(path, format!("cannot read it ({e})")))?;
     let v: Value = serde_json::from_slice(&bytes).map_err(|e| bad_from(path, format!("not JSON ({e}); give a fill's JSON output")))?;
     if v.get("mode").and_then(Value::as_str) != Some("fill") {
-        return Err(bad_from(path, "not a fill's JSON (no \"mode\": \"fill\"); write one with zetafill fill -o FILE.json"));
+        return Err(bad_from(
+            path,
+            "not a fill's JSON (no \"mode\": \"fill\"); write one with zetafill fill -o FILE.json",
+        ));
     }
     let r = v.get("region").ok_or_else(|| bad_from(path, "no region"))?;
     let f = |k: &str| r.get(k).and_then(Value::as_f64).filter(|x| x.is_finite());
     let ring = |x: &Value| -> Option<Vec<Pt>> { x.as_array()?.iter().map(num_pair).collect() };
     let region = match r.get("kind").and_then(Value::as_str) {
-        Some("rect") => f("width").zip(f("height")).map(|(width, height)| RegionDoc::Rect { width, height, periodic: false }),
-        Some("circle") => r.get("center").and_then(num_pair).zip(f("radius")).map(|(center, radius)| RegionDoc::Circle { center, radius }),
+        Some("rect") => f("width").zip(f("height")).map(|(width, height)| RegionDoc::Rect {
+            width,
+            height,
+            periodic: false,
+        }),
+        Some("circle") => r
+            .get("center")
+            .and_then(num_pair)
+            .zip(f("radius"))
+            .map(|(center, radius)| RegionDoc::Circle { center, radius }),
         Some("annulus") => match (r.get("center").and_then(num_pair), f("radius_outer"), f("radius_inner")) {
-            (Some(center), Some(radius_outer), Some(radius_inner)) => Some(RegionDoc::Annulus { center, radius_outer, radius_inner }),
+            (Some(center), Some(radius_outer), Some(radius_inner)) => Some(RegionDoc::Annulus {
+                center,
+                radius_outer,
+                radius_inner,
+            }),
             _ => None,
         },
         Some("polygon") => {
-            let list = |k: &str| -> Option<Vec<Vec<Pt>>> { r.get(k).map_or(Some(Vec::new()), |x| x.as_array()?.iter().map(ring).collect()) };
+            let list =
+                |k: &str| -> Option<Vec<Vec<Pt>>> { r.get(k).map_or(Some(Vec::new()), |x| x.as_array()?.iter().map(ring).collect()) };
             match (r.get("vertices").and_then(ring), list("holes"), list("outers")) {
                 (Some(vertices), Some(holes), Some(outers)) if vertices.len() >= 3 => Some(RegionDoc::Polygon { vertices, holes, outers }),
                 _ => None,
@@ -386,13 +420,24 @@ fn load_source(path: &Path) -> Result<Source, CliError> {
         _ => None,
     }
     .ok_or_else(|| bad_from(path, "its region is malformed"))?;
-    let shapes = v.get("shapes").and_then(Value::as_array).ok_or_else(|| bad_from(path, "no shapes"))?;
+    let shapes = v
+        .get("shapes")
+        .and_then(Value::as_array)
+        .ok_or_else(|| bad_from(path, "no shapes"))?;
     let mut centres = Vec::with_capacity(shapes.len());
     for (i, s) in shapes.iter().enumerate() {
-        let c = s.get("center").and_then(num_pair).filter(|c| c[0].is_finite() && c[1].is_finite()).ok_or_else(|| bad_from(path, format!("shape {i} has no centre")))?;
+        let c = s
+            .get("center")
+            .and_then(num_pair)
+            .filter(|c| c[0].is_finite() && c[1].is_finite())
+            .ok_or_else(|| bad_from(path, format!("shape {i} has no centre")))?;
         let index = s.get("index").and_then(Value::as_u64).unwrap_or(i as u64);
         let radius = s.get("radius").and_then(Value::as_f64);
-        let shape = match (radius, s.get("inner_radius").and_then(Value::as_f64), s.get("vertices").and_then(ring)) {
+        let shape = match (
+            radius,
+            s.get("inner_radius").and_then(Value::as_f64),
+            s.get("vertices").and_then(ring),
+        ) {
             (Some(r), Some(inner), _) => FillShape::Ring { c, r, inner },
             (Some(r), None, _) => FillShape::Circle { c, r },
             (None, _, Some(vs)) => FillShape::Poly(vs),
@@ -400,7 +445,11 @@ fn load_source(path: &Path) -> Result<Source, CliError> {
         };
         centres.push((c, index, shape));
     }
-    Ok(Source { region, centres, name: path.display().to_string() })
+    Ok(Source {
+        region,
+        centres,
+        name: path.display().to_string(),
+    })
 }
 
 /// The `zetafill territory` command line that reproduces a run.
@@ -437,9 +486,16 @@ fn region_text(doc: &RegionDoc) -> String {
     match doc {
         RegionDoc::Rect { width, height, .. } => format!("rect:{width}:{height}"),
         RegionDoc::Circle { radius, .. } => format!("circle:{radius}"),
-        RegionDoc::Annulus { radius_outer, radius_inner, .. } => format!("annulus:{radius_outer}:{radius_inner}"),
+        RegionDoc::Annulus {
+            radius_outer,
+            radius_inner,
+            ..
+        } => format!("annulus:{radius_outer}:{radius_inner}"),
         RegionDoc::Polygon { vertices, holes, outers } if holes.is_empty() && outers.is_empty() => {
-            format!("polygon:{}", vertices.iter().map(|v| format!("{},{}", v[0], v[1])).collect::<Vec<_>>().join(","))
+            format!(
+                "polygon:{}",
+                vertices.iter().map(|v| format!("{},{}", v[0], v[1])).collect::<Vec<_>>().join(",")
+            )
         }
         RegionDoc::Polygon { .. } => "svg:(outline with holes; see the JSON output)".into(),
     }
@@ -452,10 +508,16 @@ fn model_error(flag: &str, e: ModelError) -> CliError {
 /// Runs the territory competition and builds the document. Nothing is written.
 pub fn compute(a: &TerritoryArgs) -> Result<Outcome, CliError> {
     if a.site.len() == 1 {
-        return Err(CliError::arg("--site", "territory competing needs at least 2 seeds; give --site twice or more, or --sites K"));
+        return Err(CliError::arg(
+            "--site",
+            "territory competing needs at least 2 seeds; give --site twice or more, or --sites K",
+        ));
     }
     if a.render == Render::Shapes && a.sites_from.is_none() {
-        return Err(CliError::arg("--render", "shapes draws a fill's shapes: it needs --sites-from FILE.json; use boundaries, cells or filled"));
+        return Err(CliError::arg(
+            "--render",
+            "shapes draws a fill's shapes: it needs --sites-from FILE.json; use boundaries, cells or filled",
+        ));
     }
     let mut rng = zetafill::rng_from_seed(a.seed);
     let (region, source) = match &a.sites_from {
@@ -473,10 +535,16 @@ pub fn compute(a: &TerritoryArgs) -> Result<Outcome, CliError> {
     let k = if a.site.is_empty() { a.sites.unwrap_or(3) } else { a.site.len() };
     for (i, p) in a.site.iter().enumerate() {
         if !clip.inside(*p) {
-            return Err(CliError::arg("--site", format!("{},{} lies outside the region; give seeds inside it", p[0], p[1])));
+            return Err(CliError::arg(
+                "--site",
+                format!("{},{} lies outside the region; give seeds inside it", p[0], p[1]),
+            ));
         }
         if a.site[..i].contains(p) {
-            return Err(CliError::arg("--site", format!("{},{} is given twice; seeds must be distinct points", p[0], p[1])));
+            return Err(CliError::arg(
+                "--site",
+                format!("{},{} is given twice; seeds must be distinct points", p[0], p[1]),
+            ));
         }
     }
     let bar = |n: usize| -> Option<indicatif::ProgressBar> {
@@ -494,7 +562,10 @@ pub fn compute(a: &TerritoryArgs) -> Result<Outcome, CliError> {
             let n = src.centres.len();
             if k > n {
                 let flag = if a.site.is_empty() { "--sites" } else { "--site" };
-                return Err(CliError::arg(flag, format!("{k} seeds but the fill has only {n} shapes; ask for fewer seeds (more sites than points)")));
+                return Err(CliError::arg(
+                    flag,
+                    format!("{k} seeds but the fill has only {n} shapes; ask for fewer seeds (more sites than points)"),
+                ));
             }
             // Seed order: chosen centres first, then the rest in fill order.
             let mut order: Vec<usize> = (0..n).collect();
@@ -506,11 +577,21 @@ pub fn compute(a: &TerritoryArgs) -> Result<Outcome, CliError> {
             } else {
                 for (i, p) in a.site.iter().enumerate() {
                     let best = (0..n)
-                        .min_by(|&x, &y| geom::dist2(src.centres[x].0, *p).total_cmp(&geom::dist2(src.centres[y].0, *p)).then(x.cmp(&y)))
+                        .min_by(|&x, &y| {
+                            geom::dist2(src.centres[x].0, *p)
+                                .total_cmp(&geom::dist2(src.centres[y].0, *p))
+                                .then(x.cmp(&y))
+                        })
                         .unwrap_or(0);
                     let at = order.iter().position(|&o| o == best).unwrap_or(0);
                     if at < i {
-                        return Err(CliError::arg("--site", format!("{},{} picks the same centre as an earlier --site; give seeds farther apart", p[0], p[1])));
+                        return Err(CliError::arg(
+                            "--site",
+                            format!(
+                                "{},{} picks the same centre as an earlier --site; give seeds farther apart",
+                                p[0], p[1]
+                            ),
+                        ));
                     }
                     order.swap(i, at);
                 }
@@ -523,7 +604,8 @@ pub fn compute(a: &TerritoryArgs) -> Result<Outcome, CliError> {
             let mut m = Model::new(&seeds).map_err(|e| model_error("--sites-from", e))?;
             let b = bar(n);
             for &i in &order[k..] {
-                m.add(src.centres[i].0).map_err(|e| bad_from(Path::new(&src.name), format!("shape {}: {e}", src.centres[i].1)))?;
+                m.add(src.centres[i].0)
+                    .map_err(|e| bad_from(Path::new(&src.name), format!("shape {}: {e}", src.centres[i].1)))?;
                 if let Some(b) = &b {
                     b.inc(1);
                 }
@@ -539,7 +621,10 @@ pub fn compute(a: &TerritoryArgs) -> Result<Outcome, CliError> {
             let points = a.points.map_or(7000, |p| p as usize);
             if k > points {
                 let flag = if a.site.is_empty() { "--sites" } else { "--site" };
-                return Err(CliError::arg(flag, format!("{k} seeds but only --points {points}: more sites than points; raise --points or give fewer seeds")));
+                return Err(CliError::arg(
+                    flag,
+                    format!("{k} seeds but only --points {points}: more sites than points; raise --points or give fewer seeds"),
+                ));
             }
             let seeds: Vec<Pt> = if a.site.is_empty() {
                 let bbox = clip.bbox();
@@ -550,7 +635,10 @@ pub fn compute(a: &TerritoryArgs) -> Result<Outcome, CliError> {
                     if tries > 100_000_000 {
                         return Err(CliError::arg("--region", "no seed could be drawn inside the region"));
                     }
-                    let p = [zetafill::rng::uniform(&mut rng, bbox.0, bbox.2), zetafill::rng::uniform(&mut rng, bbox.1, bbox.3)];
+                    let p = [
+                        zetafill::rng::uniform(&mut rng, bbox.0, bbox.2),
+                        zetafill::rng::uniform(&mut rng, bbox.1, bbox.3),
+                    ];
                     if clip.inside(p) && !v.contains(&p) {
                         v.push(p);
                     }
@@ -560,7 +648,13 @@ pub fn compute(a: &TerritoryArgs) -> Result<Outcome, CliError> {
                 a.site.clone()
             };
             let mut m = Model::new(&seeds).map_err(|e| model_error("--site", e))?;
-            let g = Growth { points, n0: a.n0 as usize, s: a.s, boost: a.boost, uniform: a.uniform };
+            let g = Growth {
+                points,
+                n0: a.n0 as usize,
+                s: a.s,
+                boost: a.boost,
+                uniform: a.uniform,
+            };
             let b = bar(points);
             m.grow(&clip, &g, &mut rng, |_| {
                 if let Some(b) = &b {
@@ -575,7 +669,10 @@ pub fn compute(a: &TerritoryArgs) -> Result<Outcome, CliError> {
         }
     };
     if a.colors.len() > k {
-        return Err(CliError::arg("--color", format!("{} colours for {k} territories; give at most one per territory", a.colors.len())));
+        return Err(CliError::arg(
+            "--color",
+            format!("{} colours for {k} territories; give at most one per territory", a.colors.len()),
+        ));
     }
     let dist = colour::distances(&model.tri, &model.territory, k);
     let mut maxd = vec![0u32; k];
@@ -613,7 +710,11 @@ pub fn compute(a: &TerritoryArgs) -> Result<Outcome, CliError> {
         })
         .collect();
     let boundaries = render::boundaries(&model, &clip);
-    let length = boundaries.iter().flat_map(|l| l.windows(2)).map(|w| geom::dist2(w[0], w[1]).sqrt()).sum();
+    let length = boundaries
+        .iter()
+        .flat_map(|l| l.windows(2))
+        .map(|w| geom::dist2(w[0], w[1]).sqrt())
+        .sum();
     let c = model.counters;
     let doc = TerritoryDoc {
         version: 1,
@@ -634,7 +735,12 @@ pub fn compute(a: &TerritoryArgs) -> Result<Outcome, CliError> {
         sites,
         stats: StatsDoc {
             sites: model.len(),
-            territories: (0..k).map(|t| TerritoryStatsDoc { sites: count[t], max_distance: maxd[t] }).collect(),
+            territories: (0..k)
+                .map(|t| TerritoryStatsDoc {
+                    sites: count[t],
+                    max_distance: maxd[t],
+                })
+                .collect(),
             reassigned: c.reassigned,
             repairs: c.repairs,
             repair_visits: c.visited,
@@ -644,7 +750,13 @@ pub fn compute(a: &TerritoryArgs) -> Result<Outcome, CliError> {
             boundary_length: length,
         },
     };
-    Ok(Outcome { model, clip, doc, shapes, boundaries })
+    Ok(Outcome {
+        model,
+        clip,
+        doc,
+        shapes,
+        boundaries,
+    })
 }
 
 /// Renders a finished run.
@@ -652,8 +764,18 @@ pub fn render_bytes(o: &Outcome, a: &TerritoryArgs, format: TerritoryFormat) -> 
     let desc = command_line(a, o.doc.seeds, o.doc.params.points, &region_text(&o.doc.region));
     let svg = || {
         let colours: Vec<[f64; 3]> = o.doc.sites.iter().map(|s| s.color).collect();
-        let style = Style { render: a.render, pen_width: a.pen_width, thin_width: a.thin_width, outline: a.boundary };
-        let title = format!("zetafill territory: {} sites, {} territories, seed {}", o.doc.sites.len(), o.doc.seeds, a.seed);
+        let style = Style {
+            render: a.render,
+            pen_width: a.pen_width,
+            thin_width: a.thin_width,
+            outline: a.boundary,
+        };
+        let title = format!(
+            "zetafill territory: {} sites, {} territories, seed {}",
+            o.doc.sites.len(),
+            o.doc.seeds,
+            a.seed
+        );
         render::svg(&o.model, &o.clip, &colours, &o.shapes, &style, &title, &desc)
     };
     Ok(match format {

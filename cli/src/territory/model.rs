@@ -34,12 +34,12 @@
 //! bucket; a rejected draw starts again from u.
 
 use super::geom::{p2, Clip, Pt};
-use zetafill::ZetaRng;
 use spade::handles::FixedVertexHandle;
 use spade::{DelaunayTriangulation, HierarchyHintGenerator, Point2, Triangulation};
 use std::collections::VecDeque;
 use std::fmt;
 use zetafill::rng::uniform;
+use zetafill::ZetaRng;
 
 /// The triangulation: positions only, with an O(log n) point-location hierarchy.
 pub type Tri = DelaunayTriangulation<Point2<f64>, (), (), (), HierarchyHintGenerator<f64>>;
@@ -87,7 +87,13 @@ pub struct Growth {
 
 impl Default for Growth {
     fn default() -> Self {
-        Growth { points: 7000, n0: 1000, s: 0.1, boost: 8.0, uniform: false }
+        Growth {
+            points: 7000,
+            n0: 1000,
+            s: 0.1,
+            boost: 8.0,
+            uniform: false,
+        }
     }
 }
 
@@ -192,7 +198,10 @@ impl Model {
         }
         let t = self.territory[near];
         let i = self.sites.len();
-        let h = self.tri.insert_with_hint(p2(p), FixedVertexHandle::from_index(near)).map_err(|e| ModelError::Coordinate(e.to_string()))?;
+        let h = self
+            .tri
+            .insert_with_hint(p2(p), FixedVertexHandle::from_index(near))
+            .map_err(|e| ModelError::Coordinate(e.to_string()))?;
         if h.index() != i {
             return Err(ModelError::Coincident { index: h.index() });
         }
@@ -289,7 +298,13 @@ impl Model {
         for (g, &s) in sources.iter().enumerate() {
             self.mark[s] = epoch;
             self.owner[s] = g as u32;
-            groups.push(Group { queue: VecDeque::from([s]), members: vec![s], has_seed: s == seed, root: g, done: false });
+            groups.push(Group {
+                queue: VecDeque::from([s]),
+                members: vec![s],
+                has_seed: s == seed,
+                root: g,
+                done: false,
+            });
         }
         fn root(groups: &mut [Group], mut g: usize) -> usize {
             while groups[g].root != g {
@@ -494,7 +509,11 @@ impl Buckets {
         if now == was {
             return;
         }
-        let (from, to) = if now { (&mut self.other, &mut self.boundary) } else { (&mut self.boundary, &mut self.other) };
+        let (from, to) = if now {
+            (&mut self.other, &mut self.boundary)
+        } else {
+            (&mut self.boundary, &mut self.other)
+        };
         let s = self.slot[b];
         from.swap_remove(s);
         if let Some(&moved) = from.get(s) {
@@ -566,7 +585,10 @@ mod tests {
 
     #[test]
     fn coincident_seeds_are_refused() {
-        assert!(matches!(Model::new(&[[1.0, 1.0], [1.0, 1.0]]), Err(ModelError::Coincident { index: 0 })));
+        assert!(matches!(
+            Model::new(&[[1.0, 1.0], [1.0, 1.0]]),
+            Err(ModelError::Coincident { index: 0 })
+        ));
         assert!(matches!(Model::new(&[[1.0, 1.0]]), Err(ModelError::TooFewSeeds)));
         let mut m = Model::new(&[[1.0, 1.0], [2.0, 2.0]]).unwrap_or_else(|e| panic!("{e}"));
         assert!(matches!(m.add([2.0, 2.0]), Err(ModelError::Coincident { index: 1 })));

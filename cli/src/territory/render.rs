@@ -99,7 +99,9 @@ pub fn boundaries(model: &Model, clip: &Clip) -> Vec<Vec<Pt>> {
 /// bisector with each Delaunay neighbour.
 pub fn cells(model: &Model, clip: &Clip) -> Vec<Vec<Pt>> {
     let bbox = clip.bbox();
-    (0..model.len()).map(|i| geom::cell(model.sites[i], geom::neighbours(&model.tri, i).map(|j| model.sites[j]), bbox)).collect()
+    (0..model.len())
+        .map(|i| geom::cell(model.sites[i], geom::neighbours(&model.tri, i).map(|j| model.sites[j]), bbox))
+        .collect()
 }
 
 /// The page frame: SVG x = x - x0, SVG y = y1 - y.
@@ -142,7 +144,12 @@ fn ring_d(f: &Frame, ring: &[Pt]) -> String {
 
 fn circle_d(f: &Frame, c: Pt, r: f64) -> String {
     let rr = num(r, P);
-    format!("M{} A{rr},{rr} 0 1 0 {} A{rr},{rr} 0 1 0 {} Z", f.pt([c[0] + r, c[1]]), f.pt([c[0] - r, c[1]]), f.pt([c[0] + r, c[1]]))
+    format!(
+        "M{} A{rr},{rr} 0 1 0 {} A{rr},{rr} 0 1 0 {} Z",
+        f.pt([c[0] + r, c[1]]),
+        f.pt([c[0] - r, c[1]]),
+        f.pt([c[0] + r, c[1]])
+    )
 }
 
 /// The region's outline as one even-odd path's data.
@@ -191,12 +198,18 @@ pub fn svg(model: &Model, clip: &Clip, colours: &[[f64; 3]], shapes: &[FillShape
     let mut doc = document(clip, title, desc);
     let clipped = !clip.is_rect();
     if clipped {
-        let cp = ClipPath::new().set("id", "region").add(Path::new().set("d", region_d(&f, clip)).set("clip-rule", "evenodd"));
+        let cp = ClipPath::new()
+            .set("id", "region")
+            .add(Path::new().set("d", region_d(&f, clip)).set("clip-rule", "evenodd"));
         doc = doc.add(Definitions::new().add(cp));
     }
     match style.render {
         Render::Boundaries => {
-            doc = doc.add(stroke_layer("boundaries", polyline_d(&f, &boundaries(model, clip)), style.pen_width));
+            doc = doc.add(stroke_layer(
+                "boundaries",
+                polyline_d(&f, &boundaries(model, clip)),
+                style.pen_width,
+            ));
         }
         Render::Cells => {
             let dual = Dual::of(&model.tri, clip.bbox());
@@ -211,7 +224,10 @@ pub fn svg(model: &Model, clip: &Clip, colours: &[[f64; 3]], shapes: &[FillShape
             doc = doc.add(stroke_layer("boundaries", polyline_d(&f, &bound), style.pen_width));
         }
         Render::Filled => {
-            let mut g = Group::new().set("id", "cells").set("stroke-width", num(style.thin_width.min(0.1), P)).set("stroke-linejoin", "round");
+            let mut g = Group::new()
+                .set("id", "cells")
+                .set("stroke-width", num(style.thin_width.min(0.1), P))
+                .set("stroke-linejoin", "round");
             if clipped {
                 g = g.set("clip-path", "url(#region)");
             }
@@ -222,7 +238,12 @@ pub fn svg(model: &Model, clip: &Clip, colours: &[[f64; 3]], shapes: &[FillShape
                 let pts: Vec<String> = cell.iter().map(|&p| f.pt(p)).collect();
                 let col = hex(*c);
                 // A hairline of the cell's own colour closes anti-aliasing seams.
-                g = g.add(Polygon::new().set("points", pts.join(" ")).set("fill", col.clone()).set("stroke", col));
+                g = g.add(
+                    Polygon::new()
+                        .set("points", pts.join(" "))
+                        .set("fill", col.clone())
+                        .set("stroke", col),
+                );
             }
             doc = doc.add(g);
         }
@@ -233,9 +254,16 @@ pub fn svg(model: &Model, clip: &Clip, colours: &[[f64; 3]], shapes: &[FillShape
                 g = match sh {
                     FillShape::Circle { c, r } => g.add(Path::new().set("d", circle_d(&f, *c, *r)).set("fill", col)),
                     FillShape::Ring { c, r, inner } => g.add(
-                        Path::new().set("d", format!("{} {}", circle_d(&f, *c, *r), circle_d(&f, *c, *inner))).set("fill-rule", "evenodd").set("fill", col),
+                        Path::new()
+                            .set("d", format!("{} {}", circle_d(&f, *c, *r), circle_d(&f, *c, *inner)))
+                            .set("fill-rule", "evenodd")
+                            .set("fill", col),
                     ),
-                    FillShape::Poly(vs) => g.add(Polygon::new().set("points", vs.iter().map(|&p| f.pt(p)).collect::<Vec<_>>().join(" ")).set("fill", col)),
+                    FillShape::Poly(vs) => g.add(
+                        Polygon::new()
+                            .set("points", vs.iter().map(|&p| f.pt(p)).collect::<Vec<_>>().join(" "))
+                            .set("fill", col),
+                    ),
                 };
             }
             doc = doc.add(g);

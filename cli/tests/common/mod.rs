@@ -25,7 +25,11 @@ pub fn zf(dir: &Path, args: &[&str]) -> Out {
         .current_dir(dir)
         .output()
         .unwrap_or_else(|e| panic!("cannot run zetafill: {e}"));
-    Out { code: out.status.code().unwrap_or(-1), stdout: out.stdout, stderr: String::from_utf8_lossy(&out.stderr).into_owned() }
+    Out {
+        code: out.status.code().unwrap_or(-1),
+        stdout: out.stdout,
+        stderr: String::from_utf8_lossy(&out.stderr).into_owned(),
+    }
 }
 
 /// Runs `zetafill ARGS` and asserts exit code 0.
@@ -37,7 +41,10 @@ pub fn zf_ok(dir: &Path, args: &[&str]) -> Out {
 
 /// A fresh temporary folder.
 pub fn tmp() -> tempfile::TempDir {
-    tempfile::Builder::new().prefix("zetafill-cli-test-").tempdir().unwrap_or_else(|e| panic!("tempdir: {e}"))
+    tempfile::Builder::new()
+        .prefix("zetafill-cli-test-")
+        .tempdir()
+        .unwrap_or_else(|e| panic!("tempdir: {e}"))
 }
 
 /// Reads a file (panics with the path on failure).
@@ -79,22 +86,30 @@ pub fn listing(dir: &Path) -> Vec<PathBuf> {
 
 /// `v[key]` as f64.
 pub fn f(v: &Value, key: &str) -> f64 {
-    v.get(key).and_then(Value::as_f64).unwrap_or_else(|| panic!("'{key}' is not a number in {v}"))
+    v.get(key)
+        .and_then(Value::as_f64)
+        .unwrap_or_else(|| panic!("'{key}' is not a number in {v}"))
 }
 
 /// `v[key]` as u64.
 pub fn u(v: &Value, key: &str) -> u64 {
-    v.get(key).and_then(Value::as_u64).unwrap_or_else(|| panic!("'{key}' is not an unsigned integer in {v}"))
+    v.get(key)
+        .and_then(Value::as_u64)
+        .unwrap_or_else(|| panic!("'{key}' is not an unsigned integer in {v}"))
 }
 
 /// `v[key]` as str.
 pub fn s<'a>(v: &'a Value, key: &str) -> &'a str {
-    v.get(key).and_then(Value::as_str).unwrap_or_else(|| panic!("'{key}' is not a string in {v}"))
+    v.get(key)
+        .and_then(Value::as_str)
+        .unwrap_or_else(|| panic!("'{key}' is not a string in {v}"))
 }
 
 /// `v[key]` as bool.
 pub fn b(v: &Value, key: &str) -> bool {
-    v.get(key).and_then(Value::as_bool).unwrap_or_else(|| panic!("'{key}' is not a bool in {v}"))
+    v.get(key)
+        .and_then(Value::as_bool)
+        .unwrap_or_else(|| panic!("'{key}' is not a bool in {v}"))
 }
 
 /// `v` as a point `[x, y]`.
@@ -107,12 +122,19 @@ pub fn pt(v: &Value) -> [f64; 2] {
 
 /// The shapes array of a fill document.
 pub fn shapes(doc: &Value) -> &Vec<Value> {
-    doc.get("shapes").and_then(Value::as_array).unwrap_or_else(|| panic!("no shapes array"))
+    doc.get("shapes")
+        .and_then(Value::as_array)
+        .unwrap_or_else(|| panic!("no shapes array"))
 }
 
 /// The sorted keys of an object.
 pub fn keys(v: &Value) -> Vec<String> {
-    let mut k: Vec<String> = v.as_object().unwrap_or_else(|| panic!("not an object: {v}")).keys().cloned().collect();
+    let mut k: Vec<String> = v
+        .as_object()
+        .unwrap_or_else(|| panic!("not an object: {v}"))
+        .keys()
+        .cloned()
+        .collect();
     k.sort();
     k
 }
@@ -212,7 +234,10 @@ pub fn kind_of(shape: &str) -> &'static str {
 
 /// Aspect ratio (width over height) of a `--shape` value (1 for circle and square).
 pub fn aspect_of(shape: &str) -> f64 {
-    shape.strip_prefix("rect:").map(|a| a.parse::<f64>().unwrap_or_else(|_| panic!("bad aspect {a}"))).unwrap_or(1.0)
+    shape
+        .strip_prefix("rect:")
+        .map(|a| a.parse::<f64>().unwrap_or_else(|_| panic!("bad aspect {a}")))
+        .unwrap_or(1.0)
 }
 
 /// Checks keys, types and every number of a fill document that follows from the others.
@@ -232,7 +257,21 @@ pub fn check_doc(doc: &Value, e: &Expect) -> bool {
     for k in ["c", "n_offset", "seed", "shape", "rotate", "sampler", "gap", "max_trials"] {
         assert!(pk.contains(&k.to_string()), "params lacks {k}: {p}");
     }
-    let allowed = ["c", "n_offset", "seed", "shape", "rotate", "sampler", "scalar", "gap", "count", "fill", "min_size", "max_trials", "dimension"];
+    let allowed = [
+        "c",
+        "n_offset",
+        "seed",
+        "shape",
+        "rotate",
+        "sampler",
+        "scalar",
+        "gap",
+        "count",
+        "fill",
+        "min_size",
+        "max_trials",
+        "dimension",
+    ];
     for k in &pk {
         assert!(allowed.contains(&k.as_str()), "unexpected params key {k}");
     }
@@ -290,7 +329,10 @@ pub fn check_doc(doc: &Value, e: &Expect) -> bool {
         assert!(rel(a, want) <= 1e-12, "shape {i}: area {a} != A/(zeta (i+N)^c) = {want}");
         if kind == "circle" {
             let r = f(sh, "radius");
-            assert!(rel(std::f64::consts::PI * r * r, a) <= 1e-9, "shape {i}: radius {r} does not give area {a}");
+            assert!(
+                rel(std::f64::consts::PI * r * r, a) <= 1e-9,
+                "shape {i}: radius {r} does not give area {a}"
+            );
         } else {
             let angle = f(sh, "angle");
             let vs: Vec<[f64; 2]> = sh
@@ -318,7 +360,10 @@ pub fn check_doc(doc: &Value, e: &Expect) -> bool {
                     found += 1;
                 }
             }
-            assert_eq!(found, 4, "shape {i}: vertices {vs:?} are not the {e:?} rectangle at {c:?}, angle {angle}");
+            assert_eq!(
+                found, 4,
+                "shape {i}: vertices {vs:?} are not the {e:?} rectangle at {c:?}, angle {angle}"
+            );
         }
     }
 
@@ -367,9 +412,15 @@ impl G {
     /// From a JSON shape.
     pub fn from_json(sh: &Value) -> G {
         if let Some(r) = sh.get("radius").and_then(Value::as_f64) {
-            G::Circle { c: pt(sh.get("center").unwrap_or(&Value::Null)), r }
+            G::Circle {
+                c: pt(sh.get("center").unwrap_or(&Value::Null)),
+                r,
+            }
         } else {
-            let vs = sh.get("vertices").and_then(Value::as_array).unwrap_or_else(|| panic!("no vertices in {sh}"));
+            let vs = sh
+                .get("vertices")
+                .and_then(Value::as_array)
+                .unwrap_or_else(|| panic!("no vertices in {sh}"));
             G::Poly(vs.iter().map(pt).collect())
         }
     }
@@ -377,7 +428,10 @@ impl G {
     /// Shifted copy.
     pub fn shift(&self, dx: f64, dy: f64) -> G {
         match self {
-            G::Circle { c, r } => G::Circle { c: [c[0] + dx, c[1] + dy], r: *r },
+            G::Circle { c, r } => G::Circle {
+                c: [c[0] + dx, c[1] + dy],
+                r: *r,
+            },
             G::Poly(vs) => G::Poly(vs.iter().map(|v| [v[0] + dx, v[1] + dy]).collect()),
         }
     }
@@ -386,9 +440,11 @@ impl G {
     pub fn bounds(&self) -> (f64, f64, f64, f64) {
         match self {
             G::Circle { c, r } => (c[0] - r, c[1] - r, c[0] + r, c[1] + r),
-            G::Poly(vs) => vs.iter().fold((f64::INFINITY, f64::INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY), |b, v| {
-                (b.0.min(v[0]), b.1.min(v[1]), b.2.max(v[0]), b.3.max(v[1]))
-            }),
+            G::Poly(vs) => vs
+                .iter()
+                .fold((f64::INFINITY, f64::INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY), |b, v| {
+                    (b.0.min(v[0]), b.1.min(v[1]), b.2.max(v[0]), b.3.max(v[1]))
+                }),
         }
     }
 
@@ -407,7 +463,11 @@ impl G {
 fn seg_dist(p: [f64; 2], a: [f64; 2], b: [f64; 2]) -> f64 {
     let (ex, ey) = (b[0] - a[0], b[1] - a[1]);
     let len2 = ex * ex + ey * ey;
-    let t = if len2 > 0.0 { (((p[0] - a[0]) * ex + (p[1] - a[1]) * ey) / len2).clamp(0.0, 1.0) } else { 0.0 };
+    let t = if len2 > 0.0 {
+        (((p[0] - a[0]) * ex + (p[1] - a[1]) * ey) / len2).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
     (p[0] - (a[0] + t * ex)).hypot(p[1] - (a[1] + t * ey))
 }
 
@@ -494,7 +554,10 @@ pub fn check_overlaps(doc: &Value) -> Vec<String> {
     let gs: Vec<G> = shapes(doc).iter().map(G::from_json).collect();
     let bc: Vec<([f64; 2], f64)> = gs.iter().map(G::bcircle).collect();
     let shifts: Vec<(f64, f64)> = if periodic {
-        [-1.0, 0.0, 1.0].iter().flat_map(|&i| [-1.0, 0.0, 1.0].iter().map(move |&j| (i * w, j * h))).collect()
+        [-1.0, 0.0, 1.0]
+            .iter()
+            .flat_map(|&i| [-1.0, 0.0, 1.0].iter().map(move |&j| (i * w, j * h)))
+            .collect()
     } else {
         vec![(0.0, 0.0)]
     };
@@ -512,7 +575,9 @@ pub fn check_overlaps(doc: &Value) -> Vec<String> {
                 }
                 let d = clearance(&gs[i], &gs[j].shift(dx, dy));
                 if d < gap - EPS {
-                    errs.push(format!("shapes {i} and {j} (shifted by {dx}, {dy}) are {d} mm apart, less than the gap {gap}"));
+                    errs.push(format!(
+                        "shapes {i} and {j} (shifted by {dx}, {dy}) are {d} mm apart, less than the gap {gap}"
+                    ));
                 }
             }
         }
@@ -535,7 +600,9 @@ pub fn check_inside(doc: &Value) -> Vec<String> {
         } else {
             let (x0, y0, x1, y1) = G::from_json(sh).bounds();
             if x0 < gap - EPS || y0 < gap - EPS || x1 > w - gap + EPS || y1 > h - gap + EPS {
-                errs.push(format!("shape {i}: bounds ({x0}, {y0}, {x1}, {y1}) outside the region {w}x{h} less gap {gap}"));
+                errs.push(format!(
+                    "shape {i}: bounds ({x0}, {y0}, {x1}, {y1}) outside the region {w}x{h} less gap {gap}"
+                ));
             }
         }
     }
@@ -546,7 +613,12 @@ pub fn check_inside(doc: &Value) -> Vec<String> {
 pub fn assert_geometry(doc: &Value) {
     let mut errs = check_inside(doc);
     errs.extend(check_overlaps(doc));
-    assert!(errs.is_empty(), "{} geometry errors, first: {:?}", errs.len(), &errs[..errs.len().min(5)]);
+    assert!(
+        errs.is_empty(),
+        "{} geometry errors, first: {:?}",
+        errs.len(),
+        &errs[..errs.len().min(5)]
+    );
 }
 
 // ---------------------------------------------------------------------------------------------

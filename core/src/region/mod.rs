@@ -99,7 +99,9 @@ impl<'a> PolygonRegion<'a> {
         for ring in ring_slices(points, ring_ends) {
             let a = edges(ring).fold(0.0, |s, (p, q)| s + p.cross(q)) / 2.0;
             let probe = ring.first().copied().unwrap_or_default();
-            let depth = ring_slices(points, ring_ends).filter(|r| !core::ptr::eq(*r, ring) && point_in_poly(probe, r)).count();
+            let depth = ring_slices(points, ring_ends)
+                .filter(|r| !core::ptr::eq(*r, ring) && point_in_poly(probe, r))
+                .count();
             area += if depth % 2 == 0 { a.abs() } else { -a.abs() };
         }
         if !(area > 0.0 && area.is_finite()) {
@@ -109,7 +111,12 @@ impl<'a> PolygonRegion<'a> {
         for p in points {
             bbox = (bbox.0.min(p.x), bbox.1.min(p.y), bbox.2.max(p.x), bbox.3.max(p.y));
         }
-        Ok(PolygonRegion { points, ring_ends, area, bbox })
+        Ok(PolygonRegion {
+            points,
+            ring_ends,
+            area,
+            bbox,
+        })
     }
 
     /// The vertices, all rings one after another.
@@ -312,9 +319,7 @@ impl Region<'_> {
             Region::Annulus { outer, inner } => {
                 let room = S::from_f64(outer) - gap;
                 let c = self.centre();
-                room > S::ZERO
-                    && g.max_dist2(c) <= room * room
-                    && separated(g, &Geo::Circle { c, r: S::from_f64(inner) }, gap)
+                room > S::ZERO && g.max_dist2(c) <= room * room && separated(g, &Geo::Circle { c, r: S::from_f64(inner) }, gap)
             }
             Region::Polygon(p) => poly_contains(&p, g, gap),
         }
@@ -324,7 +329,9 @@ impl Region<'_> {
     /// may go either way).
     pub fn point_inside<S: Scalar>(&self, q: Point<S>) -> bool {
         match *self {
-            Region::Rect { width, height, .. } => q.x >= S::ZERO && q.y >= S::ZERO && q.x <= S::from_f64(width) && q.y <= S::from_f64(height),
+            Region::Rect { width, height, .. } => {
+                q.x >= S::ZERO && q.y >= S::ZERO && q.x <= S::from_f64(width) && q.y <= S::from_f64(height)
+            }
             Region::Circle { radius } => q.dist2(self.centre()) <= S::from_f64(radius * radius),
             Region::Annulus { outer, inner } => {
                 let d = q.dist2(self.centre());
@@ -398,7 +405,11 @@ fn poly_contains<S: Scalar>(p: &PolygonRegion<'_>, g: &Geo<S>, gap: S) -> bool {
             let g2 = gap * gap;
             for (a, b) in p.edges_s::<S>() {
                 for (c, d) in edges(vs) {
-                    let clear = if gap <= S::ZERO { !segments_intersect(a, b, c, d) } else { seg_seg_dist2(a, b, c, d) > g2 };
+                    let clear = if gap <= S::ZERO {
+                        !segments_intersect(a, b, c, d)
+                    } else {
+                        seg_seg_dist2(a, b, c, d) > g2
+                    };
                     if !clear {
                         return false;
                     }
@@ -424,19 +435,43 @@ mod tests {
 
     #[test]
     fn square_with_square_hole_has_the_right_area_and_inside() {
-        let p = pts(&[(0.0, 0.0), (10.0, 0.0), (10.0, 10.0), (0.0, 10.0), (4.0, 4.0), (4.0, 6.0), (6.0, 6.0), (6.0, 4.0)]);
+        let p = pts(&[
+            (0.0, 0.0),
+            (10.0, 0.0),
+            (10.0, 10.0),
+            (0.0, 10.0),
+            (4.0, 4.0),
+            (4.0, 6.0),
+            (6.0, 6.0),
+            (6.0, 4.0),
+        ]);
         let ends = [4, 8];
         let r = PolygonRegion::new(&p, &ends).map(Region::Polygon);
         let Ok(r) = r else { panic!("valid region rejected") };
         assert_eq!(r.area(), 96.0);
         assert!(r.point_inside(Point::new(1.0, 1.0)));
         assert!(!r.point_inside(Point::new(5.0, 5.0)));
-        let small = Geo::Circle { c: Point::new(2.0, 2.0), r: 1.0 };
+        let small = Geo::Circle {
+            c: Point::new(2.0, 2.0),
+            r: 1.0,
+        };
         assert!(r.contains(&small, 0.5));
         assert!(!r.contains(&small, 1.0));
-        assert!(!r.contains(&Geo::Circle { c: Point::new(5.0, 5.0), r: 0.5 }, 0.0));
+        assert!(!r.contains(
+            &Geo::Circle {
+                c: Point::new(5.0, 5.0),
+                r: 0.5
+            },
+            0.0
+        ));
         // A circle around the hole is not inside.
-        assert!(!r.contains(&Geo::Circle { c: Point::new(5.0, 5.0), r: 2.0 }, 0.0));
+        assert!(!r.contains(
+            &Geo::Circle {
+                c: Point::new(5.0, 5.0),
+                r: 2.0
+            },
+            0.0
+        ));
     }
 
     #[test]
@@ -453,11 +488,42 @@ mod tests {
     #[test]
     fn circle_and_annulus_contain_exactly() {
         let c = Region::Circle { radius: 10.0 };
-        assert!(c.contains(&Geo::Circle { c: Point::new(10.0, 15.0), r: 5.0 }, 0.0));
-        assert!(!c.contains(&Geo::Circle { c: Point::new(10.0, 15.0), r: 5.0 }, 0.1));
+        assert!(c.contains(
+            &Geo::Circle {
+                c: Point::new(10.0, 15.0),
+                r: 5.0
+            },
+            0.0
+        ));
+        assert!(!c.contains(
+            &Geo::Circle {
+                c: Point::new(10.0, 15.0),
+                r: 5.0
+            },
+            0.1
+        ));
         let a = Region::Annulus { outer: 10.0, inner: 4.0 };
-        assert!(!a.contains(&Geo::Circle { c: Point::new(10.0, 10.0), r: 1.0 }, 0.0));
-        assert!(a.contains(&Geo::Circle { c: Point::new(10.0, 17.0), r: 2.0 }, 0.0));
-        assert!(a.contains(&Geo::Ring { c: Point::new(10.0, 10.0), r: 9.0, inner: 5.0 }, 0.5));
+        assert!(!a.contains(
+            &Geo::Circle {
+                c: Point::new(10.0, 10.0),
+                r: 1.0
+            },
+            0.0
+        ));
+        assert!(a.contains(
+            &Geo::Circle {
+                c: Point::new(10.0, 17.0),
+                r: 2.0
+            },
+            0.0
+        ));
+        assert!(a.contains(
+            &Geo::Ring {
+                c: Point::new(10.0, 10.0),
+                r: 9.0,
+                inner: 5.0
+            },
+            0.5
+        ));
     }
 }

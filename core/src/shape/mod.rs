@@ -97,7 +97,12 @@ pub struct ShapeList {
 
 impl From<ShapeKind> for ShapeList {
     fn from(k: ShapeKind) -> Self {
-        ShapeList { kinds: [k; MAX_MIX], len: 1, order: MixOrder::Cycle, salt: 0 }
+        ShapeList {
+            kinds: [k; MAX_MIX],
+            len: 1,
+            order: MixOrder::Cycle,
+            salt: 0,
+        }
     }
 }
 
@@ -112,7 +117,12 @@ impl ShapeList {
         for (d, k) in all.iter_mut().zip(kinds) {
             *d = *k;
         }
-        Some(ShapeList { kinds: all, len: kinds.len() as u8, order, salt })
+        Some(ShapeList {
+            kinds: all,
+            len: kinds.len() as u8,
+            order,
+            salt,
+        })
     }
 
     /// The kinds in the mix.
@@ -199,7 +209,11 @@ impl ShapeKind {
             ShapeKind::Ring { inner } => PI * (1.0 - inner * inner),
             ShapeKind::Square | ShapeKind::Rect { .. } => 4.0 * self.aspect(),
             ShapeKind::Triangle | ShapeKind::Polygon { .. } | ShapeKind::Blob { .. } => {
-                let n = if let ShapeKind::Blob { .. } = self { BLOB_VERTICES } else { self.sides() } as f64;
+                let n = if let ShapeKind::Blob { .. } = self {
+                    BLOB_VERTICES
+                } else {
+                    self.sides()
+                } as f64;
                 0.5 * n * libm::sin(2.0 * PI / n)
             }
             ShapeKind::Star { points, inner } => f64::from(points) * inner * libm::sin(PI / f64::from(points)),
@@ -288,7 +302,11 @@ impl ShapeKind {
                 for (d, p) in v.iter_mut().zip(u.iter()) {
                     *d = Point::new(c.x + p.x * scale, c.y + p.y * scale);
                 }
-                Geo::Poly { v, n: BLOB_VERTICES, convex: false }
+                Geo::Poly {
+                    v,
+                    n: BLOB_VERTICES,
+                    convex: false,
+                }
             }
             _ => {
                 let (sin, cos) = Self::sin_cos(angle);
@@ -303,7 +321,11 @@ impl ShapeKind {
         let mut v = [Point::default(); MAX_VERTS];
         match *self {
             ShapeKind::Circle => Geo::Circle { c, r: scale },
-            ShapeKind::Ring { inner } => Geo::Ring { c, r: scale, inner: scale * S::from_f64(inner) },
+            ShapeKind::Ring { inner } => Geo::Ring {
+                c,
+                r: scale,
+                inner: scale * S::from_f64(inner),
+            },
             ShapeKind::Square | ShapeKind::Rect { .. } => {
                 let (hw, hh) = (scale * S::from_f64(self.aspect()), scale);
                 let corner = |sx: S, sy: S| {
@@ -331,7 +353,11 @@ impl ShapeKind {
                     *d = Point::new(c.x + dir.x * rad, c.y + dir.y * rad);
                     dir = rot(dir, ss, cs);
                 }
-                Geo::Poly { v, n, convex: self.convex() }
+                Geo::Poly {
+                    v,
+                    n,
+                    convex: self.convex(),
+                }
             }
             ShapeKind::Blob { .. } => self.geo(c, scale, S::ZERO),
         }
@@ -350,7 +376,11 @@ fn blob_unit<S: Scalar>(delta: f64, angle: S) -> ([Point<S>; BLOB_VERTICES], S) 
     let mut step = [Point::default(); 4];
     let dtheta = tau / S::from_f64(BLOB_VERTICES as f64);
     for (j, (zj, sj)) in z.iter_mut().zip(step.iter_mut()).enumerate() {
-        let phase = if j == 0 { S::ZERO } else { S::unit(mix64(key ^ (j as u64).wrapping_mul(0xA076_1D64_78BD_642F))) * tau };
+        let phase = if j == 0 {
+            S::ZERO
+        } else {
+            S::unit(mix64(key ^ (j as u64).wrapping_mul(0xA076_1D64_78BD_642F))) * tau
+        };
         let (s, c) = phase.sin_cos();
         *zj = Point::new(c, s);
         let (s, c) = (dtheta * S::from_f64((j + 1) as f64)).sin_cos();

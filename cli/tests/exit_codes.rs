@@ -327,10 +327,14 @@ fn halting_late_in_a_long_run() {
             "rect:100:80",
             "--seed",
             "1",
+            // The fast sampler needs far fewer trials than this limit.
+            "--sampler",
+            "reference",
         ],
         Expect {
             count: Some(3000),
             max_trials: 1000,
+            sampler: "reference",
             ..Expect::default()
         },
         100,

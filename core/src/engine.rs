@@ -13,9 +13,10 @@
 //! that cannot fit are error values, never panics.
 
 use crate::coverage::Coverage;
-use crate::geom::{separated, Geo, Point};
+use crate::geom::{edges, point_in_poly, seg_dist2, separated, Geo, Point};
 use crate::region::Region;
 use crate::rng;
+use crate::sampler::{CellSampler, Field, Verdict};
 use crate::scalar::{powf, Scalar};
 use crate::shape::{Placed, ShapeKind, ShapeList};
 use crate::spatial::SpatialHash;
@@ -193,6 +194,32 @@ fn periods<S: Scalar>(reach: S, p: S) -> i64 {
     (reach / p).floor_i64().saturating_add(1).clamp(1, 64)
 }
 
+/// What a placement needs that stays fixed over its trials.
+struct Next<S> {
+    index: u64,
+    kind: ShapeKind,
+    area: f64,
+    base_scale: S,
+    base_r: S,
+    rotated: bool,
+    is_blob: bool,
+    /// The centre range (x0, x1, y0, y1).
+    range: (S, S, S, S),
+}
+
+/// The engine as the cell sampler sees it.
+struct FieldOf<'e, 'a, S: Scalar>(&'e Engine<'a, S>);
+
+impl<S: Scalar> Field<S> for FieldOf<'_, '_, S> {
+    fn edge(&self, p: Point<S>) -> S {
+        self.0.region.signed_clearance(p)
+    }
+
+    fn dist(&self, j: u32, p: Point<S>) -> S {
+        self.0.shape_dist(j, p)
+    }
+}
+
 /// The fill engine over caller-provided storage.
 #[derive(Debug)]
 pub struct Engine<'a, S: Scalar> {
@@ -342,9 +369,15 @@ impl<'a, S: Scalar> Engine<'a, S> {
         self.shapes.len()
     }
 
-    /// Whether `g` (centred at `(x, y)`, bounding radius `r`) keeps its gap from every placed
-    /// shape, and in a periodic region from every image of them.
-    fn clear(&self, g: &Geo<S>, x: S, y: S, r: S) -> bool {
+    /// A placed shape that `g` (centred at `(x, y)`, bounding radius `r`) comes within its gap
+    /// of (or of an image of, in a periodic region); `None` when it keeps clear of all.
+    ///
+    /// With `lowest`, the answer does not depend on the hash table's size: the lowest-indexed
+    /// shape hit among those stored at the finest level where any is hit (a bucket may also
+    /// list shapes of other levels; they are named at their own level). Otherwise the first
+    /// one found.
+    fn blocker(&self, g: &Geo<S>, x: S, y: S, r: S, lowest: bool) -> Option<u32> {
+        let hit: core::cell::Cell<Option<u32>> = core::cell::Cell::new(None);
         let total = self.len as u32;
         let gap = self.gap;
         // Tests candidate `gi`, centred at (qx, qy), against every shape the hash lists.
@@ -353,35 +386,77 @@ impl<'a, S: Scalar> Engine<'a, S> {
                 .query(level, [qx - reach, qy - reach, qx + reach, qy + reach], total, |j| {
                     let Some(p) = self.shapes.get(j as usize) else { return true };
                     let kind = self.kind_of(u64::from(j));
-                    let lim = r + kind.bounding_radius(p.scale) + gap;
+                    let pr = kind.bounding_radius(p.scale);
+                    let lim = r + pr + gap;
                     let (dx, dy) = (p.x - qx, p.y - qy);
-                    dx * dx + dy * dy > lim * lim || separated(gi, &kind.geo(Point::new(p.x, p.y), p.scale, p.angle), gap)
+                    let ok = dx * dx + dy * dy > lim * lim || separated(gi, &kind.geo(Point::new(p.x, p.y), p.scale, p.angle), gap);
+                    if !ok && (!lowest || self.hash.level_for(pr) == level) {
+                        hit.set(Some(hit.get().map_or(j, |h| h.min(j))));
+                    }
+                    ok || lowest
                 })
         };
-        if !self.region.periodic() {
-            return self.hash.occupied().all(|(level, max_r)| test(level, r + max_r + gap, g, x, y));
-        }
+        let periodic = self.region.periodic();
         let (w, h) = self.period;
         for (level, max_r) in self.hash.occupied() {
             let reach = r + max_r + gap;
-            // Every image k W, l H of a stored shape whose reach can meet the candidate; one
-            // period each way unless a long shape in a narrow torus reaches further.
-            let (kx, ky) = (periods(reach, w), periods(reach, h));
-            for l in -ky..=ky {
-                for k in -kx..=kx {
-                    let (ox, oy) = (w * S::from_f64(k as f64), h * S::from_f64(l as f64));
-                    let (qx, qy) = (x + ox, y + oy);
-                    if qx + reach < S::ZERO || qx - reach > w || qy + reach < S::ZERO || qy - reach > h {
-                        continue;
-                    }
-                    let gi = if k == 0 && l == 0 { *g } else { g.shift(ox, oy) };
-                    if !test(level, reach, &gi, qx, qy) {
-                        return false;
+            if !periodic {
+                test(level, reach, g, x, y);
+            } else {
+                // Every image k W, l H of a stored shape whose reach can meet the candidate;
+                // one period each way unless a long shape in a narrow torus reaches further.
+                let (kx, ky) = (periods(reach, w), periods(reach, h));
+                for l in -ky..=ky {
+                    for k in -kx..=kx {
+                        let (ox, oy) = (w * S::from_f64(k as f64), h * S::from_f64(l as f64));
+                        let (qx, qy) = (x + ox, y + oy);
+                        if qx + reach < S::ZERO || qx - reach > w || qy + reach < S::ZERO || qy - reach > h {
+                            continue;
+                        }
+                        let gi = if k == 0 && l == 0 { *g } else { g.shift(ox, oy) };
+                        test(level, reach, &gi, qx, qy);
+                        if hit.get().is_some() && !lowest {
+                            return hit.get();
+                        }
                     }
                 }
             }
+            if hit.get().is_some() {
+                return hit.get();
+            }
         }
-        true
+        None
+    }
+
+    /// Whether `g` (centred at `c`, bounding radius `r`) comes within the gap of placed shape
+    /// `j` (of its image nearest by centre, in a periodic region): the exact test of
+    /// [`Engine::blocker`] for one shape.
+    fn hits(&self, g: &Geo<S>, c: Point<S>, r: S, j: u32) -> bool {
+        let Some(p) = self.shapes.get(j as usize) else { return false };
+        let kind = self.kind_of(u64::from(j));
+        let (mut dx, mut dy) = (p.x - c.x, p.y - c.y);
+        let (mut ox, mut oy) = (S::ZERO, S::ZERO);
+        if self.region.periodic() {
+            let (w, h) = self.period;
+            if dx > w.half() {
+                ox = -w;
+            } else if -dx > w.half() {
+                ox = w;
+            }
+            if dy > h.half() {
+                oy = -h;
+            } else if -dy > h.half() {
+                oy = h;
+            }
+            dx = dx + ox;
+            dy = dy + oy;
+        }
+        let lim = r + kind.bounding_radius(p.scale) + self.gap;
+        if dx * dx + dy * dy > lim * lim {
+            return false;
+        }
+        let other = kind.geo(Point::new(p.x + ox, p.y + oy), p.scale, p.angle);
+        !separated(g, &other, self.gap)
     }
 
     /// Whether a shape overlaps its own periodic images (all of them within its reach).
@@ -473,9 +548,9 @@ impl<'a, S: Scalar> Engine<'a, S> {
         }
     }
 
-    /// Places the next shape, drawing candidates from `rng` until one fits or the trial limit
-    /// is reached. On error nothing is placed and the engine may be stepped again.
-    pub fn step<R: RngCore + ?Sized>(&mut self, rng: &mut R) -> Result<Placement<S>, StepError> {
+    /// What the next placement needs that stays fixed over its trials, or why it cannot be
+    /// made.
+    fn next_shape(&self) -> Result<Next<S>, StepError> {
         let i = self.len;
         let index = i as u64;
         if i >= self.shapes.len() {
@@ -507,64 +582,260 @@ impl<'a, S: Scalar> Engine<'a, S> {
             .region
             .centre_range(ex, ey, self.gap)
             .unwrap_or((S::ZERO, S::ZERO, S::ZERO, S::ZERO));
-        let base_r = kind.bounding_radius(base_scale);
+        Ok(Next {
+            index,
+            kind,
+            area,
+            base_scale,
+            base_r: kind.bounding_radius(base_scale),
+            rotated,
+            is_blob,
+            range,
+        })
+    }
+
+    /// Runs the exact tests on a candidate centre and angle, and places the shape there if it
+    /// passes.
+    #[inline(always)]
+    /// On failure, names the placed shape the candidate hit when that was the reason.
+    /// The cell sampler passes `known`, the shapes its cell knows of: they are tested first, and
+    /// the shape named on failure does not depend on the hash table's size.
+    fn try_at(&mut self, nx: &Next<S>, c: Point<S>, angle: S, trials: u64, known: Option<&[u32]>) -> Result<Placement<S>, Option<u32>> {
+        let kind = nx.kind;
+        let (scale, r, g) = if nx.is_blob {
+            let s: S = kind.scale_for(nx.area, angle);
+            (s, kind.bounding_radius(s), kind.geo(c, s, angle))
+        } else {
+            let (sin, cos) = if nx.rotated { ShapeKind::sin_cos(angle) } else { (S::ZERO, S::ONE) };
+            (nx.base_scale, nx.base_r, kind.geo_sc(c, nx.base_scale, sin, cos))
+        };
+        if let Some(&j) = known.unwrap_or(&[]).iter().find(|&&j| self.hits(&g, c, r, j)) {
+            return Err(Some(j));
+        }
+        if !self.region.contains(&g, self.gap) {
+            return Err(None);
+        }
         let period = if self.region.periodic() { Some(self.period) } else { None };
+        if period.is_some() && self.self_overlaps(&g, r) {
+            return Err(None);
+        }
+        if let Some(j) = self.blocker(&g, c.x, c.y, r, known.is_some()) {
+            return Err(Some(j));
+        }
+        let i = self.len;
+        let shape = Placed {
+            x: c.x,
+            y: c.y,
+            scale,
+            angle,
+        };
+        if let Some(slot) = self.shapes.get_mut(i) {
+            *slot = shape;
+        }
+        self.hash.insert(i as u32, c.x, c.y, r);
+        self.coverage.mark(&g, c, kind.inradius(scale), period);
+        self.len += 1;
+        self.placed_area += nx.area;
+        Ok(Placement {
+            index: nx.index,
+            shape,
+            area: nx.area,
+            trials,
+        })
+    }
+
+    /// Places the next shape, drawing candidates from `rng` until one fits or the trial limit
+    /// is reached. On error nothing is placed and the engine may be stepped again.
+    pub fn step<R: RngCore + ?Sized>(&mut self, rng: &mut R) -> Result<Placement<S>, StepError> {
+        let nx = self.next_shape()?;
+        self.step_reference(&nx, rng)
+    }
+
+    /// The paper's sampler: candidates uniform over the whole centre range.
+    fn step_reference<R: RngCore + ?Sized>(&mut self, nx: &Next<S>, rng: &mut R) -> Result<Placement<S>, StepError> {
         let mut trials = 0u64;
         loop {
             if trials >= self.params.max_trials {
-                return Err(StepError::Halted { index, trials });
+                return Err(StepError::Halted { index: nx.index, trials });
             }
             trials += 1;
             self.trials = self.trials.saturating_add(1);
-            let angle = if rotated { rng::angle::<S, R>(rng) } else { S::ZERO };
+            let angle = if nx.rotated { rng::angle::<S, R>(rng) } else { S::ZERO };
             let ux: S = rng::unit(rng);
             let uy: S = rng::unit(rng);
-            let (x0, x1, y0, y1) = range;
+            let (x0, x1, y0, y1) = nx.range;
             let c = self.region.wrap(Point::new(x0 + ux * (x1 - x0), y0 + uy * (y1 - y0)));
             if self.coverage.covered(c.x, c.y) {
                 continue;
             }
-            let (scale, r, g) = if is_blob {
-                let s: S = kind.scale_for(area, angle);
-                (s, kind.bounding_radius(s), kind.geo(c, s, angle))
-            } else {
-                let (sin, cos) = if rotated { ShapeKind::sin_cos(angle) } else { (S::ZERO, S::ONE) };
-                (base_scale, base_r, kind.geo_sc(c, base_scale, sin, cos))
+            if let Ok(p) = self.try_at(nx, c, angle, trials, None) {
+                return Ok(p);
+            }
+        }
+    }
+
+    /// The clearance the next shape needs at its centre: the radius of a disc about the
+    /// centre that it keeps free of other shapes and of the outside (its inscribed disc, at
+    /// the smallest scale it can take), plus the gap. `None` when no such disc exists: a ring
+    /// whose hole could hold an earlier shape or a hole of the region.
+    fn need(&self, nx: &Next<S>) -> Option<S> {
+        let r = match nx.kind {
+            ShapeKind::Ring { inner } => {
+                // Earlier shapes are larger than this ring's material, so none fits in a hole
+                // of at most that area.
+                let hole_small = inner * inner <= 1.0 - inner * inner;
+                let hole_r = nx.base_scale * S::from_f64(inner);
+                let region_simple = match self.region {
+                    Region::Annulus { inner: hole, .. } => hole_r < S::from_f64(hole) + self.gap,
+                    Region::Polygon(p) => p.ring_ends().len() <= 1,
+                    _ => true,
+                };
+                if !(hole_small && region_simple) {
+                    return None;
+                }
+                nx.base_scale
+            }
+            ShapeKind::Blob { delta } => {
+                // A blob lies inside the disc of radius (1 + 3 delta) times its scale, so its
+                // scale is at least that of a disc of its area over (1 + 3 delta).
+                let min_scale = crate::scalar::sqrtf(nx.area / core::f64::consts::PI) / (1.0 + 3.0 * delta);
+                nx.kind.inradius(S::from_f64(min_scale))
+            }
+            _ => nx.kind.inradius(nx.base_scale),
+        };
+        Some(r + self.gap)
+    }
+
+    /// The signed distance from `p` to the material of placed shape `j` (in a periodic region,
+    /// to its image nearest to `p` by centre): negative inside. An upper bound of the distance
+    /// to the nearest image by material, which is all the cell sampler needs.
+    fn shape_dist(&self, j: u32, p: Point<S>) -> S {
+        let Some(s) = self.shapes.get(j as usize) else {
+            return S::from_f64(f64::MAX);
+        };
+        let kind = self.kind_of(u64::from(j));
+        let mut q = p;
+        if self.region.periodic() {
+            let (w, h) = self.period;
+            // Shift p by the period that brings it nearest to the shape's centre.
+            let shift = |a: S, c: S, m: S| {
+                let hm = m.half();
+                if a - c > hm {
+                    -m
+                } else if c - a > hm {
+                    m
+                } else {
+                    S::ZERO
+                }
             };
-            if !self.region.contains(&g, self.gap) {
-                continue;
+            q = p.shift(shift(p.x, s.x, w), shift(p.y, s.y, h));
+        }
+        let centre = Point::new(s.x, s.y);
+        let dist = centre.dist2(q).sqrt();
+        match kind {
+            ShapeKind::Circle => dist - s.scale,
+            ShapeKind::Ring { inner } => {
+                let hole = s.scale * S::from_f64(inner);
+                if dist >= s.scale {
+                    dist - s.scale
+                } else if dist <= hole {
+                    hole - dist
+                } else {
+                    -(dist - hole).min(s.scale - dist)
+                }
             }
-            if period.is_some() && self.self_overlaps(&g, r) {
-                continue;
+            _ => {
+                let g = kind.geo(centre, s.scale, s.angle);
+                let vs = g.vertices();
+                let m = edges(vs).fold(None, |m: Option<S>, (a, b)| {
+                    let d = seg_dist2(q, a, b);
+                    Some(m.map_or(d, |m| m.min(d)))
+                });
+                let d = m.unwrap_or(S::ZERO).sqrt();
+                if point_in_poly(q, vs) {
+                    -d
+                } else {
+                    d
+                }
             }
-            if !self.clear(&g, c.x, c.y, r) {
-                continue;
+        }
+    }
+
+    /// Places the next shape with the cell sampler: the same distribution of accepted
+    /// placements as [`Engine::step`], far fewer trials late in a fill (see
+    /// [`crate::sampler`]). Halts at the trial limit, or at once when no cell can hold the
+    /// shape. Use one sampler per engine, for every step after the first that uses it.
+    pub fn step_fast<R: RngCore + ?Sized>(&mut self, cells: &mut CellSampler<'_, S>, rng: &mut R) -> Result<Placement<S>, StepError> {
+        let nx = self.next_shape()?;
+        let Some(need) = self.need(&nx) else {
+            return self.step_reference(&nx, rng);
+        };
+        if !cells.ready() {
+            let (x0, y0, _, _) = self.region.bbox();
+            let (w, h) = self.period;
+            cells.init(S::from_f64(x0), S::from_f64(y0), w, h, &FieldOf(self));
+        }
+        cells.wake(need);
+        let mut trials = 0u64;
+        loop {
+            if trials >= self.params.max_trials || cells.is_empty() {
+                return Err(StepError::Halted { index: nx.index, trials });
             }
-            let shape = Placed {
-                x: c.x,
-                y: c.y,
-                scale,
-                angle,
+            trials += 1;
+            self.trials = self.trials.saturating_add(1);
+            let Some((slot, p, quarter)) = cells.draw(rng) else {
+                continue;
             };
-            if let Some(slot) = self.shapes.get_mut(i) {
-                *slot = shape;
+            let angle = if nx.rotated { rng::angle::<S, R>(rng) } else { S::ZERO };
+            let slot = match cells.judge(slot, quarter, need, &FieldOf(self)) {
+                Verdict::Reject => continue,
+                Verdict::Test(s) => s,
+            };
+            let c = self.region.wrap(p);
+            let (x0, x1, y0, y1) = nx.range;
+            if c.x < x0 || c.x > x1 || c.y < y0 || c.y > y1 {
+                cells.note_reject(slot, false);
+                continue;
             }
-            self.hash.insert(i as u32, c.x, c.y, r);
-            self.coverage.mark(&g, c, kind.inradius(scale), period);
-            self.len += 1;
-            self.placed_area += area;
-            return Ok(Placement {
-                index,
-                shape,
-                area,
-                trials,
-            });
+            let known = cells.known(slot);
+            match self.try_at(&nx, c, angle, trials, Some(&known)) {
+                Ok(placed) => {
+                    cells.learn(slot, nx.index as u32, need, &FieldOf(self));
+                    return Ok(placed);
+                }
+                Err(Some(j)) if known.contains(&j) => cells.note_reject(slot, true),
+                Err(Some(j)) => {
+                    cells.note_learned(slot);
+                    cells.learn(slot, j, need, &FieldOf(self));
+                }
+                Err(None) => cells.note_reject(slot, false),
+            }
         }
     }
 
     /// Steps until a stop condition holds or a step fails, calling `on_place` after each
     /// placement.
-    pub fn run<R: RngCore + ?Sized>(&mut self, rng: &mut R, stop: &Stop, mut on_place: impl FnMut(&Placement<S>)) -> StopReason {
+    pub fn run<R: RngCore + ?Sized>(&mut self, rng: &mut R, stop: &Stop, on_place: impl FnMut(&Placement<S>)) -> StopReason {
+        self.run_with(stop, on_place, |e| e.step(rng))
+    }
+
+    /// [`Engine::run`] with the cell sampler ([`Engine::step_fast`]).
+    pub fn run_fast<R: RngCore + ?Sized>(
+        &mut self,
+        cells: &mut CellSampler<'_, S>,
+        rng: &mut R,
+        stop: &Stop,
+        on_place: impl FnMut(&Placement<S>),
+    ) -> StopReason {
+        self.run_with(stop, on_place, |e| e.step_fast(cells, rng))
+    }
+
+    fn run_with(
+        &mut self,
+        stop: &Stop,
+        mut on_place: impl FnMut(&Placement<S>),
+        mut step: impl FnMut(&mut Self) -> Result<Placement<S>, StepError>,
+    ) -> StopReason {
         loop {
             let n = self.len as u64;
             if stop.count.is_some_and(|k| n >= k) {
@@ -579,7 +850,7 @@ impl<'a, S: Scalar> Engine<'a, S> {
                     return StopReason::MinSize;
                 }
             }
-            match self.step(rng) {
+            match step(self) {
                 Ok(p) => on_place(&p),
                 Err(e) => return StopReason::Step(e),
             }

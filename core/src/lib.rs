@@ -13,6 +13,7 @@
 //! - [`geom`], [`shape`], [`region`]: concrete shapes and their exact clearance tests;
 //! - [`spatial`]: the fixed-capacity multi-level spatial hash;
 //! - [`engine`]: parameters, the placement step, stop conditions, statistics;
+//! - [`sampler`]: the cell sampler, candidates only where the next shape could fit;
 //! - [`line`]: the 1D fill (segments in an interval) over its own 1D multi-level hash;
 //! - [`stats`]: the gasket width of the paper's Table 1, exact dimensions, power-law fits.
 //!
@@ -42,6 +43,7 @@ pub mod geom;
 pub mod line;
 pub mod region;
 pub mod rng;
+pub mod sampler;
 pub mod scalar;
 pub mod shape;
 pub mod spatial;
@@ -54,5 +56,6 @@ pub use geom::{Geo, Point};
 pub use line::{line_index_words, Interval, LineEngine, LineParams, LinePlacement, LineStorage, Segment};
 pub use region::{PolygonRegion, Region, RegionError};
 pub use rng::{rng_from_seed, ZetaRng};
+pub use sampler::{Cell, CellSampler, CellStats};
 pub use scalar::Scalar;
 pub use shape::{MixOrder, Placed, ShapeKind, ShapeList, MAX_MIX};

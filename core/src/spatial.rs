@@ -84,7 +84,8 @@ impl<'a, S: Scalar> SpatialHash<'a, S> {
         })
     }
 
-    fn level_for(&self, r: S) -> usize {
+    /// The level a shape of bounding radius `r` is stored at.
+    pub fn level_for(&self, r: S) -> usize {
         let mut l = 0usize;
         while l + 1 < LEVELS {
             let next_cell = self.levels.get(l + 1).map_or(S::ZERO, |v| v.cell);

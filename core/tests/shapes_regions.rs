@@ -8,7 +8,8 @@
 
 use zetafill::geom::separated;
 use zetafill::{
-    index_words, rng_from_seed, Engine, Geo, Params, Placed, Point, PolygonRegion, Region, ShapeKind, Stop, StopReason, Storage,
+    index_words, rng_from_seed, Cell, CellSampler, Engine, Geo, Params, Placed, Point, PolygonRegion, Region, ShapeKind, Stop, StopReason,
+    Storage,
 };
 
 const KINDS: [ShapeKind; 8] = [
@@ -273,7 +274,9 @@ fn check(geos: &[Geo<f64>], region: &Region<'_>, gap: f64, pts: &[Point<f64>], e
     Ok(geos.len())
 }
 
-fn fill(kind: ShapeKind, region: Region<'_>, gap: f64, count: u64, seed: u64) -> (Vec<Geo<f64>>, StopReason) {
+/// A fill with the reference sampler, or (`fast`) with the cell sampler over a pool of
+/// `cells` cells.
+fn fill_with(kind: ShapeKind, region: Region<'_>, gap: f64, count: u64, seed: u64, fast: Option<usize>) -> (Vec<Geo<f64>>, StopReason) {
     let cap = count as usize;
     let mut shapes = vec![Placed::<f64>::default(); cap];
     let mut index = vec![0u32; index_words(cap)];
@@ -293,15 +296,23 @@ fn fill(kind: ShapeKind, region: Region<'_>, gap: f64, count: u64, seed: u64) ->
     };
     let mut e = Engine::<f64>::new(params, region, storage).unwrap_or_else(|err| panic!("{kind:?}: {err}"));
     let mut rng = rng_from_seed(seed);
-    let reason = e.run(
-        &mut rng,
-        &Stop {
-            count: Some(count),
-            ..Stop::default()
-        },
-        |_| {},
-    );
+    let stop = Stop {
+        count: Some(count),
+        ..Stop::default()
+    };
+    let reason = match fast {
+        None => e.run(&mut rng, &stop, |_| {}),
+        Some(n) => {
+            let mut pool = vec![Cell::<f64>::default(); n];
+            let mut cells = CellSampler::new(&mut pool).unwrap_or_else(|_| panic!("cells"));
+            e.run_fast(&mut cells, &mut rng, &stop, |_| {})
+        }
+    };
     ((0..e.placed().len()).filter_map(|i| e.geo(i)).collect(), reason)
+}
+
+fn fill(kind: ShapeKind, region: Region<'_>, gap: f64, count: u64, seed: u64) -> (Vec<Geo<f64>>, StopReason) {
+    fill_with(kind, region, gap, count, seed, None)
 }
 
 #[test]
@@ -338,24 +349,34 @@ fn every_shape_in_every_region() {
         Region::Polygon(poly),
     ];
     let mut total = 0;
-    for (ri, region) in regions.iter().enumerate() {
-        for (ki, &kind) in KINDS.iter().enumerate() {
-            for gap in [0.0, 0.8] {
-                let (geos, reason) = fill(kind, *region, gap, 100, 1 + ri as u64 * 10 + ki as u64);
-                assert!(
-                    !matches!(reason, StopReason::Step(zetafill::StepError::CannotFit { .. })),
-                    "{kind:?} in region {ri}: {reason:?}"
-                );
-                assert!(
-                    geos.len() >= 20,
-                    "{kind:?} in region {ri} gap {gap}: only {} shapes ({reason:?})",
-                    geos.len()
-                );
-                total += check(&geos, region, gap, &pts, &ends).unwrap_or_else(|e| panic!("{kind:?} in region {ri} gap {gap}: {e}"));
+    // The reference sampler, the cell sampler, and the cell sampler with a pool too small to
+    // refine (it must stay correct).
+    for fast in [None, Some(100_000), Some(6)] {
+        for (ri, region) in regions.iter().enumerate() {
+            for (ki, &kind) in KINDS.iter().chain(&[ShapeKind::Ring { inner: 0.75 }]).enumerate() {
+                // A ring with a hole larger than its material (the cell sampler's fallback)
+                // is too large for the annulus's band.
+                if ki == KINDS.len() && matches!(region, Region::Annulus { .. }) {
+                    continue;
+                }
+                for gap in [0.0, 0.8] {
+                    let (geos, reason) = fill_with(kind, *region, gap, 100, 1 + ri as u64 * 10 + ki as u64, fast);
+                    assert!(
+                        !matches!(reason, StopReason::Step(zetafill::StepError::CannotFit { .. })),
+                        "{kind:?} in region {ri}: {reason:?}"
+                    );
+                    assert!(
+                        geos.len() >= 20,
+                        "{kind:?} in region {ri} gap {gap} cells {fast:?}: only {} shapes ({reason:?})",
+                        geos.len()
+                    );
+                    total += check(&geos, region, gap, &pts, &ends)
+                        .unwrap_or_else(|e| panic!("{kind:?} in region {ri} gap {gap} cells {fast:?}: {e}"));
+                }
             }
         }
     }
-    assert!(total > 4000, "{total} shapes checked");
+    assert!(total > 3 * 4500, "{total} shapes checked");
 }
 
 #[test]

@@ -124,6 +124,9 @@ pub fn scene_args(s: &Scene) -> Vec<String> {
         s.seed.to_string(),
         "--count".into(),
         s.count.to_string(),
+        // The canonical digests (and the firmware's) are the reference sampler's.
+        "--sampler".into(),
+        "reference".into(),
     ];
     if s.periodic {
         v.push("--periodic".into());

@@ -199,6 +199,8 @@ pub struct Expect<'a> {
     pub gap: f64,
     /// Trial limit.
     pub max_trials: u64,
+    /// `params.sampler` (the default is "fast").
+    pub sampler: &'a str,
 }
 
 impl Default for Expect<'_> {
@@ -215,6 +217,7 @@ impl Default for Expect<'_> {
             count: None,
             gap: 0.0,
             max_trials: 10_000_000,
+            sampler: "fast",
         }
     }
 }
@@ -283,7 +286,7 @@ pub fn check_doc(doc: &Value, e: &Expect) -> bool {
     assert_eq!(u(p, "seed"), e.seed, "params.seed");
     assert_eq!(s(p, "shape"), e.shape, "params.shape");
     assert_eq!(s(p, "rotate"), e.rotate, "params.rotate");
-    assert_eq!(s(p, "sampler"), "reference", "params.sampler");
+    assert_eq!(s(p, "sampler"), e.sampler, "params.sampler");
     assert_eq!(f(p, "gap"), e.gap, "params.gap");
     assert_eq!(u(p, "max_trials"), e.max_trials, "params.max_trials");
     if let Some(k) = e.count {

@@ -370,6 +370,32 @@ impl Region<'_> {
         }
     }
 
+    /// The signed distance from a point to the outside of the region: positive inside,
+    /// negative outside; a periodic region has no outside (a distance larger than it).
+    pub fn signed_clearance<S: Scalar>(&self, q: Point<S>) -> S {
+        match *self {
+            Region::Rect {
+                periodic: true,
+                width,
+                height,
+            } => S::from_f64(4.0 * width.max(height)),
+            Region::Rect { width, height, .. } => q.x.min(S::from_f64(width) - q.x).min(q.y).min(S::from_f64(height) - q.y),
+            Region::Circle { radius } => S::from_f64(radius) - q.dist2(self.centre()).sqrt(),
+            Region::Annulus { outer, inner } => {
+                let t = q.dist2(self.centre()).sqrt();
+                (S::from_f64(outer) - t).min(t - S::from_f64(inner))
+            }
+            Region::Polygon(p) => {
+                let d = self.boundary_dist2(q).sqrt();
+                if p.inside(q) {
+                    d
+                } else {
+                    -d
+                }
+            }
+        }
+    }
+
     /// The point `p` wrapped into the period (unchanged unless periodic).
     pub fn wrap<S: Scalar>(&self, p: Point<S>) -> Point<S> {
         if !self.periodic() {

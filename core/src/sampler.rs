@@ -1,0 +1,697 @@
+//! The cell sampler: candidates drawn only where the next shape could fit, with exactly the
+//! distribution of accepted placements of the paper's sampler.
+//!
+//! The paper's sampler (seed 001, section 2) draws centres uniformly over the whole region
+//! and keeps the first that passes the exact tests. Late in a fill almost every candidate is
+//! rejected: the trials per placement grow like `n^(c-1)`. This sampler keeps a set of
+//! square-ish cells that covers every centre where the next shape could still go, and draws
+//! candidates only inside them.
+//!
+//! ## The cells
+//! The region's bounding box is cut into a grid of level-0 cells; a cell of level `k + 1` is a
+//! quarter of one of level `k`. Each cell stores `d`, an upper bound of the clearance at its
+//! centre: the signed distance from the centre to the outside of the region, and to the
+//! material of the (at most [`NEAR`]) placed shapes it knows of (negative inside a shape).
+//! Leaving shapes out only makes `d` larger, so `d` is an upper bound whichever shapes a cell
+//! knows; knowing the nearest ones makes it tight. Clearance is 1-Lipschitz, so no point of a
+//! cell whose half diagonal is `h` has clearance above `u = d + h`.
+//!
+//! Cells learn their neighbours from the trials themselves: a candidate that fails the exact
+//! test names the shape it hit, and the cell it was drawn in adds that shape to its list (it
+//! keeps the nearest [`NEAR`]); the cell that receives a shape learns it at once. A split cell's
+//! children start with their parent's list. So bounds tighten as shapes are placed without any
+//! search of the spatial index.
+//!
+//! A shape whose inscribed disc has radius `r` can sit at a point only where the clearance is
+//! at least `need = r + gap`. So a cell with `u < need` holds no valid centre for the next
+//! shape: it is put to sleep, and woken when a later, smaller shape's `need` falls to `u`.
+//! Deep sleepers are kept unsorted below a floor `F` (each has `u < F`); when a shape's need
+//! falls below `F`, one pass lowers the floor to 97% of the need and moves every cell at or
+//! above it out, so a pass comes only when the need has shrunk by 3%. Cells between the floor
+//! and the need wait in a small max-heap and wake as soon as the need reaches them. A cell
+//! with `u <= 0` lies inside shape material and is dropped for good. A cell that is only
+//! partly valid and larger than the need is split into its four children; so cells refine as
+//! the shapes shrink, down to 23 levels below the first grid.
+//!
+//! ## Why the accepted placements are exactly the reference's
+//! Every trial draws a point uniformly over the union `U` of the live cells (a cell chosen
+//! with probability proportional to its area, exactly, with integer weights; then a uniform
+//! point in it), then accepts the point if and only if it is a valid centre: points in a cell
+//! (or child) shown to be too tight are rejected, which is right because no valid centre lies
+//! there; every other point meets the reference sampler's own range and exact tests. Cells are
+//! only ever removed from `U` when they hold no valid centre, so `U` always contains the set
+//! `V` of valid centres. Within one trial the chance of accepting a point is therefore
+//! `1 / |U|` at every point of `V` and 0 elsewhere: given that a trial accepts, the accepted
+//! centre is uniform over `V`. Splitting, sleeping and dropping cells change `U` between
+//! trials but never this property, so the accepted centre of every placement is uniform over
+//! `V` (and with the angle drawn uniformly and independently, uniform over the valid (centre,
+//! angle) pairs), exactly as in the reference. When `U` is empty no centre is valid: the fill
+//! halts, with certainty rather than after the trial limit.
+//!
+//! Shapes without a clearance condition fall back to the reference sampler: a ring whose hole
+//! is larger than its material (an earlier shape may sit in that hole, around the new
+//! centre), or a ring in a region with holes (the ring may enclose one).
+//!
+//! ## Storage
+//! The caller lends a slice of [`Cell`]s (32 bytes each for `f64`). Live cells sit at its
+//! start, grouped by level; deep sleepers at the end of its first seven eighths; the waiting
+//! heap in the last eighth. When the slice is full, cells
+//! are no longer split: sampling stays exact, only slower. Nothing allocates or panics.
+
+use crate::geom::Point;
+use crate::scalar::Scalar;
+use rand_core::RngCore;
+
+/// Number of cell levels (a level-0 cell split 23 times at most).
+pub const CELL_LEVELS: usize = 24;
+
+/// How many placed shapes a cell keeps track of.
+pub const NEAR: usize = 4;
+
+/// At most this many level-0 cells along a side.
+const GRID0: u32 = 16;
+
+/// A drawn cell whose half diagonal is above `SPLIT * need` is split.
+const SPLIT: f64 = 1.4;
+
+/// A drawn cell that has rejected this many candidates through the exact test is split
+/// whatever its size, so that a cell holding no valid centre is eventually retired.
+const STUBBORN: u32 = 8;
+
+/// A wake pass lowers the floor to this fraction of the need.
+const FLOOR: f64 = 0.97;
+
+/// The empty list entry.
+const NONE: u32 = u32::MAX;
+
+/// Bits of a packed cell word that hold the x or y index (the level, or the number of
+/// rejected candidates, sits above them).
+const X_BITS: u32 = 27;
+
+/// One cell: its level and grid position, the shapes it knows of, and the clearance bound at
+/// its centre.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Cell<S> {
+    /// The x index in the low [`X_BITS`] bits, the level above.
+    xl: u32,
+    /// The y index in the low [`X_BITS`] bits, the candidates rejected above.
+    yr: u32,
+    near: [u32; NEAR],
+    /// The bound on the clearance anywhere in the cell, from the outside of the region and
+    /// the known shapes.
+    u: S,
+}
+
+impl<S: Scalar> Default for Cell<S> {
+    fn default() -> Self {
+        Cell {
+            xl: 0,
+            yr: 0,
+            near: [NONE; NEAR],
+            u: S::ZERO,
+        }
+    }
+}
+
+impl<S> Cell<S> {
+    #[inline]
+    fn level(&self) -> u32 {
+        self.xl >> X_BITS
+    }
+
+    #[inline]
+    fn ix(&self) -> u32 {
+        self.xl & ((1 << X_BITS) - 1)
+    }
+
+    #[inline]
+    fn iy(&self) -> u32 {
+        self.yr & ((1 << X_BITS) - 1)
+    }
+
+    #[inline]
+    fn rejects(&self) -> u32 {
+        self.yr >> X_BITS
+    }
+}
+
+/// What the cells need to know of the fill: distances to the outside of the region and to
+/// placed shapes.
+pub(crate) trait Field<S> {
+    /// The signed distance from `p` to the outside of the region (positive inside).
+    fn edge(&self, p: Point<S>) -> S;
+    /// An upper bound of the signed distance from `p` to the material of shape `j`.
+    fn dist(&self, j: u32, p: Point<S>) -> S;
+}
+
+#[derive(Clone, Copy, Debug, Default)]
+struct LevelGeom<S> {
+    w: S,
+    h: S,
+    half_diag: S,
+}
+
+/// Counters of the cell sampler, for benchmarks and tests.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct CellStats {
+    /// Live cells (candidates are drawn in them).
+    pub live: usize,
+    /// Sleeping cells (too tight for the shapes so far).
+    pub sleeping: usize,
+    /// The most cells held at once.
+    pub peak: usize,
+    /// Splits made.
+    pub splits: u64,
+    /// Splits skipped because the storage was full.
+    pub refused_splits: u64,
+    /// Cells dropped for good (inside shape material or outside the region).
+    pub dropped: u64,
+    /// The finest level in use.
+    pub finest_level: u32,
+    /// Trials rejected by their cell alone (too tight, or in a too tight quarter).
+    pub cell_rejects: u64,
+    /// Trials rejected by a shape their cell knew.
+    pub known_rejects: u64,
+    /// Trials rejected by a shape their cell did not know (it learns it).
+    pub learned: u64,
+}
+
+/// What a trial learns from the cell it drew.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Verdict {
+    /// The point holds no valid centre.
+    Reject,
+    /// The point must go through the exact tests; it lies in the live cell at this slot.
+    Test(usize),
+}
+
+/// The cell structure over caller-provided storage. Build it with [`CellSampler::new`] and
+/// pass it to [`crate::Engine::step_fast`] or [`crate::Engine::run_fast`]; one sampler serves
+/// one engine.
+#[derive(Debug)]
+pub struct CellSampler<'c, S> {
+    pool: &'c mut [Cell<S>],
+    /// Level `k`'s live cells are `pool[starts[k]..starts[k + 1]]`; `starts[CELL_LEVELS]` is
+    /// the number of live cells.
+    starts: [u32; CELL_LEVELS + 1],
+    /// Cells `pool[..main]` hold the live cells (from the start) and the deep sleepers (from
+    /// the end); `pool[main..]` holds the waiting heap.
+    main: usize,
+    /// Deep sleepers, unsorted: entry `i` is `pool[main - 1 - i]`. Every one's bound is below
+    /// `floor`.
+    asleep: usize,
+    /// Every deep sleeper's bound is below this.
+    floor: S,
+    /// Waiting cells, a max-heap by bound in `pool[main..main + waiting]`: too tight for the
+    /// current need but at or above the floor, so they must wake as soon as the need falls to
+    /// their bound.
+    waiting: usize,
+    /// Sum over live cells of their area in units of the finest level's cell.
+    weight: u64,
+    origin: Point<S>,
+    geom: [LevelGeom<S>; CELL_LEVELS],
+    slack: S,
+    ready: bool,
+    stats: CellStats,
+}
+
+/// Why a cell sampler could not be set up: its storage is empty (or beyond `u32` indices).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct NoCells;
+
+impl<'c, S: Scalar> CellSampler<'c, S> {
+    /// A sampler over `pool` (at least one cell; the README gives the cells a fill needs per
+    /// shape). It lays out its grid on the first step.
+    pub fn new(pool: &'c mut [Cell<S>]) -> Result<Self, NoCells> {
+        if pool.is_empty() || pool.len() > u32::MAX as usize {
+            return Err(NoCells);
+        }
+        Ok(CellSampler {
+            main: pool.len() - (pool.len() / 8),
+            pool,
+            starts: [0; CELL_LEVELS + 1],
+            asleep: 0,
+            floor: S::from_f64(f64::MAX),
+            waiting: 0,
+            weight: 0,
+            origin: Point::new(S::ZERO, S::ZERO),
+            geom: [LevelGeom::default(); CELL_LEVELS],
+            slack: S::ZERO,
+            ready: false,
+            stats: CellStats::default(),
+        })
+    }
+
+    /// The total area of the live cells.
+    pub fn live_area(&self) -> f64 {
+        let g = self.lg(CELL_LEVELS as u32 - 1);
+        self.weight as f64 * (g.w * g.h).to_f64()
+    }
+
+    /// The counters so far.
+    pub fn stats(&self) -> CellStats {
+        let mut s = self.stats;
+        s.live = self.live();
+        s.sleeping = self.asleep + self.waiting;
+        s
+    }
+
+    /// Whether the grid has been laid out.
+    pub(crate) fn ready(&self) -> bool {
+        self.ready
+    }
+
+    #[inline]
+    fn live(&self) -> usize {
+        self.start(CELL_LEVELS)
+    }
+
+    /// Whether no live cell is left.
+    pub(crate) fn is_empty(&self) -> bool {
+        self.live() == 0
+    }
+
+    #[inline]
+    fn start(&self, k: usize) -> usize {
+        self.starts.get(k).map_or(0, |&v| v as usize)
+    }
+
+    #[inline]
+    fn bump(&mut self, k: usize, up: bool) {
+        if let Some(v) = self.starts.get_mut(k) {
+            *v = if up { v.saturating_add(1) } else { v.saturating_sub(1) };
+        }
+    }
+
+    /// A cell of level `level` weighs `4^(CELL_LEVELS - 1 - level)`: its area in cells of the
+    /// finest level.
+    #[inline]
+    fn shift(level: usize) -> u32 {
+        2 * (CELL_LEVELS - 1 - level) as u32
+    }
+
+    #[inline]
+    fn lg(&self, level: u32) -> LevelGeom<S> {
+        self.geom.get(level as usize).copied().unwrap_or_default()
+    }
+
+    /// The centre of a cell.
+    fn centre(&self, c: &Cell<S>) -> Point<S> {
+        let g = self.lg(c.level());
+        let half = S::ONE.half();
+        Point::new(
+            self.origin.x + (S::from_f64(f64::from(c.ix())) + half) * g.w,
+            self.origin.y + (S::from_f64(f64::from(c.iy())) + half) * g.h,
+        )
+    }
+
+    /// The bound on the clearance anywhere in the cell (with the rounding slack).
+    #[inline]
+    fn upper(&self, c: &Cell<S>) -> S {
+        c.u + self.slack
+    }
+
+    /// The bound on the clearance anywhere in the cell at `centre` with half diagonal
+    /// `half_diag`, from the outside of the region and the shapes `near`: the clearance at
+    /// the centre is at most each of their distances, and clearance is 1-Lipschitz.
+    fn bound(f: &impl Field<S>, near: &[u32; NEAR], centre: Point<S>, half_diag: S) -> S {
+        near.iter()
+            .filter(|&&j| j != NONE)
+            .fold(f.edge(centre), |m, &j| m.min(f.dist(j, centre)))
+            + half_diag
+    }
+
+    /// Lays out the level-0 grid over the box `(x0, y0, w, h)`, bounding each cell by its
+    /// distance to the outside of the region, and drops the cells outside the region.
+    pub(crate) fn init(&mut self, x0: S, y0: S, w: S, h: S, f: &impl Field<S>) {
+        let (wf, hf) = (w.to_f64(), h.to_f64());
+        let side = wf.max(hf) / f64::from(GRID0);
+        let (mut nx, mut ny) = (ceil_u32(wf / side).clamp(1, GRID0), ceil_u32(hf / side).clamp(1, GRID0));
+        if (nx * ny) as usize > self.main {
+            (nx, ny) = (1, 1);
+        }
+        self.origin = Point::new(x0, y0);
+        let (mut cw, mut ch) = (w / S::from_f64(f64::from(nx)), h / S::from_f64(f64::from(ny)));
+        for g in self.geom.iter_mut() {
+            *g = LevelGeom {
+                w: cw,
+                h: ch,
+                half_diag: (cw * cw + ch * ch).sqrt().half(),
+            };
+            cw = cw.half();
+            ch = ch.half();
+        }
+        self.slack = S::from_f64(1e-9 * wf.max(hf)) + S::from_f64(1e-12);
+        self.starts = [0; CELL_LEVELS + 1];
+        self.asleep = 0;
+        self.waiting = 0;
+        self.weight = 0;
+        for iy in 0..ny {
+            for ix in 0..nx {
+                let mut c = Cell {
+                    xl: ix,
+                    yr: iy,
+                    ..Cell::default()
+                };
+                c.u = Self::bound(f, &c.near, self.centre(&c), self.lg(0).half_diag);
+                if self.upper(&c) > S::ZERO {
+                    self.insert_live(c);
+                } else {
+                    self.stats.dropped += 1;
+                }
+            }
+        }
+        self.ready = true;
+    }
+
+    fn note_peak(&mut self) {
+        self.stats.peak = self.stats.peak.max(self.live() + self.asleep + self.waiting);
+    }
+
+    /// Adds a live cell at the end of its level's run, moving one cell of each finer level.
+    /// Returns its slot (cells of its level keep their slots while others of that level are
+    /// added).
+    fn insert_live(&mut self, c: Cell<S>) -> usize {
+        let k = c.level() as usize;
+        if self.live() + self.asleep >= self.main || k >= CELL_LEVELS {
+            return usize::MAX;
+        }
+        let mut hole = self.start(CELL_LEVELS);
+        for j in (k + 1..CELL_LEVELS).rev() {
+            let first = self.start(j);
+            if first != hole {
+                let moved = self.pool.get(first).copied().unwrap_or_default();
+                if let Some(slot) = self.pool.get_mut(hole) {
+                    *slot = moved;
+                }
+            }
+            hole = first;
+            self.bump(j, true);
+        }
+        if let Some(slot) = self.pool.get_mut(hole) {
+            *slot = c;
+        }
+        self.bump(CELL_LEVELS, true);
+        self.weight += 1u64 << Self::shift(k);
+        self.stats.finest_level = self.stats.finest_level.max(c.level());
+        self.note_peak();
+        hole
+    }
+
+    /// Removes the live cell at `slot` (of level `k`), filling the gap from the end of its
+    /// level's run and moving one cell of each finer level back.
+    fn remove_live(&mut self, slot: usize, k: usize) {
+        let mut hole = slot;
+        for j in k..CELL_LEVELS {
+            let last = self.start(j + 1).saturating_sub(1);
+            if last != hole {
+                let moved = self.pool.get(last).copied().unwrap_or_default();
+                if let Some(s) = self.pool.get_mut(hole) {
+                    *s = moved;
+                }
+            }
+            hole = last;
+            if j + 1 < CELL_LEVELS {
+                self.bump(j + 1, false);
+            }
+        }
+        self.bump(CELL_LEVELS, false);
+        self.weight -= 1u64 << Self::shift(k);
+    }
+
+    /// Retires a cell too tight for the current need: dropped when it lies inside shape
+    /// material, a deep sleeper when its bound is below the floor, otherwise waiting. (With
+    /// no room left it stays live: never exact to drop a cell that could hold a shape.)
+    fn retire(&mut self, c: Cell<S>) {
+        let u = self.upper(&c);
+        if u <= S::ZERO {
+            self.stats.dropped += 1;
+            return;
+        }
+        if u < self.floor && self.live() + self.asleep < self.main {
+            if let Some(slot) = self.pool.get_mut(self.main - 1 - self.asleep) {
+                *slot = c;
+            }
+            self.asleep += 1;
+            self.note_peak();
+        } else if !self.push_waiting(c) {
+            self.insert_live(c);
+        }
+    }
+
+    fn waiting_key(&self, k: usize) -> S {
+        self.pool.get(self.main + k).map_or(S::ZERO, |c| self.upper(c))
+    }
+
+    fn swap_waiting(&mut self, a: usize, b: usize) {
+        let (a, b) = (self.main + a, self.main + b);
+        if a < self.pool.len() && b < self.pool.len() {
+            self.pool.swap(a, b);
+        }
+    }
+
+    /// Adds a waiting cell; false when the heap is full.
+    fn push_waiting(&mut self, c: Cell<S>) -> bool {
+        let Some(slot) = self.pool.get_mut(self.main + self.waiting) else {
+            return false;
+        };
+        *slot = c;
+        let mut i = self.waiting;
+        self.waiting += 1;
+        while i > 0 {
+            let parent = (i - 1) / 2;
+            if self.waiting_key(parent) >= self.waiting_key(i) {
+                break;
+            }
+            self.swap_waiting(parent, i);
+            i = parent;
+        }
+        self.note_peak();
+        true
+    }
+
+    fn pop_waiting(&mut self) -> Option<Cell<S>> {
+        if self.waiting == 0 {
+            return None;
+        }
+        let top = self.pool.get(self.main).copied()?;
+        self.swap_waiting(0, self.waiting - 1);
+        self.waiting -= 1;
+        let mut i = 0;
+        loop {
+            let (l, r) = (2 * i + 1, 2 * i + 2);
+            let mut big = i;
+            if l < self.waiting && self.waiting_key(l) > self.waiting_key(big) {
+                big = l;
+            }
+            if r < self.waiting && self.waiting_key(r) > self.waiting_key(big) {
+                big = r;
+            }
+            if big == i {
+                break;
+            }
+            self.swap_waiting(i, big);
+            i = big;
+        }
+        Some(top)
+    }
+
+    /// Makes every cell that could hold a shape needing `need` live. When `need` is below the
+    /// floor, one pass over the deep sleepers lowers the floor to a fraction of `need` and
+    /// moves every cell at or above it out (live, or waiting); then waiting cells whose bound
+    /// reaches `need` wake.
+    pub(crate) fn wake(&mut self, need: S) {
+        if need < self.floor {
+            self.floor = need * S::from_f64(FLOOR);
+            let mut i = 0;
+            while i < self.asleep {
+                let Some(c) = self.pool.get(self.main - 1 - i).copied() else {
+                    break;
+                };
+                if self.upper(&c) >= self.floor {
+                    // Fill entry i with the last deep sleeper, then move c up.
+                    let last = self.pool.get(self.main - self.asleep).copied().unwrap_or_default();
+                    if let Some(e) = self.pool.get_mut(self.main - 1 - i) {
+                        *e = last;
+                    }
+                    self.asleep -= 1;
+                    if self.upper(&c) >= need || !self.push_waiting(c) {
+                        self.insert_live(c);
+                    }
+                } else {
+                    i += 1;
+                }
+            }
+        }
+        while self.waiting > 0 && self.waiting_key(0) >= need {
+            match self.pop_waiting() {
+                Some(c) => {
+                    self.insert_live(c);
+                }
+                None => break,
+            }
+        }
+    }
+
+    /// Draws a live cell with probability proportional to its area (exactly: integer weights
+    /// and an unbiased bounded draw) and a uniform point in it. Returns the cell's slot, the
+    /// point, and which quarter of the cell the point is in.
+    pub(crate) fn draw<R: RngCore + ?Sized>(&self, rng: &mut R) -> Option<(usize, Point<S>, (bool, bool))> {
+        let total = self.weight;
+        if total == 0 {
+            return None;
+        }
+        // Lemire's method: a uniform integer below `total` without bias.
+        let threshold = total.wrapping_neg() % total;
+        let mut r = loop {
+            let m = u128::from(rng.next_u64()) * u128::from(total);
+            if (m as u64) >= threshold {
+                break (m >> 64) as u64;
+            }
+        };
+        let mut slot = None;
+        for k in 0..CELL_LEVELS {
+            let count = (self.start(k + 1) - self.start(k)) as u64;
+            let w = count << Self::shift(k);
+            if r < w {
+                slot = Some(self.start(k) + (r >> Self::shift(k)) as usize);
+                break;
+            }
+            r -= w;
+        }
+        let slot = slot?;
+        let c = self.pool.get(slot)?;
+        let g = self.lg(c.level());
+        let ux: S = crate::rng::unit(rng);
+        let uy: S = crate::rng::unit(rng);
+        let p = Point::new(
+            self.origin.x + (S::from_f64(f64::from(c.ix())) + ux) * g.w,
+            self.origin.y + (S::from_f64(f64::from(c.iy())) + uy) * g.h,
+        );
+        let half = S::ONE.half();
+        Some((slot, p, (ux >= half, uy >= half)))
+    }
+
+    /// Restructures the drawn cell: a cell too tight for `need` is retired; a cell much larger
+    /// than `need` is split into children that inherit its shapes. Says whether the drawn
+    /// point (in quarter `quarter` of the cell) can still be valid, and in which live cell it
+    /// lies.
+    pub(crate) fn judge(&mut self, slot: usize, quarter: (bool, bool), need: S, f: &impl Field<S>) -> Verdict {
+        let Some(c) = self.pool.get(slot).copied() else {
+            return Verdict::Reject;
+        };
+        let level = c.level();
+        let g = self.lg(level);
+        if self.upper(&c) < need {
+            self.stats.cell_rejects += 1;
+            self.remove_live(slot, level as usize);
+            self.retire(c);
+            return Verdict::Reject;
+        }
+        let big = g.half_diag > need * S::from_f64(SPLIT);
+        if !((big || c.rejects() >= STUBBORN) && (level as usize) + 1 < CELL_LEVELS) {
+            return Verdict::Test(slot);
+        }
+        if self.live() + self.asleep + 3 > self.main {
+            self.stats.refused_splits += 1;
+            return Verdict::Test(slot);
+        }
+        self.stats.splits += 1;
+        self.remove_live(slot, level as usize);
+        let half_diag = self.lg(level + 1).half_diag;
+        let mut verdict = Verdict::Reject;
+        for q in 0..4u32 {
+            let (qx, qy) = (q & 1 == 1, q & 2 == 2);
+            let mut child = Cell {
+                xl: ((level + 1) << X_BITS) | (c.ix() * 2 + u32::from(qx)),
+                yr: c.iy() * 2 + u32::from(qy),
+                near: c.near,
+                u: S::ZERO,
+            };
+            // A child's bound is also at most its parent's.
+            child.u = Self::bound(f, &child.near, self.centre(&child), half_diag).min(c.u);
+            if self.upper(&child) < need {
+                self.retire(child);
+            } else {
+                let at = self.insert_live(child);
+                if (qx, qy) == quarter {
+                    verdict = Verdict::Test(at);
+                }
+            }
+        }
+        if verdict == Verdict::Reject {
+            self.stats.cell_rejects += 1;
+        }
+        verdict
+    }
+
+    /// The shapes the live cell at `slot` knows of.
+    pub(crate) fn known(&self, slot: usize) -> [u32; NEAR] {
+        self.pool.get(slot).map_or([NONE; NEAR], |c| c.near)
+    }
+
+    /// Counts a trial in the live cell at `slot` rejected by a shape the cell knew (`known`)
+    /// or by the exact test otherwise.
+    pub(crate) fn note_reject(&mut self, slot: usize, known: bool) {
+        if known {
+            self.stats.known_rejects += 1;
+        }
+        if let Some(c) = self.pool.get_mut(slot) {
+            if c.rejects() < STUBBORN {
+                c.yr += 1 << X_BITS;
+            }
+        }
+    }
+
+    /// Tells the live cell at `slot` of shape `j` (hit by a candidate drawn in it, or placed
+    /// in it): the cell keeps it if it is among the [`NEAR`] nearest it knows, lowers its
+    /// bound, and is retired if that leaves no room for `need`.
+    pub(crate) fn learn(&mut self, slot: usize, j: u32, need: S, f: &impl Field<S>) {
+        let Some(mut c) = self.pool.get(slot).copied() else { return };
+        if j == NONE || c.near.contains(&j) {
+            return;
+        }
+        let centre = self.centre(&c);
+        let dj = f.dist(j, centre);
+        // Keep j in place of the farthest known shape (or a free entry) if it is nearer.
+        let mut worst: Option<(usize, S)> = None;
+        for (i, &n) in c.near.iter().enumerate() {
+            let dn = if n == NONE { S::from_f64(f64::MAX) } else { f.dist(n, centre) };
+            if worst.is_none_or(|(_, w)| dn > w) {
+                worst = Some((i, dn));
+            }
+        }
+        if let Some((i, w)) = worst.filter(|&(_, w)| dj < w) {
+            let _ = w;
+            if let Some(e) = c.near.get_mut(i) {
+                *e = j;
+            }
+        }
+        c.u = c.u.min(dj + self.lg(c.level()).half_diag);
+        if let Some(e) = self.pool.get_mut(slot) {
+            *e = c;
+        }
+        if self.upper(&c) < need {
+            self.remove_live(slot, c.level() as usize);
+            self.retire(c);
+        }
+    }
+
+    /// Counts a trial whose cell learned the shape it hit.
+    pub(crate) fn note_learned(&mut self, slot: usize) {
+        self.stats.learned += 1;
+        self.note_reject(slot, false);
+    }
+}
+
+/// `ceil(v)` as a `u32` (0 for NaN or negative, saturating above).
+fn ceil_u32(v: f64) -> u32 {
+    let f = libm::ceil(v);
+    if f.is_nan() || f <= 0.0 {
+        0
+    } else if f >= f64::from(u32::MAX) {
+        u32::MAX
+    } else {
+        f as u32
+    }
+}

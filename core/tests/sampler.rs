@@ -1,0 +1,319 @@
+//! The cell sampler against the reference sampler.
+//!
+//! Exactness is tested statistically: for circles, squares and rings, in an inclusive and in a
+//! periodic square, many fills are run with each sampler (from disjoint seed sets) and the
+//! distributions of trial-free statistics of chosen shapes (the position of shape `i`, the
+//! room its bounding circle had when placed, the distance to the nearest other centre) are
+//! compared with the two-sample Kolmogorov–Smirnov test. The family of all comparisons is held
+//! at significance 0.01 (Bonferroni: each test at 0.01 / number of tests); with 500 fills a
+//! side, a test rejects when the distribution functions differ by more than about 0.14. The
+//! seeds are fixed, so the outcome is the same on every run. The same comparison must reject
+//! a biased input (fills of a region 10% narrower), which shows it can fail.
+
+use zetafill::{
+    index_words, rng_from_seed, Cell, CellSampler, Engine, Params, Placed, Region, ShapeKind, StepError, Stop, StopReason, Storage,
+};
+
+const COUNT: u64 = 60;
+const RUNS: u64 = 500;
+/// The shapes whose statistics are compared.
+const PICKS: [usize; 2] = [12, 45];
+/// Family-wise significance of all the comparisons in `same_distribution_as_reference`.
+const FAMILY_ALPHA: f64 = 0.01;
+
+#[derive(Clone, Copy, PartialEq)]
+enum Sampler {
+    Reference,
+    Fast,
+    /// The reference sampler in a region 10% narrower: a biased input for the checker.
+    Narrow,
+}
+
+fn params(kind: ShapeKind) -> Params {
+    let mut p = Params::circles(1.3, 2.0);
+    p.shape = kind.into();
+    p.rotate = kind.rotates();
+    p.max_trials = 10_000_000;
+    p
+}
+
+fn region(periodic: bool) -> Region<'static> {
+    Region::Rect {
+        width: 100.0,
+        height: 100.0,
+        periodic,
+    }
+}
+
+fn narrow(periodic: bool) -> Region<'static> {
+    Region::Rect {
+        width: 90.0,
+        height: 100.0,
+        periodic,
+    }
+}
+
+/// One fill; the placed shapes (all `COUNT`, or the test fails).
+fn fill(kind: ShapeKind, periodic: bool, sampler: Sampler, seed: u64, count: u64) -> Vec<Placed<f64>> {
+    let cap = count as usize;
+    let mut shapes = vec![Placed::<f64>::default(); cap];
+    let mut index = vec![0u32; index_words(cap)];
+    let mut cov = vec![0u64; 1 << 10];
+    let storage = Storage {
+        shapes: &mut shapes,
+        index: &mut index,
+        coverage: &mut cov,
+    };
+    let r = if sampler == Sampler::Narrow {
+        narrow(periodic)
+    } else {
+        region(periodic)
+    };
+    let mut e = Engine::<f64>::new(params(kind), r, storage).expect("valid parameters");
+    let mut rng = rng_from_seed(seed);
+    let stop = Stop {
+        count: Some(count),
+        ..Stop::default()
+    };
+    // One pool size for every count: a fill's shapes depend on the pool only once it is
+    // full (then it stops refining), and this one never fills.
+    let mut pool = vec![Cell::<f64>::default(); 1 << 16];
+    let reason = match sampler {
+        Sampler::Reference | Sampler::Narrow => e.run(&mut rng, &stop, |_| {}),
+        Sampler::Fast => {
+            let mut cells = CellSampler::new(&mut pool).expect("cells");
+            e.run_fast(&mut cells, &mut rng, &stop, |_| {})
+        }
+    };
+    assert_eq!(reason, StopReason::Count, "{kind:?} periodic {periodic} seed {seed}");
+    e.placed().to_vec()
+}
+
+/// Centre distance, to the nearest image in a periodic square of side 100.
+fn centre_dist(a: &Placed<f64>, b: &Placed<f64>, periodic: bool) -> f64 {
+    let fold = |d: f64| if periodic { d.abs().min(100.0 - d.abs()) } else { d };
+    let (dx, dy) = (fold(a.x - b.x), fold(a.y - b.y));
+    (dx * dx + dy * dy).sqrt()
+}
+
+/// The statistics of one fill: for each picked shape, x, y, its margin (the room its bounding
+/// circle had: the distance to the nearest bounding circle placed before it, or to the edge),
+/// and the distance to the nearest centre placed at all.
+fn statistics(kind: ShapeKind, shapes: &[Placed<f64>], periodic: bool) -> Vec<f64> {
+    let mut out = Vec::new();
+    for &i in &PICKS {
+        let s = &shapes[i];
+        let radius = |p: &Placed<f64>| kind.bounding_radius(p.scale);
+        let edge = if periodic {
+            f64::INFINITY
+        } else {
+            s.x.min(100.0 - s.x).min(s.y).min(100.0 - s.y)
+        };
+        let margin = shapes[..i]
+            .iter()
+            .map(|o| centre_dist(s, o, periodic) - radius(o))
+            .fold(edge, f64::min)
+            - radius(s);
+        let nearest = shapes
+            .iter()
+            .enumerate()
+            .filter(|&(j, _)| j != i)
+            .map(|(_, o)| centre_dist(s, o, periodic))
+            .fold(f64::INFINITY, f64::min);
+        out.extend([s.x, s.y, margin, nearest]);
+    }
+    out
+}
+
+const STAT_NAMES: [&str; 4] = ["x", "y", "margin", "nearest centre"];
+
+/// The two-sample Kolmogorov–Smirnov statistic D and its asymptotic p-value.
+fn ks(a: &[f64], b: &[f64]) -> (f64, f64) {
+    let mut a = a.to_vec();
+    let mut b = b.to_vec();
+    a.sort_by(f64::total_cmp);
+    b.sort_by(f64::total_cmp);
+    let (n, m) = (a.len() as f64, b.len() as f64);
+    let (mut i, mut j, mut d) = (0usize, 0usize, 0f64);
+    while i < a.len() && j < b.len() {
+        let v = a[i].min(b[j]);
+        while i < a.len() && a[i] <= v {
+            i += 1;
+        }
+        while j < b.len() && b[j] <= v {
+            j += 1;
+        }
+        d = d.max((i as f64 / n - j as f64 / m).abs());
+    }
+    let ne = n * m / (n + m);
+    let lambda = (ne.sqrt() + 0.12 + 0.11 / ne.sqrt()) * d;
+    // Q_KS(lambda) = 2 sum_{k>=1} (-1)^(k-1) exp(-2 k^2 lambda^2).
+    let mut p = 0.0;
+    for k in 1..=100 {
+        let term = (-2.0 * (k * k) as f64 * lambda * lambda).exp();
+        p += if k % 2 == 1 { 2.0 * term } else { -2.0 * term };
+        if term < 1e-12 {
+            break;
+        }
+    }
+    (d, p.clamp(0.0, 1.0))
+}
+
+/// Every statistic's samples over `RUNS` fills (seeds from `first_seed`).
+fn samples(kind: ShapeKind, periodic: bool, sampler: Sampler, first_seed: u64) -> Vec<Vec<f64>> {
+    let mut cols: Vec<Vec<f64>> = Vec::new();
+    for seed in first_seed..first_seed + RUNS {
+        let st = statistics(kind, &fill(kind, periodic, sampler, seed, COUNT), periodic);
+        cols.resize(st.len(), Vec::new());
+        for (c, v) in cols.iter_mut().zip(st) {
+            c.push(v);
+        }
+    }
+    cols
+}
+
+fn cases() -> Vec<(ShapeKind, bool)> {
+    let kinds = [ShapeKind::Circle, ShapeKind::Square, ShapeKind::Ring { inner: 0.5 }];
+    kinds.iter().flat_map(|&k| [(k, false), (k, true)]).collect()
+}
+
+/// (label, p) of every comparison between `sampler` and the reference for one case.
+fn compare(kind: ShapeKind, periodic: bool, sampler: Sampler) -> Vec<(String, f64)> {
+    let reference = samples(kind, periodic, Sampler::Reference, 1);
+    let other = samples(kind, periodic, sampler, 1_000_001);
+    let mut out = Vec::new();
+    for (k, (a, b)) in reference.iter().zip(&other).enumerate() {
+        let (d, p) = ks(a, b);
+        let label = format!(
+            "{kind:?} periodic {periodic}: shape {} {} (D = {d:.3})",
+            PICKS[k / STAT_NAMES.len()],
+            STAT_NAMES[k % STAT_NAMES.len()]
+        );
+        out.push((label, p));
+    }
+    out
+}
+
+#[test]
+fn same_distribution_as_reference() {
+    let cases = cases();
+    let tests = cases.len() * PICKS.len() * STAT_NAMES.len();
+    let alpha = FAMILY_ALPHA / tests as f64;
+    let mut failures = Vec::new();
+    for (kind, periodic) in cases {
+        for (label, p) in compare(kind, periodic, Sampler::Fast) {
+            if p < alpha {
+                failures.push(format!("{label}: p = {p:.2e} < {alpha:.1e}"));
+            }
+        }
+    }
+    assert!(
+        failures.is_empty(),
+        "the cell sampler differs from the reference:\n{}",
+        failures.join("\n")
+    );
+}
+
+#[test]
+fn a_biased_input_fails_the_same_test() {
+    let tests = cases().len() * PICKS.len() * STAT_NAMES.len();
+    let alpha = FAMILY_ALPHA / tests as f64;
+    let results = compare(ShapeKind::Circle, false, Sampler::Narrow);
+    let worst = results.iter().map(|(_, p)| *p).fold(1.0, f64::min);
+    assert!(worst < alpha, "the biased input passed (smallest p = {worst:.2e}): {results:?}");
+}
+
+#[test]
+fn ks_test_separates_distributions_and_accepts_equal_ones() {
+    // Deterministic uniform-looking samples from the engine's generator.
+    let mut rng = rng_from_seed(7);
+    let mut u = || zetafill::rng::unit::<f64, _>(&mut rng);
+    let a: Vec<f64> = (0..2000).map(|_| u()).collect();
+    let b: Vec<f64> = (0..2000).map(|_| u()).collect();
+    let shifted: Vec<f64> = (0..2000).map(|_| u() * 0.9 + 0.1).collect();
+    assert!(ks(&a, &b).1 > 0.01, "equal distributions rejected: {:?}", ks(&a, &b));
+    assert!(ks(&a, &shifted).1 < 1e-4, "a shifted distribution accepted: {:?}", ks(&a, &shifted));
+}
+
+#[test]
+fn fast_fills_are_deterministic_and_prefix_stable() {
+    for (kind, periodic) in cases() {
+        let a = fill(kind, periodic, Sampler::Fast, 99, 200);
+        let b = fill(kind, periodic, Sampler::Fast, 99, 200);
+        assert_eq!(a, b, "{kind:?} periodic {periodic}: reruns differ");
+        let prefix = fill(kind, periodic, Sampler::Fast, 99, 80);
+        assert_eq!(&a[..80], &prefix[..], "{kind:?} periodic {periodic}: prefix differs");
+    }
+}
+
+#[test]
+fn fast_sampler_takes_far_fewer_trials_late_in_a_fill() {
+    let run = |fast: bool| {
+        let cap = 4000;
+        let mut shapes = vec![Placed::<f64>::default(); cap];
+        let mut index = vec![0u32; index_words(cap)];
+        let mut cov = vec![0u64; 1 << 12];
+        let storage = Storage {
+            shapes: &mut shapes,
+            index: &mut index,
+            coverage: &mut cov,
+        };
+        let mut e = Engine::<f64>::new(Params::circles(1.3, 1.0), region(false), storage).expect("valid");
+        let mut rng = rng_from_seed(3);
+        let mut pool = vec![Cell::<f64>::default(); 40 * cap];
+        let mut cells = CellSampler::new(&mut pool).expect("cells");
+        let stop = Stop {
+            count: Some(cap as u64),
+            ..Stop::default()
+        };
+        let mut late = 0u64;
+        let reason = if fast {
+            e.run_fast(&mut cells, &mut rng, &stop, |p| late += if p.index >= 3000 { p.trials } else { 0 })
+        } else {
+            e.run(&mut rng, &stop, |p| late += if p.index >= 3000 { p.trials } else { 0 })
+        };
+        assert_eq!(reason, StopReason::Count);
+        late as f64 / 1000.0
+    };
+    let (reference, fast) = (run(false), run(true));
+    assert!(fast * 4.0 < reference, "trials per placement: fast {fast}, reference {reference}");
+}
+
+#[test]
+fn halts_with_certainty_when_nothing_fits() {
+    // Large gaps in a small square: a few circles fit, then none can. The cell sampler finds
+    // that out long before the trial limit.
+    let cap = 100;
+    let mut shapes = vec![Placed::<f64>::default(); cap];
+    let mut index = vec![0u32; index_words(cap)];
+    let storage = Storage {
+        shapes: &mut shapes,
+        index: &mut index,
+        coverage: &mut [],
+    };
+    let mut p = Params::circles(1.05, 1.0);
+    p.gap = 2.0;
+    p.max_trials = 50_000_000;
+    let mut e = Engine::<f64>::new(
+        p,
+        Region::Rect {
+            width: 20.0,
+            height: 20.0,
+            periodic: false,
+        },
+        storage,
+    )
+    .expect("valid");
+    let mut rng = rng_from_seed(5);
+    let mut pool = vec![Cell::<f64>::default(); 100_000];
+    let mut cells = CellSampler::new(&mut pool).expect("cells");
+    let reason = e.run_fast(&mut cells, &mut rng, &Stop::default(), |_| {});
+    match reason {
+        StopReason::Step(StepError::Halted { index, trials }) => {
+            assert!(index >= 2, "halted at {index}");
+            assert!(trials < 1_000_000, "took {trials} trials to halt");
+        }
+        other => panic!("expected a halt, got {other:?}"),
+    }
+    assert_eq!(cells.stats().live, 0);
+}

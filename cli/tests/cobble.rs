@@ -165,7 +165,7 @@ fn periodic_cobblestones_tile_seamlessly() {
 
 #[test]
 fn disc_region_clips_exactly() {
-    let doc = fill_doc(&["--count", "200", "--region", "circle:50", "--seed", "2"]);
+    let doc = fill_doc(&["--count", "200", "--region", "circle:50", "--seed", "2", "--sampler", "reference"]);
     let lines = cobble::polylines(&doc).unwrap_or_else(|e| panic!("{e}"));
     let r = |p: &Pt| (p[0] - 50.0).hypot(p[1] - 50.0);
     assert!(lines.iter().flatten().all(|p| r(p) <= 50.0 + 1e-9));

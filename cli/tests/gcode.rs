@@ -513,6 +513,10 @@ fn every_builtin_profile_replays_safely() {
             "7",
             "--hatch",
             "1:30",
+            // Squares with N = 1 may leave no room early; the paper's sampler with this seed
+            // fills all 80 (the G-code, not the sampler, is under test).
+            "--sampler",
+            "reference",
         ],
     ];
     for machine in ["grbl-laser", "grbl-servo-pen", "z-lift-pen"] {
@@ -618,7 +622,20 @@ fn min_feature_leaves_out_small_shapes() {
 fn hatch_lines_stay_inside_their_shapes() {
     let dir = tmp();
     let d = dir.path();
-    let base = ["--region", "rect:120:120", "--shape", "ring:0.5", "--count", "120", "--seed", "2"];
+    // The G-code, not the sampler, is under test: the paper's sampler with this seed places all
+    // 120 rings (with N = 1 the first ring often leaves no room for the second).
+    let base = [
+        "--region",
+        "rect:120:120",
+        "--shape",
+        "ring:0.5",
+        "--count",
+        "120",
+        "--seed",
+        "13",
+        "--sampler",
+        "reference",
+    ];
     let doc = fill_json(d, &base);
     let rings: Vec<([f64; 2], f64, f64)> = shapes(&doc)
         .iter()

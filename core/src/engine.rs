@@ -16,7 +16,7 @@ use crate::coverage::Coverage;
 use crate::geom::{edges, point_in_poly, seg_dist2, separated, Geo, Point};
 use crate::region::Region;
 use crate::rng;
-use crate::sampler::{CellSampler, Field, Verdict};
+use crate::sampler::{CellSampler, Drawn, Field, Verdict};
 use crate::scalar::{powf, Scalar};
 use crate::shape::{Placed, ShapeKind, ShapeList};
 use crate::spatial::SpatialHash;
@@ -633,7 +633,11 @@ impl<'a, S: Scalar> Engine<'a, S> {
             *slot = shape;
         }
         self.hash.insert(i as u32, c.x, c.y, r);
-        self.coverage.mark(&g, c, kind.inradius(scale), period);
+        // The cell sampler never asks the bitmap; a bitmap that misses shapes only rejects
+        // fewer candidates of the reference sampler, never a valid one.
+        if known.is_none() {
+            self.coverage.mark(&g, c, kind.inradius(scale), period);
+        }
         self.len += 1;
         self.placed_area += nx.area;
         Ok(Placement {
@@ -776,6 +780,7 @@ impl<'a, S: Scalar> Engine<'a, S> {
             cells.init(S::from_f64(x0), S::from_f64(y0), w, h, &FieldOf(self));
         }
         cells.wake(need);
+        cells.flush();
         let mut trials = 0u64;
         loop {
             if trials >= self.params.max_trials || cells.is_empty() {
@@ -783,11 +788,17 @@ impl<'a, S: Scalar> Engine<'a, S> {
             }
             trials += 1;
             self.trials = self.trials.saturating_add(1);
-            let Some((slot, p, quarter)) = cells.draw(rng) else {
+            let Some(Drawn {
+                slot,
+                cell: drawn,
+                point: p,
+                quarter,
+            }) = cells.draw(rng)
+            else {
                 continue;
             };
             let angle = if nx.rotated { rng::angle::<S, R>(rng) } else { S::ZERO };
-            let slot = match cells.judge(slot, quarter, need, &FieldOf(self)) {
+            let slot = match cells.judge(slot, &drawn, quarter, need, &FieldOf(self)) {
                 Verdict::Reject => continue,
                 Verdict::Test(s) => s,
             };
@@ -797,7 +808,7 @@ impl<'a, S: Scalar> Engine<'a, S> {
                 cells.note_reject(slot, false);
                 continue;
             }
-            let known = cells.known(slot);
+            let known = if slot == usize::MAX { drawn.near() } else { cells.known(slot) };
             match self.try_at(&nx, c, angle, trials, Some(&known)) {
                 Ok(placed) => {
                     cells.learn(slot, nx.index as u32, need, &FieldOf(self));

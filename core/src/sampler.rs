@@ -26,8 +26,8 @@
 //! at least `need = r + gap`. So a cell with `u < need` holds no valid centre for the next
 //! shape: it is put to sleep, and woken when a later, smaller shape's `need` falls to `u`.
 //! Deep sleepers are kept unsorted below a floor `F` (each has `u < F`); when a shape's need
-//! falls below `F`, one pass lowers the floor to 97% of the need and moves every cell at or
-//! above it out, so a pass comes only when the need has shrunk by 3%. Cells between the floor
+//! falls below `F`, one pass lowers the floor to 85% of the need and moves every cell at or
+//! above it out, so a pass comes only when the need has shrunk by 15%. Cells between the floor
 //! and the need wait in a small max-heap and wake as soon as the need reaches them. A cell
 //! with `u <= 0` lies inside shape material and is dropped for good. A cell that is only
 //! partly valid and larger than the need is split into its four children; so cells refine as
@@ -46,7 +46,9 @@
 //! trials but never this property, so the accepted centre of every placement is uniform over
 //! `V` (and with the angle drawn uniformly and independently, uniform over the valid (centre,
 //! angle) pairs), exactly as in the reference. When `U` is empty no centre is valid: the fill
-//! halts, with certainty rather than after the trial limit.
+//! halts, with certainty rather than after the trial limit. (When the last room shrinks to a
+//! point of tangency, a set of no area, the cells around it refine to the finest level and
+//! stay live; then the trial limit ends the fill, as it does for the reference.)
 //!
 //! Shapes without a clearance condition fall back to the reference sampler: a ring whose hole
 //! is larger than its material (an earlier shape may sit in that hole, around the new
@@ -79,10 +81,13 @@ const SPLIT: f64 = 1.4;
 const STUBBORN: u32 = 8;
 
 /// A wake pass lowers the floor to this fraction of the need.
-const FLOOR: f64 = 0.97;
+const FLOOR: f64 = 0.85;
 
 /// The empty list entry.
 const NONE: u32 = u32::MAX;
+
+/// Cells drawn at once: their memory loads overlap, so a trial rarely waits for one.
+const AHEAD: usize = 8;
 
 /// Bits of a packed cell word that hold the x or y index (the level, or the number of
 /// rejected candidates, sits above them).
@@ -133,6 +138,17 @@ impl<S> Cell<S> {
     fn rejects(&self) -> u32 {
         self.yr >> X_BITS
     }
+
+    /// The shapes the cell knows of.
+    pub(crate) fn near(&self) -> [u32; NEAR] {
+        self.near
+    }
+
+    /// Whether two cells are the same cell (level and position), whatever their bounds.
+    #[inline]
+    fn same(&self, o: &Self) -> bool {
+        self.xl == o.xl && self.iy() == o.iy()
+    }
 }
 
 /// What the cells need to know of the fill: distances to the outside of the region and to
@@ -176,6 +192,15 @@ pub struct CellStats {
     pub learned: u64,
 }
 
+/// A trial's draw: the cell's slot and the cell as drawn, the point, and which quarter of the
+/// cell the point is in.
+pub(crate) struct Drawn<S> {
+    pub(crate) slot: usize,
+    pub(crate) cell: Cell<S>,
+    pub(crate) point: Point<S>,
+    pub(crate) quarter: (bool, bool),
+}
+
 /// What a trial learns from the cell it drew.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum Verdict {
@@ -211,6 +236,11 @@ pub struct CellSampler<'c, S> {
     origin: Point<S>,
     geom: [LevelGeom<S>; CELL_LEVELS],
     slack: S,
+    /// Cells drawn ahead within the current step (slot and copy as drawn); see
+    /// [`CellSampler::draw`].
+    ahead: [(usize, Cell<S>); AHEAD],
+    ahead_len: usize,
+    ahead_pos: usize,
     ready: bool,
     stats: CellStats,
 }
@@ -237,6 +267,9 @@ impl<'c, S: Scalar> CellSampler<'c, S> {
             origin: Point::new(S::ZERO, S::ZERO),
             geom: [LevelGeom::default(); CELL_LEVELS],
             slack: S::ZERO,
+            ahead: [(usize::MAX, Cell::default()); AHEAD],
+            ahead_len: 0,
+            ahead_pos: 0,
             ready: false,
             stats: CellStats::default(),
         })
@@ -533,34 +566,60 @@ impl<'c, S: Scalar> CellSampler<'c, S> {
         }
     }
 
-    /// Draws a live cell with probability proportional to its area (exactly: integer weights
-    /// and an unbiased bounded draw) and a uniform point in it. Returns the cell's slot, the
-    /// point, and which quarter of the cell the point is in.
-    pub(crate) fn draw<R: RngCore + ?Sized>(&self, rng: &mut R) -> Option<(usize, Point<S>, (bool, bool))> {
-        let total = self.weight;
-        if total == 0 {
-            return None;
-        }
-        // Lemire's method: a uniform integer below `total` without bias.
-        let threshold = total.wrapping_neg() % total;
-        let mut r = loop {
-            let m = u128::from(rng.next_u64()) * u128::from(total);
-            if (m as u64) >= threshold {
-                break (m >> 64) as u64;
-            }
-        };
-        let mut slot = None;
+    /// Forgets the cells drawn ahead: called when a step begins, after [`CellSampler::wake`]
+    /// may have added cells.
+    pub(crate) fn flush(&mut self) {
+        self.ahead_len = 0;
+        self.ahead_pos = 0;
+    }
+
+    /// The live cell that weight `r` (below the total weight) falls in.
+    fn slot_of(&self, mut r: u64) -> Option<usize> {
         for k in 0..CELL_LEVELS {
             let count = (self.start(k + 1) - self.start(k)) as u64;
             let w = count << Self::shift(k);
             if r < w {
-                slot = Some(self.start(k) + (r >> Self::shift(k)) as usize);
-                break;
+                return Some(self.start(k) + (r >> Self::shift(k)) as usize);
             }
             r -= w;
         }
-        let slot = slot?;
-        let c = self.pool.get(slot)?;
+        None
+    }
+
+    /// Draws a live cell with probability proportional to its area (exactly: integer weights
+    /// and an unbiased bounded draw) and a uniform point in it.
+    ///
+    /// Cells are drawn [`AHEAD`] at a time, at the first trial and whenever the batch is used
+    /// up, and handed out in order. Within a step the live cells only shrink (cells are
+    /// retired) or are split (the same union), so each is still a draw over a union that
+    /// holds every valid centre, and the trial's acceptance is still exactly "the point is
+    /// valid": the accepted placement stays uniform. A cell that has moved or gone since it
+    /// was drawn is tested without bookkeeping (see [`CellSampler::judge`]).
+    pub(crate) fn draw<R: RngCore + ?Sized>(&mut self, rng: &mut R) -> Option<Drawn<S>> {
+        if self.ahead_pos >= self.ahead_len {
+            self.flush();
+            let total = self.weight;
+            if total == 0 {
+                return None;
+            }
+            // Lemire's method: a uniform integer below `total` without bias.
+            let threshold = total.wrapping_neg() % total;
+            let mut batch = [(usize::MAX, Cell::default()); AHEAD];
+            for entry in batch.iter_mut() {
+                let r = loop {
+                    let m = u128::from(rng.next_u64()) * u128::from(total);
+                    if (m as u64) >= threshold {
+                        break (m >> 64) as u64;
+                    }
+                };
+                let slot = self.slot_of(r)?;
+                *entry = (slot, self.pool.get(slot).copied()?);
+            }
+            self.ahead = batch;
+            self.ahead_len = AHEAD;
+        }
+        let (slot, c) = self.ahead.get(self.ahead_pos).copied()?;
+        self.ahead_pos += 1;
         let g = self.lg(c.level());
         let ux: S = crate::rng::unit(rng);
         let uy: S = crate::rng::unit(rng);
@@ -569,16 +628,24 @@ impl<'c, S: Scalar> CellSampler<'c, S> {
             self.origin.y + (S::from_f64(f64::from(c.iy())) + uy) * g.h,
         );
         let half = S::ONE.half();
-        Some((slot, p, (ux >= half, uy >= half)))
+        Some(Drawn {
+            slot,
+            cell: c,
+            point: p,
+            quarter: (ux >= half, uy >= half),
+        })
     }
 
     /// Restructures the drawn cell: a cell too tight for `need` is retired; a cell much larger
     /// than `need` is split into children that inherit its shapes. Says whether the drawn
     /// point (in quarter `quarter` of the cell) can still be valid, and in which live cell it
     /// lies.
-    pub(crate) fn judge(&mut self, slot: usize, quarter: (bool, bool), need: S, f: &impl Field<S>) -> Verdict {
-        let Some(c) = self.pool.get(slot).copied() else {
-            return Verdict::Reject;
+    ///
+    /// `drawn` is the cell as it was drawn; if `slot` no longer holds it (it moved, or was
+    /// split or retired since), the point is simply tested, without bookkeeping.
+    pub(crate) fn judge(&mut self, slot: usize, drawn: &Cell<S>, quarter: (bool, bool), need: S, f: &impl Field<S>) -> Verdict {
+        let Some(c) = self.pool.get(slot).copied().filter(|c| slot < self.live() && c.same(drawn)) else {
+            return Verdict::Test(usize::MAX);
         };
         let level = c.level();
         let g = self.lg(level);

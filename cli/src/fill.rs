@@ -58,12 +58,6 @@ impl Sampler {
     }
 }
 
-/// Cells lent to the fast sampler: this many per shape slot, plus a floor. Fills use about
-/// 11 per shape (see the README), so the pool does not run out, and the shapes of a seed do
-/// not depend on the count asked for.
-const CELLS_PER_SHAPE: usize = 16;
-const CELLS_MIN: usize = 1 << 16;
-
 /// Arguments of `zetafill fill`.
 #[derive(Debug, Args)]
 pub struct FillArgs {
@@ -507,7 +501,9 @@ fn run_engine<S: zetafill::Scalar>(
     let reason = match a.sampler {
         Sampler::Reference => engine.run(&mut rng, stop, on_place),
         Sampler::Fast => {
-            let mut pool = vec![Cell::<S>::default(); cap.saturating_mul(CELLS_PER_SHAPE).max(CELLS_MIN)];
+            // Enough cells that only the sampler's own budget limits it: the shapes of a seed
+            // then do not depend on the count asked for.
+            let mut pool = vec![Cell::<S>::default(); zetafill::cells_for(cap)];
             let mut cells = CellSampler::new(&mut pool).map_err(|_| CliError::Io("internal: no cells for the fast sampler".into()))?;
             engine.run_fast(&mut cells, &mut rng, stop, on_place)
         }

@@ -10,7 +10,7 @@
 //! Prints a Markdown table for the README. It measures; it asserts nothing about time.
 
 use std::time::Instant;
-use zetafill::{index_words, Cell, CellSampler, Engine, Params, Placed, Region, Stop, StopReason, Storage};
+use zetafill::{cells_for, index_words, Cell, CellSampler, Engine, Params, Placed, Region, Stop, StopReason, Storage};
 
 const COVERAGE_WORDS: usize = 1 << 18;
 
@@ -28,7 +28,7 @@ fn run(c: f64, n_offset: f64, n: u64, fast: bool) -> Row {
     let mut index = vec![0u32; index_words(cap)];
     let mut coverage = vec![0u64; COVERAGE_WORDS];
     // The pool the CLI lends: 16 cells per shape slot, at least 2^16.
-    let mut pool = vec![Cell::<f64>::default(); if fast { (16 * cap).max(1 << 16) } else { 1 }];
+    let mut pool = vec![Cell::<f64>::default(); if fast { cells_for(cap) } else { 1 }];
     let mut params = Params::circles(c, n_offset);
     params.max_trials = 1_000_000_000;
     let region = Region::Rect {

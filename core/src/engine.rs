@@ -779,7 +779,7 @@ impl<'a, S: Scalar> Engine<'a, S> {
             let (w, h) = self.period;
             cells.init(S::from_f64(x0), S::from_f64(y0), w, h, &FieldOf(self));
         }
-        cells.wake(need);
+        cells.wake(need, self.len);
         cells.flush();
         let mut trials = 0u64;
         loop {

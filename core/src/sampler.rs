@@ -55,10 +55,12 @@
 //! centre), or a ring in a region with holes (the ring may enclose one).
 //!
 //! ## Storage
-//! The caller lends a slice of [`Cell`]s (32 bytes each for `f64`). Live cells sit at its
+//! The caller lends a slice of [`Cell`]s (32 bytes each for `f64`), [`cells_for`] its
+//! capacity. Live cells sit at its
 //! start, grouped by level; deep sleepers at the end of its first seven eighths; the waiting
-//! heap in the last eighth. When the slice is full, cells
-//! are no longer split: sampling stays exact, only slower. Nothing allocates or panics.
+//! heap in the last eighth. The sampler holds at most [`CELLS_PER_SHAPE`] cells per placed
+//! shape (plus a start); at that budget, or when the slice is full, cells are no longer split:
+//! sampling stays exact, only slower. Nothing allocates or panics.
 
 use crate::geom::Point;
 use crate::scalar::Scalar;
@@ -88,6 +90,20 @@ const NONE: u32 = u32::MAX;
 
 /// Cells drawn at once: their memory loads overlap, so a trial rarely waits for one.
 const AHEAD: usize = 8;
+
+/// The cells a sampler may hold once `n` shapes are placed: `CELLS_PER_SHAPE * (n +
+/// CELLS_BASE)`, of which at most `WAITING_PER_SHAPE * (n + CELLS_BASE)` waiting. Splits stop
+/// at this budget (sampling stays exact), whatever the storage lent, so a fill never depends
+/// on the storage as long as it holds [`cells_for`] the capacity.
+pub const CELLS_PER_SHAPE: usize = 24;
+const WAITING_PER_SHAPE: usize = 3;
+const CELLS_BASE: usize = 4096;
+
+/// Cells to lend a sampler for fills of up to `shapes` shapes: enough that only the budget
+/// (see [`CELLS_PER_SHAPE`]) ever limits it.
+pub const fn cells_for(shapes: usize) -> usize {
+    28 * (shapes + CELLS_BASE)
+}
 
 /// Bits of a packed cell word that hold the x or y index (the level, or the number of
 /// rejected candidates, sits above them).
@@ -227,6 +243,8 @@ pub struct CellSampler<'c, S> {
     asleep: usize,
     /// Every deep sleeper's bound is below this.
     floor: S,
+    /// Shapes placed when the current step began (for the budget).
+    placed: usize,
     /// Waiting cells, a max-heap by bound in `pool[main..main + waiting]`: too tight for the
     /// current need but at or above the floor, so they must wake as soon as the need falls to
     /// their bound.
@@ -262,6 +280,7 @@ impl<'c, S: Scalar> CellSampler<'c, S> {
             starts: [0; CELL_LEVELS + 1],
             asleep: 0,
             floor: S::from_f64(f64::MAX),
+            placed: 0,
             waiting: 0,
             weight: 0,
             origin: Point::new(S::ZERO, S::ZERO),
@@ -485,6 +504,9 @@ impl<'c, S: Scalar> CellSampler<'c, S> {
 
     /// Adds a waiting cell; false when the heap is full.
     fn push_waiting(&mut self, c: Cell<S>) -> bool {
+        if self.waiting >= WAITING_PER_SHAPE.saturating_mul(self.placed.saturating_add(CELLS_BASE)) {
+            return false;
+        }
         let Some(slot) = self.pool.get_mut(self.main + self.waiting) else {
             return false;
         };
@@ -533,7 +555,8 @@ impl<'c, S: Scalar> CellSampler<'c, S> {
     /// floor, one pass over the deep sleepers lowers the floor to a fraction of `need` and
     /// moves every cell at or above it out (live, or waiting); then waiting cells whose bound
     /// reaches `need` wake.
-    pub(crate) fn wake(&mut self, need: S) {
+    pub(crate) fn wake(&mut self, need: S, placed: usize) {
+        self.placed = placed;
         if need < self.floor {
             self.floor = need * S::from_f64(FLOOR);
             let mut i = 0;
@@ -659,7 +682,8 @@ impl<'c, S: Scalar> CellSampler<'c, S> {
         if !((big || c.rejects() >= STUBBORN) && (level as usize) + 1 < CELL_LEVELS) {
             return Verdict::Test(slot);
         }
-        if self.live() + self.asleep + 3 > self.main {
+        let budget = CELLS_PER_SHAPE.saturating_mul(self.placed.saturating_add(CELLS_BASE));
+        if self.live() + self.asleep + 3 > self.main || self.live() + self.asleep + self.waiting + 3 > budget {
             self.stats.refused_splits += 1;
             return Verdict::Test(slot);
         }

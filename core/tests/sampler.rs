@@ -11,7 +11,8 @@
 //! a biased input (fills of a region 10% narrower), which shows it can fail.
 
 use zetafill::{
-    index_words, rng_from_seed, Cell, CellSampler, Engine, Params, Placed, Region, ShapeKind, StepError, Stop, StopReason, Storage,
+    cells_for, index_words, rng_from_seed, Cell, CellSampler, Engine, Params, Placed, Region, ShapeKind, StepError, Stop, StopReason,
+    Storage,
 };
 
 const COUNT: u64 = 60;
@@ -77,7 +78,7 @@ fn fill(kind: ShapeKind, periodic: bool, sampler: Sampler, seed: u64, count: u64
     };
     // One pool size for every count: a fill's shapes depend on the pool only once it is
     // full (then it stops refining), and this one never fills.
-    let mut pool = vec![Cell::<f64>::default(); 1 << 16];
+    let mut pool = vec![Cell::<f64>::default(); cells_for(200)];
     let reason = match sampler {
         Sampler::Reference | Sampler::Narrow => e.run(&mut rng, &stop, |_| {}),
         Sampler::Fast => {
@@ -260,7 +261,7 @@ fn fast_sampler_takes_far_fewer_trials_late_in_a_fill() {
         };
         let mut e = Engine::<f64>::new(Params::circles(1.3, 1.0), region(false), storage).expect("valid");
         let mut rng = rng_from_seed(3);
-        let mut pool = vec![Cell::<f64>::default(); 40 * cap];
+        let mut pool = vec![Cell::<f64>::default(); cells_for(cap)];
         let mut cells = CellSampler::new(&mut pool).expect("cells");
         let stop = Stop {
             count: Some(cap as u64),
@@ -320,4 +321,75 @@ fn halts_with_certainty_when_nothing_fits() {
         }
     }
     assert!(certain >= 5, "only {certain} of 7 fills halted before the trial limit");
+}
+
+#[test]
+fn fixed_point_fast_fills_are_valid_and_deterministic() {
+    // The scalar the firmware uses without an FPU: the cell sampler must keep every exact
+    // guarantee with it too.
+    use zetafill::geom::separated;
+    use zetafill::{Fixed, Scalar};
+    let run = || {
+        let cap = 400;
+        let mut shapes = vec![Placed::<Fixed>::default(); cap];
+        let mut index = vec![0u32; index_words(cap)];
+        let storage = Storage {
+            shapes: &mut shapes,
+            index: &mut index,
+            coverage: &mut [],
+        };
+        let mut e = Engine::<Fixed>::new(params(ShapeKind::Circle), region(false), storage).expect("valid");
+        let mut rng = rng_from_seed(21);
+        let mut pool = vec![Cell::<Fixed>::default(); 1 << 14];
+        let mut cells = CellSampler::new(&mut pool).expect("cells");
+        let stop = Stop {
+            count: Some(cap as u64),
+            ..Stop::default()
+        };
+        assert_eq!(e.run_fast(&mut cells, &mut rng, &stop, |_| {}), StopReason::Count);
+        (0..cap).filter_map(|i| e.geo(i)).collect::<Vec<_>>()
+    };
+    let geos = run();
+    assert_eq!(geos.len(), 400);
+    for (i, a) in geos.iter().enumerate() {
+        for b in &geos[i + 1..] {
+            assert!(separated(a, b, Fixed::from_f64(0.0)), "overlap in a fixed-point fast fill");
+        }
+        let (x0, y0, x1, y1) = a.bounds();
+        assert!(x0.to_f64() >= 0.0 && y0.to_f64() >= 0.0 && x1.to_f64() <= 100.0 && y1.to_f64() <= 100.0);
+    }
+    assert_eq!(geos, run(), "fixed-point reruns differ");
+}
+
+#[test]
+fn memory_per_shape_is_as_stated() {
+    // README: a cell takes 32 bytes, and circle fills at c = 1.3 hold at most about 15 cells
+    // per shape, below the sampler's budget, so nothing limits their refinement.
+    assert_eq!(std::mem::size_of::<Cell<f64>>(), 32);
+    let cap = 20_000;
+    let mut shapes = vec![Placed::<f64>::default(); cap];
+    let mut index = vec![0u32; index_words(cap)];
+    let storage = Storage {
+        shapes: &mut shapes,
+        index: &mut index,
+        coverage: &mut [],
+    };
+    let region = Region::Rect {
+        width: 200.0,
+        height: 200.0,
+        periodic: false,
+    };
+    let mut e = Engine::<f64>::new(Params::circles(1.3, 1.0), region, storage).expect("valid");
+    let mut rng = rng_from_seed(1);
+    let mut pool = vec![Cell::<f64>::default(); cells_for(cap)];
+    let mut cells = CellSampler::new(&mut pool).expect("cells");
+    let stop = Stop {
+        count: Some(cap as u64),
+        ..Stop::default()
+    };
+    assert_eq!(e.run_fast(&mut cells, &mut rng, &stop, |_| {}), StopReason::Count);
+    let st = cells.stats();
+    let per_shape = st.peak as f64 / cap as f64;
+    assert!(per_shape <= 16.0, "{per_shape} cells per shape at the peak ({st:?})");
+    assert_eq!(st.refused_splits, 0, "the pool ran out");
 }

@@ -15,6 +15,30 @@ use zetafill::{
     Storage,
 };
 
+/// The shape and index buffers of an engine for `cap` shapes.
+struct Buffers<S> {
+    shapes: Vec<Placed<S>>,
+    index: Vec<u32>,
+}
+
+impl<S: zetafill::Scalar> Buffers<S> {
+    fn new(cap: usize) -> Self {
+        Buffers {
+            shapes: vec![Placed::<S>::default(); cap],
+            index: vec![0u32; index_words(cap)],
+        }
+    }
+
+    /// The storage, with a coverage bitmap or none.
+    fn storage<'a>(&'a mut self, coverage: &'a mut [u64]) -> Storage<'a, S> {
+        Storage {
+            shapes: &mut self.shapes,
+            index: &mut self.index,
+            coverage,
+        }
+    }
+}
+
 const COUNT: u64 = 60;
 const RUNS: u64 = 500;
 /// The shapes whose statistics are compared.
@@ -57,14 +81,9 @@ fn narrow(periodic: bool) -> Region<'static> {
 /// One fill; the placed shapes (all `COUNT`, or the test fails).
 fn fill(kind: ShapeKind, periodic: bool, sampler: Sampler, seed: u64, count: u64) -> Vec<Placed<f64>> {
     let cap = count as usize;
-    let mut shapes = vec![Placed::<f64>::default(); cap];
-    let mut index = vec![0u32; index_words(cap)];
+    let mut buffers = Buffers::<f64>::new(cap);
     let mut cov = vec![0u64; 1 << 10];
-    let storage = Storage {
-        shapes: &mut shapes,
-        index: &mut index,
-        coverage: &mut cov,
-    };
+    let storage = buffers.storage(&mut cov);
     let r = if sampler == Sampler::Narrow {
         narrow(periodic)
     } else {
@@ -251,14 +270,9 @@ fn fast_fills_are_deterministic_and_prefix_stable() {
 fn fast_sampler_takes_far_fewer_trials_late_in_a_fill() {
     let run = |fast: bool| {
         let cap = 4000;
-        let mut shapes = vec![Placed::<f64>::default(); cap];
-        let mut index = vec![0u32; index_words(cap)];
+        let mut buffers = Buffers::<f64>::new(cap);
         let mut cov = vec![0u64; 1 << 12];
-        let storage = Storage {
-            shapes: &mut shapes,
-            index: &mut index,
-            coverage: &mut cov,
-        };
+        let storage = buffers.storage(&mut cov);
         let mut e = Engine::<f64>::new(Params::circles(1.3, 1.0), region(false), storage).expect("valid");
         let mut rng = rng_from_seed(3);
         let mut pool = vec![Cell::<f64>::default(); cells_for(cap)];
@@ -290,13 +304,8 @@ fn halts_with_certainty_when_nothing_fits() {
     let mut certain = 0;
     for seed in 1..=7 {
         let cap = 100;
-        let mut shapes = vec![Placed::<f64>::default(); cap];
-        let mut index = vec![0u32; index_words(cap)];
-        let storage = Storage {
-            shapes: &mut shapes,
-            index: &mut index,
-            coverage: &mut [],
-        };
+        let mut buffers = Buffers::<f64>::new(cap);
+        let storage = buffers.storage(&mut []);
         let mut p = Params::circles(1.05, 1.0);
         p.gap = 2.0;
         p.max_trials = limit;
@@ -331,13 +340,8 @@ fn fixed_point_fast_fills_are_valid_and_deterministic() {
     use zetafill::{Fixed, Scalar};
     let run = || {
         let cap = 400;
-        let mut shapes = vec![Placed::<Fixed>::default(); cap];
-        let mut index = vec![0u32; index_words(cap)];
-        let storage = Storage {
-            shapes: &mut shapes,
-            index: &mut index,
-            coverage: &mut [],
-        };
+        let mut buffers = Buffers::<Fixed>::new(cap);
+        let storage = buffers.storage(&mut []);
         let mut e = Engine::<Fixed>::new(params(ShapeKind::Circle), region(false), storage).expect("valid");
         let mut rng = rng_from_seed(21);
         let mut pool = vec![Cell::<Fixed>::default(); 1 << 14];
@@ -367,13 +371,8 @@ fn memory_per_shape_is_as_stated() {
     // per shape, below the sampler's budget, so nothing limits their refinement.
     assert_eq!(std::mem::size_of::<Cell<f64>>(), 32);
     let cap = 20_000;
-    let mut shapes = vec![Placed::<f64>::default(); cap];
-    let mut index = vec![0u32; index_words(cap)];
-    let storage = Storage {
-        shapes: &mut shapes,
-        index: &mut index,
-        coverage: &mut [],
-    };
+    let mut buffers = Buffers::<f64>::new(cap);
+    let storage = buffers.storage(&mut []);
     let region = Region::Rect {
         width: 200.0,
         height: 200.0,

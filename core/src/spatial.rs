@@ -17,8 +17,11 @@
 
 use crate::scalar::Scalar;
 
-/// Number of size levels (cell sides from `s_0` down to `s_0 / 2^39`).
-pub const LEVELS: usize = 40;
+/// Number of size levels (cell sides from `s_0` down to `s_0 / 2^27`; smaller shapes share
+/// the finest level, which only costs time). 28 levels reach shapes a 2^28th of the region's
+/// size, past a million shapes at any c, and keep the engine 384 bytes smaller on the board
+/// than 40 would.
+pub const LEVELS: usize = 28;
 
 /// The empty-list marker.
 const NIL: u32 = u32::MAX;

@@ -8,13 +8,16 @@
 //!
 //! Storage: every scene runs in an engine of [`CAPACITY`] = 1,024 shape slots with
 //! [`INDEX_WORDS`] of spatial hash and no coverage bitmap (it only speeds up rejections and
-//! never changes a result), the configuration whose memory the firmware measures.
+//! never changes a result), the configuration whose memory the firmware measures. A scene
+//! with [`Scene::fast`] runs through [`run_fast`] with the cell sampler and [`FAST_CELLS`] cells (its storage runs out
+//! and then it stops refining, still exact) and at most [`FAST_CAPACITY`] shapes, so that it
+//! needs no more RAM than the others.
 
 use embedded_graphics::pixelcolor::BinaryColor;
 use embedded_graphics::prelude::*;
 use zetafill::region::{PolygonRegion, RegionError};
 use zetafill::shape::{MixOrder, ShapeList};
-use zetafill::{digest, Engine, ParamError, Params, Point, Region, Scalar, ShapeKind, StepError, Storage};
+use zetafill::{digest, Cell, CellSampler, Engine, ParamError, Params, Point, Region, Scalar, ShapeKind, StepError, Storage};
 
 use crate::draw::View;
 
@@ -26,6 +29,12 @@ pub const CAPACITY: usize = 1024;
 pub const BUCKETS: usize = 128;
 /// Index words: one link per shape slot plus the buckets.
 pub const INDEX_WORDS: usize = CAPACITY + BUCKETS;
+/// Shape slots of a scene that uses the cell sampler.
+pub const FAST_CAPACITY: usize = 256;
+/// Index words of such a scene.
+pub const FAST_INDEX_WORDS: usize = FAST_CAPACITY + BUCKETS;
+/// Cells lent to the cell sampler on the board (16 KiB of `Cell<f64>`).
+pub const FAST_CELLS: usize = 512;
 
 /// The number type a scene's geometry runs on.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -95,6 +104,8 @@ pub struct Scene {
     pub seed: u64,
     /// Shapes to place.
     pub count: u64,
+    /// Placed with the cell sampler (`Engine::step_fast`) rather than the paper's.
+    pub fast: bool,
 }
 
 impl Scene {
@@ -142,7 +153,13 @@ const fn scene(
         gap,
         seed,
         count,
+        fast: false,
     }
+}
+
+/// The same scene placed with the cell sampler.
+const fn fast(s: Scene) -> Scene {
+    Scene { fast: true, ..s }
 }
 
 const fn pt(x: f64, y: f64) -> Point<f64> {
@@ -190,6 +207,9 @@ pub const SCENES: &[Scene] = &[
     scene("blobs",           F64, &[ShapeKind::Blob { delta: 0.2 }], true, rect(100.0, 100.0), 1.3, 2.0, 0.0, 13, 12),
     scene("mix-room",        F64, &[Circle, Square, Triangle], true, SceneRegion::Polygon(&ROOM, &ROOM_RINGS), 1.3, 2.0, 0.0, 14, 60),
     scene("triangles-disc-fixed", FX, &[Triangle], true, SceneRegion::Circle(60.0), 1.25, 3.0, 0.0, 15, 60),
+    // The cell sampler on the board, against the host's bits.
+    fast(scene("circles-cells",  F64, &[Circle], false, rect(200.0, 200.0),  1.3,  1.0, 0.0, 16, 250)),
+    fast(scene("squares-cells-fixed", FX, &[Square], true, torus(100.0, 100.0), 1.25, 2.0, 0.0, 17, 200)),
     // The whole capacity: 1,024 rectangles.
     scene("capacity",        F64, &[RECT2],  false, rect(150.0, 100.0),  1.2,  3.0, 0.0, 8, CAPACITY as u64),
 ];
@@ -201,6 +221,10 @@ const _: () = {
     let mut i = 0;
     while i < SCENES.len() {
         assert!(SCENES[i].count as usize <= CAPACITY, "a scene needs more shapes than CAPACITY");
+        assert!(
+            !SCENES[i].fast || SCENES[i].count as usize <= FAST_CAPACITY,
+            "a cell-sampler scene needs more shapes than FAST_CAPACITY"
+        );
         assert!(SCENES[i].count > 0, "a scene must place at least one shape");
         assert!(!SCENES[i].shapes.is_empty(), "a scene needs a shape");
         i += 1;
@@ -279,6 +303,42 @@ pub fn run<S: Scalar, D: DrawTarget<Color = BinaryColor>>(
     })
 }
 
+/// [`run`] for a [`Scene::fast`] scene: the same, placing with the cell sampler over `cells`
+/// (at least one). A separate function, so that the other scenes' stack frames hold no
+/// sampler.
+pub fn run_fast<S: Scalar, D: DrawTarget<Color = BinaryColor>>(
+    scene: &Scene,
+    storage: Storage<'_, S>,
+    cells: &mut [Cell<S>],
+    target: &mut D,
+    mut clock: impl FnMut() -> u64,
+) -> Result<Outcome, RunError<D::Error>> {
+    let region = scene.region.region().map_err(RunError::Region)?;
+    let params = scene.params().map_err(RunError::Param)?;
+    let mut engine = Engine::<S>::new(params, region, storage).map_err(RunError::Param)?;
+    let mut sampler = CellSampler::new(cells).map_err(|_| RunError::Param(ParamError::Storage))?;
+    let size = target.bounding_box().size;
+    let view = View::new(&region, size.width, size.height);
+    let mut rng = zetafill::rng_from_seed(scene.seed);
+    let mut ticks = 0u64;
+    while (engine.placed().len() as u64) < scene.count {
+        let t0 = clock();
+        let step = engine.step_fast(&mut sampler, &mut rng);
+        ticks = ticks.wrapping_add(clock().wrapping_sub(t0));
+        let placement = step.map_err(RunError::Step)?;
+        if let Some(geo) = engine.geo(placement.index as usize) {
+            view.draw(&geo, target).map_err(RunError::Draw)?;
+        }
+    }
+    let (count, digest) = digest::engine_digest(&engine);
+    Ok(Outcome {
+        count,
+        digest,
+        trials: engine.stats().trials,
+        ticks,
+    })
+}
+
 #[cfg(test)]
 #[allow(clippy::unwrap_used, clippy::indexing_slicing)]
 mod tests {
@@ -332,5 +392,20 @@ mod tests {
         };
         let e = run(&s, storage, &mut frame, || 0).unwrap_err();
         assert_eq!(e, RunError::Step(StepError::Capacity { capacity: 3 }));
+    }
+
+    #[test]
+    fn a_cell_sampler_scene_needs_cells() {
+        let s = *SCENES.iter().find(|s| s.fast).unwrap();
+        let mut shapes = vec![Placed::<f64>::default(); FAST_CAPACITY];
+        let mut index = vec![0u32; FAST_INDEX_WORDS];
+        let mut frame = Frame::new();
+        let storage = Storage {
+            shapes: &mut shapes,
+            index: &mut index,
+            coverage: &mut [],
+        };
+        let e = run_fast(&s, storage, &mut [], &mut frame, || 0).unwrap_err();
+        assert_eq!(e, RunError::Param(ParamError::Storage));
     }
 }

@@ -27,9 +27,11 @@ use cortex_m_rt::entry;
 use defmt_semihosting as _;
 use semihosting::io::Write as _;
 use semihosting::{eprintln, process};
-use zetafill::{Fixed, Placed, Scalar, Storage};
+use zetafill::{Cell, Fixed, Placed, Scalar, Storage};
 use zetafill_display::draw::{Frame, PBM_HEADER};
-use zetafill_display::scenes::{run, ScalarKind, Scene, CAPACITY, INDEX_WORDS, SCENES};
+use zetafill_display::scenes::{
+    run, run_fast, ScalarKind, Scene, CAPACITY, FAST_CAPACITY, FAST_CELLS, FAST_INDEX_WORDS, INDEX_WORDS, SCENES,
+};
 
 use board::{Board, CALIBRATION_INSTRUCTIONS};
 
@@ -64,6 +66,8 @@ fn main() -> ! {
     for scene in SCENES {
         board.repaint();
         let ok = match scene.scalar {
+            ScalarKind::F64 if scene.fast => run_scene_fast::<f64>(scene, &board, &cal),
+            ScalarKind::Fixed if scene.fast => run_scene_fast::<Fixed>(scene, &board, &cal),
             ScalarKind::F64 => run_scene::<f64>(scene, &board, &cal),
             ScalarKind::Fixed => run_scene::<Fixed>(scene, &board, &cal),
         };
@@ -130,6 +134,48 @@ fn run_scene<S: Scalar + Default>(scene: &Scene, board: &Board, cal: &Calibratio
     };
     let mut clock = board.clock();
     let outcome = match run(scene, storage, &mut frame, || clock.now()) {
+        Ok(o) => o,
+        Err(e) => {
+            eprintln!("error {}: {}", scene.name, e);
+            return false;
+        }
+    };
+    let instructions = cal.instructions(outcome.ticks);
+    eprintln!("digest {} {} {:016x}", scene.name, outcome.count, outcome.digest);
+    eprintln!(
+        "cost {} scalar={} placements={} trials={} instructions={}",
+        scene.name,
+        scene.scalar.name(),
+        outcome.count,
+        outcome.trials,
+        instructions
+    );
+    defmt::info!(
+        "{=str} ({=str}): {=u64} shapes, {=u64} trials, {=u64} instructions per placement",
+        scene.name,
+        scene.scalar.name(),
+        outcome.count,
+        outcome.trials,
+        instructions / outcome.count.max(1)
+    );
+    write_frame(scene.name, &frame)
+}
+
+/// Runs a cell-sampler scene on scalar `S`: fewer shape slots, and the cells, on this frame
+/// of the stack (so the other scenes' frames hold no cells).
+#[inline(never)]
+fn run_scene_fast<S: Scalar + Default>(scene: &Scene, board: &Board, cal: &Calibration) -> bool {
+    let mut shapes = [Placed::<S>::default(); FAST_CAPACITY];
+    let mut index = [0u32; FAST_INDEX_WORDS];
+    let mut cells = [Cell::<S>::default(); FAST_CELLS];
+    let mut frame = Frame::new();
+    let storage = Storage {
+        shapes: &mut shapes,
+        index: &mut index,
+        coverage: &mut [],
+    };
+    let mut clock = board.clock();
+    let outcome = match run_fast(scene, storage, &mut cells, &mut frame, || clock.now()) {
         Ok(o) => o,
         Err(e) => {
             eprintln!("error {}: {}", scene.name, e);

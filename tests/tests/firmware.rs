@@ -23,9 +23,11 @@ use std::process::{Command, Stdio};
 use std::sync::OnceLock;
 use std::time::{Duration, Instant};
 
-use zetafill::{Fixed, Placed, Scalar, Storage};
+use zetafill::{Cell, Fixed, Placed, Scalar, Storage};
 use zetafill_display::draw::{Frame, FRAME_BYTES, HEIGHT, PBM_HEADER, WIDTH};
-use zetafill_display::scenes::{run, Outcome, ScalarKind, Scene, SceneRegion, CAPACITY, INDEX_WORDS, SCENES};
+use zetafill_display::scenes::{
+    run, run_fast, Outcome, ScalarKind, Scene, SceneRegion, CAPACITY, FAST_CAPACITY, FAST_CELLS, FAST_INDEX_WORDS, INDEX_WORDS, SCENES,
+};
 use zetafill_tests::{run_scene, CANONICAL};
 
 const RAM_TARGET: u64 = 48 * 1024;
@@ -172,13 +174,21 @@ struct HostRun {
 fn host_run_on<S: Scalar + Default>(scene: &Scene) -> HostRun {
     let mut shapes = vec![Placed::<S>::default(); CAPACITY];
     let mut index = vec![0u32; INDEX_WORDS];
+    // The board's cell storage: when it runs out the sampler stops refining, so the host must
+    // lend the same number of cells to place the same shapes.
+    let mut cells = vec![Cell::<S>::default(); FAST_CELLS];
     let mut frame = Frame::new();
     let storage = Storage {
         shapes: &mut shapes,
         index: &mut index,
         coverage: &mut [],
     };
-    let outcome = run(scene, storage, &mut frame, || 0).unwrap_or_else(|e| panic!("{}: {e}", scene.name));
+    let outcome = if scene.fast {
+        run_fast(scene, storage, &mut cells, &mut frame, || 0)
+    } else {
+        run(scene, storage, &mut frame, || 0)
+    }
+    .unwrap_or_else(|e| panic!("{}: {e}", scene.name));
     let mut pbm = PBM_HEADER.to_vec();
     pbm.extend_from_slice(frame.data());
     HostRun { outcome, pbm }
@@ -380,10 +390,17 @@ fn a_1024_shape_engine_fits_the_board() {
     assert_eq!(per_scene.iter().map(|f| field(f, "stack")).max(), Some(stack));
     // The engine's storage lives on the stack: the painted high-water mark must hold it.
     let storage = (CAPACITY * std::mem::size_of::<Placed<f64>>() + INDEX_WORDS * 4 + FRAME_BYTES) as u64;
+    // A cell-sampler scene has fewer shape slots and the cells.
+    let fast_storage = (FAST_CAPACITY * std::mem::size_of::<Placed<f64>>()
+        + FAST_INDEX_WORDS * 4
+        + FAST_CELLS * std::mem::size_of::<Cell<f64>>()
+        + FRAME_BYTES) as u64;
     for f in &per_scene {
+        let fast = SCENES.iter().any(|s| s.name == f[1] && s.fast);
+        let need = if fast { fast_storage } else { storage };
         assert!(
-            field(f, "stack") >= storage,
-            "{}: stack below the {storage} B of storage: painting is broken",
+            field(f, "stack") >= need,
+            "{}: stack below the {need} B of storage: painting is broken",
             f[1]
         );
     }

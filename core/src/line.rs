@@ -213,8 +213,9 @@ impl<'a, S: Scalar> LineHash<'a, S> {
             if c1.saturating_sub(c0) >= i64::from(total) {
                 return (0..total).all(f);
             }
-            let mut cx = c0;
-            while cx <= c1 {
+            // An inclusive range: `c1` may be `i64::MAX` (a saturated coordinate), where a
+            // counter stepped past it would wrap around and never stop.
+            for cx in c0..=c1 {
                 let mut j = self.heads.get(self.bucket(level, cx)).copied().unwrap_or(NIL);
                 while j != NIL {
                     if !f(j) {
@@ -222,7 +223,6 @@ impl<'a, S: Scalar> LineHash<'a, S> {
                     }
                     j = self.next.get(j as usize).copied().unwrap_or(NIL);
                 }
-                cx += 1;
             }
         }
         true
@@ -460,6 +460,22 @@ pub fn line_digest<S: Scalar>(e: &LineEngine<'_, S>) -> (u64, u64) {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_query_at_the_end_of_the_coordinate_range_stops() {
+        // Coordinates this large saturate to i64::MAX cells; the scan must end there.
+        let (mut heads, mut next) = ([0u32; 8], [0u32; 4]);
+        let Some(mut h) = LineHash::<f64>::new(&mut heads, &mut next, 100.0) else {
+            panic!("hash")
+        };
+        h.insert(0, 10.0, 1.0);
+        let mut seen = 0;
+        assert!(h.query(f64::MAX, f64::MAX, 4, |_| {
+            seen += 1;
+            true
+        }));
+        assert!(seen <= 4);
+    }
 
     fn run(periodic: bool, k: usize, seed: u64) -> (u64, u64) {
         let mut segs = [Segment::<f64>::default(); 64];

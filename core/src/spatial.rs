@@ -160,10 +160,10 @@ impl<'a, S: Scalar> SpatialHash<'a, S> {
         if span > i64::from(total) {
             return (0..total).all(f);
         }
-        let mut cy = cy0;
-        while cy <= cy1 {
-            let mut cx = cx0;
-            while cx <= cx1 {
+        // Inclusive ranges: a bound may be `i64::MAX` (a saturated coordinate), where a counter
+        // stepped past it would wrap around and never stop.
+        for cy in cy0..=cy1 {
+            for cx in cx0..=cx1 {
                 let mut j = self.heads.get(self.bucket(level, cx, cy)).copied().unwrap_or(NIL);
                 while j != NIL {
                     if !f(j) {
@@ -171,10 +171,30 @@ impl<'a, S: Scalar> SpatialHash<'a, S> {
                     }
                     j = self.next.get(j as usize).copied().unwrap_or(NIL);
                 }
-                cx += 1;
             }
-            cy += 1;
         }
         true
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_query_at_the_end_of_the_coordinate_range_stops() {
+        // Coordinates this large saturate to i64::MAX cells; the scan must end there.
+        let (mut heads, mut next) = ([0u32; 8], [0u32; 4]);
+        let Ok(mut h) = SpatialHash::<f64>::new(&mut heads, &mut next, 100.0) else {
+            panic!("hash")
+        };
+        assert!(h.insert(0, 10.0, 10.0, 1.0));
+        let mut seen = 0;
+        let far = f64::MAX;
+        assert!(h.query(0, [far, far, far, far], 4, |_| {
+            seen += 1;
+            true
+        }));
+        assert!(seen <= 4);
     }
 }

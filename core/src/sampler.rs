@@ -9,12 +9,13 @@
 //!
 //! ## The cells
 //! The region's bounding box is cut into a grid of level-0 cells; a cell of level `k + 1` is a
-//! quarter of one of level `k`. Each cell stores `d`, an upper bound of the clearance at its
-//! centre: the signed distance from the centre to the outside of the region, and to the
-//! material of the (at most [`NEAR`]) placed shapes it knows of (negative inside a shape).
-//! Leaving shapes out only makes `d` larger, so `d` is an upper bound whichever shapes a cell
-//! knows; knowing the nearest ones makes it tight. Clearance is 1-Lipschitz, so no point of a
-//! cell whose half diagonal is `h` has clearance above `u = d + h`.
+//! quarter of one of level `k`. Let `d` be the smallest signed distance from a cell's centre
+//! to the outside of the region and to the material of the (at most [`NEAR`]) placed shapes
+//! the cell knows of (negative inside a shape). Leaving shapes out only makes `d` larger, so
+//! `d` bounds the clearance at the centre from above whichever shapes a cell knows; knowing
+//! the nearest ones makes it tight. Clearance is 1-Lipschitz, so no point of a cell whose half
+//! diagonal is `h` has clearance above `d + h`: each cell stores such a bound `u` (a child
+//! also keeps its parent's when that is lower).
 //!
 //! Cells learn their neighbours from the trials themselves: a candidate that fails the exact
 //! test names the shape it hit, and the cell it was drawn in adds that shape to its list (it
@@ -29,9 +30,10 @@
 //! falls below `F`, one pass lowers the floor to 85% of the need and moves every cell at or
 //! above it out, so a pass comes only when the need has shrunk by 15%. Cells between the floor
 //! and the need wait in a small max-heap and wake as soon as the need reaches them. A cell
-//! with `u <= 0` lies inside shape material and is dropped for good. A cell that is only
-//! partly valid and larger than the need is split into its four children; so cells refine as
-//! the shapes shrink, down to 23 levels below the first grid.
+//! with `u <= 0` lies inside shape material and is dropped for good. A drawn cell whose half
+//! diagonal is above 1.4 times the need, or that has rejected eight candidates, is split into
+//! its four children; so cells refine as the shapes shrink, down to 23 levels below the first
+//! grid.
 //!
 //! ## Why the accepted placements are exactly the reference's
 //! Every trial draws a point uniformly over the union `U` of the live cells (a cell chosen
@@ -45,7 +47,9 @@
 //! centre is uniform over `V`. Splitting, sleeping and dropping cells change `U` between
 //! trials but never this property, so the accepted centre of every placement is uniform over
 //! `V` (and with the angle drawn uniformly and independently, uniform over the valid (centre,
-//! angle) pairs), exactly as in the reference. When `U` is empty no centre is valid: the fill
+//! angle) pairs), exactly as in the reference. (Cells are drawn eight at a time; within a step
+//! cells are only retired or split, so a cell drawn earlier in the step is still a draw over a
+//! union that holds `V`, and its point is still accepted exactly when valid.) When `U` is empty no centre is valid: the fill
 //! halts, with certainty rather than after the trial limit. (When the last room shrinks to a
 //! point of tangency, a set of no area, the cells around it refine to the finest level and
 //! stay live; then the trial limit ends the fill, as it does for the reference.)
@@ -56,9 +60,8 @@
 //!
 //! ## Storage
 //! The caller lends a slice of [`Cell`]s (32 bytes each for `f64`), [`cells_for`] its
-//! capacity. Live cells sit at its
-//! start, grouped by level; deep sleepers at the end of its first seven eighths; the waiting
-//! heap in the last eighth. The sampler holds at most [`CELLS_PER_SHAPE`] cells per placed
+//! capacity. Live cells sit at its start, grouped by level; deep sleepers at the end of its
+//! first seven eighths; the waiting heap in the last eighth. The sampler holds at most [`CELLS_PER_SHAPE`] cells per placed
 //! shape (plus a start); at that budget, or when the slice is full, cells are no longer split:
 //! sampling stays exact, only slower. Nothing allocates or panics.
 
@@ -109,8 +112,8 @@ pub const fn cells_for(shapes: usize) -> usize {
 /// rejected candidates, sits above them).
 const X_BITS: u32 = 27;
 
-/// One cell: its level and grid position, the shapes it knows of, and the clearance bound at
-/// its centre.
+/// One cell: its level and grid position, the shapes it knows of, and the bound on the
+/// clearance anywhere in it.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Cell<S> {
     /// The x index in the low [`X_BITS`] bits, the level above.

@@ -481,7 +481,8 @@ fn run_engine<S: zetafill::Scalar>(
 ) -> Result<EngineRun, CliError> {
     let mut shapes = vec![Placed::<S>::default(); cap];
     let mut index = vec![0u32; index_words(cap)];
-    let mut coverage = vec![0u64; COVERAGE_WORDS];
+    // Only the paper's sampler asks the coverage bitmap (the cell sampler never does).
+    let mut coverage = vec![0u64; if a.sampler == Sampler::Reference { COVERAGE_WORDS } else { 0 }];
     let storage = Storage {
         shapes: &mut shapes,
         index: &mut index,

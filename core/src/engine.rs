@@ -700,9 +700,14 @@ impl<'a, S: Scalar> Engine<'a, S> {
                 nx.base_scale
             }
             ShapeKind::Blob { delta } => {
-                // A blob lies inside the disc of radius (1 + 3 delta) times its scale, so its
-                // scale is at least that of a disc of its area over (1 + 3 delta).
-                let min_scale = crate::scalar::sqrtf(nx.area / core::f64::consts::PI) / (1.0 + 3.0 * delta);
+                // The smallest scale over all phases. A unit blob's vertices sit at equal
+                // angles 2 pi / n apart with radii r_k, so twice its area is
+                // sin(2 pi / n) sum r_k r_(k+1) <= sin(2 pi / n) sum r_k^2, and over n = 32
+                // samples the three harmonics are orthogonal: sum r_k^2 = n (1 + 1.5 delta^2)
+                // whatever the phases. (With a margin for rounding.)
+                let n = crate::shape::BLOB_VERTICES as f64;
+                let twice_area = n * libm::sin(core::f64::consts::TAU / n) * (1.0 + 1.5 * delta * delta) * (1.0 + 1e-6);
+                let min_scale = crate::scalar::sqrtf(2.0 * nx.area / twice_area);
                 nx.kind.inradius(S::from_f64(min_scale))
             }
             _ => nx.kind.inradius(nx.base_scale),

@@ -403,6 +403,23 @@ fn blob_unit<S: Scalar>(delta: f64, angle: S) -> ([Point<S>; BLOB_VERTICES], S) 
 mod tests {
     use super::*;
 
+    #[test]
+    fn blob_area_stays_below_the_bound_the_cell_sampler_uses() {
+        // Twice a unit blob's area is at most 32 sin(2 pi / 32) (1 + 1.5 delta^2) for every
+        // phase (the engine's `need` for blobs rests on it); and it comes close.
+        for delta in [0.0, 0.1, 0.2, 0.33] {
+            let bound = 32.0 * libm::sin(core::f64::consts::TAU / 32.0) * (1.0 + 1.5 * delta * delta);
+            let mut most = 0.0f64;
+            for k in 0..20_000u32 {
+                let angle = f64::from(k) * 0.000_314_159;
+                let (_, a2) = blob_unit::<f64>(delta, angle);
+                assert!(a2 <= bound * (1.0 + 1e-12), "delta {delta} angle {angle}: {a2} > {bound}");
+                most = most.max(a2);
+            }
+            assert!(most > bound * 0.95, "delta {delta}: the bound is loose ({most} of {bound})");
+        }
+    }
+
     fn area(g: &Geo<f64>) -> f64 {
         match *g {
             Geo::Circle { r, .. } => core::f64::consts::PI * r * r,

@@ -7,6 +7,10 @@
 //! `--no-reference-above N` (skip the reference sampler above n = N; by default above 10^6
 //! for c = 1.3 and 10^5 for c = 1.4, where its trials per placement reach the tens of
 //! thousands).
+//! The reference sampler runs twice: with the coverage bitmap the CLI gives it (2 MiB), and
+//! without (`paper + hash`: the paper's algorithm with only the spatial hash, the reference of
+//! DESIGN section 7), the latter up to `--no-bitmap-above N` (default 10^5 for c = 1.3, 10^4
+//! for c = 1.4).
 //! Prints a Markdown table for the README. It measures; it asserts nothing about time.
 
 use std::time::Instant;
@@ -22,11 +26,19 @@ struct Row {
     cells_per_shape: f64,
 }
 
-fn run(c: f64, n_offset: f64, n: u64, fast: bool) -> Row {
+#[derive(Clone, Copy, PartialEq)]
+enum Sampler {
+    Fast,
+    Reference,
+    PaperHash,
+}
+
+fn run(c: f64, n_offset: f64, n: u64, sampler: Sampler) -> Row {
+    let fast = sampler == Sampler::Fast;
     let cap = n as usize;
     let mut shapes = vec![Placed::<f64>::default(); cap];
     let mut index = vec![0u32; index_words(cap)];
-    let mut coverage = vec![0u64; COVERAGE_WORDS];
+    let mut coverage = vec![0u64; if sampler == Sampler::PaperHash { 0 } else { COVERAGE_WORDS }];
     // The pool the CLI lends: 16 cells per shape slot, at least 2^16.
     let mut pool = vec![Cell::<f64>::default(); if fast { cells_for(cap) } else { 1 }];
     let mut params = Params::circles(c, n_offset);
@@ -57,7 +69,7 @@ fn run(c: f64, n_offset: f64, n: u64, fast: bool) -> Row {
     };
     let secs = t.elapsed().as_secs_f64();
     if reason != StopReason::Count {
-        eprintln!("c {c} n {n} fast {fast}: stopped early: {reason:?}");
+        eprintln!("c {c} n {n}: stopped early: {reason:?}");
     }
     let s = e.stats();
     let core = std::mem::size_of::<Placed<f64>>() as f64 + 4.0 * (index_words(cap) - 1) as f64 / cap as f64;
@@ -79,17 +91,24 @@ fn main() {
     let quick = std::env::args().any(|a| a == "--quick");
     let max: u64 = if quick { 10_000 } else { arg("--max").unwrap_or(1_000_000) };
     let no_ref_above: Option<u64> = arg("--no-reference-above");
+    let no_bitmap_above: Option<u64> = arg("--no-bitmap-above");
     let cs: Vec<f64> = arg("--c").map_or(vec![1.3, 1.4], |c| vec![c]);
     println!("| c | N | n | sampler | time (s) | trials/placement | placements/s | cells/shape | bytes/shape |");
     println!("|---:|---:|---:|---|---:|---:|---:|---:|---:|");
     for &c in &cs {
         let n_offset = if c > 1.35 { 2.0 } else { 1.0 };
         let ref_max = no_ref_above.unwrap_or(if c > 1.35 { 100_000 } else { 1_000_000 });
+        let bare_max = no_bitmap_above.unwrap_or(if c > 1.35 { 10_000 } else { 100_000 });
         let mut n = 1_000u64;
         while n <= max {
-            let fast = run(c, n_offset, n, true);
-            let reference = (n <= ref_max).then(|| run(c, n_offset, n, false));
-            for (name, r) in [("fast", Some(&fast)), ("reference", reference.as_ref())] {
+            let fast = run(c, n_offset, n, Sampler::Fast);
+            let reference = (n <= ref_max).then(|| run(c, n_offset, n, Sampler::Reference));
+            let bare = (n <= bare_max).then(|| run(c, n_offset, n, Sampler::PaperHash));
+            for (name, r) in [
+                ("fast", Some(&fast)),
+                ("reference", reference.as_ref()),
+                ("paper + hash", bare.as_ref()),
+            ] {
                 let Some(r) = r else { continue };
                 println!(
                     "| {c} | {n_offset} | {} | {name} | {:.3} | {:.1} | {:.0} | {:.1} | {:.0} |",
@@ -103,6 +122,9 @@ fn main() {
             }
             if let Some(r) = &reference {
                 println!("|  |  |  | speed-up | {:.1}x |  |  |  |  |", r.secs / fast.secs);
+            }
+            if let Some(r) = &bare {
+                println!("|  |  |  | speed-up over paper + hash | {:.1}x |  |  |  |  |", r.secs / fast.secs);
             }
             n *= 10;
         }

@@ -277,16 +277,12 @@ fn poly_poly<S: Scalar>(pa: &[Point<S>], ca: bool, pb: &[Point<S>], cb: bool, ga
         let inf = gap * gap + S::ONE;
         return vert_edge_dist2(pb, pa, vert_edge_dist2(pa, pb, inf)) > gap * gap;
     }
-    // General simple polygons: overlapping ones have crossing edges or one holds a vertex
-    // of the other. Only a vertex within the other polygon's bounds can lie inside it, and
-    // only edges whose bounds come within `gap` of each other can cross or come that near,
-    // so the other tests are skipped: they would all fail. A margin far above rounding keeps
-    // the skipping exact.
+    // General simple polygons: overlapping ones have crossing (or touching) edges, or one
+    // lies inside the other. Only edges whose bounds come within `gap` of each other can
+    // cross or come that near, so the other pairs are skipped: their tests would all fail
+    // (a margin far above rounding keeps the skipping exact).
     let (ba, bb) = (vbox(pa), vbox(pb));
     let m = (ba.iter().chain(bb.iter()).fold(S::ONE, |m, &v| m.max(v.abs()))) * S::from_f64(1e-9);
-    if pa.iter().any(|&v| in_box(v, bb, m) && in_poly(v, pb, cb)) || pb.iter().any(|&v| in_box(v, ba, m) && in_poly(v, pa, ca)) {
-        return false;
-    }
     let reach = gap.max(S::ZERO) + m;
     // The edges of b that come near a's bounds (their first vertices' indices: a board's
     // stack has no room for more).
@@ -324,7 +320,10 @@ fn poly_poly<S: Scalar>(pa: &[Point<S>], ca: bool, pb: &[Point<S>], cb: bool, ga
             }
         }
     }
-    true
+    // No edges cross: each polygon's boundary lies wholly inside or wholly outside the
+    // other, so one vertex of each tells whether one holds the other.
+    let holds = |v: Option<&Point<S>>, b: [S; 4], q: &[Point<S>], cq: bool| v.is_some_and(|&v| in_box(v, b, m) && in_poly(v, q, cq));
+    !(holds(pa.first(), bb, pb, cb) || holds(pb.first(), ba, pa, ca))
 }
 
 /// Bounds of a vertex list: [min x, min y, max x, max y].
@@ -434,23 +433,25 @@ mod tests {
             s ^= s << 17;
             (s >> 11) as f64 / (1u64 << 53) as f64
         };
-        let (mut apart, mut overlapping) = (0, 0);
+        let (mut apart, mut overlapping, mut inside) = (0, 0, 0);
         for case in 0..20_000 {
-            let poly = |cx: f64, cy: f64, next: &mut dyn FnMut() -> f64| {
+            // Every fourth case a small polygon near the other's centre: often inside it.
+            let small = case % 4 == 3;
+            let poly = |cx: f64, cy: f64, size: f64, next: &mut dyn FnMut() -> f64| {
                 let n = 3 + (next() * 30.0) as usize;
                 let mut v = [Point::default(); MAX_VERTS];
                 let phase = next();
                 for (k, p) in v.iter_mut().take(n).enumerate() {
                     let a = (k as f64 + phase) * core::f64::consts::TAU / n as f64;
-                    let r = 0.4 + 0.6 * next();
+                    let r = size * (0.4 + 0.6 * next());
                     *p = Point::new(cx + r * libm::cos(a), cy + r * libm::sin(a));
                 }
                 (v, n)
             };
-            let (va, na) = poly(0.0, 0.0, &mut next);
-            let d = 0.3 + 1.6 * next();
+            let (va, na) = poly(0.0, 0.0, 1.0, &mut next);
+            let d = if small { 0.3 * next() } else { 0.3 + 1.6 * next() };
             let t = next() * core::f64::consts::TAU;
-            let (vb, nb) = poly(d * libm::cos(t), d * libm::sin(t), &mut next);
+            let (vb, nb) = poly(d * libm::cos(t), d * libm::sin(t), if small { 0.2 } else { 1.0 }, &mut next);
             let gap = if case % 2 == 0 { 0.0 } else { 0.2 * next() };
             let (pa, pb) = (&va[..na], &vb[..nb]);
             let got = poly_poly(pa, false, pb, false, gap);
@@ -460,8 +461,14 @@ mod tests {
             } else {
                 overlapping += 1;
             }
+            if small && pb.iter().all(|&v| point_in_poly(v, pa)) {
+                inside += 1;
+            }
         }
-        assert!(apart > 2000 && overlapping > 2000, "{apart} {overlapping}");
+        assert!(
+            apart > 2000 && overlapping > 2000 && inside > 1000,
+            "{apart} {overlapping} {inside}"
+        );
     }
 
     #[test]

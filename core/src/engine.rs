@@ -379,6 +379,7 @@ impl<'a, S: Scalar> Engine<'a, S> {
     fn blocker(&self, g: &Geo<S>, x: S, y: S, r: S, lowest: bool) -> Option<u32> {
         let hit: core::cell::Cell<Option<u32>> = core::cell::Cell::new(None);
         let total = self.len as u32;
+        let circle = matches!(g, Geo::Circle { .. });
         let gap = self.gap;
         // Tests candidate `gi`, centred at (qx, qy), against every shape the hash lists.
         let test = |level: usize, reach: S, gi: &Geo<S>, qx: S, qy: S| {
@@ -389,7 +390,10 @@ impl<'a, S: Scalar> Engine<'a, S> {
                     let pr = kind.bounding_radius(p.scale);
                     let lim = r + pr + gap;
                     let (dx, dy) = (p.x - qx, p.y - qy);
-                    let ok = dx * dx + dy * dy > lim * lim || separated(gi, &kind.geo(Point::new(p.x, p.y), p.scale, p.angle), gap);
+                    // Two circles within reach overlap: no geometry to build.
+                    let ok = dx * dx + dy * dy > lim * lim
+                        || (!(circle && kind == ShapeKind::Circle)
+                            && separated(gi, &kind.geo(Point::new(p.x, p.y), p.scale, p.angle), gap));
                     if !ok && (!lowest || self.hash.level_for(pr) == level) {
                         hit.set(Some(hit.get().map_or(j, |h| h.min(j))));
                     }
@@ -454,6 +458,9 @@ impl<'a, S: Scalar> Engine<'a, S> {
         let lim = r + kind.bounding_radius(p.scale) + self.gap;
         if dx * dx + dy * dy > lim * lim {
             return false;
+        }
+        if kind == ShapeKind::Circle && matches!(g, Geo::Circle { .. }) {
+            return true;
         }
         let other = kind.geo(Point::new(p.x + ox, p.y + oy), p.scale, p.angle);
         !separated(g, &other, self.gap)

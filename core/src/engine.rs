@@ -777,15 +777,18 @@ impl<'a, S: Scalar> Engine<'a, S> {
         }
     }
 
-    /// Places the next shape with the cell sampler: the same distribution of accepted
-    /// placements as [`Engine::step`], far fewer trials late in a fill (see
-    /// [`crate::sampler`]). Halts at the trial limit, or at once when no cell can hold the
-    /// shape. Use one sampler per engine, for every step after the first that uses it.
-    pub fn step_fast<R: RngCore + ?Sized>(&mut self, cells: &mut CellSampler<'_, S>, rng: &mut R) -> Result<Placement<S>, StepError> {
-        let nx = self.next_shape()?;
-        let Some(need) = self.need(&nx) else {
-            return self.step_reference(&nx, rng);
-        };
+    /// Brings `cells` up to date for the next shape, as a step of [`Engine::step_fast`] does
+    /// before its first candidate: afterwards every centre where the next shape fits lies in
+    /// a live cell ([`CellSampler::live_boxes`]). Says whether the next shape is placed with
+    /// the cells (false when it falls back to the reference sampler, or none is left).
+    pub fn prepare_fast(&self, cells: &mut CellSampler<'_, S>) -> bool {
+        self.next_shape().ok().and_then(|nx| self.prepare_cells(&nx, cells)).is_some()
+    }
+
+    /// Lays out the grid on first use and wakes the cells for the next shape's need; none
+    /// when the shape has no clearance condition.
+    fn prepare_cells(&self, nx: &Next<S>, cells: &mut CellSampler<'_, S>) -> Option<S> {
+        let need = self.need(nx)?;
         if !cells.ready() {
             let (x0, y0, _, _) = self.region.bbox();
             let (w, h) = self.period;
@@ -793,6 +796,18 @@ impl<'a, S: Scalar> Engine<'a, S> {
         }
         cells.wake(need, self.len);
         cells.flush();
+        Some(need)
+    }
+
+    /// Places the next shape with the cell sampler: the same distribution of accepted
+    /// placements as [`Engine::step`], far fewer trials late in a fill (see
+    /// [`crate::sampler`]). Halts at the trial limit, or at once when no cell can hold the
+    /// shape. Use one sampler per engine, for every step after the first that uses it.
+    pub fn step_fast<R: RngCore + ?Sized>(&mut self, cells: &mut CellSampler<'_, S>, rng: &mut R) -> Result<Placement<S>, StepError> {
+        let nx = self.next_shape()?;
+        let Some(need) = self.prepare_cells(&nx, cells) else {
+            return self.step_reference(&nx, rng);
+        };
         let mut trials = 0u64;
         loop {
             if trials >= self.params.max_trials || cells.is_empty() {

@@ -297,6 +297,20 @@ impl<'c, S: Scalar> CellSampler<'c, S> {
         })
     }
 
+    /// The live cells' boxes, `[x0, y0, x1, y1]`: candidates are drawn only inside them, so
+    /// every centre where the next shape fits must lie in one. For checks and pictures; O(live
+    /// cells).
+    pub fn live_boxes(&self) -> impl Iterator<Item = [f64; 4]> + '_ {
+        self.pool.iter().take(self.live()).map(|c| {
+            let g = self.lg(c.level());
+            let (x0, y0) = (
+                self.origin.x + S::from_f64(f64::from(c.ix())) * g.w,
+                self.origin.y + S::from_f64(f64::from(c.iy())) * g.h,
+            );
+            [x0.to_f64(), y0.to_f64(), (x0 + g.w).to_f64(), (y0 + g.h).to_f64()]
+        })
+    }
+
     /// The total area of the live cells.
     pub fn live_area(&self) -> f64 {
         let g = self.lg(CELL_LEVELS as u32 - 1);

@@ -9,10 +9,15 @@
 //! side, a test rejects when the distribution functions differ by more than about 0.14. The
 //! seeds are fixed, so the outcome is the same on every run. The same comparison must reject
 //! a biased input (fills of a region 10% narrower), which shows it can fail.
+//!
+//! The invariant the exactness argument rests on (every valid centre lies in a live cell) is
+//! also checked directly, by brute force, through whole fills in every kind of region.
 
+use rand_core::RngCore;
+use zetafill::geom::separated;
 use zetafill::{
-    cells_for, index_words, rng_from_seed, Cell, CellSampler, Engine, Params, Placed, Region, ShapeKind, StepError, Stop, StopReason,
-    Storage,
+    cells_for, index_words, rng_from_seed, Cell, CellSampler, Engine, Geo, Params, Placed, Point, PolygonRegion, Region, ShapeKind,
+    StepError, Stop, StopReason, Storage,
 };
 
 /// The shape and index buffers of an engine for `cap` shapes.
@@ -391,4 +396,140 @@ fn memory_per_shape_is_as_stated() {
     let per_shape = st.peak as f64 / cap as f64;
     assert!(per_shape <= 16.0, "{per_shape} cells per shape at the peak ({st:?})");
     assert_eq!(st.refused_splits, 0, "the pool ran out");
+}
+
+/// Whether `p` is a valid centre for a circle of radius `r` next to every shape of `e` (and
+/// their periodic images), checked by brute force with the exact pair test.
+fn valid_circle_centre(e: &Engine<'_, f64>, p: Point<f64>, r: f64) -> bool {
+    let gap = e.params().gap;
+    let cand = Geo::Circle { c: p, r };
+    let region = e.region();
+    if !region.periodic() && !region.contains(&cand, gap) {
+        return false;
+    }
+    let (_, _, w, h) = region.bbox();
+    let shifts: &[(f64, f64)] = if region.periodic() {
+        &[
+            (0.0, 0.0),
+            (w, 0.0),
+            (-w, 0.0),
+            (0.0, h),
+            (0.0, -h),
+            (w, h),
+            (w, -h),
+            (-w, h),
+            (-w, -h),
+        ]
+    } else {
+        &[(0.0, 0.0)]
+    };
+    (0..e.placed().len()).all(|i| {
+        let g = e.geo(i).expect("placed");
+        shifts.iter().all(|&(dx, dy)| separated(&cand, &g.shift(dx, dy), gap))
+    })
+}
+
+/// Checks that every valid centre among `points` lies in one of `boxes`; returns the number of
+/// valid points seen, or the first one left out.
+fn cells_hold_every_valid_centre(e: &Engine<'_, f64>, boxes: &[[f64; 4]], points: &[Point<f64>]) -> Result<usize, Point<f64>> {
+    let n = e.placed().len() as u64;
+    let r = (e.area_of(n) / std::f64::consts::PI).sqrt();
+    let mut valid = 0;
+    for &p in points {
+        if valid_circle_centre(e, p, r) {
+            valid += 1;
+            if !boxes.iter().any(|b| p.x >= b[0] && p.x <= b[2] && p.y >= b[1] && p.y <= b[3]) {
+                return Err(p);
+            }
+        }
+    }
+    Ok(valid)
+}
+
+/// The exactness argument's invariant, checked directly: throughout circle fills of 400 in
+/// every kind of region (with and without a gap, and with a pool too small to refine), every
+/// point where the next circle fits lies in a live cell, once the cells are brought up to
+/// date for that circle. Checked before the first five placements and every sixteenth, on
+/// 4000 uniform points each, their validity decided by brute force against every placed shape
+/// (and its periodic images). The same checker, given the cells shrunk by a tenth about their
+/// centres, finds valid points left out: it can fail. It also catches bounds that are too
+/// low by a tenth of a cell's half diagonal where a cell learns a shape.
+#[test]
+fn live_cells_hold_every_valid_centre() {
+    let hole = [
+        Point::new(0.0, 0.0),
+        Point::new(160.0, 0.0),
+        Point::new(160.0, 120.0),
+        Point::new(0.0, 120.0),
+        Point::new(60.0, 40.0),
+        Point::new(60.0, 80.0),
+        Point::new(100.0, 80.0),
+        Point::new(100.0, 40.0),
+    ];
+    let poly = PolygonRegion::new(&hole, &[4, 8]).expect("a square with a square hole");
+    let regions = [
+        Region::Rect {
+            width: 160.0,
+            height: 120.0,
+            periodic: false,
+        },
+        Region::Rect {
+            width: 160.0,
+            height: 120.0,
+            periodic: true,
+        },
+        Region::Circle { radius: 70.0 },
+        Region::Annulus { outer: 70.0, inner: 25.0 },
+        Region::Polygon(poly),
+    ];
+    let mut rng = rng_from_seed(99);
+    let mut unit = || (rng.next_u64() >> 11) as f64 / (1u64 << 53) as f64;
+    let (mut checked, mut valid_seen, mut broken_caught) = (0, 0, 0);
+    for (ri, region) in regions.iter().enumerate() {
+        for (gap, pool_len) in [(0.0, 1usize << 16), (0.8, 1 << 16), (0.0, 6)] {
+            let cap = 400;
+            let mut b = Buffers::<f64>::new(cap);
+            let mut params = Params::circles(1.3, 2.0);
+            params.gap = gap;
+            let mut none: [u64; 0] = [];
+            let mut e = Engine::<f64>::new(params, *region, b.storage(&mut none)).expect("valid");
+            let mut pool = vec![Cell::<f64>::default(); pool_len];
+            let mut cells = CellSampler::new(&mut pool).expect("cells");
+            let mut frng = rng_from_seed(7 + ri as u64);
+            let (x0, y0, w, h) = region.bbox();
+            for step in 1..=cap {
+                if e.step_fast(&mut cells, &mut frng).is_err() {
+                    break;
+                }
+                if !(step < 5 || step % 16 == 0) || !e.prepare_fast(&mut cells) {
+                    continue;
+                }
+                let points: Vec<Point<f64>> = (0..4000).map(|_| Point::new(x0 + unit() * w, y0 + unit() * h)).collect();
+                let boxes: Vec<[f64; 4]> = cells.live_boxes().collect();
+                match cells_hold_every_valid_centre(&e, &boxes, &points) {
+                    Ok(v) => valid_seen += v,
+                    Err(p) => panic!("region {ri}, gap {gap}, pool {pool_len}, after {step} shapes: valid centre {p:?} in no live cell"),
+                }
+                checked += 1;
+                // The broken input: the same cells, each shrunk by a tenth.
+                let shrunk: Vec<[f64; 4]> = boxes
+                    .iter()
+                    .map(|b| {
+                        let (dx, dy) = ((b[2] - b[0]) * 0.05, (b[3] - b[1]) * 0.05);
+                        [b[0] + dx, b[1] + dy, b[2] - dx, b[3] - dy]
+                    })
+                    .collect();
+                if cells_hold_every_valid_centre(&e, &shrunk, &points).is_err() {
+                    broken_caught += 1;
+                }
+            }
+        }
+    }
+    println!("checks {checked}, valid points {valid_seen}, shrunk cells caught {broken_caught}");
+    assert!(checked >= 200, "checks made: {checked}");
+    assert!(valid_seen >= 20_000, "valid points seen: {valid_seen}");
+    assert!(
+        broken_caught * 2 >= checked,
+        "shrunk cells caught in {broken_caught} of {checked} checks"
+    );
 }

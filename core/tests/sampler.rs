@@ -13,6 +13,8 @@
 //! The invariant the exactness argument rests on (every valid centre lies in a live cell) is
 //! also checked directly, by brute force, through whole fills in every kind of region.
 
+mod common;
+
 use rand_core::RngCore;
 use zetafill::geom::separated;
 use zetafill::{
@@ -456,32 +458,8 @@ fn cells_hold_every_valid_centre(e: &Engine<'_, f64>, boxes: &[[f64; 4]], points
 /// low by a tenth of a cell's half diagonal where a cell learns a shape.
 #[test]
 fn live_cells_hold_every_valid_centre() {
-    let hole = [
-        Point::new(0.0, 0.0),
-        Point::new(160.0, 0.0),
-        Point::new(160.0, 120.0),
-        Point::new(0.0, 120.0),
-        Point::new(60.0, 40.0),
-        Point::new(60.0, 80.0),
-        Point::new(100.0, 80.0),
-        Point::new(100.0, 40.0),
-    ];
-    let poly = PolygonRegion::new(&hole, &[4, 8]).expect("a square with a square hole");
-    let regions = [
-        Region::Rect {
-            width: 160.0,
-            height: 120.0,
-            periodic: false,
-        },
-        Region::Rect {
-            width: 160.0,
-            height: 120.0,
-            periodic: true,
-        },
-        Region::Circle { radius: 70.0 },
-        Region::Annulus { outer: 70.0, inner: 25.0 },
-        Region::Polygon(poly),
-    ];
+    let (pts, ends) = common::star_with_hole();
+    let regions = common::every_kind(PolygonRegion::new(&pts, &ends).expect("a star with a hole"));
     let mut rng = rng_from_seed(99);
     let mut unit = || (rng.next_u64() >> 11) as f64 / (1u64 << 53) as f64;
     let (mut checked, mut valid_seen, mut broken_caught) = (0, 0, 0);

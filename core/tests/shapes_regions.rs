@@ -6,6 +6,8 @@
 //! that no two shapes come within the gap, and, by sampling each outline against region
 //! membership written here, that every shape lies inside its region with its gap.
 
+mod common;
+
 use zetafill::geom::separated;
 use zetafill::{
     index_words, rng_from_seed, Cell, CellSampler, Engine, Geo, Params, Placed, Point, PolygonRegion, Region, ShapeKind, Stop, StopReason,
@@ -318,36 +320,9 @@ fn fill(kind: ShapeKind, region: Region<'_>, gap: f64, count: u64, seed: u64) ->
 #[test]
 fn every_shape_in_every_region() {
     // A star-shaped polygon with a square hole.
-    let mut pts: Vec<Point<f64>> = (0..10)
-        .map(|k| {
-            let t = std::f64::consts::FRAC_PI_2 + k as f64 * std::f64::consts::PI / 5.0;
-            let r = if k % 2 == 0 { 100.0 } else { 55.0 };
-            Point::new(100.0 + r * t.cos(), 100.0 + r * t.sin())
-        })
-        .collect();
-    pts.extend([
-        Point::new(90.0, 90.0),
-        Point::new(90.0, 110.0),
-        Point::new(110.0, 110.0),
-        Point::new(110.0, 90.0),
-    ]);
-    let ends = vec![10, 14];
+    let (pts, ends) = common::star_with_hole();
     let poly = PolygonRegion::new(&pts, &ends).unwrap_or_else(|e| panic!("{e}"));
-    let regions = [
-        Region::Rect {
-            width: 160.0,
-            height: 120.0,
-            periodic: false,
-        },
-        Region::Rect {
-            width: 160.0,
-            height: 120.0,
-            periodic: true,
-        },
-        Region::Circle { radius: 80.0 },
-        Region::Annulus { outer: 90.0, inner: 35.0 },
-        Region::Polygon(poly),
-    ];
+    let regions = common::every_kind(poly);
     let mut total = 0;
     // The reference sampler, the cell sampler, and the cell sampler with a pool too small to
     // refine (it must stay correct).

@@ -63,7 +63,10 @@
 //! capacity. Live cells sit at its start, grouped by level; deep sleepers at the end of its
 //! first seven eighths; the waiting heap in the last eighth. The sampler holds at most [`CELLS_PER_SHAPE`] cells per placed
 //! shape (plus a start); at that budget, or when the slice is full, cells are no longer split:
-//! sampling stays exact, only slower. Nothing allocates or panics.
+//! sampling stays exact, only slower. All the cells held, waiting ones included, always fit in
+//! the first seven eighths, so a cell that wakes always has a place among the live ones (a
+//! cell with nowhere to go would take its valid centres out of the union). Nothing allocates
+//! or panics.
 
 use crate::geom::Point;
 use crate::scalar::Scalar;
@@ -699,8 +702,12 @@ impl<'c, S: Scalar> CellSampler<'c, S> {
         if !((big || c.rejects() >= STUBBORN) && (level as usize) + 1 < CELL_LEVELS) {
             return Verdict::Test(slot);
         }
+        // Every cell held must fit in the live and deep-sleeper part of the pool, waiting ones
+        // included: a waiting cell that wakes needs a place there, and a cell with nowhere to
+        // go would leave the union without its valid centres.
+        let held = self.live() + self.asleep + self.waiting + 3;
         let budget = CELLS_PER_SHAPE.saturating_mul(self.placed.saturating_add(CELLS_BASE));
-        if self.live() + self.asleep + 3 > self.main || self.live() + self.asleep + self.waiting + 3 > budget {
+        if held > self.main || held > budget {
             self.stats.refused_splits += 1;
             return Verdict::Test(slot);
         }

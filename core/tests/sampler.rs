@@ -400,15 +400,11 @@ fn memory_per_shape_is_as_stated() {
     assert_eq!(st.refused_splits, 0, "the pool ran out");
 }
 
-/// Whether `p` is a valid centre for a circle of radius `r` next to every shape of `e` (and
-/// their periodic images), checked by brute force with the exact pair test.
-fn valid_circle_centre(e: &Engine<'_, f64>, p: Point<f64>, r: f64) -> bool {
+/// Whether the next shape of `e` fits at `p` at one of `angles`, next to every placed shape
+/// (and their periodic images), checked by brute force with the exact pair test.
+fn valid_centre(e: &Engine<'_, f64>, p: Point<f64>, angles: &[f64]) -> bool {
     let gap = e.params().gap;
-    let cand = Geo::Circle { c: p, r };
     let region = e.region();
-    if !region.periodic() && !region.contains(&cand, gap) {
-        return false;
-    }
     let (_, _, w, h) = region.bbox();
     let shifts: &[(f64, f64)] = if region.periodic() {
         &[
@@ -425,20 +421,37 @@ fn valid_circle_centre(e: &Engine<'_, f64>, p: Point<f64>, r: f64) -> bool {
     } else {
         &[(0.0, 0.0)]
     };
-    (0..e.placed().len()).all(|i| {
-        let g = e.geo(i).expect("placed");
-        shifts.iter().all(|&(dx, dy)| separated(&cand, &g.shift(dx, dy), gap))
+    let n = e.placed().len() as u64;
+    let kind = e.kind_of(n);
+    angles.iter().any(|&angle| {
+        let scale: f64 = kind.scale_for(e.area_of(n), angle);
+        let cand = kind.geo(p, scale, angle);
+        let reach = kind.bounding_radius(scale) + gap;
+        if !region.periodic() && !region.contains(&cand, gap) {
+            return false;
+        }
+        e.placed().iter().enumerate().all(|(i, s)| {
+            let far = reach + e.kind_of(i as u64).bounding_radius(s.scale);
+            let g = e.geo(i).expect("placed");
+            shifts.iter().all(|&(dx, dy)| {
+                let (cx, cy) = (s.x + dx - p.x, s.y + dy - p.y);
+                cx * cx + cy * cy > far * far || separated(&cand, &g.shift(dx, dy), gap)
+            })
+        })
     })
 }
 
 /// Checks that every valid centre among `points` lies in one of `boxes`; returns the number of
 /// valid points seen, or the first one left out.
-fn cells_hold_every_valid_centre(e: &Engine<'_, f64>, boxes: &[[f64; 4]], points: &[Point<f64>]) -> Result<usize, Point<f64>> {
-    let n = e.placed().len() as u64;
-    let r = (e.area_of(n) / std::f64::consts::PI).sqrt();
+fn cells_hold_every_valid_centre(
+    e: &Engine<'_, f64>,
+    boxes: &[[f64; 4]],
+    points: &[Point<f64>],
+    angles: &[f64],
+) -> Result<usize, Point<f64>> {
     let mut valid = 0;
     for &p in points {
-        if valid_circle_centre(e, p, r) {
+        if valid_centre(e, p, angles) {
             valid += 1;
             if !boxes.iter().any(|b| p.x >= b[0] && p.x <= b[2] && p.y >= b[1] && p.y <= b[3]) {
                 return Err(p);
@@ -448,29 +461,39 @@ fn cells_hold_every_valid_centre(e: &Engine<'_, f64>, boxes: &[[f64; 4]], points
     Ok(valid)
 }
 
-/// The exactness argument's invariant, checked directly: throughout circle fills of 400 in
-/// every kind of region (with and without a gap, and with a pool too small to refine), every
-/// point where the next circle fits lies in a live cell, once the cells are brought up to
-/// date for that circle. Checked before the first five placements and every sixteenth, on
-/// 4000 uniform points each, their validity decided by brute force against every placed shape
-/// (and its periodic images). The same checker, given the cells shrunk by a tenth about their
-/// centres, finds valid points left out: it can fail. It also catches bounds that are too
-/// low by a tenth of a cell's half diagonal where a cell learns a shape.
-#[test]
-fn live_cells_hold_every_valid_centre() {
-    let (pts, ends) = common::star_with_hole();
-    let regions = common::every_kind(PolygonRegion::new(&pts, &ends).expect("a star with a hole"));
+/// Fills of `kind` in each of `regions` with each (gap, cell pool) of `configs`, checking
+/// before the first five placements and every `every`-th that every valid centre among
+/// `points` uniform points (tried at `angles` angles) lies in a live cell. Returns the checks
+/// made, the valid points seen, and how many checks found valid points outside the same cells
+/// shrunk by a tenth about their centres.
+fn check_invariant(
+    kind: ShapeKind,
+    regions: &[Region<'_>],
+    configs: &[(f64, usize)],
+    every: usize,
+    points: usize,
+    angles: usize,
+) -> (usize, usize, usize) {
     let mut rng = rng_from_seed(99);
     let mut unit = || (rng.next_u64() >> 11) as f64 / (1u64 << 53) as f64;
     let (mut checked, mut valid_seen, mut broken_caught) = (0, 0, 0);
+    let angles: Vec<f64> = if kind.rotates() {
+        (0..angles)
+            .map(|k| std::f64::consts::TAU * (k as f64 + 0.5) / angles as f64)
+            .collect()
+    } else {
+        vec![0.0]
+    };
     for (ri, region) in regions.iter().enumerate() {
-        for (gap, pool_len) in [(0.0, 1usize << 16), (0.8, 1 << 16), (0.0, 6)] {
+        for &(gap, pool_len) in configs {
             let cap = 400;
             let mut b = Buffers::<f64>::new(cap);
-            let mut params = Params::circles(1.3, 2.0);
-            params.gap = gap;
+            let mut p = params(kind);
+            p.gap = gap;
+            // A fill that halts ends its checks; let it halt soon.
+            p.max_trials = 200_000;
             let mut none: [u64; 0] = [];
-            let mut e = Engine::<f64>::new(params, *region, b.storage(&mut none)).expect("valid");
+            let mut e = Engine::<f64>::new(p, *region, b.storage(&mut none)).expect("valid");
             let mut pool = vec![Cell::<f64>::default(); pool_len];
             let mut cells = CellSampler::new(&mut pool).expect("cells");
             let mut frng = rng_from_seed(7 + ri as u64);
@@ -479,14 +502,16 @@ fn live_cells_hold_every_valid_centre() {
                 if e.step_fast(&mut cells, &mut frng).is_err() {
                     break;
                 }
-                if !(step < 5 || step % 16 == 0) || !e.prepare_fast(&mut cells) {
+                if !(step < 5 || step % every == 0) || !e.prepare_fast(&mut cells) {
                     continue;
                 }
-                let points: Vec<Point<f64>> = (0..4000).map(|_| Point::new(x0 + unit() * w, y0 + unit() * h)).collect();
+                let pts: Vec<Point<f64>> = (0..points).map(|_| Point::new(x0 + unit() * w, y0 + unit() * h)).collect();
                 let boxes: Vec<[f64; 4]> = cells.live_boxes().collect();
-                match cells_hold_every_valid_centre(&e, &boxes, &points) {
+                match cells_hold_every_valid_centre(&e, &boxes, &pts, &angles) {
                     Ok(v) => valid_seen += v,
-                    Err(p) => panic!("region {ri}, gap {gap}, pool {pool_len}, after {step} shapes: valid centre {p:?} in no live cell"),
+                    Err(q) => {
+                        panic!("{kind:?}, region {ri}, gap {gap}, pool {pool_len}, after {step} shapes: valid centre {q:?} in no live cell")
+                    }
                 }
                 checked += 1;
                 // The broken input: the same cells, each shrunk by a tenth.
@@ -497,12 +522,36 @@ fn live_cells_hold_every_valid_centre() {
                         [b[0] + dx, b[1] + dy, b[2] - dx, b[3] - dy]
                     })
                     .collect();
-                if cells_hold_every_valid_centre(&e, &shrunk, &points).is_err() {
+                if cells_hold_every_valid_centre(&e, &shrunk, &pts, &angles).is_err() {
                     broken_caught += 1;
                 }
             }
         }
     }
+    (checked, valid_seen, broken_caught)
+}
+
+/// The exactness argument's invariant, checked directly: throughout circle fills of 400 in
+/// every kind of region (with and without a gap, with a pool that fills up, and with one too
+/// small to refine), every
+/// point where the next circle fits lies in a live cell, once the cells are brought up to
+/// date for that circle. Checked before the first five placements and every sixteenth, on
+/// 4000 uniform points each, their validity decided by brute force against every placed shape
+/// (and its periodic images). The same checker, given the cells shrunk by a tenth about their
+/// centres, finds valid points left out: it can fail. It also catches bounds that are too
+/// low by a tenth of a cell's half diagonal where a cell learns a shape.
+#[test]
+fn live_cells_hold_every_valid_centre() {
+    let (pts, ends) = common::star_with_hole();
+    let regions = common::every_kind(PolygonRegion::new(&pts, &ends).expect("a star with a hole"));
+    let (checked, valid_seen, broken_caught) = check_invariant(
+        ShapeKind::Circle,
+        &regions,
+        &[(0.0, cells_for(400)), (0.8, cells_for(400)), (0.0, 3000), (0.0, 6)],
+        16,
+        4000,
+        1,
+    );
     println!("checks {checked}, valid points {valid_seen}, shrunk cells caught {broken_caught}");
     assert!(checked >= 200, "checks made: {checked}");
     assert!(valid_seen >= 20_000, "valid points seen: {valid_seen}");
@@ -510,4 +559,31 @@ fn live_cells_hold_every_valid_centre() {
         broken_caught * 2 >= checked,
         "shrunk cells caught in {broken_caught} of {checked} checks"
     );
+}
+
+/// The same invariant for the shapes whose bounds come from polygon and ring distances and
+/// whose room depends on their angle: rotated squares, stars and blobs, and rings, in an
+/// inclusive and a periodic rectangle and the star with a hole, without a gap and with a gap
+/// and a pool that fills up. A centre counts as valid when the shape fits there at one of 12
+/// angles.
+#[test]
+fn live_cells_hold_every_valid_centre_of_other_shapes() {
+    let (pts, ends) = common::star_with_hole();
+    let [rect, torus, _, _, star] = common::every_kind(PolygonRegion::new(&pts, &ends).expect("a star with a hole"));
+    for kind in [
+        ShapeKind::Square,
+        ShapeKind::Star { points: 5, inner: 0.5 },
+        ShapeKind::Blob { delta: 0.1 },
+        ShapeKind::Ring { inner: 0.5 },
+    ] {
+        let (checked, valid_seen, broken_caught) =
+            check_invariant(kind, &[rect, torus, star], &[(0.0, cells_for(400)), (0.6, 4000)], 24, 1000, 12);
+        println!("{kind:?}: checks {checked}, valid points {valid_seen}, shrunk cells caught {broken_caught}");
+        assert!(checked >= 30, "{kind:?}: checks made: {checked}");
+        assert!(valid_seen >= 2000, "{kind:?}: valid points seen: {valid_seen}");
+        assert!(
+            broken_caught * 3 >= checked,
+            "{kind:?}: shrunk cells caught in {broken_caught} of {checked} checks"
+        );
+    }
 }

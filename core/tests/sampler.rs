@@ -18,7 +18,7 @@ mod common;
 use rand_core::RngCore;
 use zetafill::geom::separated;
 use zetafill::{
-    cells_for, index_words, rng_from_seed, Cell, CellSampler, Engine, Geo, Params, Placed, Point, PolygonRegion, Region, ShapeKind,
+    cells_for, index_words, rng_from_seed, Cell, CellSampler, Engine, Params, Placed, Point, PolygonRegion, Region, Scalar, ShapeKind,
     StepError, Stop, StopReason, Storage,
 };
 
@@ -402,8 +402,8 @@ fn memory_per_shape_is_as_stated() {
 
 /// Whether the next shape of `e` fits at `p` at one of `angles`, next to every placed shape
 /// (and their periodic images), checked by brute force with the exact pair test.
-fn valid_centre(e: &Engine<'_, f64>, p: Point<f64>, angles: &[f64]) -> bool {
-    let gap = e.params().gap;
+fn valid_centre<S: Scalar>(e: &Engine<'_, S>, p: Point<S>, angles: &[f64]) -> bool {
+    let gap = S::from_f64(e.params().gap);
     let region = e.region();
     let (_, _, w, h) = region.bbox();
     let shifts: &[(f64, f64)] = if region.periodic() {
@@ -424,7 +424,8 @@ fn valid_centre(e: &Engine<'_, f64>, p: Point<f64>, angles: &[f64]) -> bool {
     let n = e.placed().len() as u64;
     let kind = e.kind_of(n);
     angles.iter().any(|&angle| {
-        let scale: f64 = kind.scale_for(e.area_of(n), angle);
+        let angle = S::from_f64(angle);
+        let scale: S = kind.scale_for(e.area_of(n), angle);
         let cand = kind.geo(p, scale, angle);
         let reach = kind.bounding_radius(scale) + gap;
         if !region.periodic() && !region.contains(&cand, gap) {
@@ -434,6 +435,7 @@ fn valid_centre(e: &Engine<'_, f64>, p: Point<f64>, angles: &[f64]) -> bool {
             let far = reach + e.kind_of(i as u64).bounding_radius(s.scale);
             let g = e.geo(i).expect("placed");
             shifts.iter().all(|&(dx, dy)| {
+                let (dx, dy) = (S::from_f64(dx), S::from_f64(dy));
                 let (cx, cy) = (s.x + dx - p.x, s.y + dy - p.y);
                 cx * cx + cy * cy > far * far || separated(&cand, &g.shift(dx, dy), gap)
             })
@@ -443,17 +445,18 @@ fn valid_centre(e: &Engine<'_, f64>, p: Point<f64>, angles: &[f64]) -> bool {
 
 /// Checks that every valid centre among `points` lies in one of `boxes`; returns the number of
 /// valid points seen, or the first one left out.
-fn cells_hold_every_valid_centre(
-    e: &Engine<'_, f64>,
+fn cells_hold_every_valid_centre<S: Scalar>(
+    e: &Engine<'_, S>,
     boxes: &[[f64; 4]],
-    points: &[Point<f64>],
+    points: &[Point<S>],
     angles: &[f64],
-) -> Result<usize, Point<f64>> {
+) -> Result<usize, Point<S>> {
     let mut valid = 0;
     for &p in points {
         if valid_centre(e, p, angles) {
             valid += 1;
-            if !boxes.iter().any(|b| p.x >= b[0] && p.x <= b[2] && p.y >= b[1] && p.y <= b[3]) {
+            let (x, y) = (p.x.to_f64(), p.y.to_f64());
+            if !boxes.iter().any(|b| x >= b[0] && x <= b[2] && y >= b[1] && y <= b[3]) {
                 return Err(p);
             }
         }
@@ -466,7 +469,7 @@ fn cells_hold_every_valid_centre(
 /// `points` uniform points (tried at `angles` angles) lies in a live cell. Returns the checks
 /// made, the valid points seen, and how many checks found valid points outside the same cells
 /// shrunk by a tenth about their centres.
-fn check_invariant(
+fn check_invariant<S: Scalar>(
     kind: ShapeKind,
     regions: &[Region<'_>],
     configs: &[(f64, usize)],
@@ -487,14 +490,14 @@ fn check_invariant(
     for (ri, region) in regions.iter().enumerate() {
         for &(gap, pool_len) in configs {
             let cap = 400;
-            let mut b = Buffers::<f64>::new(cap);
+            let mut b = Buffers::<S>::new(cap);
             let mut p = params(kind);
             p.gap = gap;
             // A fill that halts ends its checks; let it halt soon.
             p.max_trials = 200_000;
             let mut none: [u64; 0] = [];
-            let mut e = Engine::<f64>::new(p, *region, b.storage(&mut none)).expect("valid");
-            let mut pool = vec![Cell::<f64>::default(); pool_len];
+            let mut e = Engine::<S>::new(p, *region, b.storage(&mut none)).expect("valid");
+            let mut pool = vec![Cell::<S>::default(); pool_len];
             let mut cells = CellSampler::new(&mut pool).expect("cells");
             let mut frng = rng_from_seed(7 + ri as u64);
             let (x0, y0, w, h) = region.bbox();
@@ -505,7 +508,9 @@ fn check_invariant(
                 if !(step < 5 || step % every == 0) || !e.prepare_fast(&mut cells) {
                     continue;
                 }
-                let pts: Vec<Point<f64>> = (0..points).map(|_| Point::new(x0 + unit() * w, y0 + unit() * h)).collect();
+                let pts: Vec<Point<S>> = (0..points)
+                    .map(|_| Point::new(S::from_f64(x0 + unit() * w), S::from_f64(y0 + unit() * h)))
+                    .collect();
                 let boxes: Vec<[f64; 4]> = cells.live_boxes().collect();
                 match cells_hold_every_valid_centre(&e, &boxes, &pts, &angles) {
                     Ok(v) => valid_seen += v,
@@ -544,7 +549,7 @@ fn check_invariant(
 fn live_cells_hold_every_valid_centre() {
     let (pts, ends) = common::star_with_hole();
     let regions = common::every_kind(PolygonRegion::new(&pts, &ends).expect("a star with a hole"));
-    let (checked, valid_seen, broken_caught) = check_invariant(
+    let (checked, valid_seen, broken_caught) = check_invariant::<f64>(
         ShapeKind::Circle,
         &regions,
         &[(0.0, cells_for(400)), (0.8, cells_for(400)), (0.0, 3000), (0.0, 6)],
@@ -577,8 +582,28 @@ fn live_cells_hold_every_valid_centre_of_other_shapes() {
         ShapeKind::Ring { inner: 0.5 },
     ] {
         let (checked, valid_seen, broken_caught) =
-            check_invariant(kind, &[rect, torus, star], &[(0.0, cells_for(400)), (0.6, 4000)], 24, 1000, 12);
+            check_invariant::<f64>(kind, &[rect, torus, star], &[(0.0, cells_for(400)), (0.6, 4000)], 24, 1000, 12);
         println!("{kind:?}: checks {checked}, valid points {valid_seen}, shrunk cells caught {broken_caught}");
+        assert!(checked >= 30, "{kind:?}: checks made: {checked}");
+        assert!(valid_seen >= 2000, "{kind:?}: valid points seen: {valid_seen}");
+        assert!(
+            broken_caught * 3 >= checked,
+            "{kind:?}: shrunk cells caught in {broken_caught} of {checked} checks"
+        );
+    }
+}
+
+/// The same invariant on 32.32 fixed point, the board's scalar, where every bound is rounded:
+/// circles and rotated squares in an inclusive and a periodic rectangle, with a pool that
+/// fills up.
+#[test]
+fn live_cells_hold_every_valid_centre_on_fixed_point() {
+    let (pts, ends) = common::star_with_hole();
+    let [rect, torus, ..] = common::every_kind(PolygonRegion::new(&pts, &ends).expect("a star with a hole"));
+    for kind in [ShapeKind::Circle, ShapeKind::Square] {
+        let (checked, valid_seen, broken_caught) =
+            check_invariant::<zetafill::Fixed>(kind, &[rect, torus], &[(0.0, cells_for(400)), (0.6, 3000)], 24, 1000, 12);
+        println!("{kind:?} on fixed point: checks {checked}, valid points {valid_seen}, shrunk cells caught {broken_caught}");
         assert!(checked >= 30, "{kind:?}: checks made: {checked}");
         assert!(valid_seen >= 2000, "{kind:?}: valid points seen: {valid_seen}");
         assert!(

@@ -11,7 +11,7 @@ use std::io::IsTerminal;
 use std::path::PathBuf;
 use zetafill::engine::{ParamError, StepError};
 use zetafill::{
-    index_words, Cell, CellSampler, Engine, Geo, MixOrder, Params, Placed, PolygonRegion, Region, ShapeKind, Stop, StopReason, Storage,
+    index_words, CellSampler, Engine, Geo, MixOrder, Params, Placed, PolygonRegion, Region, ShapeKind, Stop, StopReason, Storage,
 };
 
 /// Largest number of shapes one run may hold (52 bytes each in the core).
@@ -503,8 +503,9 @@ fn run_engine<S: zetafill::Scalar>(
         Sampler::Reference => engine.run(&mut rng, stop, on_place),
         Sampler::Fast => {
             // Enough cells that only the sampler's own budget limits it: the shapes of a seed
-            // then do not depend on the count asked for.
-            let mut pool = vec![Cell::<S>::default(); zetafill::cells_for(cap)];
+            // then do not depend on the count asked for. Zeroed memory: the system maps only
+            // the pages the sampler writes.
+            let mut pool = vec![[0u64; 4]; zetafill::cells_for(cap)];
             let mut cells = CellSampler::new(&mut pool).map_err(|_| CliError::Io("internal: no cells for the fast sampler".into()))?;
             engine.run_fast(&mut cells, &mut rng, stop, on_place)
         }

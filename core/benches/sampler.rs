@@ -14,7 +14,7 @@
 //! Prints a Markdown table for the README. It measures; it asserts nothing about time.
 
 use std::time::Instant;
-use zetafill::{cells_for, index_words, Cell, CellSampler, Engine, Params, Placed, Region, Stop, StopReason, Storage};
+use zetafill::{cells_for, index_words, CellSampler, CellWords, Engine, Params, Placed, Region, Stop, StopReason, Storage};
 
 const COVERAGE_WORDS: usize = 1 << 18;
 
@@ -40,7 +40,7 @@ fn run(c: f64, n_offset: f64, n: u64, sampler: Sampler) -> Row {
     let mut index = vec![0u32; index_words(cap)];
     let mut coverage = vec![0u64; if sampler == Sampler::PaperHash { 0 } else { COVERAGE_WORDS }];
     // The pool the CLI lends: 16 cells per shape slot, at least 2^16.
-    let mut pool = vec![Cell::<f64>::default(); if fast { cells_for(cap) } else { 1 }];
+    let mut pool = vec![[0u64; 4]; if fast { cells_for(cap) } else { 1 }];
     let mut params = Params::circles(c, n_offset);
     params.max_trials = 1_000_000_000;
     let region = Region::Rect {
@@ -78,7 +78,7 @@ fn run(c: f64, n_offset: f64, n: u64, sampler: Sampler) -> Row {
         secs,
         placed: s.placed,
         trials: s.trials,
-        bytes_per_shape: core + cells * std::mem::size_of::<Cell<f64>>() as f64,
+        bytes_per_shape: core + cells * std::mem::size_of::<CellWords>() as f64,
         cells_per_shape: cells,
     }
 }

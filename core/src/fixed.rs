@@ -159,6 +159,16 @@ fn sin_cos_octant(theta: i64) -> (i64, i64) {
 }
 
 impl Scalar for Fixed {
+    #[inline]
+    fn to_word(self) -> u64 {
+        self.to_bits() as u64
+    }
+
+    #[inline]
+    fn from_word(w: u64) -> Self {
+        Fixed::from_bits(w as i64)
+    }
+
     const ZERO: Self = Fixed(I32F32::ZERO);
     const ONE: Self = Fixed(I32F32::ONE);
 

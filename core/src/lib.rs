@@ -30,7 +30,7 @@
 //! ## Memory
 //! A placed shape takes `size_of::<Placed<f64>>()` = 32 bytes plus 12 bytes of index
 //! (one link and two buckets), 44 bytes in all with the recommended [`engine::index_words`].
-//! The cell sampler ([`sampler`]) borrows a slice of 32-byte [`Cell`]s besides; circle fills
+//! The cell sampler ([`sampler`]) borrows a slice of 32-byte [`CellWords`] besides; circle fills
 //! of c = 1.3 hold at most about 15 of them per placed shape.
 
 #![no_std]
@@ -58,6 +58,6 @@ pub use geom::{Geo, Point};
 pub use line::{line_index_words, Interval, LineEngine, LineParams, LinePlacement, LineStorage, Segment};
 pub use region::{PolygonRegion, Region, RegionError};
 pub use rng::{rng_from_seed, ZetaRng};
-pub use sampler::{cells_for, Cell, CellSampler, CellStats};
+pub use sampler::{cells_for, CellSampler, CellStats, CellWords};
 pub use scalar::Scalar;
 pub use shape::{MixOrder, Placed, ShapeKind, ShapeList, MAX_MIX};

@@ -59,7 +59,7 @@
 //! centre), or a ring in a region with holes (the ring may enclose one).
 //!
 //! ## Storage
-//! The caller lends a slice of [`Cell`]s (32 bytes each for `f64`), [`cells_for`] its
+//! The caller lends a slice of [`CellWords`] (32 bytes a cell, zeroed), [`cells_for`] its
 //! capacity. Live cells sit at its start, grouped by level; deep sleepers at the end of its
 //! first seven eighths; the waiting heap in the last eighth. The sampler holds at most [`CELLS_PER_SHAPE`] cells per placed
 //! shape (plus a start); at that budget, or when the slice is full, cells are no longer split:
@@ -115,10 +115,16 @@ pub const fn cells_for(shapes: usize) -> usize {
 /// rejected candidates, sits above them).
 const X_BITS: u32 = 27;
 
+/// The storage of one cell: four 64-bit words (grid position and level, the rejected-candidate
+/// count, the four shapes it knows of, the bound). All-zero words are an empty cell, so a pool
+/// can be zeroed memory, which the operating system maps only where the sampler writes:
+/// `vec![[0u64; 4]; cells_for(n)]` costs the cells used, not the cells lent.
+pub type CellWords = [u64; 4];
+
 /// One cell: its level and grid position, the shapes it knows of, and the bound on the
-/// clearance anywhere in it.
+/// clearance anywhere in it (stored as [`CellWords`]).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Cell<S> {
+pub(crate) struct Cell<S> {
     /// The x index in the low [`X_BITS`] bits, the level above.
     xl: u32,
     /// The y index in the low [`X_BITS`] bits, the candidates rejected above.
@@ -137,6 +143,34 @@ impl<S: Scalar> Default for Cell<S> {
             near: [NONE; NEAR],
             u: S::ZERO,
         }
+    }
+}
+
+impl<S: Scalar> Cell<S> {
+    /// The cell stored in `w` (shape indices are kept plus one, so that zero is none).
+    #[inline]
+    fn load(w: &CellWords) -> Self {
+        let [a, b, c, d] = *w;
+        let dec = |x: u64| (x as u32).wrapping_sub(1);
+        Cell {
+            xl: a as u32,
+            yr: (a >> 32) as u32,
+            near: [dec(b), dec(b >> 32), dec(c), dec(c >> 32)],
+            u: S::from_word(d),
+        }
+    }
+
+    /// The words that store the cell.
+    #[inline]
+    fn store(&self) -> CellWords {
+        let enc = |j: u32| u64::from(j.wrapping_add(1));
+        let [n0, n1, n2, n3] = self.near;
+        [
+            u64::from(self.xl) | (u64::from(self.yr) << 32),
+            enc(n0) | (enc(n1) << 32),
+            enc(n2) | (enc(n3) << 32),
+            self.u.to_word(),
+        ]
     }
 }
 
@@ -237,7 +271,7 @@ pub(crate) enum Verdict {
 /// one engine.
 #[derive(Debug)]
 pub struct CellSampler<'c, S> {
-    pool: &'c mut [Cell<S>],
+    pool: &'c mut [CellWords],
     /// Level `k`'s live cells are `pool[starts[k]..starts[k + 1]]`; `starts[CELL_LEVELS]` is
     /// the number of live cells.
     starts: [u32; CELL_LEVELS + 1],
@@ -276,7 +310,7 @@ pub struct NoCells;
 impl<'c, S: Scalar> CellSampler<'c, S> {
     /// A sampler over `pool` (at least one cell; the README gives the cells a fill needs per
     /// shape). It lays out its grid on the first step.
-    pub fn new(pool: &'c mut [Cell<S>]) -> Result<Self, NoCells> {
+    pub fn new(pool: &'c mut [CellWords]) -> Result<Self, NoCells> {
         if pool.is_empty() || pool.len() > u32::MAX as usize {
             return Err(NoCells);
         }
@@ -304,7 +338,8 @@ impl<'c, S: Scalar> CellSampler<'c, S> {
     /// every centre where the next shape fits must lie in one. For checks and pictures; O(live
     /// cells).
     pub fn live_boxes(&self) -> impl Iterator<Item = [f64; 4]> + '_ {
-        self.pool.iter().take(self.live()).map(|c| {
+        self.pool.iter().take(self.live()).map(|w| {
+            let c = Cell::<S>::load(w);
             let g = self.lg(c.level());
             let (x0, y0) = (
                 self.origin.x + S::from_f64(f64::from(c.ix())) * g.w,
@@ -436,6 +471,30 @@ impl<'c, S: Scalar> CellSampler<'c, S> {
         self.ready = true;
     }
 
+    /// The cell at `i`.
+    #[inline]
+    fn cell(&self, i: usize) -> Option<Cell<S>> {
+        self.pool.get(i).map(Cell::load)
+    }
+
+    /// Stores `c` at `i` (nothing when `i` is out of range).
+    #[inline]
+    fn put(&mut self, i: usize, c: Cell<S>) {
+        if let Some(w) = self.pool.get_mut(i) {
+            *w = c.store();
+        }
+    }
+
+    /// Copies the cell at `from` to `to`.
+    #[inline]
+    fn copy(&mut self, from: usize, to: usize) {
+        if let Some(w) = self.pool.get(from).copied() {
+            if let Some(t) = self.pool.get_mut(to) {
+                *t = w;
+            }
+        }
+    }
+
     fn note_peak(&mut self) {
         self.stats.peak = self.stats.peak.max(self.live() + self.asleep + self.waiting);
     }
@@ -452,17 +511,12 @@ impl<'c, S: Scalar> CellSampler<'c, S> {
         for j in (k + 1..CELL_LEVELS).rev() {
             let first = self.start(j);
             if first != hole {
-                let moved = self.pool.get(first).copied().unwrap_or_default();
-                if let Some(slot) = self.pool.get_mut(hole) {
-                    *slot = moved;
-                }
+                self.copy(first, hole);
             }
             hole = first;
             self.bump(j, true);
         }
-        if let Some(slot) = self.pool.get_mut(hole) {
-            *slot = c;
-        }
+        self.put(hole, c);
         self.bump(CELL_LEVELS, true);
         self.weight += 1u64 << Self::shift(k);
         self.stats.finest_level = self.stats.finest_level.max(c.level());
@@ -477,10 +531,7 @@ impl<'c, S: Scalar> CellSampler<'c, S> {
         for j in k..CELL_LEVELS {
             let last = self.start(j + 1).saturating_sub(1);
             if last != hole {
-                let moved = self.pool.get(last).copied().unwrap_or_default();
-                if let Some(s) = self.pool.get_mut(hole) {
-                    *s = moved;
-                }
+                self.copy(last, hole);
             }
             hole = last;
             if j + 1 < CELL_LEVELS {
@@ -501,9 +552,7 @@ impl<'c, S: Scalar> CellSampler<'c, S> {
             return;
         }
         if u < self.floor && self.live() + self.asleep < self.main {
-            if let Some(slot) = self.pool.get_mut(self.main - 1 - self.asleep) {
-                *slot = c;
-            }
+            self.put(self.main - 1 - self.asleep, c);
             self.asleep += 1;
             self.note_peak();
         } else if !self.push_waiting(c) {
@@ -512,7 +561,7 @@ impl<'c, S: Scalar> CellSampler<'c, S> {
     }
 
     fn waiting_key(&self, k: usize) -> S {
-        self.pool.get(self.main + k).map_or(S::ZERO, |c| self.upper(c))
+        self.pool.get(self.main + k).map_or(S::ZERO, |w| S::from_word(w[3]) + self.slack)
     }
 
     fn swap_waiting(&mut self, a: usize, b: usize) {
@@ -530,7 +579,7 @@ impl<'c, S: Scalar> CellSampler<'c, S> {
         let Some(slot) = self.pool.get_mut(self.main + self.waiting) else {
             return false;
         };
-        *slot = c;
+        *slot = c.store();
         let mut i = self.waiting;
         self.waiting += 1;
         while i > 0 {
@@ -549,7 +598,7 @@ impl<'c, S: Scalar> CellSampler<'c, S> {
         if self.waiting == 0 {
             return None;
         }
-        let top = self.pool.get(self.main).copied()?;
+        let top = self.cell(self.main)?;
         self.swap_waiting(0, self.waiting - 1);
         self.waiting -= 1;
         let mut i = 0;
@@ -581,15 +630,12 @@ impl<'c, S: Scalar> CellSampler<'c, S> {
             self.floor = need * S::from_f64(FLOOR);
             let mut i = 0;
             while i < self.asleep {
-                let Some(c) = self.pool.get(self.main - 1 - i).copied() else {
+                let Some(c) = self.cell(self.main - 1 - i) else {
                     break;
                 };
                 if self.upper(&c) >= self.floor {
                     // Fill entry i with the last deep sleeper, then move c up.
-                    let last = self.pool.get(self.main - self.asleep).copied().unwrap_or_default();
-                    if let Some(e) = self.pool.get_mut(self.main - 1 - i) {
-                        *e = last;
-                    }
+                    self.copy(self.main - self.asleep, self.main - 1 - i);
                     self.asleep -= 1;
                     if self.upper(&c) >= need || !self.push_waiting(c) {
                         self.insert_live(c);
@@ -656,7 +702,7 @@ impl<'c, S: Scalar> CellSampler<'c, S> {
                     }
                 };
                 let slot = self.slot_of(r)?;
-                *entry = (slot, self.pool.get(slot).copied()?);
+                *entry = (slot, self.cell(slot)?);
             }
             self.ahead = batch;
             self.ahead_len = AHEAD;
@@ -687,7 +733,7 @@ impl<'c, S: Scalar> CellSampler<'c, S> {
     /// `drawn` is the cell as it was drawn; if `slot` no longer holds it (it moved, or was
     /// split or retired since), the point is simply tested, without bookkeeping.
     pub(crate) fn judge(&mut self, slot: usize, drawn: &Cell<S>, quarter: (bool, bool), need: S, f: &impl Field<S>) -> Verdict {
-        let Some(c) = self.pool.get(slot).copied().filter(|c| slot < self.live() && c.same(drawn)) else {
+        let Some(c) = self.cell(slot).filter(|c| slot < self.live() && c.same(drawn)) else {
             return Verdict::Test(usize::MAX);
         };
         let level = c.level();
@@ -742,7 +788,7 @@ impl<'c, S: Scalar> CellSampler<'c, S> {
 
     /// The shapes the live cell at `slot` knows of.
     pub(crate) fn known(&self, slot: usize) -> [u32; NEAR] {
-        self.pool.get(slot).map_or([NONE; NEAR], |c| c.near)
+        self.cell(slot).map_or([NONE; NEAR], |c| c.near)
     }
 
     /// Counts a trial in the live cell at `slot` rejected by a shape the cell knew (`known`)
@@ -751,9 +797,10 @@ impl<'c, S: Scalar> CellSampler<'c, S> {
         if known {
             self.stats.known_rejects += 1;
         }
-        if let Some(c) = self.pool.get_mut(slot) {
+        if let Some(mut c) = self.cell(slot) {
             if c.rejects() < STUBBORN {
                 c.yr += 1 << X_BITS;
+                self.put(slot, c);
             }
         }
     }
@@ -762,7 +809,7 @@ impl<'c, S: Scalar> CellSampler<'c, S> {
     /// in it): the cell keeps it if it is among the [`NEAR`] nearest it knows, lowers its
     /// bound, and is retired if that leaves no room for `need`.
     pub(crate) fn learn(&mut self, slot: usize, j: u32, need: S, f: &impl Field<S>) {
-        let Some(mut c) = self.pool.get(slot).copied() else { return };
+        let Some(mut c) = self.cell(slot) else { return };
         if j == NONE || c.near.contains(&j) {
             return;
         }
@@ -783,9 +830,7 @@ impl<'c, S: Scalar> CellSampler<'c, S> {
             }
         }
         c.u = c.u.min(dj + self.lg(c.level()).half_diag);
-        if let Some(e) = self.pool.get_mut(slot) {
-            *e = c;
-        }
+        self.put(slot, c);
         if self.upper(&c) < need {
             self.remove_live(slot, c.level() as usize);
             self.retire(c);

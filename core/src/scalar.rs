@@ -44,6 +44,11 @@ pub trait Scalar:
     fn digest_bits(self) -> u64;
     /// Whether the value is finite (always true for fixed point).
     fn is_finite(self) -> bool;
+    /// The value's 64 bits, for storage ([`crate::sampler::CellWords`]); `from_word` reads them
+    /// back exactly. Zero is stored as all-zero bits.
+    fn to_word(self) -> u64;
+    /// The value stored by [`Scalar::to_word`].
+    fn from_word(w: u64) -> Self;
     /// Absolute value.
     #[inline]
     fn abs(self) -> Self {
@@ -82,6 +87,16 @@ pub trait Scalar:
 const TWO_POW_M53: f64 = 1.0 / 9_007_199_254_740_992.0;
 
 impl Scalar for f64 {
+    #[inline]
+    fn to_word(self) -> u64 {
+        self.to_bits()
+    }
+
+    #[inline]
+    fn from_word(w: u64) -> Self {
+        f64::from_bits(w)
+    }
+
     const ZERO: Self = 0.0;
     const ONE: Self = 1.0;
     #[inline]

@@ -18,7 +18,7 @@ mod common;
 use rand_core::RngCore;
 use zetafill::geom::separated;
 use zetafill::{
-    cells_for, index_words, rng_from_seed, Cell, CellSampler, Engine, Params, Placed, Point, PolygonRegion, Region, Scalar, ShapeKind,
+    cells_for, index_words, rng_from_seed, CellSampler, CellWords, Engine, Params, Placed, Point, PolygonRegion, Region, Scalar, ShapeKind,
     StepError, Stop, StopReason, Storage,
 };
 
@@ -104,7 +104,7 @@ fn fill(kind: ShapeKind, periodic: bool, sampler: Sampler, seed: u64, count: u64
     };
     // One pool size for every count: a fill's shapes depend on the pool only once it is
     // full (then it stops refining), and this one never fills.
-    let mut pool = vec![Cell::<f64>::default(); cells_for(200)];
+    let mut pool = vec![[0u64; 4]; cells_for(200)];
     let reason = match sampler {
         Sampler::Reference | Sampler::Narrow => e.run(&mut rng, &stop, |_| {}),
         Sampler::Fast => {
@@ -282,7 +282,7 @@ fn fast_sampler_takes_far_fewer_trials_late_in_a_fill() {
         let storage = buffers.storage(&mut cov);
         let mut e = Engine::<f64>::new(Params::circles(1.3, 1.0), region(false), storage).expect("valid");
         let mut rng = rng_from_seed(3);
-        let mut pool = vec![Cell::<f64>::default(); cells_for(cap)];
+        let mut pool = vec![[0u64; 4]; cells_for(cap)];
         let mut cells = CellSampler::new(&mut pool).expect("cells");
         let stop = Stop {
             count: Some(cap as u64),
@@ -323,7 +323,7 @@ fn halts_with_certainty_when_nothing_fits() {
         };
         let mut e = Engine::<f64>::new(p, square, storage).expect("valid");
         let mut rng = rng_from_seed(seed);
-        let mut pool = vec![Cell::<f64>::default(); 100_000];
+        let mut pool = vec![[0u64; 4]; 100_000];
         let mut cells = CellSampler::new(&mut pool).expect("cells");
         match e.run_fast(&mut cells, &mut rng, &Stop::default(), |_| {}) {
             StopReason::Step(StepError::Halted { index, trials }) => {
@@ -351,7 +351,7 @@ fn fixed_point_fast_fills_are_valid_and_deterministic() {
         let storage = buffers.storage(&mut []);
         let mut e = Engine::<Fixed>::new(params(ShapeKind::Circle), region(false), storage).expect("valid");
         let mut rng = rng_from_seed(21);
-        let mut pool = vec![Cell::<Fixed>::default(); 1 << 14];
+        let mut pool = vec![[0u64; 4]; 1 << 14];
         let mut cells = CellSampler::new(&mut pool).expect("cells");
         let stop = Stop {
             count: Some(cap as u64),
@@ -376,7 +376,7 @@ fn fixed_point_fast_fills_are_valid_and_deterministic() {
 fn memory_per_shape_is_as_stated() {
     // README: a cell takes 32 bytes, and circle fills at c = 1.3 hold at most about 15 cells
     // per shape, below the sampler's budget, so nothing limits their refinement.
-    assert_eq!(std::mem::size_of::<Cell<f64>>(), 32);
+    assert_eq!(std::mem::size_of::<CellWords>(), 32);
     let cap = 20_000;
     let mut buffers = Buffers::<f64>::new(cap);
     let storage = buffers.storage(&mut []);
@@ -387,7 +387,7 @@ fn memory_per_shape_is_as_stated() {
     };
     let mut e = Engine::<f64>::new(Params::circles(1.3, 1.0), region, storage).expect("valid");
     let mut rng = rng_from_seed(1);
-    let mut pool = vec![Cell::<f64>::default(); cells_for(cap)];
+    let mut pool = vec![[0u64; 4]; cells_for(cap)];
     let mut cells = CellSampler::new(&mut pool).expect("cells");
     let stop = Stop {
         count: Some(cap as u64),
@@ -497,7 +497,7 @@ fn check_invariant<S: Scalar>(
             p.max_trials = 200_000;
             let mut none: [u64; 0] = [];
             let mut e = Engine::<S>::new(p, *region, b.storage(&mut none)).expect("valid");
-            let mut pool = vec![Cell::<S>::default(); pool_len];
+            let mut pool = vec![[0u64; 4]; pool_len];
             let mut cells = CellSampler::new(&mut pool).expect("cells");
             let mut frng = rng_from_seed(7 + ri as u64);
             let (x0, y0, w, h) = region.bbox();

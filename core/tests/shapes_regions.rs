@@ -10,7 +10,7 @@ mod common;
 
 use zetafill::geom::separated;
 use zetafill::{
-    index_words, rng_from_seed, Cell, CellSampler, Engine, Geo, Params, Placed, Point, PolygonRegion, Region, ShapeKind, Stop, StopReason,
+    index_words, rng_from_seed, CellSampler, Engine, Geo, Params, Placed, Point, PolygonRegion, Region, ShapeKind, Stop, StopReason,
     Storage,
 };
 
@@ -305,7 +305,7 @@ fn fill_with(kind: ShapeKind, region: Region<'_>, gap: f64, count: u64, seed: u6
     let reason = match fast {
         None => e.run(&mut rng, &stop, |_| {}),
         Some(n) => {
-            let mut pool = vec![Cell::<f64>::default(); n];
+            let mut pool = vec![[0u64; 4]; n];
             let mut cells = CellSampler::new(&mut pool).unwrap_or_else(|_| panic!("cells"));
             e.run_fast(&mut cells, &mut rng, &stop, |_| {})
         }

@@ -17,7 +17,7 @@ use embedded_graphics::pixelcolor::BinaryColor;
 use embedded_graphics::prelude::*;
 use zetafill::region::{PolygonRegion, RegionError};
 use zetafill::shape::{MixOrder, ShapeList};
-use zetafill::{digest, Cell, CellSampler, Engine, ParamError, Params, Point, Region, Scalar, ShapeKind, StepError, Storage};
+use zetafill::{digest, CellSampler, CellWords, Engine, ParamError, Params, Point, Region, Scalar, ShapeKind, StepError, Storage};
 
 use crate::draw::View;
 
@@ -33,7 +33,7 @@ pub const INDEX_WORDS: usize = CAPACITY + BUCKETS;
 pub const FAST_CAPACITY: usize = 256;
 /// Index words of such a scene.
 pub const FAST_INDEX_WORDS: usize = FAST_CAPACITY + BUCKETS;
-/// Cells lent to the cell sampler on the board (16 KiB of `Cell<f64>`).
+/// Cells lent to the cell sampler on the board (16 KiB: 32 bytes a cell).
 pub const FAST_CELLS: usize = 512;
 
 /// The number type a scene's geometry runs on.
@@ -309,7 +309,7 @@ pub fn run<S: Scalar, D: DrawTarget<Color = BinaryColor>>(
 pub fn run_fast<S: Scalar, D: DrawTarget<Color = BinaryColor>>(
     scene: &Scene,
     storage: Storage<'_, S>,
-    cells: &mut [Cell<S>],
+    cells: &mut [CellWords],
     target: &mut D,
     mut clock: impl FnMut() -> u64,
 ) -> Result<Outcome, RunError<D::Error>> {

@@ -27,7 +27,7 @@ use cortex_m_rt::entry;
 use defmt_semihosting as _;
 use semihosting::io::Write as _;
 use semihosting::{eprintln, process};
-use zetafill::{Cell, Fixed, Placed, Scalar, Storage};
+use zetafill::{Fixed, Placed, Scalar, Storage};
 use zetafill_display::draw::{Frame, PBM_HEADER};
 use zetafill_display::scenes::{
     run, run_fast, ScalarKind, Scene, CAPACITY, FAST_CAPACITY, FAST_CELLS, FAST_INDEX_WORDS, INDEX_WORDS, SCENES,
@@ -167,7 +167,7 @@ fn run_scene<S: Scalar + Default>(scene: &Scene, board: &Board, cal: &Calibratio
 fn run_scene_fast<S: Scalar + Default>(scene: &Scene, board: &Board, cal: &Calibration) -> bool {
     let mut shapes = [Placed::<S>::default(); FAST_CAPACITY];
     let mut index = [0u32; FAST_INDEX_WORDS];
-    let mut cells = [Cell::<S>::default(); FAST_CELLS];
+    let mut cells = [[0u64; 4]; FAST_CELLS];
     let mut frame = Frame::new();
     let storage = Storage {
         shapes: &mut shapes,

@@ -23,7 +23,7 @@ use std::process::{Command, Stdio};
 use std::sync::OnceLock;
 use std::time::{Duration, Instant};
 
-use zetafill::{Cell, Fixed, Placed, Scalar, Storage};
+use zetafill::{CellWords, Fixed, Placed, Scalar, Storage};
 use zetafill_display::draw::{Frame, FRAME_BYTES, HEIGHT, PBM_HEADER, WIDTH};
 use zetafill_display::scenes::{
     run, run_fast, Outcome, ScalarKind, Scene, SceneRegion, CAPACITY, FAST_CAPACITY, FAST_CELLS, FAST_INDEX_WORDS, INDEX_WORDS, SCENES,
@@ -176,7 +176,7 @@ fn host_run_on<S: Scalar + Default>(scene: &Scene) -> HostRun {
     let mut index = vec![0u32; INDEX_WORDS];
     // The board's cell storage: when it runs out the sampler stops refining, so the host must
     // lend the same number of cells to place the same shapes.
-    let mut cells = vec![Cell::<S>::default(); FAST_CELLS];
+    let mut cells = vec![[0u64; 4]; FAST_CELLS];
     let mut frame = Frame::new();
     let storage = Storage {
         shapes: &mut shapes,
@@ -393,7 +393,7 @@ fn a_1024_shape_engine_fits_the_board() {
     // A cell-sampler scene has fewer shape slots and the cells.
     let fast_storage = (FAST_CAPACITY * std::mem::size_of::<Placed<f64>>()
         + FAST_INDEX_WORDS * 4
-        + FAST_CELLS * std::mem::size_of::<Cell<f64>>()
+        + FAST_CELLS * std::mem::size_of::<CellWords>()
         + FRAME_BYTES) as u64;
     for f in &per_scene {
         let fast = SCENES.iter().any(|s| s.name == f[1] && s.fast);

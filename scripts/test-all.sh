@@ -40,8 +40,8 @@ cargo build -p zetafill --target thumbv7m-none-eabi --release
 if cargo clippy --version >/dev/null 2>&1; then
     step "core lints: no unwrap/expect/panic/indexing that can panic, on the firmware target"
     cargo clippy -p zetafill --target thumbv7m-none-eabi --release -- -D warnings
-    step "workspace lints (libraries and binaries)"
-    cargo clippy --workspace --release -- -D warnings
+    step "workspace lints (libraries, binaries, tests, benches, examples)"
+    cargo clippy --workspace --release --all-targets -- -D warnings
 fi
 
 step "firmware: every scene under qemu-system-arm (lm3s6965evb, Cortex-M3, no FPU)"

@@ -4,6 +4,9 @@
 //! conditions, halting, capacity and no panic on any input. Two independent checkers (an
 //! O(n^2) pairwise one and an O(n log n) sorted one) are each shown to fail on broken fills.
 
+// The checks are written `!(a < b)` on purpose: a NaN must fail them.
+#![allow(clippy::neg_cmp_op_on_partial_ord, clippy::type_complexity)]
+
 use proptest::prelude::*;
 use proptest::test_runner::RngSeed;
 use zetafill::engine::{ParamError, StepError, Stop, StopReason};

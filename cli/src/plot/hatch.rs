@@ -187,7 +187,7 @@ mod tests {
         for s in h.annulus([0.0, 0.0], 2.0, 1.0) {
             let mid = [(s[0][0] + s[1][0]) / 2.0, (s[0][1] + s[1][1]) / 2.0];
             let d = mid[0].hypot(mid[1]);
-            assert!(d >= 1.0 - 1e-12 && d <= 2.0 + 1e-12, "{s:?}");
+            assert!((1.0 - 1e-12..=2.0 + 1e-12).contains(&d), "{s:?}");
             for p in s {
                 let d = p[0].hypot(p[1]);
                 assert!((d - 1.0).abs() < 1e-12 || (d - 2.0).abs() < 1e-12);

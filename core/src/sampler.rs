@@ -855,3 +855,40 @@ fn ceil_u32(v: f64) -> u32 {
         f as u32
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::Fixed;
+
+    fn round_trip<S: Scalar>(u: S) {
+        for (xl, yr, near) in [
+            (0, 0, [NONE; NEAR]),
+            ((5 << X_BITS) | 12345, (3 << X_BITS) | CHECK_Y, [0, 1, NONE, u32::MAX - 1]),
+            (u32::MAX, u32::MAX, [7, NONE, 0, 99]),
+        ] {
+            let c = Cell { xl, yr, near, u };
+            assert_eq!(Cell::<S>::load(&c.store()), c);
+        }
+    }
+
+    const CHECK_Y: u32 = (1 << X_BITS) - 1;
+
+    #[test]
+    fn cells_read_back_what_was_stored() {
+        for u in [0.0, -0.0, 1.5e-300, -3.25, f64::MAX] {
+            round_trip(u);
+        }
+        for u in [0.0, -7.5, 1e-9, 2e9] {
+            round_trip(Fixed::from_f64(u));
+        }
+    }
+
+    #[test]
+    fn zero_words_are_an_empty_cell() {
+        let c = Cell::<f64>::load(&[0; 4]);
+        assert_eq!(c, Cell::default());
+        assert_eq!(c.near, [NONE; NEAR]);
+        assert_eq!(Cell::<Fixed>::load(&[0; 4]), Cell::default());
+    }
+}

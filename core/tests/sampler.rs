@@ -18,8 +18,8 @@ mod common;
 use rand_core::RngCore;
 use zetafill::geom::separated;
 use zetafill::{
-    cells_for, index_words, rng_from_seed, CellSampler, CellWords, Engine, Params, Placed, Point, PolygonRegion, Region, Scalar, ShapeKind,
-    StepError, Stop, StopReason, Storage,
+    cells_for, index_words, rng_from_seed, CellSampler, Engine, Params, Placed, Point, PolygonRegion, Region, Scalar, ShapeKind, StepError,
+    Stop, StopReason, Storage,
 };
 
 /// The shape and index buffers of an engine for `cap` shapes.

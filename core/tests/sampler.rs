@@ -536,40 +536,63 @@ fn check_invariant<S: Scalar>(
     (checked, valid_seen, broken_caught)
 }
 
+/// The least a run of [`check_invariant`] must show: checks made, valid points seen, and the
+/// share of checks (one in `caught_one_in`) where the shrunk cells were caught.
+struct Least {
+    checks: usize,
+    valid: usize,
+    caught_one_in: usize,
+}
+
+/// Runs [`check_invariant`] and asserts that it checked enough and that its checker failed
+/// on the broken input often enough.
+#[allow(clippy::too_many_arguments)]
+fn assert_invariant<S: Scalar>(
+    kind: ShapeKind,
+    regions: &[Region<'_>],
+    configs: &[(f64, usize)],
+    every: usize,
+    points: usize,
+    angles: usize,
+    least: Least,
+) {
+    let (checked, valid_seen, broken_caught) = check_invariant::<S>(kind, regions, configs, every, points, angles);
+    let what = format!("{kind:?} ({})", std::any::type_name::<S>());
+    println!("{what}: checks {checked}, valid points {valid_seen}, shrunk cells caught {broken_caught}");
+    assert!(checked >= least.checks, "{what}: checks made: {checked}");
+    assert!(valid_seen >= least.valid, "{what}: valid points seen: {valid_seen}");
+    assert!(
+        broken_caught * least.caught_one_in >= checked,
+        "{what}: shrunk cells caught in {broken_caught} of {checked} checks"
+    );
+}
+
 /// The exactness argument's invariant, checked directly: throughout circle fills of 400 in
 /// every kind of region (with and without a gap, with a pool that fills up, and with one too
-/// small to refine), every
-/// point where the next circle fits lies in a live cell, once the cells are brought up to
-/// date for that circle. Checked before the first five placements and every sixteenth, on
-/// 4000 uniform points each, their validity decided by brute force against every placed shape
-/// (and its periodic images). The same checker, given the cells shrunk by a tenth about their
-/// centres, finds valid points left out: it can fail. It also catches bounds that are too
-/// low by a tenth of a cell's half diagonal where a cell learns a shape.
+/// small to refine), every point where the next circle fits lies in a live cell, once the
+/// cells are brought up to date for that circle. Checked before the first five placements
+/// and every sixteenth, on 4000 uniform points each, their validity decided by brute force
+/// against every placed shape (and its periodic images). The same checker, given the cells
+/// shrunk by a tenth about their centres, finds valid points left out: it can fail. It also
+/// catches bounds that are too low by a tenth of a cell's half diagonal where a cell learns a
+/// shape.
 #[test]
 fn live_cells_hold_every_valid_centre() {
     let (pts, ends) = common::star_with_hole();
     let regions = common::every_kind(PolygonRegion::new(&pts, &ends).expect("a star with a hole"));
-    let (checked, valid_seen, broken_caught) = check_invariant::<f64>(
-        ShapeKind::Circle,
-        &regions,
-        &[(0.0, cells_for(400)), (0.8, cells_for(400)), (0.0, 3000), (0.0, 6)],
-        16,
-        4000,
-        1,
-    );
-    println!("checks {checked}, valid points {valid_seen}, shrunk cells caught {broken_caught}");
-    assert!(checked >= 200, "checks made: {checked}");
-    assert!(valid_seen >= 20_000, "valid points seen: {valid_seen}");
-    assert!(
-        broken_caught * 2 >= checked,
-        "shrunk cells caught in {broken_caught} of {checked} checks"
-    );
+    let configs = [(0.0, cells_for(400)), (0.8, cells_for(400)), (0.0, 3000), (0.0, 6)];
+    let least = Least {
+        checks: 200,
+        valid: 20_000,
+        caught_one_in: 2,
+    };
+    assert_invariant::<f64>(ShapeKind::Circle, &regions, &configs, 16, 4000, 1, least);
 }
 
 /// The same invariant for the shapes whose bounds come from polygon and ring distances and
-/// whose room depends on their angle: rotated squares, stars and blobs, and rings, in an
-/// every kind of region, without a gap and with a gap and a pool that fills up. A centre counts as valid when the shape fits there at one of 12
-/// angles.
+/// whose room depends on their angle: rotated squares, stars and blobs, and rings, in every
+/// kind of region, without a gap, and with a gap and a pool that fills up. A centre counts as
+/// valid when the shape fits there at one of 12 angles.
 #[test]
 fn live_cells_hold_every_valid_centre_of_other_shapes() {
     let (pts, ends) = common::star_with_hole();
@@ -580,15 +603,12 @@ fn live_cells_hold_every_valid_centre_of_other_shapes() {
         ShapeKind::Blob { delta: 0.1 },
         ShapeKind::Ring { inner: 0.5 },
     ] {
-        let (checked, valid_seen, broken_caught) =
-            check_invariant::<f64>(kind, &regions, &[(0.0, cells_for(400)), (0.6, 4000)], 24, 1000, 12);
-        println!("{kind:?}: checks {checked}, valid points {valid_seen}, shrunk cells caught {broken_caught}");
-        assert!(checked >= 30, "{kind:?}: checks made: {checked}");
-        assert!(valid_seen >= 2000, "{kind:?}: valid points seen: {valid_seen}");
-        assert!(
-            broken_caught * 3 >= checked,
-            "{kind:?}: shrunk cells caught in {broken_caught} of {checked} checks"
-        );
+        let least = Least {
+            checks: 30,
+            valid: 2000,
+            caught_one_in: 3,
+        };
+        assert_invariant::<f64>(kind, &regions, &[(0.0, cells_for(400)), (0.6, 4000)], 24, 1000, 12, least);
     }
 }
 
@@ -600,14 +620,11 @@ fn live_cells_hold_every_valid_centre_on_fixed_point() {
     let (pts, ends) = common::star_with_hole();
     let [rect, torus, ..] = common::every_kind(PolygonRegion::new(&pts, &ends).expect("a star with a hole"));
     for kind in [ShapeKind::Circle, ShapeKind::Square] {
-        let (checked, valid_seen, broken_caught) =
-            check_invariant::<zetafill::Fixed>(kind, &[rect, torus], &[(0.0, cells_for(400)), (0.6, 3000)], 24, 1000, 12);
-        println!("{kind:?} on fixed point: checks {checked}, valid points {valid_seen}, shrunk cells caught {broken_caught}");
-        assert!(checked >= 30, "{kind:?}: checks made: {checked}");
-        assert!(valid_seen >= 2000, "{kind:?}: valid points seen: {valid_seen}");
-        assert!(
-            broken_caught * 3 >= checked,
-            "{kind:?}: shrunk cells caught in {broken_caught} of {checked} checks"
-        );
+        let least = Least {
+            checks: 30,
+            valid: 2000,
+            caught_one_in: 3,
+        };
+        assert_invariant::<zetafill::Fixed>(kind, &[rect, torus], &[(0.0, cells_for(400)), (0.6, 3000)], 24, 1000, 12, least);
     }
 }

@@ -16,8 +16,8 @@ use std::panic::{catch_unwind, AssertUnwindSafe};
 use zetafill::engine::Stats;
 use zetafill::geom::separated;
 use zetafill::{
-    index_words, rng_from_seed, Engine, Geo, ParamError, Params, Placed, Placement, Point, Region, ShapeKind, StepError, Stop, StopReason,
-    Storage, ZetaRng,
+    index_words, rng_from_seed, CellSampler, Engine, Fixed, Geo, ParamError, Params, Placed, Placement, Point, Region, Scalar, ShapeKind,
+    StepError, Stop, StopReason, Storage, ZetaRng,
 };
 
 // ---------------------------------------------------------------------------------------------
@@ -1211,7 +1211,14 @@ struct Wild {
     shapes: usize,
     index: usize,
     coverage: usize,
+    /// Cells lent to the cell sampler (none: the engine's error path).
+    cells: usize,
     seed: u64,
+}
+
+/// Cell pools for the cell sampler: none, a few, or plenty.
+fn any_cells() -> impl Strategy<Value = usize> {
+    prop_oneof![0usize..8, Just(64), Just(4096)]
 }
 
 fn wild_strategy() -> impl Strategy<Value = Wild> {
@@ -1219,23 +1226,26 @@ fn wild_strategy() -> impl Strategy<Value = Wild> {
         (any_f64(1.0..3.0), any_f64(0.0..10.0), any_shape(), any::<bool>(), any_f64(0.0..2.0)),
         prop_oneof![any::<u64>(), 0u64..4, Just(u64::MAX)],
         (any_f64(0.0..200.0), any_f64(0.0..200.0), any::<bool>(), any::<u8>()),
-        (0usize..5, 0usize..20, 0usize..4, any::<u64>()),
+        (0usize..5, 0usize..20, 0usize..4, any_cells(), any::<u64>()),
     )
         .prop_map(
-            |((c, n_offset, shape, rotate, gap), max_trials, (width, height, periodic, pick), (shapes, index, coverage, seed))| Wild {
-                params: Params {
-                    c,
-                    n_offset,
-                    shape: shape.into(),
-                    rotate,
-                    gap,
-                    max_trials,
-                },
-                region: any_region(width, height, periodic, pick),
-                shapes,
-                index,
-                coverage,
-                seed,
+            |((c, n_offset, shape, rotate, gap), max_trials, (width, height, periodic, pick), (shapes, index, coverage, cells, seed))| {
+                Wild {
+                    params: Params {
+                        c,
+                        n_offset,
+                        shape: shape.into(),
+                        rotate,
+                        gap,
+                        max_trials,
+                    },
+                    region: any_region(width, height, periodic, pick),
+                    shapes,
+                    index,
+                    coverage,
+                    cells,
+                    seed,
+                }
             },
         )
 }
@@ -1275,14 +1285,14 @@ fn near_valid_strategy() -> impl Strategy<Value = Wild> {
             any::<bool>(),
             any::<u8>(),
         ),
-        (1usize..8, 0usize..16, 0usize..4, any::<u64>()),
+        (1usize..8, 0usize..16, 0usize..4, any_cells(), any::<u64>()),
     )
         .prop_map(
             |(
                 (c, n_offset, shape, rotate, gap),
                 max_trials,
                 (width, height, periodic, g, gap_rel, pick),
-                (shapes, extra, coverage, seed),
+                (shapes, extra, coverage, cells, seed),
             )| {
                 // Half the time the gap is a fraction of the region (up to just under half).
                 let gap = if gap_rel { g * width.min(height) } else { gap };
@@ -1299,18 +1309,29 @@ fn near_valid_strategy() -> impl Strategy<Value = Wild> {
                     shapes,
                     index: shapes + 1 + extra,
                     coverage,
+                    cells,
                     seed,
                 }
             },
         )
 }
 
-/// Builds and runs an engine on arbitrary inputs. `Ok(None)`: rejected by `Engine::new`.
-fn wild_run(w: &Wild) -> Result<Option<(StopReason, Stats)>, ParamError> {
-    let mut shapes = vec![Placed::<f64>::default(); w.shapes];
+/// Which sampler a wild run uses.
+#[derive(Clone, Copy, Debug)]
+enum Sampler {
+    Reference,
+    /// The cell sampler over the wild run's cell pool.
+    Cells,
+}
+
+/// Builds and runs an engine on arbitrary inputs. `Ok(None)`: rejected by `Engine::new` (or,
+/// for the cell sampler, an empty pool refused by `CellSampler::new`).
+fn wild_run<S: Scalar>(w: &Wild, sampler: Sampler) -> Result<Option<(StopReason, Stats)>, ParamError> {
+    let mut shapes = vec![Placed::<S>::default(); w.shapes];
     let mut idx = vec![0u32; w.index];
     let mut cov = vec![0u64; w.coverage];
-    let mut e = Engine::<f64>::new(
+    let mut pool = vec![[0u64; 4]; w.cells];
+    let mut e = Engine::<S>::new(
         w.params,
         w.region,
         Storage {
@@ -1323,16 +1344,25 @@ fn wild_run(w: &Wild) -> Result<Option<(StopReason, Stats)>, ParamError> {
         inner: rng_from_seed(w.seed),
         left: 30_000,
     };
-    let reason = e.run(
-        &mut rng,
-        &Stop {
-            count: Some(5),
-            ..Stop::default()
-        },
-        |p| {
-            let _ = p.area;
-        },
-    );
+    let stop = Stop {
+        count: Some(5),
+        ..Stop::default()
+    };
+    let on_place = |p: &Placement<S>| {
+        let _ = p.area;
+    };
+    let reason = match sampler {
+        Sampler::Reference => e.run(&mut rng, &stop, on_place),
+        Sampler::Cells => {
+            let Ok(mut cells) = CellSampler::new(&mut pool) else {
+                return Ok(None);
+            };
+            let _ = e.prepare_fast(&mut cells);
+            let reason = e.run_fast(&mut cells, &mut rng, &stop, on_place);
+            let _ = (cells.stats(), cells.live_area(), cells.live_boxes().count());
+            reason
+        }
+    };
     for i in 0..e.placed().len() + 2 {
         let _ = e.geo(i);
     }
@@ -1349,28 +1379,44 @@ fn wild_run(w: &Wild) -> Result<Option<(StopReason, Stats)>, ParamError> {
     Ok(Some((reason, e.stats())))
 }
 
+/// Runs `w` with both samplers, on `f64` and on fixed point: none may panic (other than
+/// running out of the random-number budget), place more than asked or more than fits.
 fn check_no_panic(w: &Wild) -> Result<(), TestCaseError> {
     quiet_budget_panics();
-    match catch_unwind(AssertUnwindSafe(|| wild_run(w))) {
-        Ok(Ok(Some((reason, stats)))) => {
-            prop_assert!(stats.placed <= 5, "{:?}", stats);
-            prop_assert!(stats.placed <= w.shapes as u64);
-            if reason == StopReason::Count {
-                prop_assert_eq!(stats.placed, 5);
+    for (scalar, sampler) in [
+        ("f64", Sampler::Reference),
+        ("f64", Sampler::Cells),
+        ("fixed", Sampler::Reference),
+        ("fixed", Sampler::Cells),
+    ] {
+        let run = || {
+            if scalar == "f64" {
+                wild_run::<f64>(w, sampler)
+            } else {
+                wild_run::<Fixed>(w, sampler)
             }
-        }
-        Ok(Ok(None)) => {}
-        Ok(Err(e)) => {
-            let _ = e.to_string();
-        }
-        Err(payload) => {
-            if payload.downcast_ref::<OutOfBudget>().is_none() {
-                let msg = payload
-                    .downcast_ref::<String>()
-                    .cloned()
-                    .or_else(|| payload.downcast_ref::<&str>().map(|s| s.to_string()))
-                    .unwrap_or_default();
-                return Err(TestCaseError::fail(format!("panic {msg:?} for {w:?}")));
+        };
+        match catch_unwind(AssertUnwindSafe(run)) {
+            Ok(Ok(Some((reason, stats)))) => {
+                prop_assert!(stats.placed <= 5, "{scalar} {sampler:?}: {:?}", stats);
+                prop_assert!(stats.placed <= w.shapes as u64, "{scalar} {sampler:?}: {:?}", stats);
+                if reason == StopReason::Count {
+                    prop_assert_eq!(stats.placed, 5, "{} {:?}", scalar, sampler);
+                }
+            }
+            Ok(Ok(None)) => {}
+            Ok(Err(e)) => {
+                let _ = e.to_string();
+            }
+            Err(payload) => {
+                if payload.downcast_ref::<OutOfBudget>().is_none() {
+                    let msg = payload
+                        .downcast_ref::<String>()
+                        .cloned()
+                        .or_else(|| payload.downcast_ref::<&str>().map(|s| s.to_string()))
+                        .unwrap_or_default();
+                    return Err(TestCaseError::fail(format!("{scalar} {sampler:?}: panic {msg:?} for {w:?}")));
+                }
             }
         }
     }

@@ -5,9 +5,9 @@ use crate::error::CliError;
 use crate::output::svg::Style;
 use crate::output::{self, Format};
 use crate::spec::{self, RegionSpec};
+use crate::stopping::{self, Unit};
 use crate::write::Dest;
 use clap::{Args, ValueEnum};
-use std::io::IsTerminal;
 use std::path::PathBuf;
 use zetafill::engine::{ParamError, StepError};
 use zetafill::{
@@ -16,6 +16,12 @@ use zetafill::{
 
 /// Largest number of shapes one run may hold (52 bytes each in the core).
 pub const MAX_SHAPES: u64 = 20_000_000;
+
+/// What a 2D run places.
+const SHAPES: Unit = Unit {
+    plural: "shapes",
+    max: MAX_SHAPES,
+};
 
 /// Words of the coverage bitmap (2 MiB): a 4096 x 4096 grid.
 const COVERAGE_WORDS: usize = 1 << 18;
@@ -159,15 +165,7 @@ impl FillArgs {
     }
 
     fn stop(&self) -> Stop {
-        let count = match (self.count, self.fill, self.min_size) {
-            (None, None, None) => Some(2000),
-            (c, _, _) => c,
-        };
-        Stop {
-            count,
-            fill: self.fill,
-            min_size: self.min_size,
-        }
+        stopping::stop(self.count, self.fill, self.min_size)
     }
 }
 
@@ -185,49 +183,16 @@ fn param_error(e: ParamError) -> CliError {
     CliError::arg(flag, e)
 }
 
-/// How many shape slots the stop conditions can need (with a little slack).
+/// How many shape slots the stop conditions can need (see [`stopping::capacity`]).
 fn capacity(params: &Params, area: f64, stop: &Stop) -> Result<u64, CliError> {
     let (c, n) = (params.c, params.n_offset);
     let zeta = zetafill::zeta::zeta(c, n).map_err(|e| CliError::arg("--n-offset", e))?;
-    let mut need = u64::MAX;
-    if let Some(k) = stop.count {
-        need = need.min(k);
-    }
-    if let Some(f) = stop.fill {
-        // Smallest k with sum_{i<k} A_i >= f A, i.e. zeta(c, N + k) <= (1 - f) zeta(c, N).
-        let target = (1.0 - f) * zeta;
-        let tail = |k: u64| zetafill::zeta::hurwitz_zeta(c, n + k as f64).unwrap_or(0.0);
-        let mut hi = 1u64;
-        while tail(hi) > target && hi <= MAX_SHAPES {
-            hi *= 2;
-        }
-        if hi > MAX_SHAPES {
-            return Err(CliError::arg(
-                "--fill",
-                format!("{f} needs more than {MAX_SHAPES} shapes at this c; lower it or raise --c"),
-            ));
-        }
-        need = need.min(hi);
-    }
-    if let Some(m) = stop.min_size {
-        // Shape k has width w_k decreasing in k: the first k with w_k < m bounds the run.
-        let width = |k: u64| {
-            let kind = params.shape.kind_of(k);
-            kind.min_width(kind.scale_for_area(area / (zeta * zetafill::scalar::powf(k as f64 + n, c))))
-        };
-        let mut hi = 1u64;
-        while width(hi) >= m && hi <= MAX_SHAPES {
-            hi *= 2;
-        }
-        if hi > MAX_SHAPES {
-            return Err(CliError::arg(
-                "--min-size",
-                format!("{m} mm needs more than {MAX_SHAPES} shapes; raise it"),
-            ));
-        }
-        need = need.min(hi);
-    }
-    Ok(need.saturating_add(1).min(MAX_SHAPES))
+    // Shape k's width decreases with k.
+    let width = |k: u64| {
+        let kind = params.shape.kind_of(k);
+        kind.min_width(kind.scale_for_area(area / (zeta * zetafill::scalar::powf(k as f64 + n, c))))
+    };
+    stopping::capacity(c, n, stop, SHAPES, width)
 }
 
 /// Advice for a halt at placement `index`.
@@ -491,7 +456,7 @@ fn run_engine<S: zetafill::Scalar>(
     let mut engine = Engine::<S>::new(params, region, storage).map_err(param_error)?;
     check_known_limit(&params, &region)?;
     let mut rng = zetafill::rng_from_seed(a.seed);
-    let bar = progress_bar(a, stop.count);
+    let bar = stopping::progress_bar(a.quiet, stop.count, SHAPES);
     let mut trials = Vec::with_capacity(cap);
     let on_place = |p: &zetafill::Placement<S>| {
         trials.push(p.trials);
@@ -624,20 +589,6 @@ pub fn compute(a: &FillArgs) -> Result<(FillDoc, Option<StepError>), CliError> {
     Ok((doc, halt))
 }
 
-fn progress_bar(a: &FillArgs, count: Option<u64>) -> Option<indicatif::ProgressBar> {
-    if a.quiet || !std::io::stderr().is_terminal() {
-        return None;
-    }
-    let b = match count {
-        Some(k) => indicatif::ProgressBar::new(k),
-        None => indicatif::ProgressBar::new_spinner(),
-    };
-    if let Ok(style) = indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} shapes, {elapsed} (eta {eta})") {
-        b.set_style(style);
-    }
-    Some(b)
-}
-
 /// Renders a document in a format.
 pub fn render(doc: &FillDoc, format: Format, a: &FillArgs) -> Result<Vec<u8>, CliError> {
     if a.voronoi {
@@ -678,12 +629,5 @@ pub fn run(a: &FillArgs) -> Result<(), CliError> {
     let (doc, halt) = compute(a)?;
     let bytes = render(&doc, format, a)?;
     dest.write(&bytes)?;
-    match halt {
-        Some(StepError::Halted { index, trials }) => Err(CliError::Halted(format!(
-            "halted at placement {index} after {trials} trials (the output holds the {index} shapes placed before it): {}",
-            halt_advice(index)
-        ))),
-        Some(e) => Err(CliError::Halted(format!("{e}; the output holds every shape placed before it"))),
-        None => Ok(()),
-    }
+    stopping::outcome(halt, SHAPES, halt_advice)
 }

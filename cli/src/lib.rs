@@ -13,6 +13,7 @@ pub mod output;
 pub mod plot;
 pub mod spec;
 pub mod stats;
+pub mod stopping;
 pub mod svgin;
 pub mod territory;
 pub mod write;

@@ -6,11 +6,11 @@ use crate::error::CliError;
 use crate::output::svg::Style;
 use crate::output::{self, num, Format};
 use crate::spec;
+use crate::stopping::{self, Unit};
 use crate::write::Dest;
 use clap::{Args, ValueEnum};
 use serde::Serialize;
 use std::fmt::Write as _;
-use std::io::IsTerminal;
 use std::path::PathBuf;
 use svg::node::element::{ClipPath, Definitions, Description, Group, Line, Rectangle, Title};
 use svg::node::Text;
@@ -20,6 +20,12 @@ use zetafill::{line_index_words, Interval, LineEngine, LineParams, LineStorage, 
 
 /// Largest number of segments one run may hold (28 bytes each in the core).
 pub const MAX_SEGMENTS: u64 = 10_000_000;
+
+/// What a 1D run places.
+const SEGMENTS: Unit = Unit {
+    plural: "segments",
+    max: MAX_SEGMENTS,
+};
 
 /// How segments are drawn in SVG and PNG.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -134,15 +140,7 @@ impl LineArgs {
     }
 
     fn stop(&self) -> Stop {
-        let count = match (self.count, self.fill, self.min_size) {
-            (None, None, None) => Some(2000),
-            (c, _, _) => c,
-        };
-        Stop {
-            count,
-            fill: self.fill,
-            min_size: self.min_size,
-        }
+        stopping::stop(self.count, self.fill, self.min_size)
     }
 }
 
@@ -245,44 +243,11 @@ fn param_error(e: ParamError) -> CliError {
     CliError::arg(flag, e)
 }
 
-/// How many segment slots the stop conditions can need (with one to spare).
+/// How many segment slots the stop conditions can need (see [`stopping::capacity`]).
 fn capacity(c: f64, n: f64, length: f64, stop: &Stop) -> Result<u64, CliError> {
     let zeta = zetafill::zeta::zeta(c, n).map_err(|e| CliError::arg("--n-offset", e))?;
-    let mut need = u64::MAX;
-    if let Some(k) = stop.count {
-        need = need.min(k);
-    }
-    if let Some(f) = stop.fill {
-        // Smallest k with sum_{i<k} L_i >= f L, i.e. zeta(c, N + k) <= (1 - f) zeta(c, N).
-        let target = (1.0 - f) * zeta;
-        let tail = |k: u64| zetafill::zeta::hurwitz_zeta(c, n + k as f64).unwrap_or(0.0);
-        let mut hi = 1u64;
-        while tail(hi) > target && hi <= MAX_SEGMENTS {
-            hi *= 2;
-        }
-        if hi > MAX_SEGMENTS {
-            return Err(CliError::arg(
-                "--fill",
-                format!("{f} needs more than {MAX_SEGMENTS} segments at this c; lower it or raise --c"),
-            ));
-        }
-        need = need.min(hi);
-    }
-    if let Some(m) = stop.min_size {
-        let len = |k: u64| length / (zeta * zetafill::scalar::powf(k as f64 + n, c));
-        let mut hi = 1u64;
-        while len(hi) >= m && hi <= MAX_SEGMENTS {
-            hi *= 2;
-        }
-        if hi > MAX_SEGMENTS {
-            return Err(CliError::arg(
-                "--min-size",
-                format!("{m} mm needs more than {MAX_SEGMENTS} segments; raise it"),
-            ));
-        }
-        need = need.min(hi);
-    }
-    Ok(need.saturating_add(1).min(MAX_SEGMENTS))
+    let len = |k: u64| length / (zeta * zetafill::scalar::powf(k as f64 + n, c));
+    stopping::capacity(c, n, stop, SEGMENTS, len)
 }
 
 /// Runs the fill and returns the document (and the halt, if any). Nothing is written.
@@ -320,7 +285,7 @@ pub fn compute(a: &LineArgs) -> Result<(LineDoc, Option<StepError>), CliError> {
     )
     .map_err(param_error)?;
     let mut rng = zetafill::rng_from_seed(a.seed);
-    let bar = progress_bar(a.quiet, stop.count);
+    let bar = stopping::progress_bar(a.quiet, stop.count, SEGMENTS);
     let mut trials = Vec::with_capacity(cap);
     let reason = engine.run(&mut rng, &stop, |p| {
         trials.push(p.trials);
@@ -393,20 +358,6 @@ pub fn compute(a: &LineArgs) -> Result<(LineDoc, Option<StepError>), CliError> {
         },
     };
     Ok((doc, halt))
-}
-
-fn progress_bar(quiet: bool, count: Option<u64>) -> Option<indicatif::ProgressBar> {
-    if quiet || !std::io::stderr().is_terminal() {
-        return None;
-    }
-    let b = match count {
-        Some(k) => indicatif::ProgressBar::new(k),
-        None => indicatif::ProgressBar::new_spinner(),
-    };
-    if let Ok(style) = indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} segments, {elapsed} (eta {eta})") {
-        b.set_style(style);
-    }
-    Some(b)
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -830,16 +781,11 @@ pub fn run(a: &LineArgs) -> Result<(), CliError> {
     let (doc, halt) = compute(a)?;
     let bytes = render(&doc, format, a)?;
     dest.write(&bytes)?;
-    match halt {
-        Some(StepError::Halted { index, trials }) => Err(CliError::Halted(format!(
-            "halted at placement {index} after {trials} trials (the output holds the {index} segments placed before it): {}",
-            if index < 100 {
-                "the first segments left no room for this one: lower --c, raise --n-offset, or try another --seed"
-            } else {
-                "raise --max-trials, lower --c, or ask for fewer segments"
-            }
-        ))),
-        Some(e) => Err(CliError::Halted(format!("{e}; the output holds every segment placed before it"))),
-        None => Ok(()),
-    }
+    stopping::outcome(halt, SEGMENTS, |index| {
+        if index < 100 {
+            "the first segments left no room for this one: lower --c, raise --n-offset, or try another --seed"
+        } else {
+            "raise --max-trials, lower --c, or ask for fewer segments"
+        }
+    })
 }

@@ -121,36 +121,36 @@ mod tests {
     #[test]
     fn capacity_covers_every_stop_condition() {
         let (c, n) = (1.3, 1.0);
-        let zeta = zetafill::zeta::zeta(c, n).unwrap();
+        let zeta = zetafill::zeta::zeta(c, n).expect("zeta");
         // --count k: k slots and one to spare.
-        assert_eq!(capacity(c, n, &stop(Some(77), None, None), UNIT, |_| 1.0).unwrap(), 78);
+        assert_eq!(capacity(c, n, &stop(Some(77), None, None), UNIT, |_| 1.0).expect("capacity"), 78);
         // --fill f: the first cap - 1 pieces cover at least f, half as many do not.
         for f in [0.1, 0.5, 0.8] {
-            let cap = capacity(c, n, &stop(None, Some(f), None), UNIT, |_| 1.0).unwrap();
-            let covered = |k: u64| 1.0 - zetafill::zeta::hurwitz_zeta(c, n + k as f64).unwrap() / zeta;
+            let cap = capacity(c, n, &stop(None, Some(f), None), UNIT, |_| 1.0).expect("capacity");
+            let covered = |k: u64| 1.0 - zetafill::zeta::hurwitz_zeta(c, n + k as f64).expect("zeta") / zeta;
             assert!(covered(cap - 1) >= f, "f {f} cap {cap}");
             assert!(cap <= 2 || covered((cap - 1) / 2) < f, "f {f} cap {cap}");
         }
         // --min-size m: piece cap - 1 is narrower than m.
         let width = |k: u64| 100.0 / (k as f64 + 1.0);
-        let cap = capacity(c, n, &stop(None, None, Some(0.7)), UNIT, width).unwrap();
+        let cap = capacity(c, n, &stop(None, None, Some(0.7)), UNIT, width).expect("capacity");
         assert!(width(cap - 1) < 0.7 && width((cap - 1) / 2) >= 0.7, "cap {cap}");
         // The tighter condition wins.
-        assert_eq!(capacity(c, n, &stop(Some(5), None, Some(0.7)), UNIT, width).unwrap(), 6);
+        assert_eq!(capacity(c, n, &stop(Some(5), None, Some(0.7)), UNIT, width).expect("capacity"), 6);
     }
 
     #[test]
     fn capacity_past_the_limit_names_the_flag() {
-        let e = capacity(1.3, 1.0, &stop(None, Some(0.999_999_99), None), UNIT, |_| 1.0).unwrap_err();
+        let e = capacity(1.3, 1.0, &stop(None, Some(0.999_999_99), None), UNIT, |_| 1.0).expect_err("past the limit");
         assert!(e.to_string().contains("--fill") && e.to_string().contains("pieces"), "{e}");
-        let e = capacity(1.3, 1.0, &stop(None, None, Some(1e-9)), UNIT, |_| 1.0).unwrap_err();
+        let e = capacity(1.3, 1.0, &stop(None, None, Some(1e-9)), UNIT, |_| 1.0).expect_err("past the limit");
         assert!(e.to_string().contains("--min-size"), "{e}");
     }
 
     #[test]
     fn a_halt_names_the_pieces_kept() {
         assert!(outcome(None, UNIT, |_| "").is_ok());
-        let e = outcome(Some(StepError::Halted { index: 12, trials: 3 }), UNIT, |_| "try again").unwrap_err();
+        let e = outcome(Some(StepError::Halted { index: 12, trials: 3 }), UNIT, |_| "try again").expect_err("a halt");
         let m = e.to_string();
         assert!(
             m.contains("placement 12") && m.contains("holds the 12 pieces") && m.ends_with("try again"),

@@ -438,7 +438,36 @@ impl<'a, S: Scalar> Engine<'a, S> {
     fn hits(&self, g: &Geo<S>, c: Point<S>, r: S, j: u32) -> bool {
         let Some(p) = self.shapes.get(j as usize) else { return false };
         let kind = self.kind_of(u64::from(j));
-        let (mut dx, mut dy) = (p.x - c.x, p.y - c.y);
+        let ((ox, oy), (dx, dy)) = self.nearest_image(p, c);
+        let lim = r + kind.bounding_radius(p.scale) + self.gap;
+        if dx * dx + dy * dy > lim * lim {
+            return false;
+        }
+        if kind == ShapeKind::Circle && matches!(g, Geo::Circle { .. }) {
+            return true;
+        }
+        let other = kind.geo(Point::new(p.x + ox, p.y + oy), p.scale, p.angle);
+        !separated(g, &other, self.gap)
+    }
+
+    /// Whether a circle of radius `r` at `c` comes within the gap of placed shape `j` when
+    /// that is a circle too (of its image nearest by centre, in a periodic region); false
+    /// when `j` is another kind. The same answer as [`Engine::hits`] for two circles.
+    fn circles_meet(&self, c: Point<S>, r: S, j: u32) -> bool {
+        let Some(p) = self.shapes.get(j as usize) else { return false };
+        if self.kind_of(u64::from(j)) != ShapeKind::Circle {
+            return false;
+        }
+        let (_, (dx, dy)) = self.nearest_image(p, c);
+        let lim = r + p.scale + self.gap;
+        dx * dx + dy * dy <= lim * lim
+    }
+
+    /// The shift (zero, or a period each way) that brings placed shape `p` to its image nearest
+    /// to `c` by centre (in a periodic region; none otherwise), and the offset from `c` to that
+    /// image's centre.
+    fn nearest_image(&self, p: &Placed<S>, c: Point<S>) -> ((S, S), (S, S)) {
+        let (dx, dy) = (p.x - c.x, p.y - c.y);
         let (mut ox, mut oy) = (S::ZERO, S::ZERO);
         if self.region.periodic() {
             let (w, h) = self.period;
@@ -452,18 +481,8 @@ impl<'a, S: Scalar> Engine<'a, S> {
             } else if -dy > h.half() {
                 oy = h;
             }
-            dx = dx + ox;
-            dy = dy + oy;
         }
-        let lim = r + kind.bounding_radius(p.scale) + self.gap;
-        if dx * dx + dy * dy > lim * lim {
-            return false;
-        }
-        if kind == ShapeKind::Circle && matches!(g, Geo::Circle { .. }) {
-            return true;
-        }
-        let other = kind.geo(Point::new(p.x + ox, p.y + oy), p.scale, p.angle);
-        !separated(g, &other, self.gap)
+        ((ox, oy), (dx + ox, dy + oy))
     }
 
     /// Whether a shape overlaps its own periodic images (all of them within its reach).
@@ -609,6 +628,13 @@ impl<'a, S: Scalar> Engine<'a, S> {
     /// the shape named on failure does not depend on the hash table's size.
     fn try_at(&mut self, nx: &Next<S>, c: Point<S>, angle: S, trials: u64, known: Option<&[u32]>) -> Result<Placement<S>, Option<u32>> {
         let kind = nx.kind;
+        // A circle against known circles needs no geometry: most of the cell sampler's
+        // rejections end here.
+        if kind == ShapeKind::Circle {
+            if let Some(&j) = known.unwrap_or(&[]).iter().find(|&&j| self.circles_meet(c, nx.base_r, j)) {
+                return Err(Some(j));
+            }
+        }
         let (scale, r, g) = if nx.is_blob {
             let s: S = kind.scale_for(nx.area, angle);
             (s, kind.bounding_radius(s), kind.geo(c, s, angle))

@@ -693,18 +693,20 @@ impl<'c, S: Scalar> CellSampler<'c, S> {
             }
             // Lemire's method: a uniform integer below `total` without bias.
             let threshold = total.wrapping_neg() % total;
-            let mut batch = [(usize::MAX, Cell::default()); AHEAD];
-            for entry in batch.iter_mut() {
+            let mut slots = [0usize; AHEAD];
+            for slot in slots.iter_mut() {
                 let r = loop {
                     let m = u128::from(rng.next_u64()) * u128::from(total);
                     if (m as u64) >= threshold {
                         break (m >> 64) as u64;
                     }
                 };
-                let slot = self.slot_of(r)?;
-                *entry = (slot, self.cell(slot)?);
+                *slot = self.slot_of(r)?;
             }
-            self.ahead = batch;
+            // The loads in a loop of their own, so that they are in flight together.
+            for (entry, &slot) in self.ahead.iter_mut().zip(slots.iter()) {
+                *entry = (slot, self.pool.get(slot).map(Cell::load)?);
+            }
             self.ahead_len = AHEAD;
         }
         let (slot, c) = self.ahead.get(self.ahead_pos).copied()?;

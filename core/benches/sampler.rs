@@ -11,6 +11,8 @@
 //! without (`paper + hash`: the paper's algorithm with only the spatial hash, the reference of
 //! DESIGN section 7), the latter up to `--no-bitmap-above N` (default 10^5 for c = 1.3, 10^4
 //! for c = 1.4).
+//! Up to n = 10^5 the cell sampler and the reference run three times each, in turn, and the
+//! table gives each one's fastest run.
 //! Prints a Markdown table for the README. It measures; it asserts nothing about time.
 
 use std::time::Instant;
@@ -83,6 +85,14 @@ fn run(c: f64, n_offset: f64, n: u64, sampler: Sampler) -> Row {
     }
 }
 
+/// The faster of a run so far and a new one (the same placements: only the time differs).
+fn faster(best: Option<Row>, new: Row) -> Row {
+    match best {
+        Some(b) if b.secs <= new.secs => b,
+        _ => new,
+    }
+}
+
 fn arg<T: std::str::FromStr>(name: &str) -> Option<T> {
     std::env::args().skip_while(|a| a != name).nth(1).and_then(|v| v.parse().ok())
 }
@@ -101,8 +111,17 @@ fn main() {
         let bare_max = no_bitmap_above.unwrap_or(if c > 1.35 { 10_000 } else { 100_000 });
         let mut n = 1_000u64;
         while n <= max {
-            let fast = run(c, n_offset, n, Sampler::Fast);
-            let reference = (n <= ref_max).then(|| run(c, n_offset, n, Sampler::Reference));
+            // Up to 10^5 the two samplers run three times, in turn, and each keeps its fastest
+            // run: a busy neighbour on a shared machine slows a run, never speeds it up.
+            let rounds = if n <= 100_000 { 3 } else { 1 };
+            let (mut fast, mut reference): (Option<Row>, Option<Row>) = (None, None);
+            for _ in 0..rounds {
+                fast = Some(faster(fast, run(c, n_offset, n, Sampler::Fast)));
+                if n <= ref_max {
+                    reference = Some(faster(reference, run(c, n_offset, n, Sampler::Reference)));
+                }
+            }
+            let fast = fast.expect("one round at least");
             let bare = (n <= bare_max).then(|| run(c, n_offset, n, Sampler::PaperHash));
             for (name, r) in [
                 ("fast", Some(&fast)),

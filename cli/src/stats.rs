@@ -11,8 +11,11 @@ pub mod halting;
 pub mod trials;
 
 use crate::error::CliError;
+use crate::output::Format;
 use crate::spec;
+use crate::write::Dest;
 use clap::{Args, Subcommand};
+use std::path::PathBuf;
 
 /// The stats subcommands.
 #[derive(Debug, Subcommand)]
@@ -58,6 +61,19 @@ pub struct GasketArgs {
     /// Print one JSON object.
     #[arg(long)]
     pub json: bool,
+}
+
+/// Where a chart-writing subcommand (`name`, e.g. `"stats trials"`) writes: the checked
+/// destination of `--output` and its format, CSV or SVG; `None` without `--output`.
+pub fn chart_output(output: Option<&PathBuf>, format: Option<Format>, name: &str) -> Result<Option<(Dest, Format)>, CliError> {
+    let Some(p) = output else { return Ok(None) };
+    let dest = Dest::parse(p);
+    dest.check("--output", &[])?;
+    let f = Format::resolve(format, p)?;
+    if !matches!(f, Format::Csv | Format::Svg) {
+        return Err(CliError::arg("--output", format!("{name} writes .csv or .svg")));
+    }
+    Ok(Some((dest, f)))
 }
 
 /// Runs a stats subcommand.

@@ -14,7 +14,6 @@ use super::trials::{rect_2d, run_2d, shape_2d, shape_label, Rotate, RunSpec};
 use crate::error::CliError;
 use crate::output::Format;
 use crate::spec;
-use crate::write::Dest;
 use clap::Args;
 use rayon::prelude::*;
 use std::fmt::Write as _;
@@ -183,18 +182,7 @@ pub fn scan(a: &HaltingArgs) -> Result<Vec<PointDoc>, CliError> {
 
 /// `zetafill stats halting`.
 pub fn run(a: &HaltingArgs) -> Result<(), CliError> {
-    let out = match &a.output {
-        Some(p) => {
-            let dest = Dest::parse(p);
-            dest.check("--output", &[])?;
-            let f = Format::resolve(a.format, p)?;
-            if !matches!(f, Format::Csv | Format::Svg) {
-                return Err(CliError::arg("--output", "stats halting writes .csv or .svg"));
-            }
-            Some((dest, f))
-        }
-        None => None,
-    };
+    let out = super::chart_output(a.output.as_ref(), a.format, "stats halting")?;
     let points = scan(a)?;
     if let Some((dest, f)) = out {
         let bytes = match f {

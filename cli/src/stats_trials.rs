@@ -11,7 +11,6 @@ use super::chart::{self, TrialsSeries};
 use crate::error::CliError;
 use crate::output::Format;
 use crate::spec;
-use crate::write::Dest;
 use clap::{Args, ValueEnum};
 use rayon::prelude::*;
 use std::fmt::Write as _;
@@ -224,18 +223,7 @@ fn fit(cum: &[(f64, f64)], from: f64) -> Option<(f64, f64)> {
 
 /// `zetafill stats trials`.
 pub fn run(a: &TrialsArgs) -> Result<(), CliError> {
-    let out = match &a.output {
-        Some(p) => {
-            let dest = Dest::parse(p);
-            dest.check("--output", &[])?;
-            let f = Format::resolve(a.format, p)?;
-            if !matches!(f, Format::Csv | Format::Svg) {
-                return Err(CliError::arg("--output", "stats trials writes .csv or .svg"));
-            }
-            Some((dest, f))
-        }
-        None => None,
-    };
+    let out = super::chart_output(a.output.as_ref(), a.format, "stats trials")?;
     let (w, h) = a.region;
     let from = a.fit_from.unwrap_or((a.count / 10).max(1));
     if from >= a.count {

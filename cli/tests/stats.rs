@@ -300,3 +300,23 @@ fn dimension_bad_input_exits_2() {
     }
     assert!(!d.path().join("h.png").exists());
 }
+
+#[test]
+fn charts_refuse_other_formats_before_running() {
+    let d = tmp();
+    for args in [
+        &["stats", "trials", "--count", "50", "--output", "t.png"][..],
+        &[
+            "stats", "halting", "--c-from", "1.3", "--c-to", "1.4", "--c-step", "0.1", "--output", "h.json",
+        ][..],
+    ] {
+        let o = zf(d.path(), args);
+        assert_eq!(o.code, 2, "{args:?}: {}", o.stderr);
+        assert!(
+            o.stderr.contains("--output") && o.stderr.contains("writes .csv or .svg"),
+            "{args:?}: {}",
+            o.stderr
+        );
+        assert!(!d.path().join(args[args.len() - 1]).exists(), "{args:?} wrote a file");
+    }
+}

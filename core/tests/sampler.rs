@@ -464,19 +464,32 @@ fn cells_hold_every_valid_centre<S: Scalar>(
     Ok(valid)
 }
 
-/// Fills of `kind` in each of `regions` with each (gap, cell pool) of `configs`, checking
-/// before the first five placements and every `every`-th that every valid centre among
-/// `points` uniform points (tried at `angles` angles) lies in a live cell. Returns the checks
-/// made, the valid points seen, and how many checks found valid points outside the same cells
-/// shrunk by a tenth about their centres.
-fn check_invariant<S: Scalar>(
+/// What [`check_invariant`] runs: fills of `kind` in each of `regions` with each (gap, cell
+/// pool) of `configs`, checked before the first five placements and every `every`-th on
+/// `points` uniform points, each tried at `angles` angles.
+#[derive(Clone, Copy)]
+struct Probe<'r> {
     kind: ShapeKind,
-    regions: &[Region<'_>],
-    configs: &[(f64, usize)],
+    regions: &'r [Region<'r>],
+    configs: &'r [(f64, usize)],
     every: usize,
     points: usize,
     angles: usize,
-) -> (usize, usize, usize) {
+}
+
+/// Runs `probe`, checking at each check that every valid centre among the points lies in a
+/// live cell. Returns the checks
+/// made, the valid points seen, and how many checks found valid points outside the same cells
+/// shrunk by a tenth about their centres.
+fn check_invariant<S: Scalar>(probe: &Probe<'_>) -> (usize, usize, usize) {
+    let Probe {
+        kind,
+        regions,
+        configs,
+        every,
+        points,
+        angles,
+    } = *probe;
     let mut rng = rng_from_seed(99);
     let mut unit = || (rng.next_u64() >> 11) as f64 / (1u64 << 53) as f64;
     let (mut checked, mut valid_seen, mut broken_caught) = (0, 0, 0);
@@ -546,18 +559,9 @@ struct Least {
 
 /// Runs [`check_invariant`] and asserts that it checked enough and that its checker failed
 /// on the broken input often enough.
-#[allow(clippy::too_many_arguments)]
-fn assert_invariant<S: Scalar>(
-    kind: ShapeKind,
-    regions: &[Region<'_>],
-    configs: &[(f64, usize)],
-    every: usize,
-    points: usize,
-    angles: usize,
-    least: Least,
-) {
-    let (checked, valid_seen, broken_caught) = check_invariant::<S>(kind, regions, configs, every, points, angles);
-    let what = format!("{kind:?} ({})", std::any::type_name::<S>());
+fn assert_invariant<S: Scalar>(probe: &Probe<'_>, least: Least) {
+    let (checked, valid_seen, broken_caught) = check_invariant::<S>(probe);
+    let what = format!("{:?} ({})", probe.kind, std::any::type_name::<S>());
     println!("{what}: checks {checked}, valid points {valid_seen}, shrunk cells caught {broken_caught}");
     assert!(checked >= least.checks, "{what}: checks made: {checked}");
     assert!(valid_seen >= least.valid, "{what}: valid points seen: {valid_seen}");
@@ -586,7 +590,15 @@ fn live_cells_hold_every_valid_centre() {
         valid: 20_000,
         caught_one_in: 2,
     };
-    assert_invariant::<f64>(ShapeKind::Circle, &regions, &configs, 16, 4000, 1, least);
+    let probe = Probe {
+        kind: ShapeKind::Circle,
+        regions: &regions,
+        configs: &configs,
+        every: 16,
+        points: 4000,
+        angles: 1,
+    };
+    assert_invariant::<f64>(&probe, least);
 }
 
 /// The same invariant for the shapes whose bounds come from polygon and ring distances and
@@ -608,7 +620,15 @@ fn live_cells_hold_every_valid_centre_of_other_shapes() {
             valid: 2000,
             caught_one_in: 3,
         };
-        assert_invariant::<f64>(kind, &regions, &[(0.0, cells_for(400)), (0.6, 4000)], 24, 1000, 12, least);
+        let probe = Probe {
+            kind,
+            regions: &regions,
+            configs: &[(0.0, cells_for(400)), (0.6, 4000)],
+            every: 24,
+            points: 1000,
+            angles: 12,
+        };
+        assert_invariant::<f64>(&probe, least);
     }
 }
 
@@ -625,6 +645,14 @@ fn live_cells_hold_every_valid_centre_on_fixed_point() {
             valid: 2000,
             caught_one_in: 3,
         };
-        assert_invariant::<zetafill::Fixed>(kind, &[rect, torus], &[(0.0, cells_for(400)), (0.6, 3000)], 24, 1000, 12, least);
+        let probe = Probe {
+            kind,
+            regions: &[rect, torus],
+            configs: &[(0.0, cells_for(400)), (0.6, 3000)],
+            every: 24,
+            points: 1000,
+            angles: 12,
+        };
+        assert_invariant::<zetafill::Fixed>(&probe, least);
     }
 }

@@ -625,7 +625,18 @@ pub fn run(a: &FillArgs) -> Result<(), CliError> {
     let format = Format::resolve(a.format, &a.output)?;
     // Plotter flags (machine profile, feeds, power, hatch, page) are checked before the fill
     // runs; the bed check needs the drawing and happens in render().
+    if a.voronoi {
+        a.plot.refuse_except(&[], |_| {
+            "is not available with --voronoi (cobblestones are drawn at the region's size)".to_string()
+        })?;
+    }
     a.plot.check(format)?;
+    if a.plot.hatch.is_some() && a.style == output::svg::Style::Filled && matches!(format, Format::Svg | Format::Png) {
+        return Err(CliError::arg(
+            "--hatch",
+            "draws lines, which filled shapes would hide: use --style outline",
+        ));
+    }
     let (doc, halt) = compute(a)?;
     let bytes = render(&doc, format, a)?;
     dest.write(&bytes)?;

@@ -661,42 +661,62 @@ pub fn render_digest(doc: &LineDoc) -> Vec<u8> {
 /// the line at mid height): `dashes` one open stroke per segment (per piece when a periodic
 /// segment wraps), `circles` one circle of diameter L_i per segment centred on the line
 /// (a wrapping segment's circle centred at its middle taken modulo L), `bars` each segment's
-/// bar outline (fill it with `--hatch`). `zoom` has no G-code form.
-pub fn drawing(doc: &LineDoc, opt: &LineSvgOptions) -> Result<(crate::plot::Drawing, crate::plot::Bounds), CliError> {
+/// bar outline. `--hatch` hatches bars and circles (`--hatch-only`: without their outlines);
+/// `--min-feature` leaves out segments shorter than it. `zoom` has no G-code form.
+pub fn drawing(
+    doc: &LineDoc,
+    opt: &LineSvgOptions,
+    build: &crate::plot::BuildOptions,
+) -> Result<(crate::plot::Drawing, crate::plot::Bounds), CliError> {
     use crate::plot::{Bounds, Drawing, Path};
     let l = doc.region.length;
     let periodic = doc.region.periodic;
     let d0 = doc.shapes.first().map_or(l / 10.0, |s| s.length);
+    let kept = doc.shapes.iter().filter(|s| s.length >= build.min_feature);
+    let outline = !build.no_outline;
     let mut paths = Vec::new();
+    let mut hatch = |lines: Vec<[crate::plot::Pt; 2]>| paths.extend(lines.into_iter().map(|[a, b]| Path::polyline(vec![a, b], false)));
+    let mut outlines = Vec::new();
     let height = match opt.render {
         Render::Dashes => {
             let h = (4.0 * opt.pen_width).max(2.0);
-            for s in &doc.shapes {
+            for s in kept {
                 for (a, b) in pieces(s, l, periodic) {
                     if b - a >= INVISIBLE {
-                        paths.push(Path::polyline(vec![[a, h / 2.0], [b, h / 2.0]], false));
+                        outlines.push(Path::polyline(vec![[a, h / 2.0], [b, h / 2.0]], false));
                     }
                 }
             }
             h
         }
         Render::Circles => {
-            for s in &doc.shapes {
+            for s in kept {
                 let r = s.length / 2.0;
                 if r >= INVISIBLE {
                     let mid = s.start + r;
                     let mid = if periodic && mid >= l { mid - l } else { mid };
-                    paths.push(Path::circle([mid, d0 / 2.0], r));
+                    if outline {
+                        outlines.push(Path::circle([mid, d0 / 2.0], r));
+                    }
+                    if let Some(h) = &build.hatch {
+                        hatch(h.annulus([mid, d0 / 2.0], r, 0.0));
+                    }
                 }
             }
             d0
         }
         Render::Bars => {
             let h = opt.bar_height;
-            for s in &doc.shapes {
+            for s in kept {
                 for (a, b) in pieces(s, l, periodic) {
                     if b - a >= INVISIBLE {
-                        paths.push(Path::polyline(vec![[a, 0.0], [b, 0.0], [b, h], [a, h]], true));
+                        let bar = vec![[a, 0.0], [b, 0.0], [b, h], [a, h]];
+                        if let Some(hp) = &build.hatch {
+                            hatch(hp.polygon(&bar));
+                        }
+                        if outline {
+                            outlines.push(Path::polyline(bar, true));
+                        }
                     }
                 }
             }
@@ -704,6 +724,7 @@ pub fn drawing(doc: &LineDoc, opt: &LineSvgOptions) -> Result<(crate::plot::Draw
         }
         Render::Zoom => return Err(CliError::arg("--render", "zoom has no G-code form; use dashes, circles or bars")),
     };
+    paths.extend(outlines);
     // Circles may reach past the ends of the interval: the frame holds them all.
     let mut frame = Bounds {
         x0: 0.0,
@@ -724,7 +745,7 @@ pub fn drawing(doc: &LineDoc, opt: &LineSvgOptions) -> Result<(crate::plot::Draw
 }
 
 fn render_gcode(doc: &LineDoc, opt: &LineSvgOptions, a: &LineArgs) -> Result<Vec<u8>, CliError> {
-    let (d, frame) = drawing(doc, opt)?;
+    let (d, frame) = drawing(doc, opt, &a.plot.build_options()?)?;
     let p = &doc.params;
     let header = vec![format!(
         "zetafill line --length {} --c {} --n-offset {} --seed {} --render {}{}",
@@ -767,6 +788,25 @@ pub fn render(doc: &LineDoc, format: Format, a: &LineArgs) -> Result<Vec<u8>, Cl
     })
 }
 
+/// Refuses, before any work, a plot flag that `format` does not read: only the G-code reads
+/// them (the SVG is the paper's figure), and it has no pages, layers, zoom, or hatched dashes.
+fn check_plot(a: &LineArgs, format: Format) -> Result<(), CliError> {
+    let p = &a.plot;
+    p.build_options()?;
+    if format != Format::Gcode {
+        return p.refuse_except(&[], |_| crate::plot::FOR_GCODE.to_string());
+    }
+    p.check_gcode()?;
+    match a.render {
+        Render::Zoom => Err(CliError::arg("--render", "zoom has no G-code form; use dashes, circles or bars")),
+        Render::Dashes if p.hatch.is_some() => Err(CliError::arg(
+            "--hatch",
+            "dashes are single strokes with nothing to hatch: use --render bars or circles",
+        )),
+        _ => Ok(()),
+    }
+}
+
 /// `zetafill line`.
 pub fn run(a: &LineArgs) -> Result<(), CliError> {
     if a.zoom_center.is_some_and(|x| x > a.length) {
@@ -778,6 +818,7 @@ pub fn run(a: &LineArgs) -> Result<(), CliError> {
     let dest = Dest::parse(&a.output);
     dest.check("--output", &[])?;
     let format = Format::resolve(a.format, &a.output)?;
+    check_plot(a, format)?;
     let (doc, halt) = compute(a)?;
     let bytes = render(&doc, format, a)?;
     dest.write(&bytes)?;

@@ -622,31 +622,8 @@ fn min_feature_leaves_out_small_shapes() {
 fn hatch_lines_stay_inside_their_shapes() {
     let dir = tmp();
     let d = dir.path();
-    // The G-code, not the sampler, is under test: the paper's sampler with this seed places all
-    // 120 rings (with N = 1 the first ring often leaves no room for the second).
-    let base = [
-        "--region",
-        "rect:120:120",
-        "--shape",
-        "ring:0.5",
-        "--count",
-        "120",
-        "--seed",
-        "13",
-        "--sampler",
-        "reference",
-    ];
-    let doc = fill_json(d, &base);
-    let rings: Vec<([f64; 2], f64, f64)> = shapes(&doc)
-        .iter()
-        .map(|s| {
-            (
-                pt(s.get("center").unwrap_or(&serde_json::Value::Null)),
-                f(s, "radius"),
-                f(s, "inner_radius"),
-            )
-        })
-        .collect();
+    let base = RINGS;
+    let rings = rings(&fill_json(d, &base));
     let (prof, _) = builtin_profile(d, "grbl-laser");
     let (text, _) = gcode_to(
         d,
@@ -976,4 +953,68 @@ fn line_gcode_replays_safely() {
     assert_eq!(o.code, 2);
     assert!(names_flag(&o.stderr, "--render"), "{}", o.stderr);
     assert!(!d.join("z.gcode").exists());
+}
+
+/// `zetafill line --hatch` hatches bars and circles in the G-code: at angle 0 each kept bar
+/// gets one line per multiple of the spacing below its top, spanning the bar exactly; each
+/// circle's lines end on it; segments shorter than `--min-feature` are left out; outlines go
+/// with `--hatch-only`.
+#[test]
+fn line_hatch_fills_bars_and_circles() {
+    let dir = tmp();
+    let d = dir.path();
+    let (prof, _) = builtin_profile(d, "grbl-laser");
+    let base = ["line", "--count", "120", "--seed", "9", "--length", "150"];
+    let o = zf_ok(d, &[&base[..], &["--format", "json", "-o", "-"]].concat());
+    let doc = parse_json(&o.stdout);
+    let segs: Vec<(f64, f64)> = shapes(&doc).iter().map(|s| (f(s, "start"), f(s, "length"))).collect();
+    let min_feature = 1.0;
+    let kept: Vec<(f64, f64)> = segs.iter().copied().filter(|s| s.1 >= min_feature).collect();
+    assert!(kept.len() < segs.len() && !kept.is_empty());
+    let hatch = ["--machine", "grbl-laser", "--hatch", "0.5:0", "--hatch-only", "--min-feature", "1"];
+    // Bars 10 mm high: lines at y = 0, 0.5, ..., 9.5.
+    zf_ok(d, &[&base[..], &hatch[..], &["--render", "bars", "-o", "b.gcode"]].concat());
+    let r = assert_safe(&String::from_utf8_lossy(&read(&d.join("b.gcode"))), &prof, "hatched bars");
+    assert_eq!(r.arcs, 0);
+    assert_eq!(r.segments.len(), 20 * kept.len(), "20 lines per kept bar");
+    for s in &r.segments {
+        let y = s[0][1];
+        assert!(
+            s[1][1] == y && (y / 0.5 - (y / 0.5).round()).abs() < 1e-6 && (0.0..10.0).contains(&y),
+            "{s:?}"
+        );
+        let (x0, x1) = (s[0][0].min(s[1][0]), s[0][0].max(s[1][0]));
+        assert!(
+            kept.iter().any(|&(a, l)| (x0 - a).abs() < 2e-3 && (x1 - (a + l)).abs() < 2e-3),
+            "{s:?} spans no kept bar"
+        );
+    }
+    // Circles: diameter L_i on the line y = L_0 / 2.
+    zf_ok(d, &[&base[..], &hatch[..], &["--render", "circles", "-o", "c.gcode"]].concat());
+    let r = assert_safe(&String::from_utf8_lossy(&read(&d.join("c.gcode"))), &prof, "hatched circles");
+    assert_eq!(r.arcs, 0, "hatch only");
+    let cy = segs[0].1 / 2.0;
+    for s in &r.segments {
+        let on = |q: [f64; 2], &(a, l): &(f64, f64)| ((q[0] - (a + l / 2.0)).hypot(q[1] - cy) - l / 2.0).abs() < 2e-3;
+        assert!(kept.iter().any(|c| on(s[0], c) && on(s[1], c)), "{s:?} ends on no kept circle");
+    }
+    let length: f64 = r.segments.iter().map(|s| (s[1][0] - s[0][0]).hypot(s[1][1] - s[0][1])).sum();
+    let area: f64 = kept.iter().map(|&(_, l)| std::f64::consts::PI * l * l / 4.0).sum();
+    assert!(rel(length * 0.5, area) < 0.03, "hatched {} mm^2 of {area}", length * 0.5);
+    // With outlines: every kept bar's outline as well.
+    let both = [
+        "--machine",
+        "grbl-laser",
+        "--hatch",
+        "0.5:0",
+        "--min-feature",
+        "1",
+        "--render",
+        "bars",
+    ];
+    zf_ok(d, &[&base[..], &both[..], &["-o", "o.gcode"]].concat());
+    let r = assert_safe(&String::from_utf8_lossy(&read(&d.join("o.gcode"))), &prof, "bars and hatch");
+    let outline: f64 = kept.iter().map(|&(_, l)| 2.0 * l + 20.0).sum();
+    let hatched: f64 = kept.iter().map(|&(_, l)| 20.0 * l).sum();
+    assert!(rel(r.down, outline + hatched) < 1e-4, "{} mm drawn", r.down);
 }

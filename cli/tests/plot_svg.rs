@@ -45,6 +45,16 @@ fn drawn_mm(tree: &usvg::Tree) -> [f64; 4] {
     [b[0] / PX_PER_MM, b[1] / PX_PER_MM, b[2] / PX_PER_MM, b[3] / PX_PER_MM]
 }
 
+/// Asserts that a drawing's box (mm from the page's top-left) lies in the 100 x 80 mm tile
+/// centred on A4 (x 55 to 155, y 108.5 to 188.5), up to half the pen's width.
+fn assert_in_a4_tile(b: [f64; 4]) {
+    let pen = 0.3 / 2.0 + 1e-3;
+    assert!(
+        b[0] >= 55.0 - pen && b[2] <= 155.0 + pen && b[1] >= 108.5 - pen && b[3] <= 188.5 + pen,
+        "{b:?} leaves the tile"
+    );
+}
+
 fn size_mm(t: &usvg::Tree) -> (f64, f64) {
     (t.size().width() as f64 / PX_PER_MM, t.size().height() as f64 / PX_PER_MM)
 }
@@ -124,9 +134,6 @@ fn center_and_fit() {
     let o = zf(d, &["fill", "--count", "20", "--fit", "-o", "x.svg"]);
     assert_eq!(o.code, 2);
     assert!(names_flag(&o.stderr, "--fit"), "{}", o.stderr);
-    let o = zf(d, &["fill", "--count", "20", "--hatch", "1", "-o", "x.svg"]);
-    assert_eq!(o.code, 2);
-    assert!(names_flag(&o.stderr, "--hatch"), "{}", o.stderr);
     let o = zf(d, &["fill", "--count", "20", "--page", "a4", "--margin", "200", "-o", "x.svg"]);
     assert_eq!(o.code, 2);
     assert!(names_flag(&o.stderr, "--margin"), "{}", o.stderr);
@@ -217,13 +224,10 @@ fn periodic_on_a_page_clips_to_the_tile() {
     );
     let t = tree(&svg);
     let b = drawn_mm(&t);
-    // The tile is centred: x 55..155, y 108.5..188.5 on A4. Images of edge-crossing shapes are
-    // cut exactly to it (plotter tools ignore clip-path), so nothing is drawn outside.
+    // Images of edge-crossing shapes are cut exactly to the tile (plotter tools ignore
+    // clip-path), so nothing is drawn outside.
+    assert_in_a4_tile(b);
     let pen = 0.3 / 2.0 + 1e-3;
-    assert!(
-        b[0] >= 55.0 - pen && b[2] <= 155.0 + pen && b[1] >= 108.5 - pen && b[3] <= 188.5 + pen,
-        "{b:?}"
-    );
     assert!(b[0] < 55.5 && b[2] > 154.5, "cut shapes reach the tile's edges: {b:?}");
     let text = String::from_utf8_lossy(&svg).into_owned();
     assert!(!text.contains("clip-path"), "no clip-path for plotters");
@@ -257,4 +261,212 @@ fn periodic_on_a_page_clips_to_the_tile() {
     assert_eq!(&png[12..16], b"IHDR");
     let be = |i: usize| u32::from_be_bytes([png[i], png[i + 1], png[i + 2], png[i + 3]]);
     assert_eq!((be(16), be(20)), (560, 794), "A5 at 96 dpi");
+}
+
+/// Every straight piece `[a, b]` of every drawn path, in the region's frame (mm, y up) of a
+/// drawing `height` mm tall: SVG y points down, usvg works in px.
+fn line_pieces(g: &usvg::Group, height: f64, out: &mut Vec<[[f64; 2]; 2]>) {
+    use usvg::tiny_skia_path::PathSegment;
+    for n in g.children() {
+        match n {
+            usvg::Node::Group(g) => line_pieces(g, height, out),
+            usvg::Node::Path(p) => {
+                let ts = p.abs_transform();
+                let mm = |mut q: usvg::tiny_skia_path::Point| {
+                    ts.map_point(&mut q);
+                    [q.x as f64 / PX_PER_MM, height - q.y as f64 / PX_PER_MM]
+                };
+                let mut last = None;
+                for seg in p.data().segments() {
+                    match seg {
+                        PathSegment::MoveTo(q) => last = Some(mm(q)),
+                        PathSegment::LineTo(q) => {
+                            let b = mm(q);
+                            if let Some(a) = last {
+                                out.push([a, b]);
+                            }
+                            last = Some(b);
+                        }
+                        _ => last = None,
+                    }
+                }
+            }
+            _ => {}
+        }
+    }
+}
+
+/// `--hatch` in SVG, read back with usvg: each line lies in one ring's material (both ends on
+/// its circles), a ring whose hole is narrower than `--min-feature` is hatched as a disc, rings
+/// narrower than it are left out, and the lines' total length times the spacing is the area
+/// of what is kept. The lines run at the angle asked for.
+#[test]
+fn svg_hatch_fills_each_shape_it_keeps() {
+    let dir = tmp();
+    let d = dir.path();
+    let base = RINGS;
+    let doc = fill_json(d, &base);
+    let min_feature = 4.0;
+    // Kept rings as (centre, outer, hole drawn).
+    let rings: Vec<([f64; 2], f64, f64)> = rings(&doc)
+        .into_iter()
+        .filter(|r| 2.0 * r.1 >= min_feature)
+        .map(|(c, ro, ri)| (c, ro, if 2.0 * ri >= min_feature { ri } else { 0.0 }))
+        .collect();
+    assert!(rings.len() < shapes(&doc).len(), "some rings are narrower than 4 mm");
+    assert!(rings.iter().any(|r| r.2 == 0.0), "some holes are narrower than 4 mm");
+    let spacing = 0.4;
+    let svg = fill_to(
+        d,
+        "h.svg",
+        &[&base[..], &["--hatch", "0.4:20", "--hatch-only", "--min-feature", "4"]].concat(),
+    );
+    let mut segs = Vec::new();
+    line_pieces(tree(&svg).root(), 120.0, &mut segs);
+    let tol = 2e-3;
+    let mut length = 0.0;
+    for s in &segs {
+        let mid = [(s[0][0] + s[1][0]) / 2.0, (s[0][1] + s[1][1]) / 2.0];
+        let ok = rings.iter().any(|(c, ro, ri)| {
+            let dist = |q: [f64; 2]| (q[0] - c[0]).hypot(q[1] - c[1]);
+            let on = |q| (dist(q) - ro).abs() < tol || (*ri > 0.0 && (dist(q) - ri).abs() < tol);
+            dist(mid) >= ri - tol && dist(mid) <= ro + tol && on(s[0]) && on(s[1])
+        });
+        assert!(ok, "hatch line {s:?} is not inside one kept ring");
+        let (dx, dy) = (s[1][0] - s[0][0], s[1][1] - s[0][1]);
+        let sin = (dx * 20f64.to_radians().sin() - dy * 20f64.to_radians().cos()).abs() / dx.hypot(dy);
+        assert!(sin < 1e-3, "line {s:?} is not at 20 degrees");
+        length += dx.hypot(dy);
+    }
+    let area: f64 = rings.iter().map(|(_, ro, ri)| std::f64::consts::PI * (ro * ro - ri * ri)).sum();
+    assert!(rel(length * spacing, area) < 0.02, "hatched {} mm^2 of {area}", length * spacing);
+    // With outlines: one circle element per ring (and per drawn hole) besides the hatch.
+    let text = String::from_utf8_lossy(&fill_to(
+        d,
+        "o.svg",
+        &[&base[..], &["--hatch", "0.4:20", "--min-feature", "4"]].concat(),
+    ))
+    .into_owned();
+    assert_eq!(text.matches("class=\"hatch\"").count(), rings.len(), "one hatch path per ring");
+    assert_eq!(
+        text.matches("fill-rule=\"evenodd\"").count(),
+        rings.iter().filter(|r| r.2 > 0.0).count()
+    );
+    assert_eq!(text.matches("<circle").count(), rings.iter().filter(|r| r.2 == 0.0).count());
+    assert_eq!(
+        svg,
+        fill_to(
+            d,
+            "h2.svg",
+            &[&base[..], &["--hatch", "0.4:20", "--hatch-only", "--min-feature", "4"]].concat()
+        ),
+        "byte-identical rerun"
+    );
+}
+
+/// A periodic fill hatched on a page with layers (the plotter case): outlines and hatch cut
+/// exactly to the tile, nothing outside it, each layer holding its shapes' hatch too.
+#[test]
+fn svg_hatch_of_a_periodic_fill_stays_in_the_tile() {
+    let dir = tmp();
+    let d = dir.path();
+    let base = [
+        "--region",
+        "rect:100:80",
+        "--periodic",
+        "--shape",
+        "star:5:0.5",
+        "--count",
+        "150",
+        "--seed",
+        "24",
+        "--hatch",
+        "0.5",
+    ];
+    let svg = fill_to(
+        d,
+        "p.svg",
+        &[&base[..], &["--page", "a4", "--center", "--layers", "size-bands:2"]].concat(),
+    );
+    let t = tree(&svg);
+    assert_in_a4_tile(drawn_mm(&t));
+    let text = String::from_utf8_lossy(&svg).into_owned();
+    assert!(!text.contains("clip-path"), "no clip-path for plotters");
+    for k in 1..=2 {
+        let layer = text
+            .split(&format!("id=\"layer{k}\""))
+            .nth(1)
+            .and_then(|t| t.split("</g>").next())
+            .unwrap_or("");
+        assert!(layer.contains("class=\"hatch\""), "layer {k} holds hatch lines");
+    }
+    // In the tile frame every hatch line is inside [0, 100] x [0, 80].
+    let mut segs = Vec::new();
+    line_pieces(t.root(), 297.0, &mut segs);
+    let (x0, y0) = (55.0, 297.0 - 188.5);
+    for s in &segs {
+        for q in s {
+            let (x, y) = (q[0] - x0, q[1] - y0);
+            assert!(
+                (-1e-3..=100.001).contains(&x) && (-1e-3..=80.001).contains(&y),
+                "{s:?} leaves the tile"
+            );
+        }
+    }
+}
+
+/// Each plot flag is read only by the outputs it applies to; given anywhere else it is
+/// refused before any work (exit 2, the flag named, an existing file left as it was).
+#[test]
+fn plot_flags_are_refused_where_nothing_reads_them() {
+    let dir = tmp();
+    let d = dir.path();
+    let cases: &[(&[&str], &str)] = &[
+        (&["fill", "--power", "300", "-o", "x.svg"], "--power"),
+        (&["fill", "--machine", "grbl-laser", "-o", "x.png"], "--machine"),
+        (&["fill", "--order", "greedy", "-o", "x.svg"], "--order"),
+        (&["fill", "--hatch", "1", "-o", "x.json"], "--hatch"),
+        (&["fill", "--page", "a4", "-o", "x.csv"], "--page"),
+        (&["fill", "--hatch", "1", "--style", "filled", "-o", "x.svg"], "--hatch"),
+        (&["fill", "--voronoi", "--min-feature", "1", "-o", "x.svg"], "--min-feature"),
+        (&["fill", "--layers", "size-bands:2", "-o", "x.gcode"], "--layers"),
+        (&["line", "--hatch", "1", "-o", "x.svg"], "--hatch"),
+        (&["line", "--page", "a4", "-o", "x.png"], "--page"),
+        (&["line", "--passes", "2", "-o", "x.json"], "--passes"),
+        (&["line", "--page", "a4", "-o", "x.gcode"], "--page"),
+        (&["line", "--render", "dashes", "--hatch", "1", "-o", "x.gcode"], "--hatch"),
+        (&["territory", "--points", "300", "--feed", "900", "-o", "x.svg"], "--feed"),
+    ];
+    for (args, flag) in cases {
+        let out = args.last().copied().unwrap_or_default();
+        std::fs::write(d.join(out), b"keep").unwrap_or_else(|e| panic!("{e}"));
+        let mut a = args.to_vec();
+        a.extend_from_slice(&["--count", "20"][..if args[0] == "territory" { 0 } else { 2 }]);
+        let o = zf(d, &a);
+        assert_eq!(o.code, 2, "{args:?}: {}", o.stderr);
+        assert!(names_flag(&o.stderr, flag), "{args:?}: {}", o.stderr);
+        assert_eq!(read(&d.join(out)), b"keep", "{args:?} touched the file");
+    }
+    // The same flags where they apply.
+    zf_ok(
+        d,
+        &["fill", "--count", "20", "--hatch", "1", "--min-feature", "0.5", "-o", "ok.svg"],
+    );
+    zf_ok(d, &["fill", "--count", "20", "--hatch", "1", "-o", "ok.png"]);
+    zf_ok(
+        d,
+        &[
+            "line",
+            "--count",
+            "20",
+            "--hatch",
+            "1",
+            "--power",
+            "300",
+            "--machine",
+            "grbl-laser",
+            "-o",
+            "ok.gcode",
+        ],
+    );
 }

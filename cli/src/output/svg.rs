@@ -37,6 +37,8 @@ pub struct SvgOptions {
     pub page: Option<PageLayout>,
     /// `Some(K)`: the shapes in K Inkscape layers by size, largest first (`--layers`).
     pub layers: Option<u32>,
+    /// Hatching, outlines left out (`--hatch-only`), shapes narrower than the pen left out.
+    pub build: crate::plot::BuildOptions,
 }
 
 /// Where the drawing goes on a page: page point = `scale * p + (dx, dy)` for a region point
@@ -139,7 +141,15 @@ fn plot_d(paths: &[crate::plot::Path], f: &Frame) -> String {
 
 /// A periodic image cut exactly to the tile (for plotter tools that ignore `clip-path`):
 /// `None` when the image lies inside the tile and is drawn as it is.
-fn clipped_node(sh: &ShapeDoc, dx: f64, dy: f64, w: f64, h: f64, f: &Frame) -> Option<Option<svg::node::element::Element>> {
+fn clipped_node(
+    sh: &ShapeDoc,
+    dx: f64,
+    dy: f64,
+    w: f64,
+    h: f64,
+    f: &Frame,
+    min_feature: f64,
+) -> Option<Option<svg::node::element::Element>> {
     use crate::plot::{clip_path, Bounds, Path as P2};
     let tile = Bounds {
         x0: 0.0,
@@ -160,7 +170,10 @@ fn clipped_node(sh: &ShapeDoc, dx: f64, dy: f64, w: f64, h: f64, f: &Frame) -> O
     }
     let c = [sh.center[0] + dx, sh.center[1] + dy];
     let outlines: Vec<P2> = match (sh.radius, sh.inner_radius) {
-        (Some(r), inner) => std::iter::once(r).chain(inner).map(|r| P2::circle(c, r)).collect(),
+        (Some(r), inner) => std::iter::once(r)
+            .chain(hole(inner, min_feature))
+            .map(|r| P2::circle(c, r))
+            .collect(),
         _ => vec![P2::polyline(
             sh.vertices
                 .as_deref()
@@ -176,9 +189,46 @@ fn clipped_node(sh: &ShapeDoc, dx: f64, dy: f64, w: f64, h: f64, f: &Frame) -> O
     Some((!d.is_empty()).then(|| Path::new().set("d", d).into()))
 }
 
-fn shape_node(sh: &ShapeDoc, dx: f64, dy: f64, f: &Frame) -> Option<svg::node::element::Element> {
+/// A ring's hole, unless it is narrower than `min_feature` (then the ring is drawn as a disc,
+/// as the G-code does).
+fn hole(inner: Option<f64>, min_feature: f64) -> Option<f64> {
+    inner.filter(|&ri| ri > 0.0 && 2.0 * ri >= min_feature)
+}
+
+/// The hatch lines of one image of a shape as one path (cut to the `w` x `h` tile when
+/// `tile`), or none when no line crosses it.
+fn hatch_node(
+    sh: &ShapeDoc,
+    off: (f64, f64),
+    opt: &SvgOptions,
+    tile: Option<(f64, f64)>,
+    f: &Frame,
+) -> Option<svg::node::element::Element> {
+    use crate::plot::{clip_path, Bounds, Path as P2};
+    let h = opt.build.hatch?;
+    let lines = h
+        .shape(sh, off, opt.build.min_feature)
+        .into_iter()
+        .map(|[a, b]| P2::polyline(vec![a, b], false));
+    let paths: Vec<P2> = match tile {
+        Some((w, h)) => {
+            let t = Bounds {
+                x0: 0.0,
+                y0: 0.0,
+                x1: w,
+                y1: h,
+            };
+            lines.flat_map(|p| clip_path(&p, &t)).collect()
+        }
+        None => lines.collect(),
+    };
+    let d = plot_d(&paths, f);
+    (!d.is_empty()).then(|| Path::new().set("class", "hatch").set("d", d).into())
+}
+
+fn shape_node(sh: &ShapeDoc, dx: f64, dy: f64, f: &Frame, min_feature: f64) -> Option<svg::node::element::Element> {
     let (cx, cy) = (sh.center[0] + dx, sh.center[1] + dy);
-    match (sh.radius, sh.inner_radius) {
+    match (sh.radius, hole(sh.inner_radius, min_feature)) {
         (Some(r), Some(inner)) => {
             let d = format!("{} {}", circle_d(f, cx, cy, r), circle_d(f, cx, cy, inner));
             return Some(Path::new().set("d", d).set("fill-rule", "evenodd").into());
@@ -386,14 +436,26 @@ pub fn render(doc: &FillDoc, opt: &SvgOptions) -> Vec<u8> {
     // Plotter output (a page or layers) of a periodic outline fill: images cut exactly to the
     // tile, since vpype and plotter drivers ignore clip-path. Otherwise a clip-path.
     let geometric_clip = periodic && opt.style == Style::Outline && (opt.page.is_some() || opt.layers.is_some());
+    let min_feature = opt.build.min_feature;
     for (sh, &band) in doc.shapes.iter().zip(&bands) {
+        if min_feature > 0.0 && crate::plot::shape_width(sh) < min_feature {
+            continue;
+        }
         let offs = if periodic { images(sh, w, h) } else { vec![(0.0, 0.0)] };
         for (dx, dy) in offs {
-            let node = match geometric_clip.then(|| clipped_node(sh, dx, dy, w, h, &frame)).flatten() {
-                Some(clipped) => clipped,
-                None => shape_node(sh, dx, dy, &frame),
+            let outline = if opt.build.no_outline {
+                None
+            } else {
+                match geometric_clip
+                    .then(|| clipped_node(sh, dx, dy, w, h, &frame, min_feature))
+                    .flatten()
+                {
+                    Some(clipped) => clipped,
+                    None => shape_node(sh, dx, dy, &frame, min_feature),
+                }
             };
-            if let Some(n) = node {
+            let hatch = hatch_node(sh, (dx, dy), opt, geometric_clip.then_some((w, h)), &frame);
+            for n in outline.into_iter().chain(hatch) {
                 let g = std::mem::take(&mut groups[band]);
                 groups[band] = g.add(n);
             }

@@ -899,9 +899,10 @@ fn finite(s: &str) -> Result<f64, String> {
 /// The plotter and laser flags of `zetafill fill` (and of any mode that draws lines).
 #[derive(Debug, Clone, Args)]
 pub struct PlotArgs {
-    /// G-code: machine profile, a built-in name (see `zetafill machines`) or a FILE.toml.
-    #[arg(long, default_value = "grbl-servo-pen", help_heading = "Plotters and lasers")]
-    pub machine: String,
+    /// G-code: machine profile, a built-in name (see `zetafill machines`) or a FILE.toml
+    /// [default: grbl-servo-pen].
+    #[arg(long, help_heading = "Plotters and lasers")]
+    pub machine: Option<String>,
     /// G-code: drawing feed in mm/min (default: the profile's).
     #[arg(long, value_parser = finite, allow_negative_numbers = true, help_heading = "Plotters and lasers")]
     pub feed: Option<f64>,
@@ -911,27 +912,28 @@ pub struct PlotArgs {
     /// G-code: laser power (S value) within the profile's range.
     #[arg(long, value_parser = finite, allow_negative_numbers = true, help_heading = "Plotters and lasers")]
     pub power: Option<f64>,
-    /// G-code: draw everything this many times (laser cutting).
-    #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=100), help_heading = "Plotters and lasers")]
-    pub passes: u32,
+    /// G-code: draw everything this many times (laser cutting) [default: 1].
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=100), help_heading = "Plotters and lasers")]
+    pub passes: Option<u32>,
     /// G-code: circles as G2/G3 arcs (default: if the profile allows them).
     #[arg(long, overrides_with = "no_arcs", help_heading = "Plotters and lasers")]
     pub arcs: bool,
     /// G-code: circles as polylines within --chord-tolerance.
     #[arg(long = "no-arcs", overrides_with = "arcs", help_heading = "Plotters and lasers")]
     pub no_arcs: bool,
-    /// G-code: largest distance between a circle and the chords that replace it (mm).
-    #[arg(long = "chord-tolerance", default_value_t = 0.01, value_parser = positive, help_heading = "Plotters and lasers")]
-    pub chord_tolerance: f64,
+    /// G-code: largest distance between a circle and the chords that replace it (mm)
+    /// [default: 0.01].
+    #[arg(long = "chord-tolerance", value_parser = positive, help_heading = "Plotters and lasers")]
+    pub chord_tolerance: Option<f64>,
     /// Hatch every shape: SPACING[:ANGLE] in mm and degrees (default angle 45).
     #[arg(long, allow_hyphen_values = true, help_heading = "Plotters and lasers")]
     pub hatch: Option<String>,
     /// With --hatch: hatch lines only, no outlines.
     #[arg(long = "hatch-only", requires = "hatch", help_heading = "Plotters and lasers")]
     pub hatch_only: bool,
-    /// G-code: path order.
-    #[arg(long, value_enum, default_value = "improved", help_heading = "Plotters and lasers")]
-    pub order: OrderArg,
+    /// G-code: path order [default: improved].
+    #[arg(long, value_enum, help_heading = "Plotters and lasers")]
+    pub order: Option<OrderArg>,
     /// Leave out shapes (and ring holes) narrower than MM: the pen's or beam's width.
     #[arg(long = "min-feature", default_value_t = 0.0, value_parser = non_negative, allow_negative_numbers = true, help_heading = "Plotters and lasers")]
     pub min_feature: f64,
@@ -952,7 +954,89 @@ pub struct PlotArgs {
     pub layers: Layers,
 }
 
+/// The machine profile used when `--machine` is not given.
+pub const DEFAULT_MACHINE: &str = "grbl-servo-pen";
+
+/// The plot flags that only G-code output reads.
+pub const GCODE_FLAGS: [&str; 9] = [
+    "--machine",
+    "--feed",
+    "--travel-feed",
+    "--power",
+    "--passes",
+    "--arcs",
+    "--no-arcs",
+    "--chord-tolerance",
+    "--order",
+];
+
+/// The plot flags that a fill's SVG (and PNG) reads.
+pub const SVG_FLAGS: [&str; 8] = [
+    "--hatch",
+    "--hatch-only",
+    "--min-feature",
+    "--page",
+    "--margin",
+    "--layers",
+    "--fit",
+    "--center",
+];
+
+/// What to write instead, for a flag that only G-code output reads.
+pub const FOR_GCODE: &str = "is for G-code output (write .gcode or .nc, or give --format gcode)";
+
 impl PlotArgs {
+    /// The plot flags given on the command line, in the order of `--help`. (`--min-feature 0`
+    /// and `--layers none` change nothing and do not count.)
+    pub fn given(&self) -> Vec<&'static str> {
+        let flags = [
+            ("--machine", self.machine.is_some()),
+            ("--feed", self.feed.is_some()),
+            ("--travel-feed", self.travel_feed.is_some()),
+            ("--power", self.power.is_some()),
+            ("--passes", self.passes.is_some()),
+            ("--arcs", self.arcs),
+            ("--no-arcs", self.no_arcs),
+            ("--chord-tolerance", self.chord_tolerance.is_some()),
+            ("--hatch", self.hatch.is_some()),
+            ("--hatch-only", self.hatch_only),
+            ("--order", self.order.is_some()),
+            ("--min-feature", self.min_feature > 0.0),
+            ("--fit", self.fit),
+            ("--center", self.center),
+            ("--page", self.page.is_some()),
+            ("--margin", self.margin.is_some()),
+            ("--layers", self.layers != Layers::None),
+        ];
+        flags.into_iter().filter(|&(_, on)| on).map(|(f, _)| f).collect()
+    }
+
+    /// Refuses the first plot flag given that is not in `allowed` (exit 2), with the flag
+    /// named and `why` (given the flag) as the reason.
+    pub fn refuse_except(&self, allowed: &[&str], why: impl Fn(&str) -> String) -> Result<(), CliError> {
+        match self.given().into_iter().find(|f| !allowed.contains(f)) {
+            Some(f) => Err(CliError::arg(f, why(f))),
+            None => Ok(()),
+        }
+    }
+
+    /// The checks of G-code output common to every command that writes it: the profile
+    /// loads and every override fits it; pages and layers are refused (they are for SVG).
+    pub fn check_gcode(&self) -> Result<(), CliError> {
+        let m = self.machine()?;
+        self.gcode_options(&m)?;
+        if self.page.is_some() {
+            return Err(CliError::arg("--page", "pages are for SVG; G-code uses the machine's bed"));
+        }
+        if self.layers != Layers::None {
+            return Err(CliError::arg(
+                "--layers",
+                "layers are for SVG (one pen per layer); G-code draws one layer",
+            ));
+        }
+        Ok(())
+    }
+
     /// The hatch, if asked for (exit 2 naming --hatch when malformed).
     pub fn hatch(&self) -> Result<Option<hatch::Hatch>, CliError> {
         self.hatch
@@ -984,7 +1068,7 @@ impl PlotArgs {
 
     /// The machine with every command-line override applied and checked.
     pub fn machine(&self) -> Result<machine::Machine, CliError> {
-        machine::Machine::load(&self.machine).map_err(|e| CliError::arg("--machine", e))
+        machine::Machine::load(self.machine.as_deref().unwrap_or(DEFAULT_MACHINE)).map_err(|e| CliError::arg("--machine", e))
     }
 
     /// The G-code options for `m`, every override checked against the profile.
@@ -1017,7 +1101,7 @@ impl PlotArgs {
             }
             o.power = Some(p);
         }
-        o.passes = self.passes;
+        o.passes = self.passes.unwrap_or(1);
         o.arcs = if self.arcs {
             if !m.arcs {
                 return Err(CliError::arg(
@@ -1031,45 +1115,33 @@ impl PlotArgs {
         } else {
             m.arcs
         };
-        o.chord_tolerance = self.chord_tolerance;
-        o.order = self.order;
+        o.chord_tolerance = self.chord_tolerance.unwrap_or(o.chord_tolerance);
+        o.order = self.order.unwrap_or(o.order);
         o.margin = self.margin.unwrap_or(0.0);
         Ok(o)
     }
 
-    /// Checks every flag that can be checked before the fill runs, for `format`.
+    /// Checks every flag that can be checked before the fill runs, for `format`: each plot
+    /// flag given must be one that `format` reads.
     pub fn check(&self, format: crate::output::Format) -> Result<(), CliError> {
         use crate::output::Format;
         self.build_options()?;
         match format {
-            Format::Gcode => {
-                let m = self.machine()?;
-                self.gcode_options(&m)?;
-                if self.page.is_some() {
-                    return Err(CliError::arg("--page", "pages are for SVG; G-code uses the machine's bed"));
-                }
-                if self.layers != Layers::None {
+            Format::Gcode => self.check_gcode()?,
+            Format::Svg | Format::Png => {
+                self.refuse_except(&SVG_FLAGS, |_| FOR_GCODE.to_string())?;
+                if (self.fit || self.center) && self.page.is_none() {
+                    let flag = if self.fit { "--fit" } else { "--center" };
                     return Err(CliError::arg(
-                        "--layers",
-                        "layers are for SVG (one pen per layer); G-code draws one layer",
+                        flag,
+                        "for SVG it needs --page (without a page the drawing is the region itself)",
                     ));
                 }
             }
-            Format::Svg | Format::Png if self.hatch.is_some() || self.min_feature > 0.0 => {
-                let flag = if self.hatch.is_some() { "--hatch" } else { "--min-feature" };
-                return Err(CliError::arg(
-                    flag,
-                    "is for G-code output (write .gcode or .nc, or give --format gcode)",
-                ));
+            other => {
+                let name = clap::ValueEnum::to_possible_value(&other).map_or_else(String::new, |v| v.get_name().to_string());
+                self.refuse_except(&[], |_| format!("is for drawings (svg, png, gcode), not {name} output"))?
             }
-            Format::Svg | Format::Png if (self.fit || self.center) && self.page.is_none() => {
-                let flag = if self.fit { "--fit" } else { "--center" };
-                return Err(CliError::arg(
-                    flag,
-                    "for SVG it needs --page (without a page the drawing is the region itself)",
-                ));
-            }
-            _ => {}
         }
         Ok(())
     }
@@ -1082,6 +1154,7 @@ impl PlotArgs {
             boundary,
             page: None,
             layers: None,
+            build: self.build_options()?,
         };
         if let Layers::SizeBands(k) = self.layers {
             o.layers = Some(k);
@@ -1152,8 +1225,8 @@ pub fn drawing_gcode(drawing: &Drawing, frame: &Bounds, a: &PlotArgs, header: Ve
     opts.header.push(format!(
         "plot: machine {} order {:?} passes {} hatch {} min-feature {} scale {} shift {} {}",
         m.name,
-        a.order,
-        a.passes,
+        opts.order,
+        opts.passes,
         a.hatch.as_deref().unwrap_or("none"),
         a.min_feature,
         pl.scale,

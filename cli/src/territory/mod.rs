@@ -161,6 +161,8 @@ fn check_plot(a: &TerritoryArgs, format: TerritoryFormat) -> Result<(), CliError
             if p.fit { "--fit" } else { "--center" },
             "places the drawing on a machine's bed: it is for G-code output",
         ));
+    } else {
+        p.refuse_except(&[], |_| crate::plot::FOR_GCODE.to_string())?;
     }
     Ok(())
 }

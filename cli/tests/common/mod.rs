@@ -634,3 +634,27 @@ pub fn names_flag(text: &str, flag: &str) -> bool {
         !next.is_some_and(|ch| ch.is_ascii_alphanumeric() || ch == '-' || ch == '_')
     })
 }
+
+/// A fill of 120 rings for hatching tests. The drawing, not the sampler, is under test: the
+/// paper's sampler with this seed places all 120 (with N = 1 the first ring often leaves no
+/// room for the second).
+pub const RINGS: [&str; 10] = [
+    "--region",
+    "rect:120:120",
+    "--shape",
+    "ring:0.5",
+    "--count",
+    "120",
+    "--seed",
+    "13",
+    "--sampler",
+    "reference",
+];
+
+/// The rings of a fill document as (centre, outer radius, inner radius).
+pub fn rings(doc: &Value) -> Vec<([f64; 2], f64, f64)> {
+    shapes(doc)
+        .iter()
+        .map(|s| (pt(s.get("center").unwrap_or(&Value::Null)), f(s, "radius"), f(s, "inner_radius")))
+        .collect()
+}

@@ -203,6 +203,8 @@ struct Next<S> {
     base_r: S,
     rotated: bool,
     is_blob: bool,
+    /// The radius of the inscribed disc at the base scale ([`ShapeKind::solid_radius`]).
+    base_solid: Option<S>,
     /// The centre range (x0, x1, y0, y1).
     range: (S, S, S, S),
 }
@@ -376,7 +378,7 @@ impl<'a, S: Scalar> Engine<'a, S> {
     /// shape hit among those stored at the finest level where any is hit (a bucket may also
     /// list shapes of other levels; they are named at their own level). Otherwise the first
     /// one found.
-    fn blocker(&self, g: &Geo<S>, x: S, y: S, r: S, lowest: bool) -> Option<u32> {
+    fn blocker(&self, g: &Geo<S>, x: S, y: S, (r, solid): (S, Option<S>), lowest: bool) -> Option<u32> {
         let hit: core::cell::Cell<Option<u32>> = core::cell::Cell::new(None);
         let total = self.len as u32;
         let circle = matches!(g, Geo::Circle { .. });
@@ -390,9 +392,11 @@ impl<'a, S: Scalar> Engine<'a, S> {
                     let pr = kind.bounding_radius(p.scale);
                     let lim = r + pr + gap;
                     let (dx, dy) = (p.x - qx, p.y - qy);
-                    // Two circles within reach overlap: no geometry to build.
-                    let ok = dx * dx + dy * dy > lim * lim
-                        || (!(circle && kind == ShapeKind::Circle)
+                    let d2 = dx * dx + dy * dy;
+                    // Two circles within reach overlap, and so do two shapes whose inscribed
+                    // discs meet: no geometry to build.
+                    let ok = d2 > lim * lim
+                        || (!((circle && kind == ShapeKind::Circle) || self.solids_meet(d2, solid, kind, p.scale))
                             && separated(gi, &kind.geo(Point::new(p.x, p.y), p.scale, p.angle), gap));
                     if !ok && (!lowest || self.hash.level_for(pr) == level) {
                         hit.set(Some(hit.get().map_or(j, |h| h.min(j))));
@@ -435,19 +439,33 @@ impl<'a, S: Scalar> Engine<'a, S> {
     /// Whether `g` (centred at `c`, bounding radius `r`) comes within the gap of placed shape
     /// `j` (of its image nearest by centre, in a periodic region): the exact test of
     /// [`Engine::blocker`] for one shape.
-    fn hits(&self, g: &Geo<S>, c: Point<S>, r: S, j: u32) -> bool {
+    fn hits(&self, g: &Geo<S>, c: Point<S>, (r, solid): (S, Option<S>), j: u32) -> bool {
         let Some(p) = self.shapes.get(j as usize) else { return false };
         let kind = self.kind_of(u64::from(j));
         let ((ox, oy), (dx, dy)) = self.nearest_image(p, c);
         let lim = r + kind.bounding_radius(p.scale) + self.gap;
-        if dx * dx + dy * dy > lim * lim {
+        let d2 = dx * dx + dy * dy;
+        if d2 > lim * lim {
             return false;
         }
-        if kind == ShapeKind::Circle && matches!(g, Geo::Circle { .. }) {
+        if (kind == ShapeKind::Circle && matches!(g, Geo::Circle { .. })) || self.solids_meet(d2, solid, kind, p.scale) {
             return true;
         }
         let other = kind.geo(Point::new(p.x + ox, p.y + oy), p.scale, p.angle);
         !separated(g, &other, self.gap)
+    }
+
+    /// Whether a shape whose inscribed disc has radius `solid` comes within the gap of a
+    /// shape of `kind` at `scale` whose centre is `sqrt(d2)` away, judged by their inscribed
+    /// discs alone: true only when those discs come within the gap by a margin far above any
+    /// rounding of the exact test, so the answer never differs from it. False when either
+    /// shape has no inscribed disc about its centre (a ring).
+    fn solids_meet(&self, d2: S, solid: Option<S>, kind: ShapeKind, scale: S) -> bool {
+        let (Some(a), Some(b)) = (solid, kind.solid_radius(scale)) else {
+            return false;
+        };
+        let lim = (a + b + self.gap) * S::from_f64(1.0 - 1e-6) - S::from_f64(1e-9);
+        lim > S::ZERO && d2 < lim * lim
     }
 
     /// Whether a circle of radius `r` at `c` comes within the gap of placed shape `j` when
@@ -616,6 +634,7 @@ impl<'a, S: Scalar> Engine<'a, S> {
             base_r: kind.bounding_radius(base_scale),
             rotated,
             is_blob,
+            base_solid: kind.solid_radius(base_scale),
             range,
         })
     }
@@ -635,14 +654,20 @@ impl<'a, S: Scalar> Engine<'a, S> {
                 return Err(Some(j));
             }
         }
-        let (scale, r, g) = if nx.is_blob {
+        let (scale, r, solid, g) = if nx.is_blob {
             let s: S = kind.scale_for(nx.area, angle);
-            (s, kind.bounding_radius(s), kind.geo(c, s, angle))
+            (s, kind.bounding_radius(s), kind.solid_radius(s), kind.geo(c, s, angle))
         } else {
             let (sin, cos) = if nx.rotated { ShapeKind::sin_cos(angle) } else { (S::ZERO, S::ONE) };
-            (nx.base_scale, nx.base_r, kind.geo_sc(c, nx.base_scale, sin, cos))
+            (nx.base_scale, nx.base_r, nx.base_solid, kind.geo_sc(c, nx.base_scale, sin, cos))
         };
-        if let Some(&j) = known.unwrap_or(&[]).iter().find(|&&j| self.hits(&g, c, r, j)) {
+        // (Known circles were tested above for a circle.)
+        let tested = |j: u32| kind == ShapeKind::Circle && self.kind_of(u64::from(j)) == ShapeKind::Circle;
+        if let Some(&j) = known
+            .unwrap_or(&[])
+            .iter()
+            .find(|&&j| !tested(j) && self.hits(&g, c, (r, solid), j))
+        {
             return Err(Some(j));
         }
         if !self.region.contains(&g, self.gap) {
@@ -652,7 +677,7 @@ impl<'a, S: Scalar> Engine<'a, S> {
         if period.is_some() && self.self_overlaps(&g, r) {
             return Err(None);
         }
-        if let Some(j) = self.blocker(&g, c.x, c.y, r, known.is_some()) {
+        if let Some(j) = self.blocker(&g, c.x, c.y, (r, solid), known.is_some()) {
             return Err(Some(j));
         }
         let i = self.len;

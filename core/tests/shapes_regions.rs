@@ -142,6 +142,67 @@ fn pair_table_every_kind_against_every_kind() {
     assert!(rows >= 36, "only {rows} near configurations exercised");
 }
 
+/// Whether every point at distance `rho` from the centre of `kind` (area `area`, angle
+/// `angle`), in 720 directions, lies in its material (the independent membership test).
+fn disc_inside(kind: ShapeKind, area: f64, angle: f64, rho: f64) -> bool {
+    let g = at(kind, 0.0, 0.0, area, angle);
+    (0..720).all(|k| {
+        let t = k as f64 * std::f64::consts::TAU / 720.0;
+        in_material(Point::new(rho * t.cos(), rho * t.sin()), &g)
+    })
+}
+
+/// The engine decides that two shapes meet, without building them, when their inscribed
+/// discs (`ShapeKind::solid_radius`) come within the gap by a relative margin of 1e-6. That
+/// is sound only if each disc lies inside its shape, which this checks against the
+/// independent membership test over random sizes and angles; and two shapes whose centres
+/// sit just inside the margin must not be `separated`. Circles, squares and rectangles have
+/// such a disc; the check fails for discs 1% too large.
+#[test]
+fn inscribed_discs_lie_inside_their_shapes() {
+    let mut rng = rng_from_seed(77);
+    let mut unit = || zetafill::rng::unit::<f64, _>(&mut rng);
+    for &kind in &KINDS {
+        let Some(_) = kind.solid_radius(1.0f64) else {
+            assert!(
+                !matches!(kind, ShapeKind::Circle | ShapeKind::Square | ShapeKind::Rect { .. }),
+                "{kind:?} has an inscribed disc"
+            );
+            continue;
+        };
+        let mut too_big = 0;
+        for _ in 0..40 {
+            let (area, angle) = (0.5 + 20.0 * unit(), std::f64::consts::TAU * unit());
+            let scale: f64 = kind.scale_for(area, angle);
+            let solid = kind.solid_radius(scale).unwrap_or(0.0);
+            assert!(
+                disc_inside(kind, area, angle, solid * (1.0 - 1e-6)),
+                "{kind:?} at area {area}, angle {angle}"
+            );
+            if !disc_inside(kind, area, angle, solid * 1.01) {
+                too_big += 1;
+            }
+        }
+        assert!(too_big > 0, "{kind:?}: a 1% larger disc is never caught");
+    }
+    for &ka in &KINDS {
+        for &kb in &KINDS {
+            for _ in 0..20 {
+                let (aa, ab, ta, tb) = (1.0 + 10.0 * unit(), 1.0 + 10.0 * unit(), 6.3 * unit(), 6.3 * unit());
+                let (sa, sb): (f64, f64) = (ka.scale_for(aa, ta), kb.scale_for(ab, tb));
+                let (Some(ra), Some(rb)) = (ka.solid_radius(sa), kb.solid_radius(sb)) else {
+                    continue;
+                };
+                let gap = if unit() < 0.5 { 0.0 } else { unit() };
+                let d = (ra + rb + gap) * (1.0 - 1e-6) - 1e-9;
+                let dir = 6.3 * unit();
+                let (a, b) = (at(ka, 0.0, 0.0, aa, ta), at(kb, d * dir.cos(), d * dir.sin(), ab, tb));
+                assert!(!separated(&a, &b, gap), "{ka:?} / {kb:?}: inscribed discs meet, shapes do not");
+            }
+        }
+    }
+}
+
 #[test]
 fn every_kind_nests_in_a_ring_hole() {
     let ring = at(ShapeKind::Ring { inner: 0.8 }, 0.0, 0.0, 100.0, 0.0);

@@ -275,6 +275,18 @@ impl ShapeKind {
         scale * S::from_f64(f)
     }
 
+    /// The radius of a disc about the centre that lies inside the shape's material (its
+    /// inscribed disc, see [`ShapeKind::inradius`]), for the kinds where it is tight and
+    /// cheap: circles, squares and rectangles. None for the others (a ring's centre is in its
+    /// hole; the other kinds' discs take trigonometry to compute, and a star's or a blob's is
+    /// loose).
+    pub fn solid_radius<S: Scalar>(&self, scale: S) -> Option<S> {
+        match self {
+            ShapeKind::Circle | ShapeKind::Square | ShapeKind::Rect { .. } => Some(self.inradius(scale)),
+            _ => None,
+        }
+    }
+
     /// The narrowest width of the shape (what `--min-size` compares against): a ring's band,
     /// otherwise twice the inscribed radius.
     pub fn min_width(&self, scale: f64) -> f64 {

@@ -134,7 +134,11 @@ fn main() {
             from_fill(
                 &fill(&["--shape", "square", "--count", "2000"]),
                 &BuildOptions {
-                    hatch: Some(Hatch { spacing: 0.5, angle: 45.0 }),
+                    hatch: Some(Hatch {
+                        spacing: 0.5,
+                        angle: 45.0,
+                        cross: false,
+                    }),
                     ..BuildOptions::default()
                 },
             )

@@ -340,6 +340,31 @@ fn svg_hatch_fills_each_shape_it_keeps() {
     }
     let area: f64 = rings.iter().map(|(_, ro, ri)| std::f64::consts::PI * (ro * ro - ri * ri)).sum();
     assert!(rel(length * spacing, area) < 0.02, "hatched {} mm^2 of {area}", length * spacing);
+    // Cross-hatching: the same lines, and as much again at right angles (110 degrees).
+    let crossed = fill_to(
+        d,
+        "x.svg",
+        &[
+            &base[..],
+            &["--hatch", "0.4:20", "--cross-hatch", "--hatch-only", "--min-feature", "4"],
+        ]
+        .concat(),
+    );
+    let mut both = Vec::new();
+    line_pieces(tree(&crossed).root(), 120.0, &mut both);
+    let family = |deg: f64| -> (usize, f64) {
+        let (sin, cos) = deg.to_radians().sin_cos();
+        let on: Vec<f64> = both
+            .iter()
+            .map(|s| (s[1][0] - s[0][0], s[1][1] - s[0][1]))
+            .filter(|(dx, dy)| (dx * sin - dy * cos).abs() < 1e-3 * dx.hypot(*dy))
+            .map(|(dx, dy)| dx.hypot(dy))
+            .collect();
+        (on.len(), on.iter().sum())
+    };
+    let ((n20, l20), (n110, l110)) = (family(20.0), family(110.0));
+    assert_eq!((n20, n20 + n110), (segs.len(), both.len()), "two families, the first unchanged");
+    assert!(rel(l110 * spacing, area) < 0.02 && rel(l20, length) < 1e-6, "{l20} {l110}");
     // With outlines: one circle element per ring (and per drawn hole) besides the hatch.
     let text = String::from_utf8_lossy(&fill_to(
         d,

@@ -15,6 +15,8 @@ pub struct Hatch {
     pub spacing: f64,
     /// Direction of the lines in degrees counter-clockwise from +x.
     pub angle: f64,
+    /// Cross-hatching: a second family of lines at right angles to the first.
+    pub cross: bool,
 }
 
 impl Hatch {
@@ -43,7 +45,21 @@ impl Hatch {
                 .ok_or_else(|| format!("'{a}' is not an angle in degrees"))?,
             None => 45.0,
         };
-        Ok(Hatch { spacing, angle })
+        Ok(Hatch {
+            spacing,
+            angle,
+            cross: false,
+        })
+    }
+
+    /// The families of parallel lines: the angle, and with `cross` the angle plus 90 degrees.
+    fn families(&self) -> impl Iterator<Item = Hatch> {
+        let one = Hatch { cross: false, ..*self };
+        let two = self.cross.then_some(Hatch {
+            angle: self.angle + 90.0,
+            ..one
+        });
+        std::iter::once(one).chain(two)
     }
 
     /// Unit direction of the lines and their normal.
@@ -83,6 +99,16 @@ impl Hatch {
 
     /// Hatch of a disc (`inner = 0`) or an annulus.
     pub fn annulus(&self, c: Pt, r: f64, inner: f64) -> Vec<[Pt; 2]> {
+        self.families().flat_map(|h| h.annulus_one(c, r, inner)).collect()
+    }
+
+    /// Hatch of a simple polygon (either orientation; even-odd rule).
+    pub fn polygon(&self, vs: &[Pt]) -> Vec<[Pt; 2]> {
+        self.families().flat_map(|h| h.polygon_one(vs)).collect()
+    }
+
+    /// One family's lines across a disc or an annulus.
+    fn annulus_one(&self, c: Pt, r: f64, inner: f64) -> Vec<[Pt; 2]> {
         let (u, n) = self.frame();
         let vc = c[0] * n[0] + c[1] * n[1];
         let mut out = Vec::new();
@@ -107,8 +133,8 @@ impl Hatch {
         out
     }
 
-    /// Hatch of a simple polygon (either orientation; even-odd rule).
-    pub fn polygon(&self, vs: &[Pt]) -> Vec<[Pt; 2]> {
+    /// One family's lines across a simple polygon.
+    fn polygon_one(&self, vs: &[Pt]) -> Vec<[Pt; 2]> {
         let m = vs.len();
         if m < 3 {
             return vec![];
@@ -155,8 +181,13 @@ mod tests {
 
     #[test]
     fn parse_and_refuse() {
-        assert_eq!(Hatch::parse("0.5"), Ok(Hatch { spacing: 0.5, angle: 45.0 }));
-        assert_eq!(Hatch::parse("1:0"), Ok(Hatch { spacing: 1.0, angle: 0.0 }));
+        let h = |spacing, angle| Hatch {
+            spacing,
+            angle,
+            cross: false,
+        };
+        assert_eq!(Hatch::parse("0.5"), Ok(h(0.5, 45.0)));
+        assert_eq!(Hatch::parse("1:0"), Ok(h(1.0, 0.0)));
         for bad in ["0", "-1", "nan", "x", "1:y", "inf"] {
             assert!(Hatch::parse(bad).is_err(), "{bad}");
         }
@@ -167,6 +198,7 @@ mod tests {
         let h = Hatch {
             spacing: 0.25,
             angle: 30.0,
+            cross: false,
         };
         let (c, r) = ([3.0, 4.0], 2.0);
         let segs = h.annulus(c, r, 0.0);
@@ -183,7 +215,11 @@ mod tests {
 
     #[test]
     fn ring_hatch_stays_out_of_the_hole() {
-        let h = Hatch { spacing: 0.1, angle: 0.0 };
+        let h = Hatch {
+            spacing: 0.1,
+            angle: 0.0,
+            cross: false,
+        };
         for s in h.annulus([0.0, 0.0], 2.0, 1.0) {
             let mid = [(s[0][0] + s[1][0]) / 2.0, (s[0][1] + s[1][1]) / 2.0];
             let d = mid[0].hypot(mid[1]);
@@ -196,10 +232,37 @@ mod tests {
     }
 
     #[test]
+    fn cross_hatch_adds_the_perpendicular_family() {
+        let one = Hatch {
+            spacing: 0.2,
+            angle: 15.0,
+            cross: false,
+        };
+        let both = Hatch { cross: true, ..one };
+        let vs = [[0.0, 0.0], [3.0, 0.0], [3.0, 2.0], [0.0, 2.0]];
+        let (a, b) = (one.polygon(&vs), both.polygon(&vs));
+        assert_eq!(&b[..a.len()], &a[..], "the first family is unchanged");
+        let dir = |s: &[Pt; 2]| (s[1][1] - s[0][1]).atan2(s[1][0] - s[0][0]).to_degrees().rem_euclid(180.0);
+        assert!(
+            b[a.len()..].iter().all(|s| (dir(s) - 105.0).abs() < 1e-9),
+            "the second at 105 degrees"
+        );
+        let area = |segs: &[[Pt; 2]]| segs.iter().map(len).sum::<f64>() * 0.2;
+        assert!((area(&b[a.len()..]) - 6.0).abs() < 0.3 && (area(&a) - 6.0).abs() < 0.3);
+        let disc = both.annulus([0.0, 0.0], 3.0, 0.0);
+        let hatched = disc.iter().map(len).sum::<f64>() * 0.2;
+        assert!((hatched - 2.0 * 9.0 * std::f64::consts::PI).abs() < 0.5, "{hatched}");
+    }
+
+    #[test]
     fn star_hatch_is_inside_by_even_odd() {
         // A concave arrow: hatch lines split where the notch cuts them.
         let vs = [[0.0, 0.0], [4.0, 0.0], [4.0, 4.0], [2.0, 1.0], [0.0, 4.0]];
-        let h = Hatch { spacing: 0.5, angle: 0.0 };
+        let h = Hatch {
+            spacing: 0.5,
+            angle: 0.0,
+            cross: false,
+        };
         let segs = h.polygon(&vs);
         let at = |y: f64| segs.iter().filter(|s| s[0][1] == y).count();
         assert_eq!(at(0.5), 1, "below the notch: one span");

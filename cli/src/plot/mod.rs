@@ -931,6 +931,9 @@ pub struct PlotArgs {
     /// With --hatch: hatch lines only, no outlines.
     #[arg(long = "hatch-only", requires = "hatch", help_heading = "Plotters and lasers")]
     pub hatch_only: bool,
+    /// With --hatch: cross-hatch, a second family of lines at right angles to the first.
+    #[arg(long = "cross-hatch", requires = "hatch", help_heading = "Plotters and lasers")]
+    pub cross_hatch: bool,
     /// G-code: path order [default: improved].
     #[arg(long, value_enum, help_heading = "Plotters and lasers")]
     pub order: Option<OrderArg>,
@@ -971,9 +974,10 @@ pub const GCODE_FLAGS: [&str; 9] = [
 ];
 
 /// The plot flags that a fill's SVG (and PNG) reads.
-pub const SVG_FLAGS: [&str; 8] = [
+pub const SVG_FLAGS: [&str; 9] = [
     "--hatch",
     "--hatch-only",
+    "--cross-hatch",
     "--min-feature",
     "--page",
     "--margin",
@@ -1000,6 +1004,7 @@ impl PlotArgs {
             ("--chord-tolerance", self.chord_tolerance.is_some()),
             ("--hatch", self.hatch.is_some()),
             ("--hatch-only", self.hatch_only),
+            ("--cross-hatch", self.cross_hatch),
             ("--order", self.order.is_some()),
             ("--min-feature", self.min_feature > 0.0),
             ("--fit", self.fit),
@@ -1043,6 +1048,12 @@ impl PlotArgs {
             .as_deref()
             .map(hatch::Hatch::parse)
             .transpose()
+            .map(|h| {
+                h.map(|h| hatch::Hatch {
+                    cross: self.cross_hatch,
+                    ..h
+                })
+            })
             .map_err(|e| CliError::arg("--hatch", e))
     }
 
@@ -1227,7 +1238,10 @@ pub fn drawing_gcode(drawing: &Drawing, frame: &Bounds, a: &PlotArgs, header: Ve
         m.name,
         opts.order,
         opts.passes,
-        a.hatch.as_deref().unwrap_or("none"),
+        match (a.hatch.as_deref(), a.cross_hatch) {
+            (Some(h), true) => format!("{h} crossed"),
+            (h, _) => h.unwrap_or("none").to_string(),
+        },
         a.min_feature,
         pl.scale,
         pl.dx,

@@ -383,8 +383,10 @@ impl<'a, S: Scalar> Engine<'a, S> {
         let total = self.len as u32;
         let circle = matches!(g, Geo::Circle { .. });
         let gap = self.gap;
+        // The neighbour's outline, rebuilt in place for each shape tested.
+        let mut other = Geo::Circle { c: Point::new(x, y), r };
         // Tests candidate `gi`, centred at (qx, qy), against every shape the hash lists.
-        let test = |level: usize, reach: S, gi: &Geo<S>, qx: S, qy: S| {
+        let mut test = |level: usize, reach: S, gi: &Geo<S>, qx: S, qy: S| {
             self.hash
                 .query(level, [qx - reach, qy - reach, qx + reach, qy + reach], total, |j| {
                     let Some(p) = self.shapes.get(j as usize) else { return true };
@@ -396,8 +398,10 @@ impl<'a, S: Scalar> Engine<'a, S> {
                     // Two circles within reach overlap, and so do two shapes whose inscribed
                     // discs meet: no geometry to build.
                     let ok = d2 > lim * lim
-                        || (!((circle && kind == ShapeKind::Circle) || self.solids_meet(d2, solid, kind, p.scale))
-                            && separated(gi, &kind.geo(Point::new(p.x, p.y), p.scale, p.angle), gap));
+                        || (!((circle && kind == ShapeKind::Circle) || self.solids_meet(d2, solid, kind, p.scale)) && {
+                            kind.geo_into(&mut other, Point::new(p.x, p.y), p.scale, p.angle);
+                            separated(gi, &other, gap)
+                        });
                     if !ok && (!lowest || self.hash.level_for(pr) == level) {
                         hit.set(Some(hit.get().map_or(j, |h| h.min(j))));
                     }
@@ -439,7 +443,7 @@ impl<'a, S: Scalar> Engine<'a, S> {
     /// Whether `g` (centred at `c`, bounding radius `r`) comes within the gap of placed shape
     /// `j` (of its image nearest by centre, in a periodic region): the exact test of
     /// [`Engine::blocker`] for one shape.
-    fn hits(&self, g: &Geo<S>, c: Point<S>, (r, solid): (S, Option<S>), j: u32) -> bool {
+    fn hits(&self, g: &Geo<S>, c: Point<S>, (r, solid): (S, Option<S>), j: u32, other: &mut Geo<S>) -> bool {
         let Some(p) = self.shapes.get(j as usize) else { return false };
         let kind = self.kind_of(u64::from(j));
         let ((ox, oy), (dx, dy)) = self.nearest_image(p, c);
@@ -451,8 +455,8 @@ impl<'a, S: Scalar> Engine<'a, S> {
         if (kind == ShapeKind::Circle && matches!(g, Geo::Circle { .. })) || self.solids_meet(d2, solid, kind, p.scale) {
             return true;
         }
-        let other = kind.geo(Point::new(p.x + ox, p.y + oy), p.scale, p.angle);
-        !separated(g, &other, self.gap)
+        kind.geo_into(other, Point::new(p.x + ox, p.y + oy), p.scale, p.angle);
+        !separated(g, other, self.gap)
     }
 
     /// Whether a shape whose inscribed disc has radius `solid` comes within the gap of a
@@ -654,19 +658,23 @@ impl<'a, S: Scalar> Engine<'a, S> {
                 return Err(Some(j));
             }
         }
-        let (scale, r, solid, g) = if nx.is_blob {
+        let mut g = Geo::Circle { c, r: nx.base_r };
+        let (scale, r, solid) = if nx.is_blob {
             let s: S = kind.scale_for(nx.area, angle);
-            (s, kind.bounding_radius(s), kind.solid_radius(s), kind.geo(c, s, angle))
+            kind.geo_into(&mut g, c, s, angle);
+            (s, kind.bounding_radius(s), kind.solid_radius(s))
         } else {
             let (sin, cos) = if nx.rotated { ShapeKind::sin_cos(angle) } else { (S::ZERO, S::ONE) };
-            (nx.base_scale, nx.base_r, nx.base_solid, kind.geo_sc(c, nx.base_scale, sin, cos))
+            kind.geo_sc_into(&mut g, c, nx.base_scale, sin, cos);
+            (nx.base_scale, nx.base_r, nx.base_solid)
         };
         // (Known circles were tested above for a circle.)
         let tested = |j: u32| kind == ShapeKind::Circle && self.kind_of(u64::from(j)) == ShapeKind::Circle;
+        let mut other = Geo::Circle { c, r };
         if let Some(&j) = known
             .unwrap_or(&[])
             .iter()
-            .find(|&&j| !tested(j) && self.hits(&g, c, (r, solid), j))
+            .find(|&&j| !tested(j) && self.hits(&g, c, (r, solid), j, &mut other))
         {
             return Err(Some(j));
         }

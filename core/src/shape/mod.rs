@@ -276,13 +276,14 @@ impl ShapeKind {
     }
 
     /// The radius of a disc about the centre that lies inside the shape's material (its
-    /// inscribed disc, see [`ShapeKind::inradius`]), for the kinds where it is tight and
-    /// cheap: circles, squares and rectangles. None for the others (a ring's centre is in its
-    /// hole; the other kinds' discs take trigonometry to compute, and a star's or a blob's is
-    /// loose).
+    /// inscribed disc, see [`ShapeKind::inradius`]), for the kinds where it is tight:
+    /// circles, squares, rectangles and regular polygons. None for the others (a ring's centre
+    /// is in its hole; a star's or a blob's disc is loose and dearer to compute).
     pub fn solid_radius<S: Scalar>(&self, scale: S) -> Option<S> {
         match self {
-            ShapeKind::Circle | ShapeKind::Square | ShapeKind::Rect { .. } => Some(self.inradius(scale)),
+            ShapeKind::Circle | ShapeKind::Square | ShapeKind::Rect { .. } | ShapeKind::Triangle | ShapeKind::Polygon { .. } => {
+                Some(self.inradius(scale))
+            }
             _ => None,
         }
     }
@@ -307,22 +308,27 @@ impl ShapeKind {
 
     /// The concrete shape at a place.
     pub fn geo<S: Scalar>(&self, c: Point<S>, scale: S, angle: S) -> Geo<S> {
+        let mut g = Geo::Circle { c, r: scale };
+        self.geo_into(&mut g, c, scale, angle);
+        g
+    }
+
+    /// [`ShapeKind::geo`] written into `out`. When `out` already holds a polygon only the
+    /// vertices in use are written (slots past them keep old values, which nothing reads):
+    /// no 512-byte array is zeroed or copied, which is what most exact tests would spend.
+    pub fn geo_into<S: Scalar>(&self, out: &mut Geo<S>, c: Point<S>, scale: S, angle: S) {
         match *self {
             ShapeKind::Blob { delta } => {
                 let (u, _) = blob_unit(delta, angle);
-                let mut v = [Point::default(); MAX_VERTS];
-                for (d, p) in v.iter_mut().zip(u.iter()) {
-                    *d = Point::new(c.x + p.x * scale, c.y + p.y * scale);
-                }
-                Geo::Poly {
-                    v,
-                    n: BLOB_VERTICES,
-                    convex: false,
-                }
+                set_poly(out, BLOB_VERTICES, false, |v| {
+                    for (d, p) in v.iter_mut().zip(u.iter()) {
+                        *d = Point::new(c.x + p.x * scale, c.y + p.y * scale);
+                    }
+                });
             }
             _ => {
                 let (sin, cos) = Self::sin_cos(angle);
-                self.geo_sc(c, scale, sin, cos)
+                self.geo_sc_into(out, c, scale, sin, cos);
             }
         }
     }
@@ -330,14 +336,22 @@ impl ShapeKind {
     /// The concrete shape at a place, rotation given by [`ShapeKind::sin_cos`] of its angle
     /// (not for blobs, whose outline depends on the angle itself: use [`ShapeKind::geo`]).
     pub fn geo_sc<S: Scalar>(&self, c: Point<S>, scale: S, sin: S, cos: S) -> Geo<S> {
-        let mut v = [Point::default(); MAX_VERTS];
+        let mut g = Geo::Circle { c, r: scale };
+        self.geo_sc_into(&mut g, c, scale, sin, cos);
+        g
+    }
+
+    /// [`ShapeKind::geo_sc`] written into `out`, as [`ShapeKind::geo_into`] does.
+    pub fn geo_sc_into<S: Scalar>(&self, out: &mut Geo<S>, c: Point<S>, scale: S, sin: S, cos: S) {
         match *self {
-            ShapeKind::Circle => Geo::Circle { c, r: scale },
-            ShapeKind::Ring { inner } => Geo::Ring {
-                c,
-                r: scale,
-                inner: scale * S::from_f64(inner),
-            },
+            ShapeKind::Circle => *out = Geo::Circle { c, r: scale },
+            ShapeKind::Ring { inner } => {
+                *out = Geo::Ring {
+                    c,
+                    r: scale,
+                    inner: scale * S::from_f64(inner),
+                }
+            }
             ShapeKind::Square | ShapeKind::Rect { .. } => {
                 let (hw, hh) = (scale * S::from_f64(self.aspect()), scale);
                 let corner = |sx: S, sy: S| {
@@ -345,10 +359,11 @@ impl ShapeKind {
                     Point::new(c.x + dx * cos - dy * sin, c.y + dx * sin + dy * cos)
                 };
                 let (m, p) = (-S::ONE, S::ONE);
-                for (d, q) in v.iter_mut().zip([corner(m, m), corner(p, m), corner(p, p), corner(m, p)]) {
-                    *d = q;
-                }
-                Geo::Poly { v, n: 4, convex: true }
+                set_poly(out, 4, true, |v| {
+                    for (d, q) in v.iter_mut().zip([corner(m, m), corner(p, m), corner(p, p), corner(m, p)]) {
+                        *d = q;
+                    }
+                });
             }
             ShapeKind::Triangle | ShapeKind::Polygon { .. } | ShapeKind::Star { .. } => {
                 let n = self.sides().min(MAX_VERTS);
@@ -359,20 +374,34 @@ impl ShapeKind {
                 };
                 // First vertex straight up, then counter-clockwise by 2π/n (a recurrence:
                 // deterministic, and the drawn polygon is the tested one).
-                let mut dir = Point::new(-sin, cos);
-                for (k, d) in v.iter_mut().take(n).enumerate() {
-                    let rad = if k % 2 == 1 { scale * inner } else { scale };
-                    *d = Point::new(c.x + dir.x * rad, c.y + dir.y * rad);
-                    dir = rot(dir, ss, cs);
-                }
-                Geo::Poly {
-                    v,
-                    n,
-                    convex: self.convex(),
-                }
+                set_poly(out, n, self.convex(), |v| {
+                    let mut dir = Point::new(-sin, cos);
+                    for (k, d) in v.iter_mut().take(n).enumerate() {
+                        let rad = if k % 2 == 1 { scale * inner } else { scale };
+                        *d = Point::new(c.x + dir.x * rad, c.y + dir.y * rad);
+                        dir = rot(dir, ss, cs);
+                    }
+                });
             }
-            ShapeKind::Blob { .. } => self.geo(c, scale, S::ZERO),
+            ShapeKind::Blob { .. } => self.geo_into(out, c, scale, S::ZERO),
         }
+    }
+}
+
+/// Makes `out` a polygon of `n` vertices (zeroing its vertex array only when it held another
+/// kind of shape) and lets `fill` write the vertices.
+fn set_poly<S: Scalar>(out: &mut Geo<S>, n: usize, convex: bool, fill: impl FnOnce(&mut [Point<S>; MAX_VERTS])) {
+    if !matches!(out, Geo::Poly { .. }) {
+        *out = Geo::Poly {
+            v: [Point::default(); MAX_VERTS],
+            n,
+            convex,
+        };
+    }
+    if let Geo::Poly { v, n: on, convex: oc } = out {
+        *on = n;
+        *oc = convex;
+        fill(v);
     }
 }
 

@@ -455,6 +455,7 @@ fn plot_flags_are_refused_where_nothing_reads_them() {
         (&["fill", "--hatch", "1", "--style", "filled", "-o", "x.svg"], "--hatch"),
         (&["fill", "--voronoi", "--min-feature", "1", "-o", "x.svg"], "--min-feature"),
         (&["fill", "--layers", "size-bands:2", "-o", "x.gcode"], "--layers"),
+        (&["fill", "--margin", "5", "-o", "x.svg"], "--margin"),
         (&["line", "--hatch", "1", "-o", "x.svg"], "--hatch"),
         (&["line", "--page", "a4", "-o", "x.png"], "--page"),
         (&["line", "--passes", "2", "-o", "x.json"], "--passes"),

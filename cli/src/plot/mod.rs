@@ -1141,8 +1141,14 @@ impl PlotArgs {
             Format::Gcode => self.check_gcode()?,
             Format::Svg | Format::Png => {
                 self.refuse_except(&SVG_FLAGS, |_| FOR_GCODE.to_string())?;
-                if (self.fit || self.center) && self.page.is_none() {
-                    let flag = if self.fit { "--fit" } else { "--center" };
+                if (self.fit || self.center || self.margin.is_some()) && self.page.is_none() {
+                    let flag = if self.fit {
+                        "--fit"
+                    } else if self.center {
+                        "--center"
+                    } else {
+                        "--margin"
+                    };
                     return Err(CliError::arg(
                         flag,
                         "for SVG it needs --page (without a page the drawing is the region itself)",

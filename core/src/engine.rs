@@ -220,6 +220,10 @@ impl<S: Scalar> Field<S> for FieldOf<'_, '_, S> {
     fn dist(&self, j: u32, p: Point<S>) -> S {
         self.0.shape_dist(j, p)
     }
+
+    fn box_dist(&self, j: u32, c: Point<S>, hw: S, hh: S) -> Option<S> {
+        self.0.circle_box_dist(j, c, hw, hh)
+    }
 }
 
 /// The fill engine over caller-provided storage.
@@ -781,6 +785,42 @@ impl<'a, S: Scalar> Engine<'a, S> {
         Some(r + self.gap)
     }
 
+    /// When shape `j` is a circle, the largest signed distance to it from any point of the box
+    /// centred on `p` with half sides `hw`, `hh`: the distance to a disc is convex, so that is
+    /// the distance from the farthest corner (all corners taken in the periodic image nearest
+    /// `p`). It is never above the centre's distance plus the half diagonal, and often well
+    /// below. None for other kinds (their inscribed discs give looser bounds than that).
+    fn circle_box_dist(&self, j: u32, p: Point<S>, hw: S, hh: S) -> Option<S> {
+        let s = self.shapes.get(j as usize)?;
+        if self.kind_of(u64::from(j)) != ShapeKind::Circle {
+            return None;
+        }
+        let q = self.image_near(p, s);
+        let (dx, dy) = (q.x - s.x, q.y - s.y);
+        let (ax, ay) = (dx.abs() + hw, dy.abs() + hh);
+        Some((ax * ax + ay * ay).sqrt() - s.scale)
+    }
+
+    /// `p`, or on a torus its copy nearest the centre of `s`.
+    fn image_near(&self, p: Point<S>, s: &Placed<S>) -> Point<S> {
+        if !self.region.periodic() {
+            return p;
+        }
+        let (w, h) = self.period;
+        // Shift p by the period that brings it nearest to the shape's centre.
+        let shift = |a: S, c: S, m: S| {
+            let hm = m.half();
+            if a - c > hm {
+                -m
+            } else if c - a > hm {
+                m
+            } else {
+                S::ZERO
+            }
+        };
+        p.shift(shift(p.x, s.x, w), shift(p.y, s.y, h))
+    }
+
     /// The signed distance from `p` to the material of placed shape `j` (in a periodic region,
     /// to its image nearest to `p` by centre): negative inside. An upper bound of the distance
     /// to the nearest image by material, which is all the cell sampler needs.
@@ -789,22 +829,7 @@ impl<'a, S: Scalar> Engine<'a, S> {
             return S::from_f64(f64::MAX);
         };
         let kind = self.kind_of(u64::from(j));
-        let mut q = p;
-        if self.region.periodic() {
-            let (w, h) = self.period;
-            // Shift p by the period that brings it nearest to the shape's centre.
-            let shift = |a: S, c: S, m: S| {
-                let hm = m.half();
-                if a - c > hm {
-                    -m
-                } else if c - a > hm {
-                    m
-                } else {
-                    S::ZERO
-                }
-            };
-            q = p.shift(shift(p.x, s.x, w), shift(p.y, s.y, h));
-        }
+        let q = self.image_near(p, s);
         let centre = Point::new(s.x, s.y);
         let dist = centre.dist2(q).sqrt();
         match kind {

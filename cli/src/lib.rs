@@ -16,6 +16,7 @@ pub mod stats;
 pub mod stopping;
 pub mod svgin;
 pub mod territory;
+pub mod tile;
 pub mod write;
 
 use clap::{Parser, Subcommand};
@@ -42,6 +43,9 @@ pub enum Command {
     Line(line::LineArgs),
     /// Sugihara's Voronoi territory competing: boundaries, cells or coloured cells.
     Territory(territory::TerritoryArgs),
+    /// The scale-periodic fractal tile (seed 002): a texture that meets half- and
+    /// double-scale copies of itself; drawn alone, as a mosaic or as a planet of rings.
+    Tile(tile::TileArgs),
     /// Numbers behind the fills: zeta, gasket width, trials, halting, dimension.
     #[command(subcommand)]
     Stats(stats::StatsCommand),
@@ -79,6 +83,7 @@ pub fn run(cli: Cli) -> Result<(), CliError> {
         Command::Fill(a) => fill::run(&a),
         Command::Line(a) => line::run(&a),
         Command::Territory(a) => territory::run(&a),
+        Command::Tile(a) => tile::run(&a),
         Command::Stats(s) => stats::run(&s),
         Command::Machines(m) => machines_cmd::run(&m),
     }

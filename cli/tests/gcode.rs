@@ -1018,3 +1018,73 @@ fn line_hatch_fills_bars_and_circles() {
     let hatched: f64 = kept.iter().map(|&(_, l)| 20.0 * l).sum();
     assert!(rel(r.down, outline + hatched) < 1e-4, "{} mm drawn", r.down);
 }
+
+/// `zetafill tile` as G-code replays safely on every built-in machine: the tile and its
+/// Voronoi cobblestones drawn where the tile lies (bottom-left origin), a planet fitted to the
+/// bed; the drawing stays in the sheet, and pen-down length is the outlines' length (circles
+/// as arcs: the tile's picture holds whole circles and arcs cut at its edges).
+#[test]
+fn tile_gcode_replays_safely() {
+    let dir = tmp();
+    let d = dir.path();
+    for machine in ["grbl-laser", "grbl-servo-pen", "z-lift-pen"] {
+        let (prof, _) = builtin_profile(d, machine);
+        for (extra, sheet) in [
+            (vec!["--tries", "4000"], Some(100.0)),
+            (
+                vec!["--render", "voronoi", "--radius", "2", "--spacing", "0.5", "--tries", "3000"],
+                Some(100.0),
+            ),
+            (vec!["--tries", "1000", "--layout", "planet", "--rows", "3", "--fit"], None),
+        ] {
+            let mut args = vec!["tile", "--seed", "6", "--machine", machine, "-q", "-o", "t.gcode"];
+            args.extend_from_slice(&extra);
+            zf_ok(d, &args);
+            let text = String::from_utf8_lossy(&read(&d.join("t.gcode"))).into_owned();
+            let r = assert_safe(&text, &prof, &format!("tile {extra:?} on {machine}"));
+            assert!(
+                text.contains("zetafill tile") && text.contains("--seed 6"),
+                "the header names the run"
+            );
+            let tol = 0.01;
+            let [x0, y0, x1, y1] = r.drawn;
+            match sheet {
+                Some(s) => assert!(
+                    x0 >= -tol && y0 >= -tol && x1 <= s + tol && y1 <= s + tol,
+                    "{extra:?} on {machine}: drawn {:?} leaves the {s} mm sheet",
+                    r.drawn
+                ),
+                // The planet fitted to the bed stays round.
+                None => assert!(((x1 - x0) - (y1 - y0)).abs() < 0.01 * (x1 - x0), "{:?}", r.drawn),
+            }
+        }
+    }
+    // A disc tile's pen-down length against its discs: whole circles inside, and at most the
+    // circumference of each disc copy that reaches in (the arcs are parts of those).
+    let (prof, _) = builtin_profile(d, "grbl-servo-pen");
+    zf_ok(d, &["tile", "--seed", "6", "--tries", "4000", "-q", "-o", "t.gcode"]);
+    zf_ok(d, &["tile", "--seed", "6", "--tries", "4000", "-o", "t.json"]);
+    let r = assert_safe(&String::from_utf8_lossy(&read(&d.join("t.gcode"))), &prof, "tile");
+    let doc = parse_json(&read(&d.join("t.json")));
+    let discs: Vec<([f64; 2], f64)> = doc["discs"]
+        .as_array()
+        .map(|a| a.iter().map(|s| (pt(&s["center"]), f(s, "radius"))).collect())
+        .unwrap_or_default();
+    let inside: f64 = discs
+        .iter()
+        .filter(|(c, r)| c[0] - r >= 0.0 && c[0] + r <= 100.0 && c[1] - r >= 0.0 && c[1] + r <= 100.0)
+        .map(|(_, r)| std::f64::consts::TAU * r)
+        .sum();
+    let all: f64 = discs.iter().map(|(_, r)| std::f64::consts::TAU * r).sum();
+    assert!(r.down > inside, "pen-down {} mm, whole circles alone {inside} mm", r.down);
+    // Cut circles come back from the neighbours: at most one disc's worth per crossing disc,
+    // and the copies above are half the size; twice the discs' own length bounds it.
+    assert!(r.down < 2.0 * all, "pen-down {} mm, discs {all} mm", r.down);
+    // Plot flags for fills are refused, and G-code flags without G-code.
+    let o = zf(d, &["tile", "--hatch", "1", "-o", "h.gcode"]);
+    assert_eq!(o.code, 2);
+    assert!(names_flag(&o.stderr, "--hatch") && !d.join("h.gcode").exists(), "{}", o.stderr);
+    let o = zf(d, &["tile", "--machine", "grbl-laser", "-o", "m.svg"]);
+    assert_eq!(o.code, 2);
+    assert!(names_flag(&o.stderr, "--machine") && !d.join("m.svg").exists(), "{}", o.stderr);
+}

@@ -1,5 +1,5 @@
-//! Reference outputs: every `examples/gallery/NAME.args` run in process must write exactly the
-//! committed picture. Set `ZETAFILL_REGENERATE=1` to rewrite the pictures after an intended
+//! Reference outputs: every `examples/gallery/NAME.args` (a `fill` or a `tile` command) run in
+//! process must write exactly the committed picture. Set `ZETAFILL_REGENERATE=1` to rewrite the pictures after an intended
 //! change (and look at them before committing).
 
 use std::path::{Path, PathBuf};
@@ -21,6 +21,17 @@ fn render(args_file: &Path) -> (PathBuf, Vec<u8>) {
     let text = std::fs::read_to_string(args_file).unwrap_or_default();
     let mut args: Vec<String> = vec!["zetafill".into()];
     args.extend(text.split_whitespace().map(String::from));
+    if args.get(1).is_some_and(|c| c == "tile") {
+        use clap::Parser;
+        let Ok(zetafill_cli::Cli {
+            command: zetafill_cli::Command::Tile(t),
+        }) = zetafill_cli::Cli::try_parse_from(&args)
+        else {
+            panic!("{}: not a tile command", args_file.display())
+        };
+        let (_, bytes) = zetafill_cli::tile::output(&t).unwrap_or_else(|e| panic!("{}: {e}", args_file.display()));
+        return (gallery().join(&t.output), bytes);
+    }
     let a = parse_fill(&args);
     let (doc, halt) = zetafill_cli::fill::compute(&a).unwrap_or_else(|e| panic!("{}: {e}", args_file.display()));
     assert!(halt.is_none(), "{} halted", args_file.display());

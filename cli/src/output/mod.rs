@@ -54,6 +54,31 @@ impl Format {
     }
 }
 
+/// The output format: `given` if any, `stdout` for `-`, otherwise the one `known` pairs with
+/// the path's extension (case-insensitive); exit 2 naming `--output` with the extensions to
+/// use when none does.
+pub fn format_for<F: Copy>(given: Option<F>, path: &Path, stdout: F, known: &[(&str, F)]) -> Result<F, CliError> {
+    if let Some(f) = given {
+        return Ok(f);
+    }
+    if path.as_os_str() == "-" {
+        return Ok(stdout);
+    }
+    let ext = path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase);
+    if let Some(&(_, f)) = known.iter().find(|(e, _)| ext.as_deref() == Some(*e)) {
+        return Ok(f);
+    }
+    let names: Vec<String> = known.iter().map(|(e, _)| format!(".{e}")).collect();
+    let list = match names.split_last() {
+        Some((last, rest)) if !rest.is_empty() => format!("{} or {last}", rest.join(", ")),
+        _ => names.join(""),
+    };
+    Err(CliError::arg(
+        "--output",
+        format!("cannot tell the format of '{}'; end it in {list}, or give --format", path.display()),
+    ))
+}
+
 /// A number in mm with at most `places` decimals, no trailing zeros, never `-0`.
 pub fn num(v: f64, places: usize) -> String {
     let s = format!("{v:.places$}");

@@ -42,25 +42,9 @@ pub enum TerritoryFormat {
 
 impl TerritoryFormat {
     fn resolve(given: Option<TerritoryFormat>, path: &Path) -> Result<TerritoryFormat, CliError> {
-        if let Some(f) = given {
-            return Ok(f);
-        }
-        if path.as_os_str() == "-" {
-            return Ok(TerritoryFormat::Svg);
-        }
-        match path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase).as_deref() {
-            Some("svg") => Ok(TerritoryFormat::Svg),
-            Some("png") => Ok(TerritoryFormat::Png),
-            Some("json") => Ok(TerritoryFormat::Json),
-            Some("gcode" | "nc") => Ok(TerritoryFormat::Gcode),
-            _ => Err(CliError::arg(
-                "--output",
-                format!(
-                    "cannot tell the format of '{}'; end it in .svg, .png, .json, .gcode or .nc, or give --format",
-                    path.display()
-                ),
-            )),
-        }
+        use TerritoryFormat::*;
+        let known = [("svg", Svg), ("png", Png), ("json", Json), ("gcode", Gcode), ("nc", Gcode)];
+        crate::output::format_for(given, path, Svg, &known)
     }
 }
 

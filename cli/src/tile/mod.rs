@@ -1,0 +1,453 @@
+//! `zetafill tile`: the scale-periodic fractal tile of seed 002 ("Fractal Tiles"): a texture of
+//! discs (or Voronoi cobblestones of their centres) that matches itself left and right, two
+//! half-scale copies of itself along its top and a double-scale copy along its bottom. Drawn
+//! alone, as a mosaic of rows of copies, or as a planet of rings ([`render`]); the discs
+//! themselves as JSON. How the tile is grown is in [`model`].
+
+pub mod model;
+pub mod render;
+
+use crate::error::CliError;
+use crate::output::num;
+use crate::spec;
+use crate::write::Dest;
+use clap::{Args, ValueEnum};
+use model::{Tile, TileSpec};
+use render::{Arrangement, Layout, Piece, Render, Sheet, Style};
+use serde::Serialize;
+use std::path::{Path, PathBuf};
+use svg::node::element::{Circle, Description, Group, Path as SvgPath, Title};
+use svg::node::Text;
+use svg::Document;
+
+/// Output formats of `zetafill tile`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum TileFormat {
+    /// SVG drawing in mm.
+    Svg,
+    /// PNG preview (the SVG rendered).
+    Png,
+    /// JSON document (version 1, mode "tile"): the tile's discs.
+    Json,
+    /// G-code for a plotter or laser (the drawing's outlines).
+    Gcode,
+}
+
+impl TileFormat {
+    fn resolve(given: Option<TileFormat>, path: &Path) -> Result<TileFormat, CliError> {
+        use TileFormat::*;
+        let known = [("svg", Svg), ("png", Png), ("json", Json), ("gcode", Gcode), ("nc", Gcode)];
+        crate::output::format_for(given, path, Svg, &known)
+    }
+}
+
+/// Arguments of `zetafill tile`.
+#[derive(Debug, Args)]
+pub struct TileArgs {
+    /// Tile width in mm.
+    #[arg(long, default_value_t = 100.0, value_parser = spec::positive, allow_negative_numbers = true)]
+    pub width: f64,
+    /// Tile height in mm.
+    #[arg(long, default_value_t = 100.0, value_parser = spec::positive, allow_negative_numbers = true)]
+    pub height: f64,
+    /// Disc radius at the tile's bottom edge in mm (half of it at the top edge).
+    #[arg(long, default_value_t = 5.0, value_parser = spec::positive, allow_negative_numbers = true)]
+    pub radius: f64,
+    /// Gap between discs at the bottom edge in mm (half of it at the top edge).
+    #[arg(long, default_value_t = 1.0, value_parser = spec::non_negative, allow_negative_numbers = true)]
+    pub spacing: f64,
+    /// Random tries in all (each places a disc where it fits).
+    #[arg(long, default_value_t = 20_000, value_parser = clap::value_parser!(u64).range(1..=100_000_000))]
+    pub tries: u64,
+    /// RNG seed.
+    #[arg(long, default_value_t = 1)]
+    pub seed: u64,
+    /// discs | voronoi (cobblestones of the disc centres).
+    #[arg(long, value_enum, default_value = "discs")]
+    pub render: Render,
+    /// outline (plotters) | filled (screens).
+    #[arg(long, value_enum, default_value = "outline")]
+    pub style: Style,
+    /// tile (the texture) | mosaic (rows of copies, each half the scale of the one below) |
+    /// planet (rings of copies, each holding twice as many as the one inside it).
+    #[arg(long, value_enum, default_value = "tile")]
+    pub layout: Layout,
+    /// Mosaic and planet: rows (rings) of tiles.
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=10))]
+    pub rows: Option<u32>,
+    /// Mosaic: tiles in the bottom row (default 2); planet: tiles in the inner ring (default
+    /// 16).
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=4096))]
+    pub columns: Option<u32>,
+    /// Planet: its outer radius in mm, where the rings pile up.
+    #[arg(long = "planet-radius", value_parser = spec::positive, allow_negative_numbers = true)]
+    pub planet_radius: Option<f64>,
+    /// Output path; the format comes from the extension (.svg .png .json); '-' is stdout.
+    #[arg(short = 'o', long)]
+    pub output: PathBuf,
+    /// Output format (overrides the extension).
+    #[arg(long, value_enum)]
+    pub format: Option<TileFormat>,
+    /// SVG: stroke width of the outlines in mm.
+    #[arg(long = "pen-width", default_value_t = 0.3, value_parser = spec::positive, allow_negative_numbers = true)]
+    pub pen_width: f64,
+    /// PNG: resolution in pixels per inch.
+    #[arg(long, default_value_t = 96.0, value_parser = spec::positive, allow_negative_numbers = true)]
+    pub dpi: f64,
+    /// No figures on stderr.
+    #[arg(short, long)]
+    pub quiet: bool,
+    /// Plotter and laser output (G-code): machine, feeds, passes, order, --fit/--center.
+    #[command(flatten)]
+    pub plot: crate::plot::PlotArgs,
+}
+
+/// Refuses the plot flags that the output does not read, before any work.
+fn check_plot(a: &TileArgs, format: TileFormat) -> Result<(), CliError> {
+    use crate::plot::{FOR_GCODE, GCODE_FLAGS};
+    let p = &a.plot;
+    if format == TileFormat::Gcode {
+        let allowed: Vec<&str> = GCODE_FLAGS.iter().copied().chain(["--fit", "--center", "--margin"]).collect();
+        p.refuse_except(&allowed, |f| {
+            format!("is not available for tile: {f} is for fills (the tile draws its own outlines, on the machine's bed)")
+        })?;
+        p.check_gcode()
+    } else {
+        p.refuse_except(&[], |_| FOR_GCODE.to_string())
+    }
+}
+
+/// The drawing as G-code: every piece as a path (circles as arcs where the machine allows),
+/// the sheet placed on the machine's bed.
+fn gcode(pieces: &[Piece], sheet: Sheet, a: &TileArgs, header: String) -> Result<Vec<u8>, CliError> {
+    use crate::plot::{drawing_gcode, Bounds, Drawing, Path as PlotPath};
+    let paths = pieces
+        .iter()
+        .map(|p| match p {
+            Piece::Circle { c, r } => PlotPath::circle(*c, *r),
+            Piece::Open(l) => PlotPath::polyline(l.clone(), false),
+            Piece::Closed(l) => PlotPath::polyline(l.clone(), true),
+        })
+        .collect();
+    let frame = Bounds {
+        x0: 0.0,
+        y0: 0.0,
+        x1: sheet.width,
+        y1: sheet.height,
+    };
+    drawing_gcode(&Drawing { paths }, &frame, &a.plot, vec![header], a.quiet)
+}
+
+/// One disc in the JSON output.
+#[derive(Debug, Clone, Serialize)]
+pub struct DiscDoc {
+    /// Placement order.
+    pub index: usize,
+    /// Centre (mm, the tile's frame, y up).
+    pub center: [f64; 2],
+    /// Radius (mm).
+    pub radius: f64,
+    /// The doppelganger's index, if the disc has one.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub twin: Option<usize>,
+}
+
+/// The parameters of a tile run.
+#[derive(Debug, Clone, Serialize)]
+pub struct TileParamsDoc {
+    /// What the tile is grown from (the band of twins included).
+    #[serde(flatten)]
+    pub spec: TileSpec,
+    /// `"discs"` or `"voronoi"`.
+    pub render: &'static str,
+}
+
+/// Run statistics.
+#[derive(Debug, Clone, Serialize)]
+pub struct TileStatsDoc {
+    /// Discs, twins included.
+    pub discs: usize,
+    /// Discs that have a twin.
+    pub doppelgangers: usize,
+    /// Tries made.
+    pub tries: u64,
+}
+
+/// The JSON document of a tile run.
+#[derive(Debug, Clone, Serialize)]
+pub struct TileDoc {
+    /// Format version (1).
+    pub version: u32,
+    /// `"tile"`.
+    pub mode: &'static str,
+    /// Parameters.
+    pub params: TileParamsDoc,
+    /// The discs in placement order.
+    pub discs: Vec<DiscDoc>,
+    /// Statistics.
+    pub stats: TileStatsDoc,
+}
+
+/// The arrangement the flags ask for, with each layout's defaults; refuses layout flags the
+/// layout does not read.
+pub fn arrangement(a: &TileArgs) -> Result<Arrangement, CliError> {
+    let unread = |flag: &str, why: &str| {
+        Err(CliError::arg(
+            flag,
+            format!("is not read by --layout {}: {why}", layout_name(a.layout)),
+        ))
+    };
+    match a.layout {
+        Layout::Tile => {
+            if a.rows.is_some() {
+                return unread("--rows", "the tile is drawn alone; use --layout mosaic or planet");
+            }
+            if a.columns.is_some() {
+                return unread("--columns", "the tile is drawn alone; use --layout mosaic or planet");
+            }
+        }
+        Layout::Mosaic => {}
+        Layout::Planet => {}
+    }
+    if a.layout != Layout::Planet && a.planet_radius.is_some() {
+        return unread("--planet-radius", "it sizes --layout planet");
+    }
+    let arr = Arrangement {
+        layout: a.layout,
+        rows: a.rows.unwrap_or(4),
+        columns: a.columns.unwrap_or(if a.layout == Layout::Planet { 16 } else { 2 }),
+        radius: a.planet_radius.unwrap_or(100.0),
+    };
+    arr.check(a.width, a.height).map_err(|(flag, msg)| CliError::arg(flag, msg))?;
+    Ok(arr)
+}
+
+fn layout_name(l: Layout) -> &'static str {
+    match l {
+        Layout::Tile => "tile",
+        Layout::Mosaic => "mosaic",
+        Layout::Planet => "planet",
+    }
+}
+
+fn render_name(r: Render) -> &'static str {
+    match r {
+        Render::Discs => "discs",
+        Render::Voronoi => "voronoi",
+    }
+}
+
+/// The band of twins Voronoi cobblestones start from (seed 002 uses the top quarter).
+const VORONOI_BAND: f64 = 0.25;
+
+/// How far apart (relative to the tile's size) the matching ends of copies may be.
+const SEAM_TOLERANCE: f64 = 1e-9;
+
+/// Grows the tile the flags ask for and its picture. For cobblestones the band of twins
+/// doubles until the picture meets its copies; a picture that cannot is refused.
+pub fn compute(a: &TileArgs) -> Result<(Tile, Vec<Piece>), CliError> {
+    let mut spec = TileSpec {
+        width: a.width,
+        height: a.height,
+        radius: a.radius,
+        spacing: a.spacing,
+        tries: a.tries,
+        seed: a.seed,
+        band: if a.render == Render::Voronoi { VORONOI_BAND } else { 0.0 },
+    };
+    spec.check().map_err(|(flag, msg)| CliError::arg(flag, msg))?;
+    loop {
+        let tile = model::grow(&spec);
+        // The seams are checked on the outlines, whatever the style drawn.
+        let lines = render::tile_pieces(&tile, a.render, Style::Outline)?;
+        let gap = render::seam_gaps(&render::ends(&lines, a.width, a.height), a.width);
+        if gap <= SEAM_TOLERANCE * a.width.max(a.height) {
+            let pieces = if a.style == Style::Outline {
+                lines
+            } else {
+                render::tile_pieces(&tile, a.render, a.style)?
+            };
+            return Ok((tile, pieces));
+        }
+        if a.render == Render::Voronoi && spec.band < 1.0 {
+            spec.band = (2.0 * spec.band).min(1.0);
+            continue;
+        }
+        if a.render == Render::Discs {
+            // Twins make the discs across the top repeat at half the width: only a fault
+            // of this program could leave a seam.
+            return Err(CliError::Io(format!(
+                "internal: the tile's picture does not meet its copies (ends {} mm apart)",
+                num(gap, 6)
+            )));
+        }
+        return Err(CliError::arg(
+            "--tries",
+            format!(
+                "the cobblestones do not meet their copies even with every centre twinned (ends {} mm apart): the fill is too sparse for its cells to stay near their discs; raise --tries",
+                num(gap, 6)
+            ),
+        ));
+    }
+}
+
+/// The JSON document of a tile.
+pub fn doc(tile: &Tile, a: &TileArgs) -> TileDoc {
+    TileDoc {
+        version: 1,
+        mode: "tile",
+        params: TileParamsDoc {
+            spec: tile.spec,
+            render: render_name(a.render),
+        },
+        discs: tile
+            .discs
+            .iter()
+            .enumerate()
+            .map(|(index, d)| DiscDoc {
+                index,
+                center: d.c,
+                radius: d.r,
+                twin: d.twin,
+            })
+            .collect(),
+        stats: TileStatsDoc {
+            discs: tile.discs.len(),
+            doppelgangers: tile.discs.iter().filter(|d| d.twin.is_some()).count(),
+            tries: tile.tries,
+        },
+    }
+}
+
+/// The command line that reproduces a run (for the SVG's description).
+fn command_line(a: &TileArgs, arr: &Arrangement) -> String {
+    let mut s = format!(
+        "zetafill tile --width {} --height {} --radius {} --spacing {} --tries {} --seed {} --render {} --layout {}",
+        a.width,
+        a.height,
+        a.radius,
+        a.spacing,
+        a.tries,
+        a.seed,
+        render_name(a.render),
+        layout_name(a.layout)
+    );
+    if a.layout != Layout::Tile {
+        s.push_str(&format!(" --rows {} --columns {}", arr.rows, arr.columns));
+    }
+    if a.layout == Layout::Planet {
+        s.push_str(&format!(" --planet-radius {}", arr.radius));
+    }
+    s
+}
+
+const P: usize = 4;
+
+/// The drawing as SVG (mm, y up in the tile's frame, so flipped on the page).
+pub fn svg(pieces: &[Piece], sheet: Sheet, style: Style, pen_width: f64, title: &str, desc: &str) -> Vec<u8> {
+    let pt = |p: [f64; 2]| format!("{},{}", num(p[0], P), num(sheet.height - p[1], P));
+    let line = |l: &[[f64; 2]]| l.iter().map(|&p| pt(p)).collect::<Vec<_>>().join(" L");
+    let mut g = Group::new()
+        .set("id", "tile")
+        .set("inkscape:groupmode", "layer")
+        .set("inkscape:label", "tile");
+    g = match style {
+        Style::Outline => g
+            .set("fill", "none")
+            .set("stroke", "black")
+            .set("stroke-width", num(pen_width, P))
+            .set("stroke-linecap", "round")
+            .set("stroke-linejoin", "round"),
+        // A black hairline closes the anti-aliasing seams where pieces of copies meet.
+        Style::Filled => g
+            .set("fill", "black")
+            .set("stroke", "black")
+            .set("stroke-width", "0.1")
+            .set("stroke-linejoin", "round"),
+    };
+    for piece in pieces {
+        g = match piece {
+            Piece::Circle { c, r } => g.add(
+                Circle::new()
+                    .set("cx", num(c[0], P))
+                    .set("cy", num(sheet.height - c[1], P))
+                    .set("r", num(*r, P)),
+            ),
+            Piece::Open(l) if l.len() >= 2 && style == Style::Outline => g.add(SvgPath::new().set("d", format!("M{}", line(l)))),
+            Piece::Closed(l) if l.len() >= 3 => g.add(SvgPath::new().set("d", format!("M{} Z", line(l)))),
+            _ => g,
+        };
+    }
+    let d = Document::new()
+        .set("xmlns:inkscape", "http://www.inkscape.org/namespaces/inkscape")
+        .set("width", format!("{}mm", num(sheet.width, P)))
+        .set("height", format!("{}mm", num(sheet.height, P)))
+        .set("viewBox", format!("0 0 {} {}", num(sheet.width, P), num(sheet.height, P)))
+        .add(Title::new("").add(Text::new(title)))
+        .add(Description::new().add(Text::new(desc)))
+        .add(g);
+    let mut s = d.to_string();
+    s.push('\n');
+    s.into_bytes()
+}
+
+/// The output the flags ask for (checked first: nothing is computed for bad input), and the
+/// tile it shows.
+pub fn output(a: &TileArgs) -> Result<(Tile, Vec<u8>), CliError> {
+    let format = TileFormat::resolve(a.format, &a.output)?;
+    let arr = arrangement(a)?;
+    check_plot(a, format)?;
+    if format == TileFormat::Json && a.layout != Layout::Tile {
+        return Err(CliError::arg(
+            "--layout",
+            "the JSON holds the tile's discs; draw a mosaic or a planet as SVG, PNG or G-code",
+        ));
+    }
+    let (tile, pieces) = compute(a)?;
+    let (w, h) = (a.width, a.height);
+    let bytes = match format {
+        TileFormat::Json => {
+            let mut v = serde_json::to_vec_pretty(&doc(&tile, a)).map_err(|e| CliError::Io(format!("internal: {e}")))?;
+            v.push(b'\n');
+            v
+        }
+        TileFormat::Gcode => gcode(&arr.lay_out(&pieces, w, h), arr.sheet(w, h), a, command_line(a, &arr))?,
+        TileFormat::Svg | TileFormat::Png => {
+            let title = format!(
+                "zetafill: fractal tile, {} discs ({} doppelgangers), seed {}, {} {}",
+                tile.discs.len(),
+                tile.discs.iter().filter(|d| d.twin.is_some()).count(),
+                a.seed,
+                render_name(a.render),
+                layout_name(a.layout)
+            );
+            let svg = svg(
+                &arr.lay_out(&pieces, w, h),
+                arr.sheet(w, h),
+                a.style,
+                a.pen_width,
+                &title,
+                &command_line(a, &arr),
+            );
+            if format == TileFormat::Png {
+                crate::output::png::render(&svg, a.dpi)?
+            } else {
+                svg
+            }
+        }
+    };
+    Ok((tile, bytes))
+}
+
+/// Runs `zetafill tile`.
+pub fn run(a: &TileArgs) -> Result<(), CliError> {
+    let dest = Dest::parse(&a.output);
+    dest.check("--output", &[])?;
+    let (tile, bytes) = output(a)?;
+    dest.write(&bytes)?;
+    if !a.quiet {
+        let twins = tile.discs.iter().filter(|d| d.twin.is_some()).count();
+        eprintln!("{} discs ({twins} doppelgangers) in {} tries", tile.discs.len(), tile.tries);
+    }
+    Ok(())
+}

@@ -1,0 +1,552 @@
+//! `zetafill tile` end to end: the tile's discs never overlap anywhere in the plane of rows
+//! (checked on the JSON by an independent construction of the plane), their size follows the
+//! linear law of the post, every disc crossing the top edge has its doppelganger, the pictures
+//! read back with usvg meet their copies at every edge (left and right, and the top's halves
+//! against the bottom at half scale), the layouts have the sizes and tile counts they claim,
+//! reruns are byte-identical, and bad input is refused. Each checker is shown to fail on a
+//! broken input.
+
+mod common;
+
+use common::*;
+use serde_json::Value;
+
+const PX_PER_MM: f64 = 96.0 / 25.4;
+
+/// A cobblestone tile.
+const COBBLES: [&str; 10] = [
+    "--seed",
+    "3",
+    "--render",
+    "voronoi",
+    "--radius",
+    "2",
+    "--spacing",
+    "0.5",
+    "--tries",
+    "5000",
+];
+
+/// A disc of the JSON: centre, radius, twin.
+#[derive(Debug, Clone, Copy)]
+struct D {
+    c: [f64; 2],
+    r: f64,
+    twin: Option<usize>,
+}
+
+fn discs(doc: &Value) -> Vec<D> {
+    doc.get("discs")
+        .and_then(Value::as_array)
+        .unwrap_or_else(|| panic!("no discs"))
+        .iter()
+        .map(|d| D {
+            c: pt(d.get("center").unwrap_or(&Value::Null)),
+            r: f(d, "radius"),
+            twin: d.get("twin").and_then(Value::as_u64).map(|t| t as usize),
+        })
+        .collect()
+}
+
+/// The tile's parameters from its JSON: (W, H, R, S).
+fn spec(doc: &Value) -> (f64, f64, f64, f64) {
+    let p = doc.get("params").unwrap_or(&Value::Null);
+    (f(p, "width"), f(p, "height"), f(p, "radius"), f(p, "spacing"))
+}
+
+fn tile_json(dir: &std::path::Path, args: &[&str]) -> Value {
+    zf_ok(dir, &[&["tile"], args, &["-o", "t.json"]].concat());
+    parse_json(&read(&dir.join("t.json")))
+}
+
+/// The plane of rows built from the tile, independently of the tool: row r (-1 to 2) is the
+/// tile scaled by 2^-r, repeated with period W 2^-r, starting at height 2H (1 - 2^-r); the
+/// discs of the window `[-W, 2W] x [-2H, 2H]`, each with its row.
+fn plane(ds: &[D], w: f64, h: f64) -> Vec<([f64; 2], f64)> {
+    let mut out = Vec::new();
+    for row in -1i32..=2 {
+        let s = 0.5f64.powi(row);
+        let y0 = 2.0 * h * (1.0 - s);
+        let (first, last) = ((-w / (w * s)).floor() as i64 - 1, (2.0 * w / (w * s)).ceil() as i64 + 1);
+        for i in first..=last {
+            for d in ds {
+                let c = [i as f64 * w * s + s * d.c[0], y0 + s * d.c[1]];
+                if c[0] > -w && c[0] < 2.0 * w && c[1] > -2.0 * h && c[1] < 2.0 * h {
+                    out.push((c, s * d.r));
+                }
+            }
+        }
+    }
+    out
+}
+
+/// Pairs of discs of the plane closer than the post's spacing allows (gap `S (1 - ym / 2H)`,
+/// ym the mean height of the two centres), among those near the tile `[0, W] x [0, H]`.
+fn overlaps(ds: &[D], w: f64, h: f64, sp: f64) -> Vec<String> {
+    let all = plane(ds, w, h);
+    let near = |c: [f64; 2], r: f64| c[0] + r > -0.25 * w && c[0] - r < 1.25 * w && c[1] + r > -0.25 * h && c[1] - r < 1.25 * h;
+    let mut bad = Vec::new();
+    for (i, &(a, ra)) in all.iter().enumerate() {
+        if !near(a, ra) {
+            continue;
+        }
+        for &(b, rb) in &all[i + 1..] {
+            let gap = sp * (1.0 - 0.5 * (a[1] + b[1]) / (2.0 * h));
+            let d = (a[0] - b[0]).hypot(a[1] - b[1]);
+            if d < ra + rb + gap - 1e-9 {
+                bad.push(format!("{a:?} r {ra} and {b:?} r {rb}: {d} < {}", ra + rb + gap));
+            }
+        }
+    }
+    bad
+}
+
+#[test]
+fn discs_never_overlap_anywhere_in_the_plane() {
+    let dir = tmp();
+    let d = dir.path();
+    for args in [
+        vec!["--seed", "1"],
+        vec!["--seed", "2", "--width", "80", "--height", "120", "--radius", "6", "--spacing", "2"],
+        COBBLES.to_vec(),
+    ] {
+        let doc = tile_json(d, &args);
+        let (w, h, _, sp) = spec(&doc);
+        let ds = discs(&doc);
+        assert!(ds.len() > 50, "{args:?}: only {} discs", ds.len());
+        let bad = overlaps(&ds, w, h, sp);
+        assert!(bad.is_empty(), "{args:?}: {} overlaps, first {}", bad.len(), bad[0]);
+    }
+    // The checker sees overlaps across rows: a disc just under the top edge, and a disc at the
+    // bottom where the double-scale copy of the first lands.
+    let (w, h, r, sp) = (100.0, 100.0, 5.0, 1.0);
+    let f = |y: f64| 1.0 - y / (2.0 * h);
+    let top = D {
+        c: [20.0, 97.0],
+        r: r * f(97.0),
+        twin: None,
+    };
+    // Its copy in row -1 sits at (40, -6), radius about 5.2: a disc at (40, 1) overlaps it.
+    let low = D {
+        c: [40.0, 1.0],
+        r: r * f(1.0),
+        twin: None,
+    };
+    assert!(!overlaps(&[top, low], w, h, sp).is_empty(), "a cross-row overlap is missed");
+    let apart = D { c: [70.0, 30.0], ..low };
+    assert!(overlaps(&[top, apart], w, h, sp).is_empty(), "a false overlap");
+}
+
+#[test]
+fn size_follows_height_and_top_crossings_have_twins() {
+    let dir = tmp();
+    let d = dir.path();
+    let doc = tile_json(d, &["--seed", "5"]);
+    let (w, h, r, _) = spec(&doc);
+    let ds = discs(&doc);
+    let check = |ds: &[D]| -> Vec<String> {
+        let mut bad = Vec::new();
+        for (i, a) in ds.iter().enumerate() {
+            if !(0.0..w).contains(&a.c[0]) || !(0.0..h).contains(&a.c[1]) {
+                bad.push(format!("{i}: centre {:?} outside the tile", a.c));
+            }
+            if rel(a.r, r * (1.0 - a.c[1] / (2.0 * h))) > 1e-12 {
+                bad.push(format!("{i}: radius {} at height {}", a.r, a.c[1]));
+            }
+            if a.c[1] + a.r > h {
+                let ok = a.twin.is_some_and(|t| {
+                    let b = ds[t];
+                    b.twin == Some(i) && b.c[1] == a.c[1] && b.r == a.r && rel((a.c[0] - b.c[0]).abs(), 0.5 * w) < 1e-12
+                });
+                if !ok {
+                    bad.push(format!("{i}: crosses the top edge without a twin half a tile away"));
+                }
+            }
+        }
+        bad
+    };
+    assert!(check(&ds).is_empty(), "{:?}", check(&ds));
+    assert!(
+        ds.iter().any(|a| a.twin.is_some()),
+        "no doppelgangers in this tile: pick a seed with some"
+    );
+    assert_eq!(u(doc.get("stats").unwrap_or(&Value::Null), "discs") as usize, ds.len());
+    // The checker fails on a missing twin, a wrong radius, and a twin at the wrong place.
+    let i = ds.iter().position(|a| a.twin.is_some()).unwrap_or_default();
+    let mut broken = ds.clone();
+    broken[i].twin = None;
+    assert!(!check(&broken).is_empty());
+    let mut broken = ds.clone();
+    broken[0].r *= 1.01;
+    assert!(!check(&broken).is_empty());
+    let mut broken = ds.clone();
+    let t = broken[i].twin.unwrap_or_default();
+    broken[t].c[0] = (broken[t].c[0] + 1.0) % w;
+    assert!(!check(&broken).is_empty());
+    // Voronoi tiles twin every centre in the top band (a quarter at least).
+    let doc = tile_json(
+        d,
+        &[
+            "--seed",
+            "5",
+            "--render",
+            "voronoi",
+            "--radius",
+            "2",
+            "--spacing",
+            "0.5",
+            "--tries",
+            "5000",
+        ],
+    );
+    let band = f(doc.get("params").unwrap_or(&Value::Null), "band");
+    assert!(band >= 0.25);
+    let ds = discs(&doc);
+    for a in &ds {
+        assert_eq!(a.twin.is_some(), a.c[1] > h * (1.0 - band) || a.c[1] + a.r > h, "{a:?}");
+    }
+}
+
+/// The ends of the drawn open paths that lie on the edges of a `w` x `h` drawing (mm, y up),
+/// read back with usvg: (bottom x, top x, left y, right y), each sorted.
+type Ends = (Vec<f64>, Vec<f64>, Vec<f64>, Vec<f64>);
+
+fn edge_ends(svg: &[u8], w: f64, h: f64) -> Ends {
+    use usvg::tiny_skia_path::PathSegment;
+    let tree = usvg::Tree::from_data(svg, &usvg::Options::default()).unwrap_or_else(|e| panic!("usvg: {e}"));
+    let mut ends: Vec<[f64; 2]> = Vec::new();
+    fn walk(g: &usvg::Group, h: f64, ends: &mut Vec<[f64; 2]>) {
+        for n in g.children() {
+            match n {
+                usvg::Node::Group(g) => walk(g, h, ends),
+                usvg::Node::Path(p) => {
+                    let ts = p.abs_transform();
+                    let mm = |mut q: usvg::tiny_skia_path::Point| {
+                        ts.map_point(&mut q);
+                        [q.x as f64 / PX_PER_MM, h - q.y as f64 / PX_PER_MM]
+                    };
+                    let (mut first, mut last, mut closed) = (None, None, false);
+                    let mut flush = |first: Option<[f64; 2]>, last: Option<[f64; 2]>, closed: bool| {
+                        if let (Some(a), Some(b), false) = (first, last, closed) {
+                            ends.push(a);
+                            ends.push(b);
+                        }
+                    };
+                    for seg in p.data().segments() {
+                        match seg {
+                            PathSegment::MoveTo(q) => {
+                                flush(first, last, closed);
+                                (first, last, closed) = (Some(mm(q)), None, false);
+                            }
+                            PathSegment::LineTo(q) | PathSegment::QuadTo(_, q) | PathSegment::CubicTo(_, _, q) => last = Some(mm(q)),
+                            PathSegment::Close => closed = true,
+                        }
+                    }
+                    flush(first, last, closed);
+                }
+                _ => {}
+            }
+        }
+    }
+    walk(tree.root(), h, &mut ends);
+    let tol = 2e-3;
+    let mut e: Ends = Default::default();
+    for p in ends {
+        if p[1].abs() < tol {
+            e.0.push(p[0]);
+        } else if (p[1] - h).abs() < tol {
+            e.1.push(p[0]);
+        } else if p[0].abs() < tol {
+            e.2.push(p[1]);
+        } else if (p[0] - w).abs() < tol {
+            e.3.push(p[1]);
+        }
+    }
+    for v in [&mut e.0, &mut e.1, &mut e.2, &mut e.3] {
+        v.sort_by(f64::total_cmp);
+    }
+    e
+}
+
+/// What keeps copies of the picture from meeting: left ends against right ends, and each half
+/// of the top edge against the bottom edge at half scale (the copies above are half size).
+fn seam_faults(e: &Ends, w: f64) -> Vec<String> {
+    let mut bad = Vec::new();
+    let mut same = |what: &str, a: &[f64], b: &[f64]| {
+        if a.len() != b.len() {
+            bad.push(format!("{what}: {} ends against {}", a.len(), b.len()));
+        } else if let Some((x, y)) = a.iter().zip(b).find(|(x, y)| (*x - *y).abs() > 2e-4) {
+            bad.push(format!("{what}: {x} against {y}"));
+        }
+    };
+    same("left/right", &e.2, &e.3);
+    let half: Vec<f64> = e.0.iter().map(|x| 0.5 * x).collect();
+    let lo: Vec<f64> = e.1.iter().copied().filter(|&x| x < 0.5 * w).collect();
+    let hi: Vec<f64> = e.1.iter().filter(|&&x| x >= 0.5 * w).map(|x| x - 0.5 * w).collect();
+    same("top left half/bottom", &half, &lo);
+    same("top right half/bottom", &half, &hi);
+    bad
+}
+
+#[test]
+fn pictures_meet_their_copies_at_every_edge() {
+    let dir = tmp();
+    let d = dir.path();
+    for args in [
+        vec!["--seed", "1"],
+        vec!["--seed", "7", "--width", "120", "--height", "80", "--radius", "4"],
+        COBBLES.to_vec(),
+    ] {
+        zf_ok(d, &[&["tile"], &args[..], &["-o", "t.svg"]].concat());
+        let svg = read(&d.join("t.svg"));
+        let w: f64 = args
+            .iter()
+            .position(|a| *a == "--width")
+            .map_or(100.0, |i| args[i + 1].parse().unwrap_or(0.0));
+        let h: f64 = args
+            .iter()
+            .position(|a| *a == "--height")
+            .map_or(100.0, |i| args[i + 1].parse().unwrap_or(0.0));
+        let e = edge_ends(&svg, w, h);
+        assert!(
+            !e.0.is_empty() && !e.1.is_empty() && !e.2.is_empty(),
+            "{args:?}: nothing crosses the edges"
+        );
+        let bad = seam_faults(&e, w);
+        assert!(bad.is_empty(), "{args:?}: {bad:?}");
+        // The checker fails when one path that ends on the top edge is taken out.
+        let text = String::from_utf8_lossy(&svg).into_owned();
+        let cut = text
+            .lines()
+            .position(|l| {
+                l.contains("<path") && {
+                    let d = l.split("d=\"").nth(1).unwrap_or("");
+                    d.split(['M', 'L', ' ', '"']).any(|p| p.ends_with(",0"))
+                }
+            })
+            .unwrap_or_else(|| panic!("no path ends on the top edge"));
+        let broken: String = text
+            .lines()
+            .enumerate()
+            .filter(|&(i, _)| i != cut)
+            .map(|(_, l)| format!("{l}\n"))
+            .collect();
+        assert!(
+            !seam_faults(&edge_ends(broken.as_bytes(), w, h), w).is_empty(),
+            "{args:?}: a missing path is missed"
+        );
+    }
+}
+
+fn size_mm(svg: &[u8]) -> (f64, f64) {
+    let t = usvg::Tree::from_data(svg, &usvg::Options::default()).unwrap_or_else(|e| panic!("usvg: {e}"));
+    (t.size().width() as f64 / PX_PER_MM, t.size().height() as f64 / PX_PER_MM)
+}
+
+/// Every vertex of every drawn path (mm, y up), usvg's reading of the SVG.
+fn vertices(svg: &[u8], h: f64) -> Vec<Vec<[f64; 2]>> {
+    let tree = usvg::Tree::from_data(svg, &usvg::Options::default()).unwrap_or_else(|e| panic!("usvg: {e}"));
+    let mut out = Vec::new();
+    fn walk(g: &usvg::Group, h: f64, out: &mut Vec<Vec<[f64; 2]>>) {
+        for n in g.children() {
+            match n {
+                usvg::Node::Group(g) => walk(g, h, out),
+                usvg::Node::Path(p) => {
+                    let ts = p.abs_transform();
+                    let pts = p
+                        .data()
+                        .points()
+                        .iter()
+                        .map(|&q| {
+                            let mut q = q;
+                            ts.map_point(&mut q);
+                            [q.x as f64 / PX_PER_MM, h - q.y as f64 / PX_PER_MM]
+                        })
+                        .collect();
+                    out.push(pts);
+                }
+                _ => {}
+            }
+        }
+    }
+    walk(tree.root(), h, &mut out);
+    out
+}
+
+#[test]
+fn mosaic_and_planet_hold_the_copies_they_claim() {
+    let dir = tmp();
+    let d = dir.path();
+    let base = ["tile", "--seed", "4", "--tries", "3000"];
+    zf_ok(d, &[&base[..], &["-o", "t.svg"]].concat());
+    let tile = read(&d.join("t.svg"));
+    let per_tile = vertices(&tile, 100.0).len();
+    assert!(per_tile > 20);
+    // Mosaic: 3 rows over 2 tiles, then 4, then 8: 14 copies in 200 x 175 mm.
+    zf_ok(d, &[&base[..], &["--layout", "mosaic", "--rows", "3", "-o", "m.svg"]].concat());
+    let m = read(&d.join("m.svg"));
+    let (w, h) = size_mm(&m);
+    assert!((w - 200.0).abs() < 1e-3 && (h - 175.0).abs() < 1e-3, "{w} x {h}");
+    let paths = vertices(&m, h);
+    assert_eq!(paths.len(), 14 * per_tile);
+    assert!(paths
+        .iter()
+        .flatten()
+        .all(|p| p[0] > -0.01 && p[0] < 200.01 && p[1] > -0.01 && p[1] < 175.01));
+    // Planet: rings of 16, 32, 64 around a 2 x 90 mm sheet; every vertex lies between the
+    // inner ring's inner edge and the surface, and each ring holds its copies' centres.
+    zf_ok(
+        d,
+        &[
+            &base[..],
+            &[
+                "--layout",
+                "planet",
+                "--rows",
+                "3",
+                "--planet-radius",
+                "90",
+                "--style",
+                "filled",
+                "-o",
+                "p.svg",
+            ],
+        ]
+        .concat(),
+    );
+    let p = read(&d.join("p.svg"));
+    let (w, h) = size_mm(&p);
+    assert!((w - 180.0).abs() < 1e-3 && (h - 180.0).abs() < 1e-3);
+    let paths = vertices(&p, h);
+    zf_ok(d, &[&base[..], &["--style", "filled", "-o", "tf.svg"]].concat());
+    let per_filled = vertices(&read(&d.join("tf.svg")), 100.0).len();
+    assert_eq!(paths.len(), (16 + 32 + 64) * per_filled);
+    let ring0 = std::f64::consts::TAU * 90.0 / 16.0;
+    let inner = 90.0 - 2.0 * ring0;
+    for v in paths.iter().flatten() {
+        let rho = (v[0] - 90.0).hypot(v[1] - 90.0);
+        assert!(rho > inner - 1e-3 && rho < 90.0 + 1e-3, "vertex at radius {rho}");
+    }
+    // The outermost ring (64 copies) sits between 90 - ring0 / 2 and 90 - ring0 / 4.
+    let mut radii: Vec<f64> = paths
+        .iter()
+        .map(|l| {
+            let n = l.len() as f64;
+            let c = l.iter().fold([0.0, 0.0], |s, q| [s[0] + q[0] / n, s[1] + q[1] / n]);
+            (c[0] - 90.0).hypot(c[1] - 90.0)
+        })
+        .collect();
+    radii.sort_by(f64::total_cmp);
+    let outer = radii.iter().filter(|&&r| r > 90.0 - 0.5 * ring0).count();
+    assert!(outer > 64 * per_filled / 2, "{outer} pieces in the outer ring");
+}
+
+#[test]
+fn reruns_are_byte_identical_and_seeds_differ() {
+    let dir = tmp();
+    let d = dir.path();
+    for fmt in ["svg", "json", "png"] {
+        let args = |seed: &str, name: &str| -> Vec<String> {
+            ["tile", "--seed", seed, "--tries", "2000", "-o", name]
+                .iter()
+                .map(|s| s.to_string())
+                .collect()
+        };
+        let run = |seed: &str, name: &str| {
+            let a = args(seed, name);
+            zf_ok(d, &a.iter().map(String::as_str).collect::<Vec<_>>());
+            read(&d.join(name))
+        };
+        let a = run("9", &format!("a.{fmt}"));
+        let b = run("9", &format!("b.{fmt}"));
+        let c = run("10", &format!("c.{fmt}"));
+        assert_eq!(a, b, "{fmt}");
+        assert_ne!(a, c, "{fmt}");
+    }
+    let png = read(&d.join("a.png"));
+    assert_eq!(&png[1..4], b"PNG");
+}
+
+#[test]
+fn bad_input_is_refused_naming_the_flag() {
+    let dir = tmp();
+    let d = dir.path();
+    std::fs::write(d.join("keep.svg"), b"precious").unwrap_or_else(|e| panic!("{e}"));
+    for (args, flag) in [
+        (vec!["--radius", "30"], "--radius"),
+        (vec!["--rows", "3"], "--rows"),
+        (vec!["--columns", "3"], "--columns"),
+        (vec!["--layout", "mosaic", "--planet-radius", "50"], "--planet-radius"),
+        (vec!["--layout", "planet", "--columns", "8"], "--columns"),
+        (vec!["--width", "-5"], "--width"),
+        (vec!["--spacing", "nan"], "--spacing"),
+        (vec!["--tries", "0"], "--tries"),
+        (vec!["--layout", "planet", "--format", "json"], "--layout"),
+    ] {
+        let o = zf(d, &[&["tile"], &args[..], &["-o", "keep.svg"]].concat());
+        assert_eq!(o.code, 2, "{args:?}: {}", o.stderr);
+        assert!(names_flag(&o.stderr, flag), "{args:?}: {}", o.stderr);
+        assert_eq!(read(&d.join("keep.svg")), b"precious", "{args:?} touched the file");
+    }
+    let o = zf(d, &["tile", "-o", "t.txt"]);
+    assert_eq!(o.code, 2);
+    assert!(names_flag(&o.stderr, "--output"), "{}", o.stderr);
+    assert_eq!(listing(d).len(), 1, "a file was left behind");
+}
+
+/// Pixels of a filled picture (rendered by resvg at `ppmm` pixels per mm) that disagree with
+/// the discs `ds` of the plane: black where no disc is, or white inside one. Pixels within a
+/// pixel and a half of a disc's edge are not judged.
+fn filled_mismatches(svg: &[u8], w: f64, h: f64, ds: &[([f64; 2], f64)], ppmm: f64) -> usize {
+    use resvg::tiny_skia::{Pixmap, Transform};
+    let tree = resvg::usvg::Tree::from_data(svg, &resvg::usvg::Options::default()).unwrap_or_else(|e| panic!("usvg: {e}"));
+    let (nx, ny) = ((w * ppmm).round() as u32, (h * ppmm).round() as u32);
+    let mut pm = Pixmap::new(nx, ny).unwrap_or_else(|| panic!("pixmap"));
+    let s = (ppmm / PX_PER_MM) as f32;
+    resvg::render(&tree, Transform::from_scale(s, s), &mut pm.as_mut());
+    let margin = 1.5 / ppmm;
+    let mut bad = 0;
+    for j in 0..ny {
+        for i in 0..nx {
+            let p = [(f64::from(i) + 0.5) / ppmm, h - (f64::from(j) + 0.5) / ppmm];
+            let d = ds
+                .iter()
+                .map(|(c, r)| (p[0] - c[0]).hypot(p[1] - c[1]) - r)
+                .fold(f64::INFINITY, f64::min);
+            if d.abs() < margin {
+                continue;
+            }
+            let black = pm.pixel(i, j).is_some_and(|px| px.alpha() > 127);
+            if black != (d < 0.0) {
+                bad += 1;
+            }
+        }
+    }
+    bad
+}
+
+/// A filled picture is exactly the plane's discs inside the tile, copies from the rows above
+/// and below and from the neighbours included (rendered, and compared pixel by pixel with the
+/// plane built from the JSON).
+#[test]
+fn filled_picture_is_the_plane_seen_through_the_tile() {
+    let dir = tmp();
+    let d = dir.path();
+    for seed in ["1", "2"] {
+        let args = ["tile", "--seed", seed, "--radius", "8", "--spacing", "2", "--tries", "3000"];
+        zf_ok(d, &[&args[..], &["--style", "filled", "-o", "f.svg"]].concat());
+        zf_ok(d, &[&args[..], &["-o", "f.json"]].concat());
+        let doc = parse_json(&read(&d.join("f.json")));
+        let (w, h, _, _) = spec(&doc);
+        let ds = discs(&doc);
+        let all = plane(&ds, w, h);
+        let svg = read(&d.join("f.svg"));
+        assert_eq!(filled_mismatches(&svg, w, h, &all, 4.0), 0, "seed {seed}");
+        // Without the copies from the row below, the picture disagrees with it.
+        let own_rows: Vec<([f64; 2], f64)> = all.iter().copied().filter(|(c, _)| c[1] >= 0.0).collect();
+        assert!(
+            filled_mismatches(&svg, w, h, &own_rows, 4.0) > 0,
+            "seed {seed}: the check misses the row below"
+        );
+    }
+}

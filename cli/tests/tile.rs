@@ -482,6 +482,7 @@ fn bad_input_is_refused_naming_the_flag() {
         (vec!["--spacing", "nan"], "--spacing"),
         (vec!["--tries", "0"], "--tries"),
         (vec!["--layout", "planet", "--format", "json"], "--layout"),
+        (vec!["--layout", "planet", "--rows", "10", "--columns", "4096"], "--rows"),
     ] {
         let o = zf(d, &[&["tile"], &args[..], &["-o", "keep.svg"]].concat());
         assert_eq!(o.code, 2, "{args:?}: {}", o.stderr);

@@ -237,6 +237,9 @@ fn render_name(r: Render) -> &'static str {
     }
 }
 
+/// The most pieces a drawing may hold (a planet of that many is a file of about 200 MB).
+pub const MAX_PIECES: u64 = 2_000_000;
+
 /// The band of twins Voronoi cobblestones start from (seed 002 uses the top quarter).
 const VORONOI_BAND: f64 = 0.25;
 
@@ -405,6 +408,16 @@ pub fn output(a: &TileArgs) -> Result<(Tile, Vec<u8>), CliError> {
     }
     let (tile, pieces) = compute(a)?;
     let (w, h) = (a.width, a.height);
+    let copies = arr.copies();
+    if copies.saturating_mul(pieces.len() as u64) > MAX_PIECES {
+        return Err(CliError::arg(
+            if a.layout == Layout::Tile { "--radius" } else { "--rows" },
+            format!(
+                "{copies} copies of a picture of {} pieces make more than {MAX_PIECES} pieces, too many to draw; lower --rows or --columns, or raise --radius",
+                pieces.len()
+            ),
+        ));
+    }
     let bytes = match format {
         TileFormat::Json => {
             let mut v = serde_json::to_vec_pretty(&doc(&tile, a)).map_err(|e| CliError::Io(format!("internal: {e}")))?;

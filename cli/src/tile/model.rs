@@ -307,3 +307,68 @@ pub fn grow(spec: &TileSpec) -> Tile {
     }
     Tile { spec: *spec, discs, tries }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn spec() -> TileSpec {
+        TileSpec {
+            width: 100.0,
+            height: 80.0,
+            radius: 5.0,
+            spacing: 1.0,
+            tries: 3000,
+            seed: 3,
+            band: 0.0,
+        }
+    }
+
+    #[test]
+    fn the_size_law_matches_the_copies_above_and_below() {
+        let s = spec();
+        for y in [0.0, 10.0, 40.0, 79.9] {
+            // Half scale above: y -> H + y/2; double scale below: y -> 2y - 2H.
+            assert!((s.factor(s.height + 0.5 * y) - 0.5 * s.factor(y)).abs() < 1e-15);
+            assert!((s.factor(2.0 * y - 2.0 * s.height) - 2.0 * s.factor(y)).abs() < 1e-15);
+        }
+        assert_eq!(s.radius_at(0.0), 5.0);
+        assert_eq!(s.radius_at(s.height), 2.5);
+    }
+
+    #[test]
+    fn the_tries_see_both_configurations_below_and_the_picture_one() {
+        let s = spec();
+        let count = |maps: &[Map], scale: f64| maps.iter().filter(|m| m.s == scale).count();
+        let tries = s.maps(false);
+        let picture = s.maps(true);
+        assert_eq!(tries[0], Map { s: 1.0, dx: 0.0, dy: 0.0 }, "the tile itself first");
+        assert_eq!((count(&tries, 1.0), count(&tries, 0.5), count(&tries, 2.0)), (3, 4, 5));
+        // Row -1 under the tile as a left half (even multiples of W) and a right half (odd).
+        let shifts: Vec<f64> = tries.iter().filter(|m| m.s == 2.0).map(|m| m.dx / s.width).collect();
+        assert!(shifts.contains(&0.0) && shifts.contains(&-1.0));
+        let shifts: Vec<f64> = picture.iter().filter(|m| m.s == 2.0).map(|m| m.dx / s.width).collect();
+        assert_eq!(shifts, [-2.0, 0.0]);
+    }
+
+    #[test]
+    fn growing_is_deterministic_and_twins_pair_up() {
+        let a = grow(&spec());
+        assert_eq!(a, grow(&spec()));
+        assert_ne!(a.discs, grow(&TileSpec { seed: 4, ..spec() }).discs);
+        assert_eq!(a.tries, 3000);
+        for (i, d) in a.discs.iter().enumerate() {
+            if let Some(t) = d.twin {
+                assert_eq!(a.discs[t].twin, Some(i));
+                assert!(((a.discs[t].c[0] - d.c[0]).abs() - 50.0).abs() < 1e-12);
+            }
+        }
+    }
+
+    #[test]
+    fn oversized_discs_are_refused_naming_the_radius() {
+        let s = TileSpec { radius: 19.5, ..spec() };
+        assert_eq!(s.check().map_err(|e| e.0), Err("--radius"));
+        assert!(TileSpec { radius: 19.0, ..spec() }.check().is_ok());
+    }
+}

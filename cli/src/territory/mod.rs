@@ -154,10 +154,7 @@ fn check_plot(a: &TerritoryArgs, format: TerritoryFormat) -> Result<(), CliError
 /// The drawing as G-code: boundary polylines (and with `cells` every other Voronoi edge),
 /// placed on the machine's bed, written by the plot back end with its safety invariants.
 fn gcode(o: &Outcome, a: &TerritoryArgs, desc: String) -> Result<Vec<u8>, CliError> {
-    use crate::plot::{gcode, place, Bounds, Drawing, Fit, Path as PlotPath};
-    let p = &a.plot;
-    let m = p.machine()?;
-    let mut opts = p.gcode_options(&m)?;
+    use crate::plot::{drawing_gcode, Bounds, Drawing, Path as PlotPath};
     let mut lines = Vec::new();
     if a.render == Render::Cells {
         let dual = geom::Dual::of(&o.model.tri, o.clip.bbox());
@@ -174,30 +171,7 @@ fn gcode(o: &Outcome, a: &TerritoryArgs, desc: String) -> Result<Vec<u8>, CliErr
         paths.extend(o.clip.outline_paths());
     }
     let (x0, y0, x1, y1) = o.clip.bbox();
-    let area = m.usable_area(opts.margin);
-    let fit = if p.fit {
-        Fit::Scale
-    } else if p.center {
-        Fit::Center
-    } else {
-        Fit::AsIs
-    };
-    let pl = place(&Bounds { x0, y0, x1, y1 }, &area, fit).map_err(|e| {
-        CliError::arg(
-            "--machine",
-            format!(
-                "{e} of the bed of '{}' ({} x {} mm, margin {} mm); use --fit to scale it or --center to move it",
-                m.name, m.bed.width, m.bed.height, opts.margin
-            ),
-        )
-    })?;
-    let drawing = Drawing { paths }.placed(&pl);
-    opts.header.push(desc);
-    let out = gcode::write(&drawing, &m, &opts).map_err(|e| CliError::arg("--machine", e))?;
-    if !a.quiet {
-        eprintln!("{}", out.figures);
-    }
-    Ok(out.bytes)
+    drawing_gcode(&Drawing { paths }, &Bounds { x0, y0, x1, y1 }, &a.plot, vec![desc], a.quiet)
 }
 
 fn seed_count(s: &str) -> Result<usize, String> {

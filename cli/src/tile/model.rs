@@ -154,9 +154,27 @@ impl TileSpec {
                 ),
             ));
         }
+        // Discs are at least R/2 in radius, so at most W H / (pi R^2 / 4) fit.
+        let most = self.width * self.height / (core::f64::consts::PI * 0.25 * self.radius * self.radius);
+        if most > MAX_DISCS as f64 {
+            return Err((
+                "--radius",
+                format!(
+                    "a {} x {} mm tile could hold about {} discs of radius {} to {}, more than {MAX_DISCS}; use a larger --radius or a smaller tile",
+                    self.width,
+                    self.height,
+                    most.round(),
+                    0.5 * self.radius,
+                    self.radius
+                ),
+            ));
+        }
         Ok(())
     }
 }
+
+/// The most discs a tile may be sized for (each costs up to a dozen copies in the tries).
+pub const MAX_DISCS: u64 = 4_000_000;
 
 /// A disc of the plane: an image of a tile disc.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -370,5 +388,8 @@ mod tests {
         let s = TileSpec { radius: 19.5, ..spec() };
         assert_eq!(s.check().map_err(|e| e.0), Err("--radius"));
         assert!(TileSpec { radius: 19.0, ..spec() }.check().is_ok());
+        // Discs so small that millions would fit.
+        assert_eq!(TileSpec { radius: 0.04, ..spec() }.check().map_err(|e| e.0), Err("--radius"));
+        assert!(TileSpec { radius: 0.06, ..spec() }.check().is_ok());
     }
 }

@@ -63,15 +63,21 @@ fn tile_json(dir: &std::path::Path, args: &[&str]) -> Value {
 /// tile scaled by 2^-r, repeated with period W 2^-r, starting at height 2H (1 - 2^-r); the
 /// discs of the window `[-W, 2W] x [-2H, 2H]`, each with its row.
 fn plane(ds: &[D], w: f64, h: f64) -> Vec<([f64; 2], f64)> {
+    plane_rows(ds, w, h, -1..=2, [-w, 2.0 * w, -2.0 * h, 2.0 * h])
+}
+
+/// The discs of rows `rows` of the plane whose centres lie in the window `[x0, x1, y0, y1]`.
+fn plane_rows(ds: &[D], w: f64, h: f64, rows: std::ops::RangeInclusive<i32>, window: [f64; 4]) -> Vec<([f64; 2], f64)> {
+    let [wx0, wx1, wy0, wy1] = window;
     let mut out = Vec::new();
-    for row in -1i32..=2 {
+    for row in rows {
         let s = 0.5f64.powi(row);
         let y0 = 2.0 * h * (1.0 - s);
-        let (first, last) = ((-w / (w * s)).floor() as i64 - 1, (2.0 * w / (w * s)).ceil() as i64 + 1);
+        let (first, last) = ((wx0 / (w * s)).floor() as i64 - 1, (wx1 / (w * s)).ceil() as i64 + 1);
         for i in first..=last {
             for d in ds {
                 let c = [i as f64 * w * s + s * d.c[0], y0 + s * d.c[1]];
-                if c[0] > -w && c[0] < 2.0 * w && c[1] > -2.0 * h && c[1] < 2.0 * h {
+                if c[0] > wx0 && c[0] < wx1 && c[1] > wy0 && c[1] < wy1 {
                     out.push((c, s * d.r));
                 }
             }
@@ -418,11 +424,13 @@ fn mosaic_and_planet_hold_the_copies_they_claim() {
     let (w, h) = size_mm(&p);
     assert!((w - 180.0).abs() < 1e-3 && (h - 180.0).abs() < 1e-3);
     let paths = vertices(&p, h);
-    zf_ok(d, &[&base[..], &["--style", "filled", "-o", "tf.svg"]].concat());
-    let per_filled = vertices(&read(&d.join("tf.svg")), 100.0).len();
+    // Filled copies draw each of the tile's own discs whole, once per copy.
+    zf_ok(d, &[&base[..], &["-o", "t.json"]].concat());
+    let per_filled = discs(&parse_json(&read(&d.join("t.json")))).len();
     assert_eq!(paths.len(), (16 + 32 + 64) * per_filled);
     let ring0 = std::f64::consts::TAU * 90.0 / 16.0;
-    let inner = 90.0 - 2.0 * ring0;
+    // Ring 0's inner edge, less the largest disc's radius there (whole discs reach across).
+    let inner = 90.0 - 2.0 * ring0 - 5.0 * ring0 / 100.0;
     for v in paths.iter().flatten() {
         let rho = (v[0] - 90.0).hypot(v[1] - 90.0);
         assert!(rho > inner - 1e-3 && rho < 90.0 + 1e-3, "vertex at radius {rho}");

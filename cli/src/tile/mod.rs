@@ -16,7 +16,7 @@ use model::{Tile, TileSpec};
 use render::{Arrangement, Layout, Piece, Render, Sheet, Style};
 use serde::Serialize;
 use std::path::{Path, PathBuf};
-use svg::node::element::{Circle, Description, Group, Path as SvgPath, Title};
+use svg::node::element::{Circle, ClipPath, Definitions, Description, Group, Path as SvgPath, Rectangle, Title};
 use svg::node::Text;
 use svg::Document;
 
@@ -346,8 +346,9 @@ fn command_line(a: &TileArgs, arr: &Arrangement) -> String {
 
 const P: usize = 4;
 
-/// The drawing as SVG (mm, y up in the tile's frame, so flipped on the page).
-pub fn svg(pieces: &[Piece], sheet: Sheet, style: Style, pen_width: f64, title: &str, desc: &str) -> Vec<u8> {
+/// The drawing as SVG (mm, y up in the tile's frame, so flipped on the page). With `clip`,
+/// the drawing is clipped to the sheet (whole shapes of copies reach past its edges).
+pub fn svg(pieces: &[Piece], sheet: Sheet, style: Style, pen_width: f64, clip: bool, title: &str, desc: &str) -> Vec<u8> {
     let pt = |p: [f64; 2]| format!("{},{}", num(p[0], P), num(sheet.height - p[1], P));
     let line = |l: &[[f64; 2]]| l.iter().map(|&p| pt(p)).collect::<Vec<_>>().join(" L");
     let mut g = Group::new()
@@ -361,12 +362,7 @@ pub fn svg(pieces: &[Piece], sheet: Sheet, style: Style, pen_width: f64, title: 
             .set("stroke-width", num(pen_width, P))
             .set("stroke-linecap", "round")
             .set("stroke-linejoin", "round"),
-        // A black hairline closes the anti-aliasing seams where pieces of copies meet.
-        Style::Filled => g
-            .set("fill", "black")
-            .set("stroke", "black")
-            .set("stroke-width", "0.1")
-            .set("stroke-linejoin", "round"),
+        Style::Filled => g.set("fill", "black").set("stroke", "none"),
     };
     for piece in pieces {
         g = match piece {
@@ -381,14 +377,21 @@ pub fn svg(pieces: &[Piece], sheet: Sheet, style: Style, pen_width: f64, title: 
             _ => g,
         };
     }
-    let d = Document::new()
+    let mut d = Document::new()
         .set("xmlns:inkscape", "http://www.inkscape.org/namespaces/inkscape")
         .set("width", format!("{}mm", num(sheet.width, P)))
         .set("height", format!("{}mm", num(sheet.height, P)))
         .set("viewBox", format!("0 0 {} {}", num(sheet.width, P), num(sheet.height, P)))
         .add(Title::new("").add(Text::new(title)))
-        .add(Description::new().add(Text::new(desc)))
-        .add(g);
+        .add(Description::new().add(Text::new(desc)));
+    if clip {
+        let rect = Rectangle::new()
+            .set("width", num(sheet.width, P))
+            .set("height", num(sheet.height, P));
+        d = d.add(Definitions::new().add(ClipPath::new().set("id", "sheet").add(rect)));
+        g = g.set("clip-path", "url(#sheet)");
+    }
+    let d = d.add(g);
     let mut s = d.to_string();
     s.push('\n');
     s.into_bytes()
@@ -424,7 +427,7 @@ pub fn output(a: &TileArgs) -> Result<(Tile, Vec<u8>), CliError> {
             v.push(b'\n');
             v
         }
-        TileFormat::Gcode => gcode(&arr.lay_out(&pieces, w, h), arr.sheet(w, h), a, command_line(a, &arr))?,
+        TileFormat::Gcode => gcode(&arr.lay_out(&pieces, w, h, false), arr.sheet(w, h), a, command_line(a, &arr))?,
         TileFormat::Svg | TileFormat::Png => {
             let title = format!(
                 "zetafill: fractal tile, {} discs ({} doppelgangers), seed {}, {} {}",
@@ -434,11 +437,21 @@ pub fn output(a: &TileArgs) -> Result<(Tile, Vec<u8>), CliError> {
                 render_name(a.render),
                 layout_name(a.layout)
             );
+            // Filled copies draw the tile's own shapes whole (the sheet's edge cuts them).
+            let whole = a.style == Style::Filled && a.layout != Layout::Tile;
+            let own;
+            let drawn = if whole {
+                own = render::own_pieces(&tile, a.render)?;
+                &own
+            } else {
+                &pieces
+            };
             let svg = svg(
-                &arr.lay_out(&pieces, w, h),
+                &arr.lay_out(drawn, w, h, whole),
                 arr.sheet(w, h),
                 a.style,
                 a.pen_width,
+                whole,
                 &title,
                 &command_line(a, &arr),
             );

@@ -193,10 +193,7 @@ pub fn tile_pieces(tile: &Tile, render: Render, style: Style) -> Result<Vec<Piec
             // Every centre whose cell can reach the tile: in a grown tile the cells are a few
             // disc spacings wide, well inside half a tile side (the seam check would catch a
             // tile too sparse for that).
-            let sites: Vec<Pt> = images(tile, 0.5 * w.min(h)).iter().map(|im| im.c).collect();
-            let pts = sites.iter().map(|&p| geom::p2(p)).collect();
-            let tri: DelaunayTriangulation<spade::Point2<f64>> = DelaunayTriangulation::bulk_load_stable(pts)
-                .map_err(|e| CliError::Io(format!("internal: cannot triangulate the centres: {e}")))?;
+            let (sites, tri) = plane_diagram(tile)?;
             if tri.num_vertices() < 3 {
                 return Ok(out);
             }
@@ -213,21 +210,7 @@ pub fn tile_pieces(tile: &Tile, render: Render, style: Style) -> Result<Vec<Piec
                 }
                 Style::Filled => {
                     for v in 0..tri.num_vertices() {
-                        let s = sites[v];
-                        // Each bisector moves towards the site by half the gap of the pair.
-                        let mut poly = vec![[-w, -h], [2.0 * w, -h], [2.0 * w, 2.0 * h], [-w, 2.0 * h]];
-                        for o in geom::neighbours(&tri, v) {
-                            let q = sites[o];
-                            let n = [q[0] - s[0], q[1] - s[1]];
-                            let len = (n[0] * n[0] + n[1] * n[1]).sqrt();
-                            if len == 0.0 || poly.is_empty() {
-                                continue;
-                            }
-                            let inset = 0.5 * tile.spec.gap_between(s[1], q[1]);
-                            let t = (0.5 * len - inset).max(0.0) / len;
-                            poly = geom::clip_half_plane(&poly, [s[0] + t * n[0], s[1] + t * n[1]], n);
-                        }
-                        let poly = cut_to_box(poly, w, h);
+                        let poly = cut_to_box(inset_cell(tile, &tri, &sites, v), w, h);
                         if poly.len() >= 3 {
                             out.push(Piece::Closed(poly));
                         }
@@ -237,6 +220,60 @@ pub fn tile_pieces(tile: &Tile, render: Render, style: Style) -> Result<Vec<Piec
         }
     }
     Ok(out)
+}
+
+type Tri = DelaunayTriangulation<spade::Point2<f64>>;
+
+/// The Delaunay triangulation of every centre of the plane whose cell can reach the tile: in a
+/// grown tile the cells are a few disc spacings wide, well inside half a tile side (the seam
+/// check would catch a tile too sparse for that). The tile's own centres come first, in order.
+fn plane_diagram(tile: &Tile) -> Result<(Vec<Pt>, Tri), CliError> {
+    let (w, h) = (tile.spec.width, tile.spec.height);
+    let sites: Vec<Pt> = images(tile, 0.5 * w.min(h)).iter().map(|im| im.c).collect();
+    let pts = sites.iter().map(|&p| geom::p2(p)).collect();
+    let tri = Tri::bulk_load_stable(pts).map_err(|e| CliError::Io(format!("internal: cannot triangulate the centres: {e}")))?;
+    Ok((sites, tri))
+}
+
+/// The Voronoi cell of site `v`, each bisector moved towards the site by half the gap of the
+/// pair (so the lines between cells follow the size law).
+fn inset_cell(tile: &Tile, tri: &Tri, sites: &[Pt], v: usize) -> Vec<Pt> {
+    let (w, h) = (tile.spec.width, tile.spec.height);
+    let s = sites[v];
+    let mut poly = vec![[-w, -h], [2.0 * w, -h], [2.0 * w, 2.0 * h], [-w, 2.0 * h]];
+    for o in geom::neighbours(tri, v) {
+        let q = sites[o];
+        let n = [q[0] - s[0], q[1] - s[1]];
+        let len = (n[0] * n[0] + n[1] * n[1]).sqrt();
+        if len == 0.0 || poly.is_empty() {
+            continue;
+        }
+        let inset = 0.5 * tile.spec.gap_between(s[1], q[1]);
+        let t = (0.5 * len - inset).max(0.0) / len;
+        poly = geom::clip_half_plane(&poly, [s[0] + t * n[0], s[1] + t * n[1]], n);
+    }
+    poly
+}
+
+/// The tile's own shapes, whole and filled: its discs, or the inset cells of its centres. Laid
+/// out, every shape of the plane is drawn once and whole, so copies meet without the hairline
+/// seams that anti-aliasing leaves where two cut pieces abut.
+pub fn own_pieces(tile: &Tile, render: Render) -> Result<Vec<Piece>, CliError> {
+    match render {
+        Render::Discs => Ok(tile.discs.iter().map(|d| Piece::Circle { c: d.c, r: d.r }).collect()),
+        Render::Voronoi => {
+            let (sites, tri) = plane_diagram(tile)?;
+            if tri.num_vertices() < 3 {
+                return Ok(Vec::new());
+            }
+            // The identity map comes first: the first sites are the tile's own centres.
+            Ok((0..tile.discs.len().min(tri.num_vertices()))
+                .map(|v| inset_cell(tile, &tri, &sites, v))
+                .filter(|p| p.len() >= 3)
+                .map(Piece::Closed)
+                .collect())
+        }
+    }
 }
 
 /// Where the tile's picture crosses its edges, for the seam checks: the x of every open piece's
@@ -372,16 +409,32 @@ impl Arrangement {
     }
 
     /// The copies of the tile's picture, on the sheet.
-    pub fn lay_out(&self, pieces: &[Piece], w: f64, h: f64) -> Vec<Piece> {
+    ///
+    /// With `whole` (the tile's own shapes, whole: see [`own_pieces`]), a mosaic also lays out
+    /// the copies just outside the sheet (a column each side, a row below and above), whose
+    /// shapes reach in across its edges; the sheet's edge cuts them.
+    pub fn lay_out(&self, pieces: &[Piece], w: f64, h: f64, whole: bool) -> Vec<Piece> {
         if self.layout == Layout::Tile {
             return pieces.to_vec();
         }
+        let rim = whole && self.layout == Layout::Mosaic;
+        let rows: Vec<i32> = if rim {
+            (-1..=self.rows as i32).collect()
+        } else {
+            (0..self.rows as i32).collect()
+        };
         let mut out = Vec::new();
-        for k in 0..self.rows {
-            let s = 0.5f64.powi(k as i32);
+        for k in rows {
+            let s = 0.5f64.powi(k);
             let y0 = 2.0 * h * (1.0 - s);
-            let count = u64::from(self.columns) << k;
-            for i in 0..count {
+            // Tiles across the sheet in row k (a row below has half as many, rounded up).
+            let count = if k >= 0 {
+                i64::from(self.columns) << k
+            } else {
+                (i64::from(self.columns) + 1) / 2
+            };
+            let (first, last) = if rim { (-1, count) } else { (0, count - 1) };
+            for i in first..=last {
                 let x0 = i as f64 * w * s;
                 let plane = |p: Pt| [x0 + s * p[0], y0 + s * p[1]];
                 for piece in pieces {

@@ -155,15 +155,15 @@ impl TileSpec {
             ));
         }
         // Discs are at least R/2 in radius, so at most W H / (pi R^2 / 4) fit.
-        let most = self.width * self.height / (core::f64::consts::PI * 0.25 * self.radius * self.radius);
-        if most > MAX_DISCS as f64 {
+        let most = (self.width / self.radius) * (self.height / self.radius) * 4.0 / core::f64::consts::PI;
+        if most.is_nan() || most > MAX_DISCS as f64 {
             return Err((
                 "--radius",
                 format!(
-                    "a {} x {} mm tile could hold about {} discs of radius {} to {}, more than {MAX_DISCS}; use a larger --radius or a smaller tile",
+                    "a {} x {} mm tile could hold about {:.3e} discs of radius {:?} to {:?}, more than {MAX_DISCS}; use a larger --radius or a smaller tile",
                     self.width,
                     self.height,
-                    most.round(),
+                    most,
                     0.5 * self.radius,
                     self.radius
                 ),

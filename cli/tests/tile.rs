@@ -559,3 +559,50 @@ fn filled_picture_is_the_plane_seen_through_the_tile() {
         );
     }
 }
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig {
+        cases: 48,
+        failure_persistence: None,
+        rng_seed: proptest::test_runner::RngSeed::Fixed(0x711e),
+        ..proptest::prelude::ProptestConfig::default()
+    })]
+
+    /// Any tile the flags allow is grown without a panic, refused with exit 2 or written; a
+    /// written one has no overlap anywhere in the plane and the size law on every disc.
+    #[test]
+    fn any_tile_is_refused_cleanly_or_valid(
+        w in 20.0f64..200.0,
+        h in 20.0f64..200.0,
+        r in 0.5f64..10.0,
+        sp in 0.0f64..5.0,
+        tries in 1u64..800,
+        seed in 0u64..1000,
+        voronoi in proptest::bool::ANY,
+    ) {
+        use clap::Parser;
+        let args: Vec<String> = [
+            "zetafill", "tile", "--width", &w.to_string(), "--height", &h.to_string(), "--radius", &r.to_string(),
+            "--spacing", &sp.to_string(), "--tries", &tries.to_string(), "--seed", &seed.to_string(),
+            "--render", if voronoi { "voronoi" } else { "discs" }, "-o", "t.json",
+        ]
+        .iter()
+        .map(|s| s.to_string())
+        .collect();
+        let Ok(zetafill_cli::Cli { command: zetafill_cli::Command::Tile(a) }) = zetafill_cli::Cli::try_parse_from(&args) else {
+            panic!("{args:?} does not parse")
+        };
+        match zetafill_cli::tile::output(&a) {
+            Err(e) => proptest::prop_assert_eq!(e.exit_code(), 2, "{:?}: {}", args, e),
+            Ok((_, bytes)) => {
+                let doc = parse_json(&bytes);
+                let ds = discs(&doc);
+                let bad = overlaps(&ds, w, h, sp);
+                proptest::prop_assert!(bad.is_empty(), "{:?}: {:?}", args, bad.first());
+                for d in &ds {
+                    proptest::prop_assert!(rel(d.r, r * (1.0 - d.c[1] / (2.0 * h))) < 1e-12);
+                }
+            }
+        }
+    }
+}

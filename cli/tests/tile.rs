@@ -606,3 +606,16 @@ proptest::proptest! {
         }
     }
 }
+
+/// A long run piped (as here) prints its one summary line and no progress bar; `-q` prints
+/// nothing.
+#[test]
+fn long_runs_are_quiet_when_piped() {
+    let dir = tmp();
+    let d = dir.path();
+    let o = zf_ok(d, &["tile", "--tries", "2500000", "-o", "t.json"]);
+    assert_eq!(o.stderr.lines().count(), 1, "{:?}", o.stderr);
+    assert!(o.stderr.contains("in 2500000 tries") && !o.stderr.contains('\r'), "{:?}", o.stderr);
+    let o = zf_ok(d, &["tile", "--tries", "2500000", "-q", "-o", "t.json"]);
+    assert!(o.stderr.is_empty(), "{:?}", o.stderr);
+}

@@ -15,6 +15,7 @@ use clap::{Args, ValueEnum};
 use model::{Tile, TileSpec};
 use render::{Arrangement, Layout, Piece, Render, Sheet, Style};
 use serde::Serialize;
+use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 use svg::node::element::{Circle, ClipPath, Definitions, Description, Group, Path as SvgPath, Rectangle, Title};
 use svg::node::Text;
@@ -240,6 +241,9 @@ fn render_name(r: Render) -> &'static str {
 /// The most pieces a drawing may hold (a planet of that many is a file of about 200 MB).
 pub const MAX_PIECES: u64 = 2_000_000;
 
+/// Tile runs of at least this many tries show a progress bar on a terminal.
+const LONG_RUN: u64 = 2_000_000;
+
 /// The band of twins Voronoi cobblestones start from (seed 002 uses the top quarter).
 const VORONOI_BAND: f64 = 0.25;
 
@@ -259,12 +263,30 @@ pub fn compute(a: &TileArgs) -> Result<(Tile, Vec<Piece>), CliError> {
         band: if a.render == Render::Voronoi { VORONOI_BAND } else { 0.0 },
     };
     spec.check().map_err(|(flag, msg)| CliError::arg(flag, msg))?;
+    // Long runs show their tries on a terminal (and nothing when piped or with --quiet).
+    let bar = (a.tries >= LONG_RUN && !a.quiet && std::io::stderr().is_terminal()).then(|| {
+        let b = indicatif::ProgressBar::new(a.tries);
+        if let Ok(style) = indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} tries, {elapsed} (eta {eta})") {
+            b.set_style(style);
+        }
+        b
+    });
     loop {
-        let tile = model::grow(&spec);
+        if let Some(b) = &bar {
+            b.reset();
+        }
+        let tile = model::grow_with(&spec, |t| {
+            if let Some(b) = &bar {
+                b.set_position(t);
+            }
+        });
         // The seams are checked on the outlines, whatever the style drawn.
         let lines = render::tile_pieces(&tile, a.render, Style::Outline)?;
         let gap = render::seam_gaps(&render::ends(&lines, a.width, a.height), a.width);
         if gap <= SEAM_TOLERANCE * a.width.max(a.height) {
+            if let Some(b) = &bar {
+                b.finish_and_clear();
+            }
             let pieces = if a.style == Style::Outline {
                 lines
             } else {
@@ -275,6 +297,9 @@ pub fn compute(a: &TileArgs) -> Result<(Tile, Vec<Piece>), CliError> {
         if a.render == Render::Voronoi && spec.band < 1.0 {
             spec.band = (2.0 * spec.band).min(1.0);
             continue;
+        }
+        if let Some(b) = &bar {
+            b.finish_and_clear();
         }
         if a.render == Render::Discs {
             // Twins make the discs across the top repeat at half the width: only a fault

@@ -273,6 +273,14 @@ fn pair_clear(spec: &TileSpec, maps: &[Map], a: (Pt, f64), b: (Pt, f64)) -> bool
 /// Grows a tile: seed 002's loop with the copies and doppelgangers described above.
 /// Deterministic: the same spec gives the same discs.
 pub fn grow(spec: &TileSpec) -> Tile {
+    grow_with(spec, |_| {})
+}
+
+/// How many tries pass between two calls of the progress callback.
+pub const PROGRESS_EVERY: u64 = 1 << 16;
+
+/// [`grow`], calling `progress` with the tries made every [`PROGRESS_EVERY`] tries.
+pub fn grow_with(spec: &TileSpec, mut progress: impl FnMut(u64)) -> Tile {
     let (w, h) = (spec.width, spec.height);
     // A candidate has radius at most R; an image that can touch the tile at most 2R (a disc
     // of the double-scale row near its top edge); the gap is at most S f(-reach) < 2S. So
@@ -290,6 +298,9 @@ pub fn grow(spec: &TileSpec) -> Tile {
     let fits = |grid: &Grid, c: Pt, r: f64| grid.clear(spec, c, r, rmax, gmax) && pair_clear(spec, others, (c, r), (c, r));
     while tries < spec.tries {
         tries += 1;
+        if tries % PROGRESS_EVERY == 0 {
+            progress(tries);
+        }
         let x = w * zetafill::rng::unit::<f64, _>(&mut rng);
         let y = h * zetafill::rng::unit::<f64, _>(&mut rng);
         let r = spec.radius_at(y);

@@ -105,7 +105,7 @@ pub struct FillArgs {
     #[arg(long, default_value_t = 0.0, value_parser = spec::non_negative, allow_negative_numbers = true)]
     pub gap: f64,
     /// Trial limit per placement; reaching it halts the fill (exit 3).
-    #[arg(long = "max-trials", default_value_t = 10_000_000, value_parser = clap::value_parser!(u64).range(1..))]
+    #[arg(long = "max-trials", default_value_t = DEFAULT_MAX_TRIALS, value_parser = clap::value_parser!(u64).range(1..))]
     pub max_trials: u64,
     /// RNG seed.
     #[arg(long, default_value_t = 1)]
@@ -117,7 +117,8 @@ pub struct FillArgs {
     /// Number type of the engine: f64 or fixed (32.32 fixed point).
     #[arg(long, value_enum, default_value = "f64")]
     pub scalar: ScalarArg,
-    /// Output path; the format comes from the extension (.svg .png .json .csv); '-' is stdout.
+    /// Output path; the format comes from the extension (.svg .png .json .csv .gcode/.nc);
+    /// '-' is stdout.
     #[arg(short = 'o', long)]
     pub output: PathBuf,
     /// Output format (overrides the extension).
@@ -195,15 +196,46 @@ fn capacity(params: &Params, area: f64, stop: &Stop) -> Result<u64, CliError> {
     stopping::capacity(c, n, stop, SHAPES, width)
 }
 
-/// Advice for a halt at placement `index`.
+/// The default of `--max-trials`.
+pub const DEFAULT_MAX_TRIALS: u64 = 10_000_000;
+
+/// Advice for a halt at placement `index` (at least 1: a halt at the first placement is
+/// [`first_shape_error`]).
 fn halt_advice(index: u64) -> &'static str {
-    if index == 0 {
-        "no place was found for the first shape: it probably does not fit the region; lower --c or raise --n-offset"
-    } else if index < 100 {
+    if index < 100 {
         "the first shapes left no room for this one: lower --c, raise --n-offset, or try another --seed"
     } else {
         "raise --max-trials, lower --c, or ask for fewer shapes"
     }
+}
+
+/// The usage error of a fill that cannot place its first shape: `halt` is `None` when the
+/// core knows the shape is too large for the region, or the trials spent before giving up.
+/// Nothing is written: an output with no shape is no drawing.
+fn first_shape_error(params: &Params, area: f64, zeta: f64, halt: Option<u64>) -> CliError {
+    let kind = params.shape.kind_of(0);
+    let a0 = area / (zeta * zetafill::scalar::powf(params.n_offset, params.c));
+    let width = kind.min_width(kind.scale_for_area(a0));
+    let what = match halt {
+        None => "does not fit the region".to_string(),
+        Some(t) if t < params.max_trials => "does not fit anywhere in the region".to_string(),
+        Some(t) => format!("never fit in the region ({t} trials found no place for it)"),
+    };
+    let mut advice = String::from("lower --c or raise --n-offset (a smaller first shape)");
+    if params.gap > 0.0 {
+        advice.push_str(", lower --gap");
+    }
+    advice.push_str(" or use a larger --region");
+    if halt.is_some_and(|t| t >= params.max_trials && params.max_trials < DEFAULT_MAX_TRIALS) {
+        advice.push_str("; if it does fit, raise --max-trials");
+    }
+    CliError::arg(
+        "--c",
+        format!(
+            "the first {} ({width:.4} mm wide, area {a0:.4} mm²) {what}; {advice}",
+            spec::kind_name(&kind)
+        ),
+    )
 }
 
 /// The concrete geometry of a placed shape as a [`ShapeDoc`].
@@ -358,24 +390,34 @@ fn check_known_limit(params: &Params, region: &Region<'_>) -> Result<(), CliErro
     if fits(params.c) {
         return Ok(());
     }
-    let (mut lo, mut hi) = (1.0 + 1e-9, params.c);
+    // However small the shapes (N large), the gap alone may leave no room for two.
+    let room = |gap: f64| first_two_fit(kind, 0.0, 0.0, *width, *height, gap);
+    if !room(params.gap) {
+        let ok = bisect(0.0, params.gap, room);
+        return Err(CliError::arg(
+            "--gap",
+            format!(
+                "{} mm leaves no room for two {}s in this {} x {} mm region, whatever --c and --n-offset; lower it below {:.4} mm or enlarge --region",
+                params.gap,
+                spec::kind_name(kind),
+                width,
+                height,
+                ok
+            ),
+        ));
+    }
+    let lo = 1.0 + 1e-9;
     if !fits(lo) {
         return Err(CliError::arg(
             "--n-offset",
             format!(
-                "the first two {}s cannot both fit this region for any c; raise --n-offset or enlarge --region",
-                spec::kind_name(kind)
+                "the first two {}s cannot both fit this region for any c; raise --n-offset{} or enlarge --region",
+                spec::kind_name(kind),
+                if params.gap > 0.0 { ", lower --gap" } else { "" }
             ),
         ));
     }
-    for _ in 0..60 {
-        let mid = 0.5 * (lo + hi);
-        if fits(mid) {
-            lo = mid;
-        } else {
-            hi = mid;
-        }
-    }
+    let lo = bisect(lo, params.c, fits);
     Err(CliError::arg(
         "--c",
         format!(
@@ -385,6 +427,20 @@ fn check_known_limit(params: &Params, region: &Region<'_>) -> Result<(), CliErro
             lo
         ),
     ))
+}
+
+/// Where `works` turns false between `ok` (where it holds) and `bad` (where it does not):
+/// the last value found to work after 60 halvings.
+fn bisect(mut ok: f64, mut bad: f64, works: impl Fn(f64) -> bool) -> f64 {
+    for _ in 0..60 {
+        let mid = 0.5 * (ok + bad);
+        if works(mid) {
+            ok = mid;
+        } else {
+            bad = mid;
+        }
+    }
+    ok
 }
 
 /// The number type the engine computes in.
@@ -505,7 +561,8 @@ fn run_engine<S: zetafill::Scalar>(
     })
 }
 
-/// Runs the fill and returns the document (and the halt, if any). Nothing is written.
+/// Runs the fill and returns the document (and the halt, if any, after at least one
+/// placement: a first shape that finds no place is a usage error). Nothing is written.
 pub fn compute(a: &FillArgs) -> Result<(FillDoc, Option<StepError>), CliError> {
     let data = RegionData::load(&a.region)?;
     let region = data.region(a.periodic)?;
@@ -539,19 +596,9 @@ pub fn compute(a: &FillArgs) -> Result<(FillDoc, Option<StepError>), CliError> {
         StopReason::Count => ("count", None),
         StopReason::Fill => ("fill", None),
         StopReason::MinSize => ("min-size", None),
+        StopReason::Step(StepError::CannotFit { index: 0 }) => return Err(first_shape_error(&params, area, zeta, None)),
+        StopReason::Step(StepError::Halted { index: 0, trials }) => return Err(first_shape_error(&params, area, zeta, Some(trials))),
         StopReason::Step(e @ StepError::Halted { .. }) => ("halted", Some(e)),
-        StopReason::Step(StepError::CannotFit { index: 0 }) => {
-            let kind = params.shape.kind_of(0);
-            let a0 = area / (zeta * zetafill::scalar::powf(params.n_offset, params.c));
-            let s = kind.scale_for_area(a0);
-            return Err(CliError::arg(
-                "--c",
-                format!(
-                    "the first shape (area {a0:.4} mm², width {:.4} mm) does not fit the region; lower --c or raise --n-offset",
-                    kind.min_width(s)
-                ),
-            ));
-        }
         StopReason::Step(e @ StepError::CannotFit { .. }) => ("halted", Some(e)),
         StopReason::Step(e @ StepError::Capacity { .. }) => return Err(CliError::Io(format!("internal: {e}"))),
     };
@@ -617,10 +664,10 @@ pub fn render(doc: &FillDoc, format: Format, a: &FillArgs) -> Result<Vec<u8>, Cl
 /// `zetafill fill`.
 pub fn run(a: &FillArgs) -> Result<(), CliError> {
     let dest = Dest::parse(&a.output);
-    let inputs: Vec<&std::path::Path> = match &a.region {
-        RegionSpec::Svg(p) => vec![p.as_path()],
-        _ => vec![],
-    };
+    let mut inputs: Vec<&std::path::Path> = a.plot.machine_file().into_iter().collect();
+    if let RegionSpec::Svg(p) = &a.region {
+        inputs.push(p.as_path());
+    }
     dest.check("--output", &inputs)?;
     let format = Format::resolve(a.format, &a.output)?;
     // Plotter flags (machine profile, feeds, power, hatch, page) are checked before the fill

@@ -40,8 +40,18 @@ pub enum Render {
     Zoom,
 }
 
-/// Arguments of `zetafill line`.
+/// Arguments of `zetafill line`. Only its G-code reads the plotter flags, and it has no pages
+/// or layers: their help says so, and `--page` and `--layers` are left out of it.
 #[derive(Debug, Args)]
+#[command(
+    mut_arg("page", |a| a.hide(true)),
+    mut_arg("layers", |a| a.hide(true)),
+    mut_arg("fit", |a| a.help("G-code: scale the drawing to fill the bed less --margin, centred")),
+    mut_arg("center", |a| a.help("G-code: centre the drawing on the bed")),
+    mut_arg("margin", |a| a.help("G-code: keep-out border of the bed in mm [default: 0]")),
+    mut_arg("hatch", |a| a.help("G-code: hatch bars and circles, SPACING[:ANGLE] in mm and degrees (default angle 45)")),
+    mut_arg("min_feature", |a| a.help("G-code: leave out segments shorter than MM (the pen's or beam's width)")),
+)]
 pub struct LineArgs {
     /// Length L of the interval in mm.
     #[arg(long, default_value_t = 200.0, value_parser = spec::positive, allow_negative_numbers = true)]
@@ -76,7 +86,8 @@ pub struct LineArgs {
     /// RNG seed.
     #[arg(long, default_value_t = 1)]
     pub seed: u64,
-    /// Output path; the format comes from the extension (.svg .png .json .csv); '-' is stdout.
+    /// Output path; the format comes from the extension (.svg .png .json .csv .gcode/.nc);
+    /// '-' is stdout.
     #[arg(short = 'o', long)]
     pub output: PathBuf,
     /// Output format (overrides the extension).
@@ -788,11 +799,18 @@ pub fn render(doc: &LineDoc, format: Format, a: &LineArgs) -> Result<Vec<u8>, Cl
     })
 }
 
-/// Refuses, before any work, a plot flag that `format` does not read: only the G-code reads
-/// them (the SVG is the paper's figure), and it has no pages, layers, zoom, or hatched dashes.
+/// Refuses, before any work, a plot flag that `format` does not read: no output has pages or
+/// layers, only the G-code reads the other plot flags (the SVG is the paper's figure), and it
+/// has no zoom or hatched dashes.
 fn check_plot(a: &LineArgs, format: Format) -> Result<(), CliError> {
     let p = &a.plot;
     p.build_options()?;
+    if p.page.is_some() || p.layers != crate::plot::Layers::None {
+        return Err(CliError::arg(
+            if p.page.is_some() { "--page" } else { "--layers" },
+            "is not available for line in any format: its SVG is the interval at full size, with no page or layers, and its G-code goes on the machine's bed (--fit, --center, --margin); drop it",
+        ));
+    }
     if format != Format::Gcode {
         return p.refuse_except(&[], |_| crate::plot::FOR_GCODE.to_string());
     }
@@ -816,7 +834,8 @@ pub fn run(a: &LineArgs) -> Result<(), CliError> {
         ));
     }
     let dest = Dest::parse(&a.output);
-    dest.check("--output", &[])?;
+    let inputs: Vec<&std::path::Path> = a.plot.machine_file().into_iter().collect();
+    dest.check("--output", &inputs)?;
     let format = Format::resolve(a.format, &a.output)?;
     check_plot(a, format)?;
     let (doc, halt) = compute(a)?;

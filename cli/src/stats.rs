@@ -11,7 +11,6 @@ pub mod halting;
 pub mod trials;
 
 use crate::error::CliError;
-use crate::output::Format;
 use crate::spec;
 use crate::write::Dest;
 use clap::{Args, Subcommand};
@@ -63,16 +62,35 @@ pub struct GasketArgs {
     pub json: bool,
 }
 
+/// What `stats trials` and `stats halting` write.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum ChartFormat {
+    /// The numbers, one row per point.
+    Csv,
+    /// A chart.
+    Svg,
+}
+
 /// Where a chart-writing subcommand (`name`, e.g. `"stats trials"`) writes: the checked
-/// destination of `--output` and its format, CSV or SVG; `None` without `--output`.
-pub fn chart_output(output: Option<&PathBuf>, format: Option<Format>, name: &str) -> Result<Option<(Dest, Format)>, CliError> {
+/// destination of `--output` and its format, `--format` or else the extension (SVG for `-`);
+/// `None` without `--output`.
+pub fn chart_output(output: Option<&PathBuf>, format: Option<ChartFormat>, name: &str) -> Result<Option<(Dest, ChartFormat)>, CliError> {
     let Some(p) = output else { return Ok(None) };
     let dest = Dest::parse(p);
+    let ext = p.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase);
+    let f = match (format, ext.as_deref()) {
+        (Some(f), _) => f,
+        _ if dest == Dest::Stdout => ChartFormat::Svg,
+        (None, Some("csv")) => ChartFormat::Csv,
+        (None, Some("svg")) => ChartFormat::Svg,
+        (None, _) => {
+            return Err(CliError::arg(
+                "--output",
+                format!("{name} writes .csv or .svg; end the file name in one of them, or give --format"),
+            ))
+        }
+    };
     dest.check("--output", &[])?;
-    let f = Format::resolve(format, p)?;
-    if !matches!(f, Format::Csv | Format::Svg) {
-        return Err(CliError::arg("--output", format!("{name} writes .csv or .svg")));
-    }
     Ok(Some((dest, f)))
 }
 

@@ -150,6 +150,19 @@ fn point(v: &Value) -> Option<[f64; 2]> {
 
 /// Reads a fill document (`"mode": "fill"` with a rect region, or `"mode": "line"`) and its c.
 pub fn read_set(doc: &Value) -> Result<(FillSet, f64), CliError> {
+    match doc.get("mode").and_then(Value::as_str) {
+        Some("fill" | "line") => {}
+        Some(other) => {
+            return Err(bad(format!(
+                "this is a `zetafill {other}` JSON, not a fill or line JSON; give a JSON file written by zetafill fill or zetafill line"
+            )))
+        }
+        None => {
+            return Err(bad(
+                "not a fill or line JSON (it has no \"mode\"); give a JSON file written by zetafill fill or zetafill line",
+            ))
+        }
+    }
     let c = doc
         .get("params")
         .map(|p| num(p, "c"))

@@ -12,7 +12,6 @@
 use super::chart::{self, HaltingSeries};
 use super::trials::{rect_2d, run_2d, shape_2d, shape_label, Rotate, RunSpec};
 use crate::error::CliError;
-use crate::output::Format;
 use crate::spec;
 use clap::Args;
 use rayon::prelude::*;
@@ -71,7 +70,7 @@ pub struct HaltingArgs {
     pub output: Option<PathBuf>,
     /// Output format (overrides the extension): csv or svg.
     #[arg(long, value_enum)]
-    pub format: Option<Format>,
+    pub format: Option<super::ChartFormat>,
     /// Print one JSON object: {"points": [{"c", "runs", "halted", "fraction"}, ...]}.
     #[arg(long)]
     pub json: bool,
@@ -186,7 +185,7 @@ pub fn run(a: &HaltingArgs) -> Result<(), CliError> {
     let points = scan(a)?;
     if let Some((dest, f)) = out {
         let bytes = match f {
-            Format::Svg => {
+            super::ChartFormat::Svg => {
                 let label = format!(
                     "{}{} N = {}",
                     if a.periodic { "periodic, " } else { "inclusive, " },
@@ -203,7 +202,7 @@ pub fn run(a: &HaltingArgs) -> Result<(), CliError> {
                 );
                 chart::halting_chart(&series, &title)?
             }
-            _ => {
+            super::ChartFormat::Csv => {
                 let mut s = String::from("c,runs,halted,fraction\n");
                 for p in &points {
                     let _ = writeln!(s, "{},{},{},{}", p.c, p.runs, p.halted, p.fraction);

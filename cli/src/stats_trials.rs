@@ -9,7 +9,6 @@
 
 use super::chart::{self, TrialsSeries};
 use crate::error::CliError;
-use crate::output::Format;
 use crate::spec;
 use clap::{Args, ValueEnum};
 use rayon::prelude::*;
@@ -185,7 +184,7 @@ pub struct TrialsArgs {
     pub output: Option<PathBuf>,
     /// Output format (overrides the extension): csv or svg.
     #[arg(long, value_enum)]
-    pub format: Option<Format>,
+    pub format: Option<super::ChartFormat>,
     /// Print one JSON object: {"exponent", "placed", "trials", ...} of the first run, and
     /// every run under "series".
     #[arg(long)]
@@ -288,11 +287,11 @@ pub fn run(a: &TrialsArgs) -> Result<(), CliError> {
     }
     if let Some((dest, f)) = out {
         let bytes = match f {
-            Format::Svg => {
+            super::ChartFormat::Svg => {
                 let title = format!("cumulative trials, {} N = {}", shape_label(&a.shape), a.n_offset);
                 chart::trials_chart(&curves, &title)?
             }
-            _ => csv.into_bytes(),
+            super::ChartFormat::Csv => csv.into_bytes(),
         };
         dest.write(&bytes)?;
     }

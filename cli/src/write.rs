@@ -1,6 +1,8 @@
 //! Output destinations: a file written atomically (a temporary file in the same folder,
-//! renamed into place), or standard output for `-`. A failure or Ctrl-C never leaves a
-//! truncated file and never destroys an existing one.
+//! renamed into place), a stream written straight into (a character device such as
+//! `/dev/null`, or a named pipe), or standard output for `-`. A failure or Ctrl-C never leaves
+//! a truncated file and never destroys an existing one; a symbolic link is followed (the file
+//! it points to is replaced, the link stays), and a device or pipe is never replaced.
 
 use crate::error::CliError;
 use std::io::Write;
@@ -15,6 +17,19 @@ pub enum Dest {
     File(PathBuf),
 }
 
+/// What an output path names, symbolic links followed.
+#[derive(Debug, Clone, PartialEq, Eq)]
+enum Target {
+    /// A regular file or nothing yet: written atomically at this path, the end of any chain of
+    /// symbolic links (so a link stays a link and its file gets the bytes).
+    File(PathBuf),
+    /// A character device or a named pipe: written straight into, since nothing can be
+    /// renamed over it without destroying it (and atomicity means nothing there).
+    Stream,
+    /// A folder, a socket, a block device: never written.
+    Other,
+}
+
 impl Dest {
     /// Parses `-o`: `-` is standard output.
     pub fn parse(s: &Path) -> Dest {
@@ -25,16 +40,14 @@ impl Dest {
         }
     }
 
-    /// Checks before any work that the destination can be written: not a directory, its
-    /// folder exists, and it is none of `inputs`.
+    /// Checks before any work that the destination can be written: not a directory, none
+    /// of `inputs`, a file (or the file a symbolic link points to) whose folder exists and
+    /// takes new files and which is not read-only, or else a character device or a named
+    /// pipe. Every refusal is a usage error naming `arg`.
     pub fn check(&self, arg: &str, inputs: &[&Path]) -> Result<(), CliError> {
         let Dest::File(p) = self else { return Ok(()) };
         if p.is_dir() {
             return Err(CliError::arg(arg, format!("'{}' is a directory; give a file name", p.display())));
-        }
-        let dir = parent_dir(p);
-        if !dir.is_dir() {
-            return Err(CliError::arg(arg, format!("the folder '{}' does not exist", dir.display())));
         }
         for i in inputs {
             if same_file(p, i) {
@@ -44,10 +57,40 @@ impl Dest {
                 ));
             }
         }
-        Ok(())
+        let target = resolve(p).map_err(|e| CliError::arg(arg, format!("cannot use '{}': {e}; choose another path", p.display())))?;
+        match target {
+            Target::Stream => Ok(()),
+            Target::Other => Err(CliError::arg(
+                arg,
+                format!(
+                    "'{}' is not a file, a character device or a named pipe; choose a file path",
+                    p.display()
+                ),
+            )),
+            Target::File(t) => {
+                let dir = parent_dir(&t);
+                if !dir.is_dir() {
+                    return Err(CliError::arg(arg, format!("the folder '{}' does not exist", dir.display())));
+                }
+                if std::fs::metadata(&t).is_ok_and(|m| m.permissions().readonly()) {
+                    return Err(CliError::arg(
+                        arg,
+                        format!("'{}' is read-only; make it writable or choose another path", p.display()),
+                    ));
+                }
+                // The write puts a temporary file beside the output: try one now (it is
+                // removed when dropped), so an unwritable folder is found before the work.
+                temp_in(&dir).map(drop).map_err(|e| {
+                    CliError::arg(
+                        arg,
+                        format!("cannot write in the folder '{}' ({e}); choose another path", dir.display()),
+                    )
+                })
+            }
+        }
     }
 
-    /// Writes `bytes` (atomically for a file).
+    /// Writes `bytes`: atomically for a file, straight into a device or a pipe.
     pub fn write(&self, bytes: &[u8]) -> Result<(), CliError> {
         match self {
             Dest::Stdout => {
@@ -56,7 +99,14 @@ impl Dest {
                     .and_then(|_| out.flush())
                     .map_err(|e| CliError::Io(format!("writing to standard output: {e}")))
             }
-            Dest::File(p) => write_atomic(p, bytes),
+            Dest::File(p) => match resolve(p).map_err(|e| CliError::Io(format!("cannot use '{}': {e}", p.display())))? {
+                Target::File(t) => write_atomic(&t, bytes),
+                Target::Stream => write_stream(p, bytes),
+                Target::Other => Err(CliError::Io(format!(
+                    "'{}' is not a file, a character device or a named pipe; nothing written",
+                    p.display()
+                ))),
+            },
         }
     }
 }
@@ -68,22 +118,86 @@ fn parent_dir(p: &Path) -> PathBuf {
     }
 }
 
+/// Whether `a` and `b` are the same existing file (the same inode on Unix, so hard and
+/// symbolic links are seen through).
 fn same_file(a: &Path, b: &Path) -> bool {
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::MetadataExt;
+        if let (Ok(x), Ok(y)) = (std::fs::metadata(a), std::fs::metadata(b)) {
+            return x.dev() == y.dev() && x.ino() == y.ino();
+        }
+    }
     match (std::fs::canonicalize(a), std::fs::canonicalize(b)) {
         (Ok(x), Ok(y)) => x == y,
         _ => false,
     }
 }
 
+/// What `p` names, following symbolic links.
+fn resolve(p: &Path) -> std::io::Result<Target> {
+    match std::fs::metadata(p) {
+        Ok(m) => {
+            let ft = m.file_type();
+            if ft.is_file() {
+                return Ok(Target::File(link_target(p)?));
+            }
+            #[cfg(unix)]
+            {
+                use std::os::unix::fs::FileTypeExt;
+                if ft.is_char_device() || ft.is_fifo() {
+                    return Ok(Target::Stream);
+                }
+            }
+            Ok(Target::Other)
+        }
+        // A new file, perhaps at the end of a dangling symbolic link.
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => Ok(Target::File(link_target(p)?)),
+        Err(e) => Err(e),
+    }
+}
+
+/// The path at the end of the chain of symbolic links that starts at `p` (`p` itself when it
+/// is not a link). A relative link is taken from the folder that holds it.
+fn link_target(p: &Path) -> std::io::Result<PathBuf> {
+    let mut cur = p.to_path_buf();
+    // Linux gives up after 40 links too (ELOOP).
+    for _ in 0..40 {
+        match std::fs::symlink_metadata(&cur) {
+            Ok(m) if m.file_type().is_symlink() => {
+                let next = std::fs::read_link(&cur)?;
+                cur = if next.is_absolute() { next } else { parent_dir(&cur).join(next) };
+            }
+            Ok(_) => return Ok(cur),
+            Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(cur),
+            Err(e) => return Err(e),
+        }
+    }
+    Err(std::io::Error::other("too many levels of symbolic links"))
+}
+
+fn temp_in(dir: &Path) -> std::io::Result<tempfile::NamedTempFile> {
+    tempfile::Builder::new().prefix(".zetafill-").suffix(".tmp").tempfile_in(dir)
+}
+
+/// Writes `bytes` into a character device or a named pipe (opened for writing, never
+/// created, truncated or renamed over).
+fn write_stream(path: &Path, bytes: &[u8]) -> Result<(), CliError> {
+    let io = |what: &str, e: std::io::Error| CliError::Io(format!("{what} '{}': {e}", path.display()));
+    let mut f = std::fs::OpenOptions::new()
+        .write(true)
+        .open(path)
+        .map_err(|e| io("cannot open", e))?;
+    f.write_all(bytes).and_then(|_| f.flush()).map_err(|e| io("cannot write", e))
+}
+
 /// Writes `bytes` to a temporary file beside `path`, syncs it, and renames it over `path`.
+/// `path` must not be a symbolic link (the link would be replaced): [`Dest::write`] passes
+/// the file a link points to.
 pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), CliError> {
     let dir = parent_dir(path);
     let io = |what: &str, e: std::io::Error| CliError::Io(format!("{what} '{}': {e}", path.display()));
-    let mut tmp = tempfile::Builder::new()
-        .prefix(".zetafill-")
-        .suffix(".tmp")
-        .tempfile_in(&dir)
-        .map_err(|e| io("cannot create a temporary file for", e))?;
+    let mut tmp = temp_in(&dir).map_err(|e| io("cannot create a temporary file for", e))?;
     tmp.write_all(bytes).map_err(|e| io("cannot write", e))?;
     // Temporary files are private (0600); the output gets the mode a new file would get
     // (0644 here) or keeps the mode of the file it replaces.
@@ -96,4 +210,29 @@ pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), CliError> {
     tmp.as_file().sync_all().map_err(|e| io("cannot sync", e))?;
     tmp.persist(path).map_err(|e| io("cannot rename into", e.error))?;
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn links_are_followed_to_their_file() {
+        let dir = tempfile::tempdir().expect("tempdir");
+        let d = dir.path();
+        std::fs::create_dir(d.join("sub")).expect("mkdir");
+        #[cfg(unix)]
+        {
+            std::os::unix::fs::symlink("sub/t.svg", d.join("a.svg")).expect("symlink");
+            std::os::unix::fs::symlink("a.svg", d.join("b.svg")).expect("symlink");
+            // Dangling: the file it names is created.
+            assert_eq!(resolve(&d.join("b.svg")).ok(), Some(Target::File(d.join("sub/t.svg"))));
+            std::fs::write(d.join("sub/t.svg"), b"x").expect("write");
+            assert_eq!(resolve(&d.join("b.svg")).ok(), Some(Target::File(d.join("sub/t.svg"))));
+            std::os::unix::fs::symlink("loop", d.join("loop")).expect("symlink");
+            assert!(resolve(&d.join("loop")).is_err());
+        }
+        assert_eq!(resolve(&d.join("new.svg")).ok(), Some(Target::File(d.join("new.svg"))));
+        assert_eq!(resolve(&d.join("sub")).ok(), Some(Target::Other));
+    }
 }

@@ -371,3 +371,271 @@ fn halting_squares_periodic() {
         1,
     );
 }
+
+// ---------------------------------------------------------------------------------------------
+// Regressions found by the audit of bad input
+
+/// A copy of a built-in machine profile written to `dir/name`.
+fn profile(dir: &Path, name: &str) -> Vec<u8> {
+    let o = zf_ok(dir, &["machines", "show", "grbl-servo-pen"]);
+    std::fs::write(dir.join(name), &o.stdout).unwrap_or_else(|e| panic!("write: {e}"));
+    o.stdout
+}
+
+/// Bug: the `--machine FILE.toml` profile was not an input, so `-o` could overwrite it
+/// (exit 0) in every mode that writes G-code. It is refused like any input, also through a
+/// symbolic link, and the profile is left byte for byte.
+#[test]
+fn output_equal_to_the_machine_profile_is_refused() {
+    let dir = tmp();
+    let d = dir.path();
+    let text = profile(d, "pen.toml");
+    #[cfg(unix)]
+    std::os::unix::fs::symlink("pen.toml", d.join("link.toml")).unwrap_or_else(|e| panic!("symlink: {e}"));
+    let runs: &[&[&str]] = &[
+        &[
+            "fill",
+            "--count",
+            "20",
+            "--machine",
+            "pen.toml",
+            "--format",
+            "gcode",
+            "-o",
+            "pen.toml",
+        ],
+        &[
+            "fill",
+            "--count",
+            "20",
+            "--machine",
+            "./pen.toml",
+            "--format",
+            "gcode",
+            "-o",
+            "pen.toml",
+        ],
+        #[cfg(unix)]
+        &[
+            "fill",
+            "--count",
+            "20",
+            "--machine",
+            "pen.toml",
+            "--format",
+            "gcode",
+            "-o",
+            "link.toml",
+        ],
+        &[
+            "line",
+            "--count",
+            "20",
+            "--machine",
+            "pen.toml",
+            "--format",
+            "gcode",
+            "-o",
+            "pen.toml",
+        ],
+        &[
+            "territory",
+            "--points",
+            "200",
+            "--machine",
+            "pen.toml",
+            "--format",
+            "gcode",
+            "-o",
+            "pen.toml",
+        ],
+        &["tile", "--machine", "pen.toml", "--format", "gcode", "-o", "pen.toml"],
+    ];
+    for args in runs {
+        let o = zf(d, args);
+        assert_eq!(o.code, 2, "zetafill {args:?}: exit {} ({})", o.code, o.stderr);
+        assert!(names_flag(&o.stderr, "--output"), "zetafill {args:?}: {}", o.stderr);
+        assert!(o.stderr.contains("also an input"), "zetafill {args:?}: {}", o.stderr);
+        assert_eq!(read(&d.join("pen.toml")), text, "zetafill {args:?} changed the profile");
+    }
+    // A built-in name is no file: an output of that name is fine.
+    zf_ok(
+        d,
+        &[
+            "fill",
+            "--count",
+            "5",
+            "--machine",
+            "grbl-laser",
+            "--format",
+            "gcode",
+            "-o",
+            "grbl-laser",
+        ],
+    );
+}
+
+/// Whether this process can create a file in `dir` (root can in a folder without write
+/// permission).
+fn can_create_in(dir: &Path) -> bool {
+    tempfile::tempfile_in(dir).is_ok()
+}
+
+/// Bug: an output in a folder that takes no new files was found only after the work (exit 1,
+/// "cannot create a temporary file"). It is refused before, with exit 2 naming --output.
+#[test]
+fn unwritable_output_folder_is_found_before_the_work() {
+    let dir = tmp();
+    let d = dir.path();
+    let mut folders = Vec::new();
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::PermissionsExt;
+        let locked = d.join("locked");
+        std::fs::create_dir(&locked).unwrap_or_else(|e| panic!("mkdir: {e}"));
+        std::fs::set_permissions(&locked, std::fs::Permissions::from_mode(0o555)).unwrap_or_else(|e| panic!("chmod: {e}"));
+        folders.push(locked);
+    }
+    // sysfs takes no new files, not even from root.
+    folders.push(std::path::PathBuf::from("/sys"));
+    let mut tried = 0;
+    for folder in folders.iter().filter(|f| f.is_dir() && !can_create_in(f)) {
+        let out = folder.join("x.svg");
+        let out = out.to_string_lossy();
+        let o = zf(d, &["fill", "--count", "20000", "-o", &out]);
+        assert_eq!(o.code, 2, "-o {out}: exit {} ({})", o.code, o.stderr);
+        assert!(names_flag(&o.stderr, "--output"), "{}", o.stderr);
+        assert!(o.stderr.contains("cannot write in the folder"), "{}", o.stderr);
+        assert!(!folder.join("x.svg").exists());
+        tried += 1;
+    }
+    assert!(tried > 0 || !cfg!(target_os = "linux"), "no unwritable folder to try");
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::PermissionsExt;
+        let _ = std::fs::set_permissions(d.join("locked"), std::fs::Permissions::from_mode(0o755));
+    }
+}
+
+/// Bug: a read-only output file was replaced (the rename needs only the folder's
+/// permission). It is refused with exit 2 and left as it was.
+#[test]
+fn read_only_output_is_refused() {
+    let dir = tmp();
+    let d = dir.path();
+    let p = d.join("out.svg");
+    std::fs::write(&p, KEEP).unwrap_or_else(|e| panic!("write: {e}"));
+    let mut perm = std::fs::metadata(&p).unwrap_or_else(|e| panic!("stat: {e}")).permissions();
+    perm.set_readonly(true);
+    std::fs::set_permissions(&p, perm).unwrap_or_else(|e| panic!("chmod: {e}"));
+    let o = expect_usage(d, &["--count", "20"], "out.svg", &["--output"]);
+    assert!(o.stderr.contains("read-only"), "{}", o.stderr);
+    assert_eq!(read(&p), KEEP);
+    assert_eq!(listing(d), vec![p]);
+}
+
+/// Bug: a fill whose first shape never found a place exited 3 ("halted at placement 0") and
+/// replaced the output with an empty drawing. It is bad input: exit 2, the first shape's
+/// size and the flags to change in the message, nothing written.
+#[test]
+fn first_shape_that_never_fits_is_bad_input() {
+    let frame = r#"<svg xmlns="http://www.w3.org/2000/svg" width="100mm" height="100mm" viewBox="0 0 100 100"><path d="M 0 0 L 100 0 L 100 100 L 0 100 Z M 5 5 L 95 5 L 95 95 L 5 95 Z"/></svg>"#;
+    let plus = "polygon:40,0,60,0,60,40,100,40,100,60,60,60,60,100,40,100,40,60,0,60,0,40,40,40";
+    let cases: &[&[&str]] = &[
+        // Rotated triangles: the core cannot prove it, the trial limit ends the search.
+        &["--shape", "triangle", "--c", "3"],
+        &["--region", plus],
+        &["--region", plus, "--sampler", "reference", "--max-trials", "100000"],
+        &["--region", "svg:frame.svg"],
+        &["--region", "svg:frame.svg", "--sampler", "reference", "--max-trials", "100000"],
+    ];
+    for args in cases {
+        for out in ["out.json", "out.svg"] {
+            let dir = tmp();
+            let d = dir.path();
+            std::fs::write(d.join("frame.svg"), frame).unwrap_or_else(|e| panic!("write: {e}"));
+            let mut a = vec!["fill"];
+            a.extend_from_slice(args);
+            a.extend_from_slice(&["-o", out]);
+            let o = zf(d, &a);
+            assert_eq!(o.code, 2, "zetafill {a:?}: exit {} ({})", o.code, o.stderr);
+            assert!(o.stderr.contains("the first ") && o.stderr.contains(" mm wide"), "{}", o.stderr);
+            for flag in ["--c", "--n-offset", "--region"] {
+                assert!(names_flag(&o.stderr, flag), "zetafill {a:?}: does not name {flag}: {}", o.stderr);
+            }
+            assert!(!o.stderr.contains("halted"), "{}", o.stderr);
+            assert_eq!(listing(d), vec![d.join("frame.svg")], "zetafill {a:?} wrote a file");
+            // An existing output is left as it was.
+            std::fs::write(d.join(out), KEEP).unwrap_or_else(|e| panic!("write: {e}"));
+            assert_eq!(zf(d, &a).code, 2);
+            assert_eq!(read(&d.join(out)), KEEP, "zetafill {a:?} changed the output");
+        }
+    }
+}
+
+/// Bug: a gap that leaves no room for two shapes of any size was blamed on --n-offset
+/// ("raise --n-offset"); it names --gap and its largest workable value.
+#[test]
+fn gap_too_large_for_two_shapes_names_gap() {
+    for shape in ["circle", "square"] {
+        let o = bad(
+            &[
+                "--count",
+                "50",
+                "--gap",
+                "80",
+                "--n-offset",
+                "200",
+                "--shape",
+                shape,
+                "--rotate",
+                "none",
+            ],
+            &["--gap"],
+        );
+        assert!(o.stderr.starts_with("error: --gap:"), "{}", o.stderr);
+        assert!(!o.stderr.contains("raise --n-offset"), "{}", o.stderr);
+    }
+}
+
+/// Bug: a G-code margin that leaves no bed was reported as "--machine: the drawing has no
+/// extent" (with --fit) or as a negative usable area. It names --margin.
+#[test]
+fn margin_that_leaves_no_bed_names_margin() {
+    for args in [
+        &["--margin", "200", "--fit"][..],
+        &["--margin", "200"][..],
+        &["--margin", "150", "--center"][..],
+    ] {
+        let o = bad_to(args, "out.gcode", &["--margin"]);
+        assert!(o.stderr.starts_with("error: --margin:"), "{args:?}: {}", o.stderr);
+        assert!(
+            !o.stderr.contains("no extent") && !o.stderr.contains("-100"),
+            "{args:?}: {}",
+            o.stderr
+        );
+    }
+}
+
+/// `--arcs` with `--no-arcs` is a contradiction, not "the last one wins".
+#[test]
+fn arcs_and_no_arcs_conflict() {
+    bad_to(&["--count", "5", "--arcs", "--no-arcs"], "out.gcode", &["--arcs", "--no-arcs"]);
+    bad_to(&["--count", "5", "--no-arcs", "--arcs"], "out.gcode", &["--arcs", "--no-arcs"]);
+}
+
+/// The help of `-o` lists every extension that works, G-code included.
+#[test]
+fn output_help_lists_gcode() {
+    let dir = tmp();
+    for cmd in ["fill", "line"] {
+        let o = zf_ok(dir.path(), &[cmd, "--help"]);
+        let help = String::from_utf8_lossy(&o.stdout).into_owned();
+        let line = help
+            .lines()
+            .skip_while(|l| !l.trim_start().starts_with("-o, --output"))
+            .nth(1)
+            .unwrap_or_else(|| panic!("{cmd}: no --output in the help"));
+        assert!(line.contains(".gcode") && line.contains(".nc"), "{cmd}: {line}");
+    }
+}

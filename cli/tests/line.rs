@@ -382,3 +382,31 @@ fn the_checker_fails_on_broken_fills() {
     doc["shapes"][2]["start"] = doc["shapes"][1]["start"].clone();
     assert!(check_line(&doc).is_err());
 }
+
+/// Bug: `--page` with SVG was refused as "for G-code output" and with G-code as "for SVG",
+/// while line has pages and layers in no format. One message in every format, and line's
+/// help no longer offers them (nor calls the other plot flags SVG options).
+#[test]
+fn pages_and_layers_are_refused_the_same_way_in_every_format() {
+    let d = tmp();
+    for (flag, value) in [("--page", "a4"), ("--layers", "size-bands:2")] {
+        let mut messages = Vec::new();
+        for out in ["o.svg", "o.gcode", "o.png", "o.json"] {
+            let o = zf(d.path(), &["line", flag, value, "-o", out]);
+            assert_eq!(o.code, 2, "{flag} -o {out}: exit {} ({})", o.code, o.stderr);
+            assert!(o.stderr.starts_with(&format!("error: {flag}:")), "{flag} -o {out}: {}", o.stderr);
+            assert!(o.stderr.contains("any format"), "{flag} -o {out}: {}", o.stderr);
+            messages.push(o.stderr);
+        }
+        assert!(messages.windows(2).all(|w| w[0] == w[1]), "{flag}: {messages:?}");
+    }
+    assert_eq!(d.path().read_dir().map(|r| r.count()).unwrap_or(1), 0, "a file was written");
+    let help = String::from_utf8_lossy(&ok(d.path(), &["line", "--help"]).stdout).into_owned();
+    let plot = help
+        .split("Plotters and lasers:")
+        .nth(1)
+        .unwrap_or_else(|| panic!("no plot flags in: {help}"));
+    for word in ["--page", "--layers", "SVG", "page"] {
+        assert!(!plot.contains(word), "line's plot help mentions {word}: {plot}");
+    }
+}

@@ -320,3 +320,47 @@ fn charts_refuse_other_formats_before_running() {
         assert!(!d.path().join(args[args.len() - 1]).exists(), "{args:?} wrote a file");
     }
 }
+
+/// Bug: `stats trials` and `stats halting` offered every fill format in `--format` and then
+/// refused all but CSV and SVG. The help lists only those, and the parser refuses the rest.
+#[test]
+fn chart_help_offers_only_csv_and_svg() {
+    let d = tmp();
+    for cmd in ["trials", "halting"] {
+        let o = zf(d.path(), &["stats", cmd, "--help"]);
+        assert_eq!(o.code, 0);
+        let help = String::from_utf8_lossy(&o.stdout).into_owned();
+        let format = help
+            .split("--format <FORMAT>")
+            .nth(1)
+            .and_then(|s| s.split("\n\n      -").next())
+            .unwrap_or_else(|| panic!("{cmd}: no --format in the help"));
+        for f in ["- csv", "- svg"] {
+            assert!(format.contains(f), "{cmd}: {format}");
+        }
+        for f in ["json", "png", "digest", "gcode"] {
+            assert!(!format.contains(f), "{cmd} offers {f}: {format}");
+        }
+        let o = zf(d.path(), &["stats", cmd, "--format", "json", "-o", "-"]);
+        assert_eq!(o.code, 2, "{cmd}: {}", o.stderr);
+        assert!(o.stderr.contains("--format"), "{}", o.stderr);
+    }
+}
+
+/// Bug: a territory or tile JSON given to `stats dimension` gave "'c' is missing"; the
+/// message says the file is not a fill or line JSON.
+#[test]
+fn dimension_of_a_territory_or_tile_says_what_the_file_is() {
+    let d = tmp();
+    for (cmd, extra) in [("territory", &["--points", "200"][..]), ("tile", &[][..])] {
+        let mut args = vec![cmd, "-q", "-o", "x.json"];
+        args.extend_from_slice(extra);
+        let o = zf(d.path(), &args);
+        assert_eq!(o.code, 0, "{cmd}: {}", o.stderr);
+        let o = zf(d.path(), &["stats", "dimension", "x.json"]);
+        assert_eq!(o.code, 2, "{cmd}: {}", o.stderr);
+        assert!(o.stderr.contains("not a fill or line JSON"), "{cmd}: {}", o.stderr);
+        assert!(o.stderr.contains(cmd), "{cmd}: {}", o.stderr);
+        assert!(!o.stderr.contains("'c'"), "{cmd}: {}", o.stderr);
+    }
+}

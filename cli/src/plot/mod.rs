@@ -916,10 +916,10 @@ pub struct PlotArgs {
     #[arg(long, value_parser = clap::value_parser!(u32).range(1..=100), help_heading = "Plotters and lasers")]
     pub passes: Option<u32>,
     /// G-code: circles as G2/G3 arcs (default: if the profile allows them).
-    #[arg(long, overrides_with = "no_arcs", help_heading = "Plotters and lasers")]
+    #[arg(long, conflicts_with = "no_arcs", help_heading = "Plotters and lasers")]
     pub arcs: bool,
     /// G-code: circles as polylines within --chord-tolerance.
-    #[arg(long = "no-arcs", overrides_with = "arcs", help_heading = "Plotters and lasers")]
+    #[arg(long = "no-arcs", help_heading = "Plotters and lasers")]
     pub no_arcs: bool,
     /// G-code: largest distance between a circle and the chords that replace it (mm)
     /// [default: 0.01].
@@ -1077,6 +1077,13 @@ impl PlotArgs {
         }
     }
 
+    /// The profile file `--machine` names, if it names one rather than a built-in: an
+    /// input, which no output may overwrite.
+    pub fn machine_file(&self) -> Option<&std::path::Path> {
+        let m = self.machine.as_deref()?;
+        machine::Machine::builtin_text(m).is_none().then(|| std::path::Path::new(m))
+    }
+
     /// The machine with every command-line override applied and checked.
     pub fn machine(&self) -> Result<machine::Machine, CliError> {
         machine::Machine::load(self.machine.as_deref().unwrap_or(DEFAULT_MACHINE)).map_err(|e| CliError::arg("--machine", e))
@@ -1129,6 +1136,20 @@ impl PlotArgs {
         o.chord_tolerance = self.chord_tolerance.unwrap_or(o.chord_tolerance);
         o.order = self.order.unwrap_or(o.order);
         o.margin = self.margin.unwrap_or(0.0);
+        let short = m.bed.width.min(m.bed.height);
+        if 2.0 * o.margin >= short {
+            return Err(CliError::arg(
+                "--margin",
+                format!(
+                    "{} mm leaves no usable area on the {} x {} mm bed of '{}'; it must be under {} mm (half the bed's shorter side)",
+                    o.margin,
+                    m.bed.width,
+                    m.bed.height,
+                    m.name,
+                    short / 2.0
+                ),
+            ));
+        }
         Ok(o)
     }
 

@@ -753,7 +753,7 @@ pub fn render_bytes(o: &Outcome, a: &TerritoryArgs, format: TerritoryFormat) -> 
 /// `zetafill territory`.
 pub fn run(a: &TerritoryArgs) -> Result<(), CliError> {
     let dest = Dest::parse(&a.output);
-    let mut inputs: Vec<&Path> = Vec::new();
+    let mut inputs: Vec<&Path> = a.plot.machine_file().into_iter().collect();
     if let Some(p) = &a.sites_from {
         inputs.push(p.as_path());
     }

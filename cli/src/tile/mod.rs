@@ -493,7 +493,8 @@ pub fn output(a: &TileArgs) -> Result<(Tile, Vec<u8>), CliError> {
 /// Runs `zetafill tile`.
 pub fn run(a: &TileArgs) -> Result<(), CliError> {
     let dest = Dest::parse(&a.output);
-    dest.check("--output", &[])?;
+    let inputs: Vec<&std::path::Path> = a.plot.machine_file().into_iter().collect();
+    dest.check("--output", &inputs)?;
     let (tile, bytes) = output(a)?;
     dest.write(&bytes)?;
     if !a.quiet {

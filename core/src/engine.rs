@@ -16,7 +16,7 @@ use crate::coverage::Coverage;
 use crate::geom::{edges, point_in_poly, seg_dist2, separated, Geo, Point};
 use crate::region::Region;
 use crate::rng;
-use crate::sampler::{CellSampler, Drawn, Field, Verdict};
+use crate::sampler::{CellSampler, Drawn, Field, Verdict, NEAR, NONE};
 use crate::scalar::{powf, Scalar};
 use crate::shape::{Placed, ShapeKind, ShapeList};
 use crate::spatial::SpatialHash;
@@ -224,6 +224,10 @@ impl<S: Scalar> Field<S> for FieldOf<'_, '_, S> {
     fn box_dist(&self, j: u32, c: Point<S>, hw: S, hh: S) -> Option<S> {
         self.0.circle_box_dist(j, c, hw, hh)
     }
+
+    fn gather(&self, c: Point<S>, reach: S, near: &mut [u32; NEAR]) {
+        self.0.gather(c, reach, near);
+    }
 }
 
 /// The fill engine over caller-provided storage.
@@ -413,28 +417,18 @@ impl<'a, S: Scalar> Engine<'a, S> {
                 })
         };
         let periodic = self.region.periodic();
-        let (w, h) = self.period;
         for (level, max_r) in self.hash.occupied() {
             let reach = r + max_r + gap;
             if !periodic {
                 test(level, reach, g, x, y);
             } else {
-                // Every image k W, l H of a stored shape whose reach can meet the candidate;
-                // one period each way unless a long shape in a narrow torus reaches further.
-                let (kx, ky) = (periods(reach, w), periods(reach, h));
-                for l in -ky..=ky {
-                    for k in -kx..=kx {
-                        let (ox, oy) = (w * S::from_f64(k as f64), h * S::from_f64(l as f64));
-                        let (qx, qy) = (x + ox, y + oy);
-                        if qx + reach < S::ZERO || qx - reach > w || qy + reach < S::ZERO || qy - reach > h {
-                            continue;
-                        }
-                        let gi = if k == 0 && l == 0 { *g } else { g.shift(ox, oy) };
-                        test(level, reach, &gi, qx, qy);
-                        if hit.get().is_some() && !lowest {
-                            return hit.get();
-                        }
-                    }
+                self.each_image(x, y, reach, |ox, oy| {
+                    let gi = if ox == S::ZERO && oy == S::ZERO { *g } else { g.shift(ox, oy) };
+                    test(level, reach, &gi, x + ox, y + oy);
+                    hit.get().is_none() || lowest
+                });
+                if hit.get().is_some() && !lowest {
+                    return hit.get();
                 }
             }
             if hit.get().is_some() {
@@ -442,6 +436,27 @@ impl<'a, S: Scalar> Engine<'a, S> {
             }
         }
         None
+    }
+
+    /// On a torus, the shifts `(k W, l H)` that bring `(x, y)` (a point of the region) within
+    /// `reach` of the region's box, where stored shapes' images may lie: one period each way
+    /// unless a long shape in a narrow torus reaches further.
+    /// Calls `f` with each, in order, until it returns false.
+    fn each_image(&self, x: S, y: S, reach: S, mut f: impl FnMut(S, S) -> bool) {
+        let (w, h) = self.period;
+        let (kx, ky) = (periods(reach, w), periods(reach, h));
+        for l in -ky..=ky {
+            for k in -kx..=kx {
+                let (ox, oy) = (w * S::from_f64(k as f64), h * S::from_f64(l as f64));
+                let (qx, qy) = (x + ox, y + oy);
+                if qx + reach < S::ZERO || qx - reach > w || qy + reach < S::ZERO || qy - reach > h {
+                    continue;
+                }
+                if !f(ox, oy) {
+                    return;
+                }
+            }
+        }
     }
 
     /// Whether `g` (centred at `c`, bounding radius `r`) comes within the gap of placed shape
@@ -799,6 +814,56 @@ impl<'a, S: Scalar> Engine<'a, S> {
         let (dx, dy) = (q.x - s.x, q.y - s.y);
         let (ax, ay) = (dx.abs() + hw, dy.abs() + hh);
         Some((ax * ax + ay * ay).sqrt() - s.scale)
+    }
+
+    /// Replaces `near` by the [`NEAR`] shapes nearest to `c` by [`Engine::shape_dist`], among
+    /// those that come within `reach` of `c` (of one of its images, on a torus): the ones
+    /// `near` holds and the ones the spatial hash lists.
+    fn gather(&self, c: Point<S>, reach: S, near: &mut [u32; NEAR]) {
+        // The shapes kept and their distances; a shape nearer than the farthest kept takes
+        // its place.
+        let mut best = [(reach, NONE); NEAR];
+        let mut offer = |j: u32| {
+            if best.iter().any(|b| b.1 == j) {
+                return;
+            }
+            let d = self.shape_dist(j, c);
+            let far = best.iter_mut().fold(None, |m: Option<&mut (S, u32)>, b| match m {
+                Some(m) if m.0 >= b.0 => Some(m),
+                _ => Some(b),
+            });
+            if let Some(f) = far.filter(|f| d < f.0) {
+                *f = (d, j);
+            }
+        };
+        for &j in near.iter().filter(|&&j| j != NONE) {
+            offer(j);
+        }
+        let total = self.len as u32;
+        let periodic = self.region.periodic();
+        for (level, max_r) in self.hash.occupied() {
+            let rr = reach + max_r;
+            let mut look = |qx: S, qy: S| {
+                self.hash.query(level, [qx - rr, qy - rr, qx + rr, qy + rr], total, |j| {
+                    if let Some(p) = self.shapes.get(j as usize) {
+                        let lim = reach + self.kind_of(u64::from(j)).bounding_radius(p.scale);
+                        let (dx, dy) = (p.x - qx, p.y - qy);
+                        if dx * dx + dy * dy < lim * lim {
+                            offer(j);
+                        }
+                    }
+                    true
+                })
+            };
+            if !periodic {
+                look(c.x, c.y);
+            } else {
+                self.each_image(c.x, c.y, rr, |ox, oy| look(c.x + ox, c.y + oy));
+            }
+        }
+        for (n, b) in near.iter_mut().zip(best.iter()) {
+            *n = b.1;
+        }
     }
 
     /// `p`, or on a torus its copy nearest the centre of `s`.

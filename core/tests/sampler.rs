@@ -579,7 +579,7 @@ fn assert_invariant<S: Scalar>(probe: &Probe<'_>, least: Least) {
 /// against every placed shape (and its periodic images). The same checker, given the cells
 /// shrunk by a tenth about their centres, finds valid points left out: it can fail. It also
 /// catches bounds that are too low by a tenth of a cell's half diagonal where a cell learns a
-/// shape.
+/// shape, and a stubborn cell's children bounded over three of their quarters only.
 #[test]
 fn live_cells_hold_every_valid_centre() {
     let (pts, ends) = common::star_with_hole();

@@ -10,7 +10,7 @@
 //! compares: digests, pixels, memory (static + painted stack of the 1,024-shape engine, and
 //! flash), the defmt log decoded by `defmt-print`, and the cost figures.
 //!
-//! Memory: flash must stay within 192 KiB, and static RAM plus the painted stack of the
+//! Memory: flash must stay within 224 KiB, and static RAM plus the painted stack of the
 //! 1,024-shape engine within 48 KiB ([`RAM_LIMIT`]); the figure is printed.
 //!
 //! The Rust target, `qemu-system-arm` and `defmt-print` are installed by
@@ -32,7 +32,7 @@ use zetafill_tests::{run_scene, CANONICAL};
 
 const RAM_TARGET: u64 = 48 * 1024;
 const RAM_LIMIT: u64 = RAM_TARGET;
-const FLASH_BUDGET: u64 = 192 * 1024;
+const FLASH_BUDGET: u64 = 224 * 1024;
 /// A hang guard only (the run takes well under a minute); never a performance assertion.
 const QEMU_LIMIT: Duration = Duration::from_secs(20 * 60);
 
@@ -383,7 +383,7 @@ fn a_1024_shape_engine_fits_the_board() {
     );
     assert_eq!(total, stat + stack);
     assert!(total <= RAM_LIMIT, "static + stack = {total} B > {RAM_LIMIT} B");
-    assert!(flash <= FLASH_BUDGET, "flash {flash} B > 192 KiB");
+    assert!(flash <= FLASH_BUDGET, "flash {flash} B > 224 KiB");
     // Every scene was measured on a freshly painted stack, and the deepest is the one reported.
     let per_scene = lines(&fw.report, "stack");
     assert_eq!(per_scene.len(), SCENES.len());

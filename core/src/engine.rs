@@ -221,8 +221,8 @@ impl<S: Scalar> Field<S> for FieldOf<'_, '_, S> {
         self.0.shape_dist(j, p)
     }
 
-    fn box_dist(&self, j: u32, c: Point<S>, hw: S, hh: S) -> Option<S> {
-        self.0.circle_box_dist(j, c, hw, hh)
+    fn disc(&self, j: u32, p: Point<S>) -> Option<(Point<S>, S)> {
+        self.0.disc(j, p)
     }
 
     fn gather(&self, c: Point<S>, reach: S, near: &mut [u32; NEAR]) {
@@ -800,20 +800,17 @@ impl<'a, S: Scalar> Engine<'a, S> {
         Some(r + self.gap)
     }
 
-    /// When shape `j` is a circle, the largest signed distance to it from any point of the box
-    /// centred on `p` with half sides `hw`, `hh`: the distance to a disc is convex, so that is
-    /// the distance from the farthest corner (all corners taken in the periodic image nearest
-    /// `p`). It is never above the centre's distance plus the half diagonal, and often well
-    /// below. None for other kinds (their inscribed discs give looser bounds than that).
-    fn circle_box_dist(&self, j: u32, p: Point<S>, hw: S, hh: S) -> Option<S> {
+    /// When shape `j` is a circle, its centre in the periodic image nearest `p` (seen from
+    /// `p`) and its radius. None for other kinds: their inscribed discs give looser cell
+    /// bounds than their distances do.
+    fn disc(&self, j: u32, p: Point<S>) -> Option<(Point<S>, S)> {
         let s = self.shapes.get(j as usize)?;
         if self.kind_of(u64::from(j)) != ShapeKind::Circle {
             return None;
         }
+        // `image_near` moves `p` next to the circle; the circle moves by the opposite shift.
         let q = self.image_near(p, s);
-        let (dx, dy) = (q.x - s.x, q.y - s.y);
-        let (ax, ay) = (dx.abs() + hw, dy.abs() + hh);
-        Some((ax * ax + ay * ay).sqrt() - s.scale)
+        Some((Point::new(s.x - (q.x - p.x), s.y - (q.y - p.y)), s.scale))
     }
 
     /// Replaces `near` by the [`NEAR`] shapes nearest to `c` by [`Engine::shape_dist`], among

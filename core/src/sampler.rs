@@ -221,17 +221,22 @@ impl<S> Cell<S> {
 
 /// What the cells need to know of the fill: distances to the outside of the region and to
 /// placed shapes.
-pub(crate) trait Field<S> {
+pub(crate) trait Field<S: Scalar> {
     /// The signed distance from `p` to the outside of the region (positive inside).
     fn edge(&self, p: Point<S>) -> S;
     /// An upper bound of the signed distance from `p` to the material of shape `j`.
     fn dist(&self, j: u32, p: Point<S>) -> S;
-    /// A bound tighter than `dist(j, c) + hd` (the default: distance is 1-Lipschitz) of the
-    /// signed distance to the material of shape `j` from any point of the box centred on `c`
-    /// with half sides `hw`, `hh`, where the shape allows one cheaply; none otherwise.
-    fn box_dist(&self, j: u32, c: Point<S>, hw: S, hh: S) -> Option<S> {
-        let _ = (j, c, hw, hh);
+    /// When shape `j` is a disc, its centre (in the periodic image nearest `p`) and radius.
+    fn disc(&self, j: u32, p: Point<S>) -> Option<(Point<S>, S)> {
+        let _ = (j, p);
         None
+    }
+    /// A bound tighter than `dist(j, c) + hd` (distance is 1-Lipschitz) of the signed
+    /// distance to the material of shape `j` from any point of the box centred on `c` with
+    /// half sides `hw`, `hh`, where the shape is a disc: the distance to a disc is convex, so
+    /// over the box it is largest at the farthest corner. None for other shapes.
+    fn box_dist(&self, j: u32, c: Point<S>, hw: S, hh: S) -> Option<S> {
+        self.disc(j, c).map(|(o, r)| far_corner(o, c, hw, hh) - r)
     }
     /// Replaces `near` by the [`NEAR`] placed shapes nearest to `c` (by [`Field::dist`])
     /// among those that come within `reach` of it; by default, leaves `near` as it is.
@@ -461,10 +466,20 @@ impl<'c, S: Scalar> CellSampler<'c, S> {
     /// quarters, for four bounds' work.
     fn bound_by_quarters(f: &impl Field<S>, near: &[u32; NEAR], centre: Point<S>, q: &LevelGeom<S>) -> S {
         let (hw, hh) = (q.w.half(), q.h.half());
-        [(-hw, -hh), (hw, -hh), (-hw, hh), (hw, hh)]
-            .iter()
-            .map(|&(dx, dy)| Self::bound(f, near, centre.shift(dx, dy), q))
-            .fold(S::from_f64(f64::MIN), |m, b| m.max(b))
+        let quarters = [(-hw, -hh), (hw, -hh), (-hw, hh), (hw, hh)].map(|(dx, dy)| centre.shift(dx, dy));
+        let mut u = quarters.map(|p| f.edge(p) + q.half_diag);
+        // Each known shape is looked up once for the four quarters.
+        for &j in near.iter().filter(|&&j| j != NONE) {
+            let disc = f.disc(j, centre);
+            for (ui, &p) in u.iter_mut().zip(quarters.iter()) {
+                let d = match disc {
+                    Some((o, r)) => far_corner(o, p, hw, hh) - r,
+                    None => f.dist(j, p) + q.half_diag,
+                };
+                *ui = ui.min(d);
+            }
+        }
+        u.into_iter().fold(S::from_f64(f64::MIN), |m, b| m.max(b))
     }
 
     /// Lays out the level-0 grid over the box `(x0, y0, w, h)`, bounding each cell by its
@@ -900,6 +915,14 @@ impl<'c, S: Scalar> CellSampler<'c, S> {
         self.stats.learned += 1;
         self.note_reject(slot, false);
     }
+}
+
+/// The distance from `o` to the corner farthest from it of the box centred on `c` with half
+/// sides `hw`, `hh`.
+#[inline]
+fn far_corner<S: Scalar>(o: Point<S>, c: Point<S>, hw: S, hh: S) -> S {
+    let (ax, ay) = ((c.x - o.x).abs() + hw, (c.y - o.y).abs() + hh);
+    (ax * ax + ay * ay).sqrt()
 }
 
 /// `ceil(v)` as a `u32` (0 for NaN or negative, saturating above).

@@ -40,6 +40,9 @@ pub struct ParamsDoc {
     pub shape: String,
     /// `none` or `random`.
     pub rotate: &'static str,
+    /// For a mix of shapes: `cycle` or `random` (`--mix-order`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub mix_order: Option<&'static str>,
     /// Sampler name.
     pub sampler: &'static str,
     /// Engine number type: `f64` or `fixed`.

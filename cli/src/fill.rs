@@ -54,6 +54,16 @@ pub enum Sampler {
     Reference,
 }
 
+impl MixArg {
+    /// The name written to JSON and on the command line.
+    pub fn name(self) -> &'static str {
+        match self {
+            MixArg::Cycle => "cycle",
+            MixArg::Random => "random",
+        }
+    }
+}
+
 impl Sampler {
     /// The name written to JSON.
     pub fn name(self) -> &'static str {
@@ -611,6 +621,7 @@ pub fn compute(a: &FillArgs) -> Result<(FillDoc, Option<StepError>), CliError> {
             seed: a.seed,
             shape: a.shape.name(),
             rotate: if params.rotate && a.shape.rotates() { "random" } else { "none" },
+            mix_order: (a.shape.0.len() > 1).then(|| a.mix_order.name()),
             sampler: a.sampler.name(),
             scalar: a.scalar.name(),
             gap: params.gap,

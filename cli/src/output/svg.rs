@@ -25,7 +25,7 @@ pub enum Style {
 }
 
 /// SVG options.
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone)]
 pub struct SvgOptions {
     /// Painting style.
     pub style: Style,
@@ -39,6 +39,9 @@ pub struct SvgOptions {
     pub layers: Option<u32>,
     /// Hatching, outlines left out (`--hatch-only`), shapes narrower than the pen left out.
     pub build: crate::plot::BuildOptions,
+    /// The drawing flags given (page, layers, hatching, style, ...), written after the fill's
+    /// command line in `<desc>` so that it reproduces the file.
+    pub flags: String,
 }
 
 /// Where the drawing goes on a page: page point = `scale * p + (dx, dy)` for a region point
@@ -316,8 +319,9 @@ pub fn command_line(doc: &FillDoc) -> String {
         RegionDoc::Polygon { .. } => "svg:(outline with holes; see the JSON output)".to_string(),
     };
     let mut s = format!(
-        "zetafill fill --shape {} --rotate {} --region {}{} --c {} --n-offset {} --gap {} --max-trials {} --seed {}",
+        "zetafill fill --shape {}{} --rotate {} --region {}{} --c {} --n-offset {} --gap {} --max-trials {} --seed {} --sampler {}{}",
         p.shape,
+        p.mix_order.map_or_else(String::new, |m| format!(" --mix-order {m}")),
         p.rotate,
         region,
         if doc.periodic() { " --periodic" } else { "" },
@@ -325,7 +329,9 @@ pub fn command_line(doc: &FillDoc) -> String {
         p.n_offset,
         p.gap,
         p.max_trials,
-        p.seed
+        p.seed,
+        p.sampler,
+        if p.scalar == "f64" { "" } else { " --scalar fixed" }
     );
     if let Some(k) = p.count {
         s.push_str(&format!(" --count {k}"));
@@ -475,7 +481,7 @@ pub fn render(doc: &FillDoc, opt: &SvgOptions) -> Vec<u8> {
             p.n_offset,
             p.seed
         ))))
-        .add(Description::new().add(Text::new(command_line(doc))));
+        .add(Description::new().add(Text::new(format!("{}{}", command_line(doc), opt.flags))));
     if periodic && !geometric_clip {
         // Images of edge-crossing shapes tile seamlessly; the clip keeps the tile's bounds.
         let mut rect = Rectangle::new();

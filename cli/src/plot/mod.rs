@@ -1077,6 +1077,48 @@ impl PlotArgs {
         }
     }
 
+    /// The flags of this group that were given, as command-line text (each with a leading
+    /// space), so that a file's header can say how to make it again.
+    pub fn flags(&self) -> String {
+        let text = |v: f64| Some(v.to_string());
+        let order = self
+            .order
+            .and_then(|o| clap::ValueEnum::to_possible_value(&o).map(|v| v.get_name().to_string()));
+        let layers = match self.layers {
+            Layers::SizeBands(k) => Some(format!("size-bands:{k}")),
+            Layers::None => None,
+        };
+        // (flag, given, value)
+        let all: [(&str, bool, Option<String>); 18] = [
+            ("machine", self.machine.is_some(), self.machine.clone()),
+            ("feed", self.feed.is_some(), self.feed.and_then(text)),
+            ("travel-feed", self.travel_feed.is_some(), self.travel_feed.and_then(text)),
+            ("power", self.power.is_some(), self.power.and_then(text)),
+            ("passes", self.passes.is_some(), self.passes.map(|p| p.to_string())),
+            ("arcs", self.arcs, None),
+            ("no-arcs", self.no_arcs, None),
+            (
+                "chord-tolerance",
+                self.chord_tolerance.is_some(),
+                self.chord_tolerance.and_then(text),
+            ),
+            ("hatch", self.hatch.is_some(), self.hatch.clone()),
+            ("hatch-only", self.hatch_only, None),
+            ("cross-hatch", self.cross_hatch, None),
+            ("order", order.is_some(), order),
+            ("min-feature", self.min_feature > 0.0, text(self.min_feature)),
+            ("fit", self.fit, None),
+            ("center", self.center, None),
+            ("page", self.page.is_some(), self.page.map(|p| format!("{}x{}", p.width, p.height))),
+            ("margin", self.margin.is_some(), self.margin.and_then(text)),
+            ("layers", layers.is_some(), layers),
+        ];
+        all.into_iter()
+            .filter(|(_, given, _)| *given)
+            .map(|(flag, _, value)| value.map_or_else(|| format!(" --{flag}"), |v| format!(" --{flag} {v}")))
+            .collect()
+    }
+
     /// The profile file `--machine` names, if it names one rather than a built-in: an
     /// input, which no output may overwrite.
     pub fn machine_file(&self) -> Option<&std::path::Path> {
@@ -1193,6 +1235,17 @@ impl PlotArgs {
             page: None,
             layers: None,
             build: self.build_options()?,
+            flags: format!(
+                " --style {}{}{}{}",
+                clap::ValueEnum::to_possible_value(&style).map_or_else(String::new, |v| v.get_name().to_string()),
+                if pen_width == 0.3 {
+                    String::new()
+                } else {
+                    format!(" --pen-width {pen_width}")
+                },
+                if boundary { " --boundary" } else { "" },
+                self.flags()
+            ),
         };
         if let Layers::SizeBands(k) = self.layers {
             o.layers = Some(k);
@@ -1236,7 +1289,7 @@ impl PlotArgs {
 pub fn render_gcode(doc: &FillDoc, a: &PlotArgs, quiet: bool) -> Result<Vec<u8>, CliError> {
     let drawing = from_fill(doc, &a.build_options()?);
     let (x0, y0, x1, y1) = doc.bbox();
-    let header = vec![crate::output::svg::command_line(doc)];
+    let header = vec![format!("{}{}", crate::output::svg::command_line(doc), a.flags())];
     drawing_gcode(&drawing, &Bounds { x0, y0, x1, y1 }, a, header, quiet)
 }
 

@@ -1,0 +1,178 @@
+//! A file says how to make it again: the command in an SVG's `<desc>` and in a G-code header,
+//! run as written, writes the same bytes; the JSON's parameters name every choice that
+//! changes the fill.
+
+mod common;
+
+use common::{tmp, zf_ok};
+use std::path::Path;
+
+/// The text of the first `<desc>` element.
+fn svg_desc(svg: &str) -> Option<String> {
+    let start = svg.find("<desc>")? + "<desc>".len();
+    let end = start + svg.get(start..)?.find("</desc>")?;
+    svg.get(start..end)
+        .map(|t| t.replace("&lt;", "<").replace("&gt;", ">").replace("&amp;", "&"))
+}
+
+/// The `zetafill fill ...` comment line of a G-code header.
+fn gcode_command(gcode: &str) -> Option<String> {
+    gcode
+        .lines()
+        .find_map(|l| l.strip_prefix("; zetafill fill "))
+        .map(|rest| format!("zetafill fill {rest}"))
+}
+
+/// Runs `command` (starting `zetafill `) with `-o out` in `dir`; the bytes written.
+fn rerun(dir: &Path, command: &str, out: &str) -> Vec<u8> {
+    let args: Vec<&str> = command.split_whitespace().skip(1).chain(["-o", out]).collect();
+    zf_ok(dir, &args);
+    std::fs::read(dir.join(out)).unwrap_or_default()
+}
+
+/// Runs `args` writing `out`, then the command the file carries; true when both wrote the
+/// same bytes.
+fn reproduces(dir: &Path, args: &[&str], out: &str, command_of: fn(&str) -> Option<String>) -> bool {
+    let full: Vec<&str> = args.iter().copied().chain(["-o", out]).collect();
+    zf_ok(dir, &full);
+    let first = std::fs::read(dir.join(out)).unwrap_or_default();
+    let text = String::from_utf8_lossy(&first).into_owned();
+    let Some(command) = command_of(&text) else {
+        panic!("{out}: no command in the file");
+    };
+    let again = format!("again-{out}");
+    first == rerun(dir, &command, &again)
+}
+
+const RUNS: [&[&str]; 5] = [
+    &["fill", "--count", "300", "--sampler", "reference", "--seed", "3"],
+    &["fill", "--count", "200", "--scalar", "fixed", "--shape", "square"],
+    &["fill", "--count", "200", "--shape", "mix:circle,triangle", "--mix-order", "random"],
+    &[
+        "fill",
+        "--count",
+        "300",
+        "--page",
+        "a4",
+        "--fit",
+        "--layers",
+        "size-bands:3",
+        "--style",
+        "filled",
+        "--pen-width",
+        "0.5",
+    ],
+    &[
+        "fill",
+        "--count",
+        "200",
+        "--hatch",
+        "0.8:30",
+        "--cross-hatch",
+        "--min-feature",
+        "0.5",
+        "--boundary",
+    ],
+];
+
+#[test]
+fn the_svg_desc_command_writes_the_same_file() {
+    let dir = tmp();
+    for args in RUNS {
+        assert!(
+            reproduces(dir.path(), args, "a.svg", svg_desc),
+            "zetafill {args:?}: <desc> does not reproduce the file"
+        );
+    }
+    // The check can fail: a command with the sampler left out makes another fill.
+    let dir = tmp();
+    zf_ok(dir.path(), &["fill", "--count", "300", "--sampler", "reference", "-o", "r.svg"]);
+    let svg = std::fs::read_to_string(dir.path().join("r.svg")).unwrap_or_default();
+    let desc = svg_desc(&svg).unwrap_or_default();
+    assert!(desc.contains("--sampler reference"), "{desc}");
+    let without = desc.replace(" --sampler reference", "");
+    assert_ne!(svg.into_bytes(), rerun(dir.path(), &without, "r2.svg"));
+}
+
+#[test]
+fn the_gcode_header_command_writes_the_same_file() {
+    let dir = tmp();
+    for args in [
+        &[
+            "fill",
+            "--count",
+            "200",
+            "--sampler",
+            "reference",
+            "--machine",
+            "grbl-laser",
+            "--passes",
+            "2",
+            "--power",
+            "500",
+        ][..],
+        &[
+            "fill",
+            "--count",
+            "200",
+            "--shape",
+            "ring:0.5",
+            "--n-offset",
+            "2",
+            "--hatch",
+            "0.5:45",
+            "--hatch-only",
+            "--order",
+            "greedy",
+        ],
+        &[
+            "fill",
+            "--count",
+            "200",
+            "--region",
+            "rect:300:200",
+            "--fit",
+            "--margin",
+            "5",
+            "--no-arcs",
+            "--chord-tolerance",
+            "0.05",
+        ],
+    ] {
+        assert!(
+            reproduces(dir.path(), args, "a.gcode", gcode_command),
+            "zetafill {args:?}: the header does not reproduce the file"
+        );
+    }
+}
+
+#[test]
+fn json_names_the_mix_order() {
+    let dir = tmp();
+    let d = dir.path();
+    for order in ["cycle", "random"] {
+        zf_ok(
+            d,
+            &[
+                "fill",
+                "--count",
+                "50",
+                "--shape",
+                "mix:circle,square",
+                "--mix-order",
+                order,
+                "-o",
+                "m.json",
+            ],
+        );
+        let v = common::parse_json(&common::read(&d.join("m.json")));
+        assert_eq!(v["params"]["mix_order"], order);
+    }
+    zf_ok(d, &["fill", "--count", "50", "-o", "c.json"]);
+    assert!(
+        common::parse_json(&common::read(&d.join("c.json")))["params"]
+            .get("mix_order")
+            .is_none(),
+        "only mixes have an order"
+    );
+}

@@ -49,6 +49,12 @@ impl Dest {
         if p.is_dir() {
             return Err(CliError::arg(arg, format!("'{}' is a directory; give a file name", p.display())));
         }
+        if p.as_os_str().to_string_lossy().ends_with(std::path::MAIN_SEPARATOR) {
+            return Err(CliError::arg(
+                arg,
+                format!("'{}' names a folder (it ends in a slash); give a file name", p.display()),
+            ));
+        }
         for i in inputs {
             if same_file(p, i) {
                 return Err(CliError::arg(

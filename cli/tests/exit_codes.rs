@@ -639,3 +639,38 @@ fn output_help_lists_gcode() {
         assert!(line.contains(".gcode") && line.contains(".nc"), "{cmd}: {line}");
     }
 }
+
+/// A subcommand's help lists only the drawing flags it reads: `territory` and `tile` refuse
+/// pages, size layers and hatching, so their help leaves them out; `fill` lists them.
+#[test]
+fn help_leaves_out_flags_that_are_refused() {
+    let dir = tmp();
+    let help = |cmd: &str| String::from_utf8_lossy(&zf_ok(dir.path(), &[cmd, "--help"]).stdout).into_owned();
+    // Whether the help has an entry (a line starting with the flag) for `flag`.
+    let lists = |h: &str, flag: &str| {
+        h.lines().any(|l| {
+            let t = l.trim_start();
+            t == flag || t.starts_with(&format!("{flag} "))
+        })
+    };
+    let refused = ["--page", "--layers", "--hatch", "--hatch-only", "--cross-hatch", "--min-feature"];
+    for cmd in ["territory", "tile"] {
+        let h = help(cmd);
+        for flag in refused {
+            assert!(!lists(&h, flag), "{cmd} --help lists {flag}");
+        }
+        assert!(lists(&h, "--machine"), "{cmd} --help keeps the G-code flags");
+    }
+    let h = help("fill");
+    assert!(refused.iter().all(|f| lists(&h, f)), "fill --help lists them all");
+}
+
+/// An output path ending in a slash names a folder, even when it does not exist yet: refused
+/// before the work, naming --output.
+#[test]
+fn output_ending_in_a_slash_is_refused() {
+    let dir = tmp();
+    let o = zf(dir.path(), &["fill", "--count", "5", "-o", "missing/"]);
+    assert_eq!(o.code, 2, "{}", o.stderr);
+    assert!(o.stderr.contains("--output") && o.stderr.contains("slash"), "{}", o.stderr);
+}

@@ -49,7 +49,17 @@ impl TerritoryFormat {
 }
 
 /// Arguments of `zetafill territory`.
+/// Territory drawings have no pages, size layers or hatching: those flags are refused, and
+/// left out of the help.
 #[derive(Debug, Args)]
+#[command(
+    mut_arg("page", |a| a.hide(true)),
+    mut_arg("layers", |a| a.hide(true)),
+    mut_arg("hatch", |a| a.hide(true)),
+    mut_arg("hatch_only", |a| a.hide(true)),
+    mut_arg("cross_hatch", |a| a.hide(true)),
+    mut_arg("min_feature", |a| a.hide(true)),
+)]
 pub struct TerritoryArgs {
     /// K random seed sites (territories 0..K-1), K >= 2 (default 3); with --sites-from, K of
     /// the fill's centres chosen at random.

@@ -43,7 +43,17 @@ impl TileFormat {
 }
 
 /// Arguments of `zetafill tile`.
+/// The tile draws its own outlines: pages, size layers and hatching are refused, and left
+/// out of the help.
 #[derive(Debug, Args)]
+#[command(
+    mut_arg("page", |a| a.hide(true)),
+    mut_arg("layers", |a| a.hide(true)),
+    mut_arg("hatch", |a| a.hide(true)),
+    mut_arg("hatch_only", |a| a.hide(true)),
+    mut_arg("cross_hatch", |a| a.hide(true)),
+    mut_arg("min_feature", |a| a.hide(true)),
+)]
 pub struct TileArgs {
     /// Tile width in mm.
     #[arg(long, default_value_t = 100.0, value_parser = spec::positive, allow_negative_numbers = true)]

@@ -413,6 +413,37 @@ fn pieces(s: &SegmentDoc, l: f64, periodic: bool) -> Vec<(f64, f64)> {
     }
 }
 
+/// The drawing flags of `opt` as command-line text (each with a leading space): with
+/// [`command_line`], the command that reproduces a drawing.
+fn drawing_flags(opt: &LineSvgOptions) -> String {
+    let name = |v: Option<clap::builder::PossibleValue>| v.map(|v| v.get_name().to_string()).unwrap_or_default();
+    let mut s = format!(
+        " --render {} --style {}",
+        name(opt.render.to_possible_value()),
+        name(opt.style.to_possible_value())
+    );
+    if opt.pen_width != 0.3 {
+        let _ = write!(s, " --pen-width {}", opt.pen_width);
+    }
+    match opt.render {
+        Render::Bars => {
+            let _ = write!(s, " --bar-height {}", opt.bar_height);
+        }
+        Render::Zoom => {
+            let _ = write!(
+                s,
+                " --zoom-rows {} --zoom-fraction {} --zoom-center {}",
+                opt.zoom_rows, opt.zoom_fraction, opt.zoom_center
+            );
+        }
+        _ => {}
+    }
+    if opt.boundary {
+        s.push_str(" --boundary");
+    }
+    s
+}
+
 /// The `zetafill line` command line that reproduces the document.
 pub fn command_line(doc: &LineDoc) -> String {
     let p = &doc.params;
@@ -606,7 +637,7 @@ pub fn render_svg(doc: &LineDoc, opt: &LineSvgOptions) -> Vec<u8> {
             p.n_offset,
             p.seed
         ))))
-        .add(Description::new().add(Text::new(command_line(doc))));
+        .add(Description::new().add(Text::new(format!("{}{}", command_line(doc), drawing_flags(opt)))));
     if opt.render == Render::Zoom || (periodic && opt.render == Render::Circles) {
         d = d.add(defs);
     }
@@ -757,16 +788,7 @@ pub fn drawing(
 
 fn render_gcode(doc: &LineDoc, opt: &LineSvgOptions, a: &LineArgs) -> Result<Vec<u8>, CliError> {
     let (d, frame) = drawing(doc, opt, &a.plot.build_options()?)?;
-    let p = &doc.params;
-    let header = vec![format!(
-        "zetafill line --length {} --c {} --n-offset {} --seed {} --render {}{}",
-        doc.region.length,
-        p.c,
-        p.n_offset,
-        p.seed,
-        opt.render.to_possible_value().map(|v| v.get_name().to_string()).unwrap_or_default(),
-        if doc.region.periodic { " --periodic" } else { "" }
-    )];
+    let header = vec![format!("{}{}{}", command_line(doc), drawing_flags(opt), a.plot.flags())];
     crate::plot::drawing_gcode(&d, &frame, &a.plot, header, a.quiet)
 }
 

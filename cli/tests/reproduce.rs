@@ -15,12 +15,17 @@ fn svg_desc(svg: &str) -> Option<String> {
         .map(|t| t.replace("&lt;", "<").replace("&gt;", ">").replace("&amp;", "&"))
 }
 
-/// The `zetafill fill ...` comment line of a G-code header.
+/// The `zetafill SUBCOMMAND ...` comment line of a G-code header.
 fn gcode_command(gcode: &str) -> Option<String> {
     gcode
         .lines()
-        .find_map(|l| l.strip_prefix("; zetafill fill "))
-        .map(|rest| format!("zetafill fill {rest}"))
+        .filter_map(|l| l.strip_prefix("; "))
+        .find(|l| {
+            ["fill", "line", "territory", "tile"]
+                .iter()
+                .any(|c| l.starts_with(&format!("zetafill {c} ")))
+        })
+        .map(String::from)
 }
 
 /// Runs `command` (starting `zetafill `) with `-o out` in `dir`; the bytes written.
@@ -139,6 +144,99 @@ fn the_gcode_header_command_writes_the_same_file() {
             "0.05",
         ],
     ] {
+        assert!(
+            reproduces(dir.path(), args, "a.gcode", gcode_command),
+            "zetafill {args:?}: the header does not reproduce the file"
+        );
+    }
+}
+
+/// The other subcommands' files carry their commands too.
+#[test]
+fn line_territory_and_tile_files_carry_their_commands() {
+    let dir = tmp();
+    let svg_runs: [&[&str]; 6] = [
+        &["line", "--count", "300", "--render", "bars", "--bar-height", "6", "--boundary"],
+        &[
+            "line",
+            "--count",
+            "300",
+            "--render",
+            "zoom",
+            "--zoom-rows",
+            "3",
+            "--zoom-fraction",
+            "0.1",
+        ],
+        &[
+            "line",
+            "--count",
+            "200",
+            "--render",
+            "circles",
+            "--style",
+            "filled",
+            "--pen-width",
+            "0.2",
+        ],
+        &[
+            "territory",
+            "--sites",
+            "3",
+            "--points",
+            "1500",
+            "--render",
+            "filled",
+            "--boundary",
+            "--pen-width",
+            "0.4",
+        ],
+        &["tile", "--tries", "3000", "--style", "filled", "--layout", "mosaic", "--rows", "2"],
+        &["tile", "--tries", "3000", "--render", "voronoi", "--pen-width", "0.2"],
+    ];
+    for args in svg_runs {
+        assert!(
+            reproduces(dir.path(), args, "a.svg", svg_desc),
+            "zetafill {args:?}: <desc> does not reproduce the file"
+        );
+    }
+    let gcode_runs: [&[&str]; 3] = [
+        &[
+            "line",
+            "--count",
+            "200",
+            "--render",
+            "bars",
+            "--hatch",
+            "0.5",
+            "--machine",
+            "grbl-laser",
+        ],
+        &[
+            "territory",
+            "--sites",
+            "3",
+            "--points",
+            "1500",
+            "--render",
+            "cells",
+            "--order",
+            "greedy",
+        ],
+        &[
+            "tile",
+            "--tries",
+            "3000",
+            "--layout",
+            "mosaic",
+            "--fit",
+            "--passes",
+            "2",
+            "--machine",
+            "grbl-laser",
+        ],
+    ];
+    for args in gcode_runs {
         assert!(
             reproduces(dir.path(), args, "a.gcode", gcode_command),
             "zetafill {args:?}: the header does not reproduce the file"

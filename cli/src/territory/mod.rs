@@ -449,6 +449,16 @@ fn command_line(a: &TerritoryArgs, k: usize, points: usize, region: &str) -> Str
         }
     }
     s.push_str(&format!(" --render {}", a.render.name()));
+    if a.pen_width != 0.3 {
+        s.push_str(&format!(" --pen-width {}", a.pen_width));
+    }
+    if a.thin_width != 0.1 {
+        s.push_str(&format!(" --thin-width {}", a.thin_width));
+    }
+    if a.boundary {
+        s.push_str(" --boundary");
+    }
+    s.push_str(&a.plot.flags());
     s
 }
 

@@ -376,6 +376,13 @@ fn command_line(a: &TileArgs, arr: &Arrangement) -> String {
     if a.layout == Layout::Planet {
         s.push_str(&format!(" --planet-radius {}", arr.radius));
     }
+    if a.style == Style::Filled {
+        s.push_str(" --style filled");
+    }
+    if a.pen_width != 0.3 {
+        s.push_str(&format!(" --pen-width {}", a.pen_width));
+    }
+    s.push_str(&a.plot.flags());
     s
 }
 

@@ -33,7 +33,7 @@
 //! is `h / 2` from its parent's), and each child is bounded quarter by quarter: its bound is
 //! the largest of its four quarters' bounds. Where shapes of like size crowd a cell (c = 1.4)
 //! that halves the trials per placement; where stubborn cells are rare (c = 1.3) it costs
-//! nothing measurable.
+//! about 5% of the time.
 //!
 //! A shape whose inscribed disc has radius `r` can sit at a point only where the clearance is
 //! at least `need = r + gap`. So a cell with `u < need` holds no valid centre for the next

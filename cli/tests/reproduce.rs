@@ -156,27 +156,22 @@ fn the_gcode_header_command_writes_the_same_file() {
 fn line_territory_and_tile_files_carry_their_commands() {
     let dir = tmp();
     let words = |c: &'static str| c.split_whitespace().collect::<Vec<_>>();
-    for c in [
-        "line --count 300 --render bars --bar-height 6 --boundary",
-        "line --count 300 --render zoom --zoom-rows 3 --zoom-fraction 0.1",
-        "line --count 200 --render circles --style filled --pen-width 0.2",
-        "territory --sites 3 --points 1500 --render filled --boundary --pen-width 0.4",
-        "tile --tries 3000 --style filled --layout mosaic --rows 2",
-        "tile --tries 3000 --render voronoi --pen-width 0.2",
+    let svg: (&str, fn(&str) -> Option<String>) = ("a.svg", svg_desc);
+    let gcode: (&str, fn(&str) -> Option<String>) = ("a.gcode", gcode_command);
+    for (c, (out, command_of)) in [
+        ("line --count 300 --render bars --bar-height 6 --boundary", svg),
+        ("line --count 300 --render zoom --zoom-rows 3 --zoom-fraction 0.1", svg),
+        ("line --count 200 --render circles --style filled --pen-width 0.2", svg),
+        ("territory --sites 3 --points 1500 --render filled --boundary --pen-width 0.4", svg),
+        ("tile --tries 3000 --style filled --layout mosaic --rows 2", svg),
+        ("tile --tries 3000 --render voronoi --pen-width 0.2", svg),
+        ("line --count 200 --render bars --hatch 0.5 --machine grbl-laser", gcode),
+        ("territory --sites 3 --points 1500 --render cells --order greedy", gcode),
+        ("tile --tries 3000 --layout mosaic --fit --passes 2 --machine grbl-laser", gcode),
     ] {
         assert!(
-            reproduces(dir.path(), &words(c), "a.svg", svg_desc),
-            "zetafill {c}: <desc> does not reproduce the file"
-        );
-    }
-    for c in [
-        "line --count 200 --render bars --hatch 0.5 --machine grbl-laser",
-        "territory --sites 3 --points 1500 --render cells --order greedy",
-        "tile --tries 3000 --layout mosaic --fit --passes 2 --machine grbl-laser",
-    ] {
-        assert!(
-            reproduces(dir.path(), &words(c), "a.gcode", gcode_command),
-            "zetafill {c}: the header does not reproduce the file"
+            reproduces(dir.path(), &words(c), out, command_of),
+            "zetafill {c}: the command in {out} does not reproduce it"
         );
     }
 }

@@ -48,9 +48,8 @@ impl TerritoryFormat {
     }
 }
 
-/// Arguments of `zetafill territory`.
-/// Territory drawings have no pages, size layers or hatching: those flags are refused, and
-/// left out of the help.
+/// Arguments of `zetafill territory`. Territory drawings have no pages, size layers or
+/// hatching: those flags are refused, and left out of the help.
 #[derive(Debug, Args)]
 #[command(
     mut_arg("page", |a| a.hide(true)),

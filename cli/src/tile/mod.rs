@@ -42,9 +42,8 @@ impl TileFormat {
     }
 }
 
-/// Arguments of `zetafill tile`.
-/// The tile draws its own outlines: pages, size layers and hatching are refused, and left
-/// out of the help.
+/// Arguments of `zetafill tile`. The tile draws its own outlines: pages, size layers and
+/// hatching are refused, and left out of the help.
 #[derive(Debug, Args)]
 #[command(
     mut_arg("page", |a| a.hide(true)),

@@ -146,6 +146,13 @@ pub struct FillArgs {
     /// PNG: resolution in pixels per inch.
     #[arg(long, default_value_t = 96.0, value_parser = spec::positive)]
     pub dpi: f64,
+    /// PNG: the image's longer side in pixels (instead of --dpi).
+    #[arg(long, conflicts_with = "dpi", value_parser = clap::value_parser!(u32).range(1..=100_000))]
+    pub pixels: Option<u32>,
+    /// PNG: write a 16-bit height map (each shape a raised stone of this profile) instead
+    /// of a picture.
+    #[arg(long, value_enum)]
+    pub relief: Option<output::height::Relief>,
     /// SVG/PNG: draw the Voronoi cells of the shapes' centres ("cobblestones") instead of the
     /// shapes; with --periodic the cells tile seamlessly.
     #[arg(long)]
@@ -652,7 +659,7 @@ pub fn render(doc: &FillDoc, format: Format, a: &FillArgs) -> Result<Vec<u8>, Cl
     if a.voronoi {
         return match format {
             Format::Svg => crate::cobble::svg(doc, a.pen_width, a.boundary),
-            Format::Png => output::png::render(&crate::cobble::svg(doc, a.pen_width, a.boundary)?, a.dpi),
+            Format::Png => output::png::render(&crate::cobble::svg(doc, a.pen_width, a.boundary)?, a.dpi, a.pixels),
             _ => Err(CliError::arg(
                 "--voronoi",
                 "cobblestones are drawn as SVG or PNG; write .svg or .png, or drop --voronoi",
@@ -665,10 +672,21 @@ pub fn render(doc: &FillDoc, format: Format, a: &FillArgs) -> Result<Vec<u8>, Cl
         Format::Json => output::json::render(doc)?,
         Format::Csv => output::csv::render(doc),
         Format::Digest => output::digest::render(doc),
-        Format::Png => {
-            let svg = output::svg::render(doc, &a.plot.svg_options(doc, a.style, a.pen_width, a.boundary)?);
-            output::png::render(&svg, a.dpi)?
-        }
+        Format::Png => match a.relief {
+            Some(relief) => {
+                let command = format!(
+                    "{} --relief {}{}",
+                    output::svg::command_line(doc),
+                    relief.name(),
+                    a.pixels.map_or_else(|| format!(" --dpi {}", a.dpi), |n| format!(" --pixels {n}"))
+                );
+                output::height::render(doc, relief, output::height::grid(doc, a.dpi, a.pixels)?, &command)?
+            }
+            None => {
+                let svg = output::svg::render(doc, &a.plot.svg_options(doc, a.style, a.pen_width, a.boundary)?);
+                output::png::render(&svg, a.dpi, a.pixels)?
+            }
+        },
     })
 }
 
@@ -686,6 +704,23 @@ pub fn run(a: &FillArgs) -> Result<(), CliError> {
     if a.voronoi {
         a.plot.refuse_except(&[], |_| {
             "is not available with --voronoi (cobblestones are drawn at the region's size)".to_string()
+        })?;
+    }
+    if format != Format::Png {
+        let flag = if a.relief.is_some() { "--relief" } else { "--pixels" };
+        if a.relief.is_some() || a.pixels.is_some() {
+            return Err(CliError::arg(flag, "is for PNG output: write .png (or --format png), or drop it"));
+        }
+    }
+    if a.relief.is_some() {
+        if a.voronoi {
+            return Err(CliError::arg(
+                "--relief",
+                "a height map is made of the shapes, not of cobblestones: drop --voronoi",
+            ));
+        }
+        a.plot.refuse_except(&[], |_| {
+            "is not available with --relief (a height map has no page or layers)".to_string()
         })?;
     }
     a.plot.check(format)?;

@@ -809,7 +809,7 @@ pub fn render(doc: &LineDoc, format: Format, a: &LineArgs) -> Result<Vec<u8>, Cl
         Format::Json => render_json(doc)?,
         Format::Csv => render_csv(doc),
         Format::Digest => render_digest(doc),
-        Format::Png => output::png::render(&render_svg(doc, &opt), a.dpi)?,
+        Format::Png => output::png::render(&render_svg(doc, &opt), a.dpi, None)?,
         Format::Gcode => render_gcode(doc, &opt, a)?,
         #[allow(unreachable_patterns)]
         f => {

@@ -2,6 +2,7 @@
 
 pub mod csv;
 pub mod digest;
+pub mod height;
 pub mod json;
 pub mod png;
 pub mod svg;

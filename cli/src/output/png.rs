@@ -1,17 +1,32 @@
 //! PNG preview: the SVG of the same run rendered by resvg (so the preview shows exactly the
-//! drawing), on a white background, at `dpi` pixels per inch.
+//! drawing), on a white background, at `dpi` pixels per inch or with its longer side
+//! `pixels` long.
 
 use crate::error::CliError;
 
-/// Renders SVG bytes to PNG bytes at `dpi`.
-pub fn render(svg: &[u8], dpi: f64) -> Result<Vec<u8>, CliError> {
+/// Renders SVG bytes to PNG bytes at `dpi`, or with the longer side `pixels` long.
+pub fn render(svg: &[u8], dpi: f64, pixels: Option<u32>) -> Result<Vec<u8>, CliError> {
     let opt = resvg::usvg::Options::default();
     let tree = resvg::usvg::Tree::from_data(svg, &opt).map_err(|e| CliError::Io(format!("internal: cannot read own SVG: {e}")))?;
     // usvg sizes mm at 96 px per inch.
-    let scale = (dpi / 96.0) as f32;
     let size = tree.size();
-    let (w, h) = ((size.width() * scale).ceil() as u32, (size.height() * scale).ceil() as u32);
-    let too_big = || CliError::arg("--dpi", format!("a {w} x {h} pixel image is too large; lower --dpi"));
+    let (scale, w, h, flag) = match pixels {
+        Some(n) => {
+            let scale = n as f32 / size.width().max(size.height());
+            let side = |v: f32| (v * scale).round().max(1.0) as u32;
+            (scale, side(size.width()), side(size.height()), "--pixels")
+        }
+        None => {
+            let scale = (dpi / 96.0) as f32;
+            (
+                scale,
+                (size.width() * scale).ceil() as u32,
+                (size.height() * scale).ceil() as u32,
+                "--dpi",
+            )
+        }
+    };
+    let too_big = || CliError::arg(flag, format!("a {w} x {h} pixel image is too large; lower {flag}"));
     if u64::from(w) * u64::from(h) > 400_000_000 {
         return Err(too_big());
     }

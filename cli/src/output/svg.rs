@@ -271,7 +271,7 @@ fn region_node(doc: &FillDoc, f: &Frame) -> Path {
 }
 
 /// The (dx, dy) images of a shape that can show inside a periodic region.
-fn images(sh: &ShapeDoc, w: f64, h: f64) -> Vec<(f64, f64)> {
+pub(crate) fn images(sh: &ShapeDoc, w: f64, h: f64) -> Vec<(f64, f64)> {
     let (x0, y0, x1, y1) = bounds(sh);
     // Every period shift that brings the shape's box into the tile (usually 0 or ±1).
     let shifts = |lo: f64, hi: f64, p: f64| -> Vec<f64> {
@@ -289,7 +289,7 @@ fn images(sh: &ShapeDoc, w: f64, h: f64) -> Vec<(f64, f64)> {
     ys.iter().flat_map(|&dy| xs.iter().map(move |&dx| (dx, dy))).collect()
 }
 
-fn bounds(sh: &ShapeDoc) -> (f64, f64, f64, f64) {
+pub(crate) fn bounds(sh: &ShapeDoc) -> (f64, f64, f64, f64) {
     if let Some(r) = sh.radius {
         return (sh.center[0] - r, sh.center[1] - r, sh.center[0] + r, sh.center[1] + r);
     }

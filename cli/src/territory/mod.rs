@@ -760,7 +760,7 @@ pub fn render_bytes(o: &Outcome, a: &TerritoryArgs, format: TerritoryFormat) -> 
     Ok(match format {
         TerritoryFormat::Gcode => gcode(o, a, desc.clone())?,
         TerritoryFormat::Svg => svg(),
-        TerritoryFormat::Png => crate::output::png::render(&svg(), a.dpi)?,
+        TerritoryFormat::Png => crate::output::png::render(&svg(), a.dpi, None)?,
         TerritoryFormat::Json => {
             let mut v = serde_json::to_vec(&o.doc).map_err(|e| CliError::Io(format!("cannot encode JSON: {e}")))?;
             v.push(b'\n');

@@ -497,7 +497,7 @@ pub fn output(a: &TileArgs) -> Result<(Tile, Vec<u8>), CliError> {
                 &command_line(a, &arr),
             );
             if format == TileFormat::Png {
-                crate::output::png::render(&svg, a.dpi)?
+                crate::output::png::render(&svg, a.dpi, None)?
             } else {
                 svg
             }

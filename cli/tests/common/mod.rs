@@ -463,7 +463,8 @@ impl G {
     }
 }
 
-fn seg_dist(p: [f64; 2], a: [f64; 2], b: [f64; 2]) -> f64 {
+/// The distance from `p` to the segment `ab`.
+pub fn seg_dist(p: [f64; 2], a: [f64; 2], b: [f64; 2]) -> f64 {
     let (ex, ey) = (b[0] - a[0], b[1] - a[1]);
     let len2 = ex * ex + ey * ey;
     let t = if len2 > 0.0 {

@@ -11,11 +11,15 @@
 
 use crate::doc::{FillDoc, ShapeDoc};
 use crate::error::CliError;
+use rayon::prelude::*;
 use zetafill::geom::{edges, point_in_poly, seg_dist2};
 use zetafill::Point;
 
 /// Samples per pixel along each axis.
 const SUB: usize = 4;
+
+/// Pixel rows rendered together by one thread.
+const BAND: usize = 8;
 
 /// The largest height map written, in pixels.
 pub const MAX_PIXELS: u64 = 64_000_000;
@@ -91,7 +95,8 @@ struct Stone {
 enum Outline {
     Circle(f64),
     Ring(f64, f64),
-    Polygon(Vec<Point<f64>>),
+    /// The vertices and the squared radius of the circle about the centre that holds them.
+    Polygon(Vec<Point<f64>>, f64),
 }
 
 impl Stone {
@@ -100,13 +105,17 @@ impl Stone {
         let outline = match (sh.radius, sh.inner_radius, sh.vertices.as_deref()) {
             (Some(r), None, _) => Outline::Circle(r),
             (Some(r), Some(inner), _) => Outline::Ring(r, inner),
-            (None, _, vs) => Outline::Polygon(vs.unwrap_or(&[]).iter().map(|v| Point::new(v[0], v[1])).collect()),
+            (None, _, vs) => {
+                let vs: Vec<Point<f64>> = vs.unwrap_or(&[]).iter().map(|v| Point::new(v[0], v[1])).collect();
+                let reach = vs.iter().map(|v| centre.dist2(*v)).fold(0.0, f64::max);
+                Outline::Polygon(vs, reach)
+            }
         };
         let mut stone = Stone { centre, outline, rho: 0.0 };
         stone.rho = match stone.outline {
             Outline::Circle(r) => r,
             Outline::Ring(r, inner) => 0.5 * (r - inner),
-            Outline::Polygon(_) => stone.depth(centre).unwrap_or(0.0),
+            Outline::Polygon(..) => stone.depth(centre).unwrap_or(0.0),
         };
         stone
     }
@@ -120,7 +129,10 @@ impl Stone {
                 let e = self.centre.dist2(p).sqrt();
                 (r - e).min(e - inner)
             }
-            Outline::Polygon(vs) => {
+            Outline::Polygon(vs, reach) => {
+                if self.centre.dist2(p) >= *reach {
+                    return None;
+                }
                 if !point_in_poly(p, vs) {
                     return None;
                 }
@@ -145,7 +157,10 @@ pub fn render(doc: &FillDoc, relief: Relief, (nx, ny): (usize, usize), command: 
     let (w, h) = doc.extent();
     let (sx_n, sy_n) = (SUB * nx, SUB * ny);
     let (sw, sh) = (w / sx_n as f64, h / sy_n as f64);
-    let mut sum = vec![0.0f64; nx * ny];
+    // Each stone (and periodic image) with its samples: columns i0..=i1, rows j0..=j1
+    // counted down from the top.
+    let mut pieces = Vec::new();
+    let mut stones = Vec::with_capacity(doc.shapes.len());
     let mut top = 0.0f64;
     for shape in &doc.shapes {
         let stone = Stone::new(shape);
@@ -156,27 +171,50 @@ pub fn render(doc: &FillDoc, relief: Relief, (nx, ny): (usize, usize), command: 
             vec![(0.0, 0.0)]
         };
         let (bx0, by0, bx1, by1) = super::svg::bounds(shape);
+        let k = stones.len();
         for (dx, dy) in shifts {
-            // Rows count down from the top of the box.
-            let (Some((i0, i1)), Some((j0, j1))) = (
+            if let (Some(cols), Some(rows)) = (
                 span(bx0 + dx - x0, bx1 + dx - x0, sw, sx_n),
                 span(y1 - (by1 + dy), y1 - (by0 + dy), sh, sy_n),
-            ) else {
-                continue;
-            };
-            for j in j0..=j1 {
-                let y = y1 - (j as f64 + 0.5) * sh - dy;
-                for i in i0..=i1 {
-                    let x = x0 + (i as f64 + 0.5) * sw - dx;
-                    if let Some(d) = stone.depth(Point::new(x, y)) {
-                        if let Some(s) = sum.get_mut((j / SUB) * nx + i / SUB) {
-                            *s += relief.height(d, stone.rho);
+            ) {
+                pieces.push((k, (dx, dy), cols, rows));
+            }
+        }
+        stones.push(stone);
+    }
+    // Bands of pixel rows, rendered in parallel; within a band the stones come in placement
+    // order, so every pixel sums its samples in the same order whatever the threads.
+    let band_rows = BAND * SUB;
+    let mut bands: Vec<Vec<usize>> = vec![Vec::new(); ny.div_ceil(BAND)];
+    for (p, &(_, _, _, (j0, j1))) in pieces.iter().enumerate() {
+        for list in bands.iter_mut().take(j1 / band_rows + 1).skip(j0 / band_rows) {
+            list.push(p);
+        }
+    }
+    let mut sum = vec![0.0f64; nx * ny];
+    sum.par_chunks_mut(BAND * nx)
+        .zip(bands.par_iter())
+        .enumerate()
+        .for_each(|(b, (rows, list))| {
+            let (lo, hi) = (b * band_rows, (b + 1) * band_rows - 1);
+            for &p in list {
+                let Some(&(k, (dx, dy), (i0, i1), (j0, j1))) = pieces.get(p) else {
+                    continue;
+                };
+                let Some(stone) = stones.get(k) else { continue };
+                for j in j0.max(lo)..=j1.min(hi) {
+                    let y = y1 - (j as f64 + 0.5) * sh - dy;
+                    for i in i0..=i1 {
+                        let x = x0 + (i as f64 + 0.5) * sw - dx;
+                        if let Some(d) = stone.depth(Point::new(x, y)) {
+                            if let Some(s) = rows.get_mut((j / SUB - b * BAND) * nx + i / SUB) {
+                                *s += relief.height(d, stone.rho);
+                            }
                         }
                     }
                 }
             }
-        }
-    }
+        });
     let samples = (SUB * SUB) as f64;
     let scale = if top > 0.0 { 65535.0 / (top * samples) } else { 0.0 };
     let mut data = Vec::with_capacity(2 * nx * ny);

@@ -153,6 +153,16 @@ pub struct FillArgs {
     /// of a picture.
     #[arg(long, value_enum)]
     pub relief: Option<output::height::Relief>,
+    /// SVG/PNG: colours for the shapes, hex rrggbb (or rgb, '#' optional) separated by
+    /// commas; their fill, or their stroke with --style outline.
+    #[arg(long, value_parser = output::palette::palette)]
+    pub palette: Option<output::palette::Palette>,
+    /// SVG/PNG: how shapes take the palette's colours (default size).
+    #[arg(long = "color-by", value_enum, requires = "palette")]
+    pub color_by: Option<output::palette::ColorBy>,
+    /// SVG/PNG: a background colour (hex rrggbb or rgb) behind the drawing.
+    #[arg(long, value_parser = output::palette::colour)]
+    pub background: Option<output::palette::Colour>,
     /// SVG/PNG: draw the Voronoi cells of the shapes' centres ("cobblestones") instead of the
     /// shapes; with --periodic the cells tile seamlessly.
     #[arg(long)]
@@ -654,6 +664,21 @@ pub fn compute(a: &FillArgs) -> Result<(FillDoc, Option<StepError>), CliError> {
     Ok((doc, halt))
 }
 
+/// The SVG options of the drawing flags, colours included.
+fn svg_options(doc: &FillDoc, a: &FillArgs) -> Result<output::svg::SvgOptions, CliError> {
+    let mut o = a.plot.svg_options(doc, a.style, a.pen_width, a.boundary)?;
+    if let Some(p) = &a.palette {
+        let by = a.color_by.unwrap_or(output::palette::ColorBy::Size);
+        o.colours = Some(output::palette::assign(doc, &p.0, by));
+        o.flags.push_str(&format!(" --palette {} --color-by {}", p.arg(), by.name()));
+    }
+    if let Some(bg) = &a.background {
+        o.flags.push_str(&format!(" --background {}", bg.trim_start_matches('#')));
+        o.background = Some(bg.clone());
+    }
+    Ok(o)
+}
+
 /// Renders a document in a format.
 pub fn render(doc: &FillDoc, format: Format, a: &FillArgs) -> Result<Vec<u8>, CliError> {
     if a.voronoi {
@@ -667,7 +692,7 @@ pub fn render(doc: &FillDoc, format: Format, a: &FillArgs) -> Result<Vec<u8>, Cl
         };
     }
     Ok(match format {
-        Format::Svg => output::svg::render(doc, &a.plot.svg_options(doc, a.style, a.pen_width, a.boundary)?),
+        Format::Svg => output::svg::render(doc, &svg_options(doc, a)?),
         Format::Gcode => crate::plot::render_gcode(doc, &a.plot, a.quiet)?,
         Format::Json => output::json::render(doc)?,
         Format::Csv => output::csv::render(doc),
@@ -683,7 +708,7 @@ pub fn render(doc: &FillDoc, format: Format, a: &FillArgs) -> Result<Vec<u8>, Cl
                 output::height::render(doc, relief, output::height::grid(doc, a.dpi, a.pixels)?, &command)?
             }
             None => {
-                let svg = output::svg::render(doc, &a.plot.svg_options(doc, a.style, a.pen_width, a.boundary)?);
+                let svg = output::svg::render(doc, &svg_options(doc, a)?);
                 output::png::render(&svg, a.dpi, a.pixels)?
             }
         },
@@ -710,6 +735,19 @@ pub fn run(a: &FillArgs) -> Result<(), CliError> {
         let flag = if a.relief.is_some() { "--relief" } else { "--pixels" };
         if a.relief.is_some() || a.pixels.is_some() {
             return Err(CliError::arg(flag, "is for PNG output: write .png (or --format png), or drop it"));
+        }
+    }
+    let colour_flag = if a.palette.is_some() {
+        Some("--palette")
+    } else {
+        a.background.as_ref().map(|_| "--background")
+    };
+    if let Some(flag) = colour_flag {
+        if !matches!(format, Format::Svg | Format::Png) || a.relief.is_some() || a.voronoi {
+            return Err(CliError::arg(
+                flag,
+                "colours the shapes of an SVG or PNG picture: write .svg or .png, without --relief or --voronoi, or drop it",
+            ));
         }
     }
     if a.relief.is_some() {

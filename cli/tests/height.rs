@@ -361,9 +361,6 @@ fn the_embedded_command_reproduces_the_map() {
 
 #[test]
 fn height_map_flags_are_refused_where_they_mean_nothing() {
-    let dir = tmp();
-    let keep = dir.path().join("keep.png");
-    std::fs::write(&keep, b"keep").unwrap_or_else(|e| panic!("write: {e}"));
     let cases: [(&[&str], &str); 7] = [
         (&["--relief", "dome", "-o", "x.svg"], "--relief"),
         (&["--pixels", "64", "-o", "x.json"], "--pixels"),
@@ -373,15 +370,7 @@ fn height_map_flags_are_refused_where_they_mean_nothing() {
         (&["--relief", "dome", "--pixels", "0", "-o", "keep.png"], "--pixels"),
         (&["--relief", "dome", "--pixels", "64", "--dpi", "50", "-o", "keep.png"], "--pixels"),
     ];
-    for (args, flag) in cases {
-        let mut a = vec!["fill", "--count", "20"];
-        a.extend_from_slice(args);
-        let o = zf(dir.path(), &a);
-        assert_eq!(o.code, 2, "{a:?}: {}", o.stderr);
-        assert!(o.stderr.contains(flag), "{a:?} should name {flag}: {}", o.stderr);
-        assert_eq!(read(&keep), b"keep", "{a:?} touched the output");
-    }
-    assert_eq!(listing(dir.path()), vec![keep], "nothing else written");
+    assert_fill_refuses("keep.png", &cases);
 }
 
 #[test]

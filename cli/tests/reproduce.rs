@@ -49,7 +49,7 @@ fn reproduces(dir: &Path, args: &[&str], out: &str, command_of: fn(&str) -> Opti
     first == rerun(dir, &command, &again)
 }
 
-const RUNS: [&[&str]; 5] = [
+const RUNS: [&[&str]; 7] = [
     &["fill", "--count", "300", "--sampler", "reference", "--seed", "3"],
     &["fill", "--count", "200", "--scalar", "fixed", "--shape", "square"],
     &["fill", "--count", "200", "--shape", "mix:circle,triangle", "--mix-order", "random"],
@@ -77,6 +77,27 @@ const RUNS: [&[&str]; 5] = [
         "--min-feature",
         "0.5",
         "--boundary",
+    ],
+    &[
+        "fill",
+        "--count",
+        "200",
+        "--style",
+        "filled",
+        "--palette",
+        "264653,e9c46a,e76f51",
+        "--background",
+        "fefae0",
+    ],
+    &[
+        "fill",
+        "--count",
+        "200",
+        "--periodic",
+        "--palette",
+        "#000,#f00",
+        "--color-by",
+        "random",
     ],
 ];
 

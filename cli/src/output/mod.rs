@@ -4,6 +4,7 @@ pub mod csv;
 pub mod digest;
 pub mod height;
 pub mod json;
+pub mod palette;
 pub mod png;
 pub mod svg;
 

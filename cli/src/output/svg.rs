@@ -6,14 +6,16 @@
 //!
 //! For plotters, [`SvgOptions::page`] puts the drawing on a page (`--page`, margins,
 //! `--center`, `--fit`) and [`SvgOptions::layers`] splits the shapes into Inkscape layers by
-//! size band (`--layers size-bands:K`, one pen per layer). Without them the output is exactly
-//! the region-sized drawing above (the gallery pins it byte for byte).
+//! size band (`--layers size-bands:K`, one pen per layer). [`SvgOptions::colours`] paints
+//! each shape in its own colour (`--palette`) and [`SvgOptions::background`] lays a colour
+//! behind the drawing. Without them the output is exactly the region-sized drawing above
+//! (the gallery pins it byte for byte).
 
 use crate::doc::{FillDoc, RegionDoc, ShapeDoc};
 use crate::output::num;
 use svg::node::element::{Circle, ClipPath, Definitions, Description, Group, Path, Polygon, Rectangle, Title};
 use svg::node::Text;
-use svg::Document;
+use svg::{Document, Node};
 
 /// How shapes are painted.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
@@ -42,6 +44,11 @@ pub struct SvgOptions {
     /// The drawing flags given (page, layers, hatching, style, ...), written after the fill's
     /// command line in `<desc>` so that it reproduces the file.
     pub flags: String,
+    /// Each shape's colour (`--palette`): its fill, or its stroke for outlines; `None`:
+    /// black.
+    pub colours: Option<Vec<crate::output::palette::Colour>>,
+    /// A rectangle of this colour behind everything (`--background`).
+    pub background: Option<crate::output::palette::Colour>,
 }
 
 /// Where the drawing goes on a page: page point = `scale * p + (dx, dy)` for a region point
@@ -443,10 +450,12 @@ pub fn render(doc: &FillDoc, opt: &SvgOptions) -> Vec<u8> {
     // tile, since vpype and plotter drivers ignore clip-path. Otherwise a clip-path.
     let geometric_clip = periodic && opt.style == Style::Outline && (opt.page.is_some() || opt.layers.is_some());
     let min_feature = opt.build.min_feature;
-    for (sh, &band) in doc.shapes.iter().zip(&bands) {
+    let paint = if opt.style == Style::Filled { "fill" } else { "stroke" };
+    for (k, (sh, &band)) in doc.shapes.iter().zip(&bands).enumerate() {
         if min_feature > 0.0 && crate::plot::shape_width(sh) < min_feature {
             continue;
         }
+        let colour = opt.colours.as_ref().and_then(|c| c.get(k));
         let offs = if periodic { images(sh, w, h) } else { vec![(0.0, 0.0)] };
         for (dx, dy) in offs {
             let outline = if opt.build.no_outline {
@@ -461,7 +470,10 @@ pub fn render(doc: &FillDoc, opt: &SvgOptions) -> Vec<u8> {
                 }
             };
             let hatch = hatch_node(sh, (dx, dy), opt, geometric_clip.then_some((w, h)), &frame);
-            for n in outline.into_iter().chain(hatch) {
+            for mut n in outline.into_iter().chain(hatch) {
+                if let Some(c) = colour {
+                    n.assign(paint, c.as_str());
+                }
                 let g = std::mem::take(&mut groups[band]);
                 groups[band] = g.add(n);
             }
@@ -482,6 +494,15 @@ pub fn render(doc: &FillDoc, opt: &SvgOptions) -> Vec<u8> {
             p.seed
         ))))
         .add(Description::new().add(Text::new(format!("{}{}", command_line(doc), opt.flags))));
+    if let Some(bg) = &opt.background {
+        d = d.add(
+            Rectangle::new()
+                .set("id", "background")
+                .set("width", num(page_w, P))
+                .set("height", num(page_h, P))
+                .set("fill", bg.as_str()),
+        );
+    }
     if periodic && !geometric_clip {
         // Images of edge-crossing shapes tile seamlessly; the clip keeps the tile's bounds.
         let mut rect = Rectangle::new();

@@ -1246,6 +1246,8 @@ impl PlotArgs {
                 if boundary { " --boundary" } else { "" },
                 self.flags()
             ),
+            colours: None,
+            background: None,
         };
         if let Layers::SizeBands(k) = self.layers {
             o.layers = Some(k);

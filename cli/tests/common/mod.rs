@@ -659,3 +659,21 @@ pub fn rings(doc: &Value) -> Vec<([f64; 2], f64, f64)> {
         .map(|s| (pt(s.get("center").unwrap_or(&Value::Null)), f(s, "radius"), f(s, "inner_radius")))
         .collect()
 }
+
+/// Runs `fill --count 20 ARGS` for each `(ARGS, FLAG)` in a fresh folder holding only
+/// `keep` (whose `-o` the cases name): each must exit 2 naming FLAG, leave `keep` as it was
+/// and write nothing else.
+pub fn assert_fill_refuses(keep: &str, cases: &[(&[&str], &str)]) {
+    let dir = tmp();
+    let kept = dir.path().join(keep);
+    std::fs::write(&kept, b"keep").unwrap_or_else(|e| panic!("write: {e}"));
+    for (args, flag) in cases {
+        let mut a = vec!["fill", "--count", "20"];
+        a.extend_from_slice(args);
+        let o = zf(dir.path(), &a);
+        assert_eq!(o.code, 2, "{a:?}: {}", o.stderr);
+        assert!(o.stderr.contains(flag), "{a:?} should name {flag}: {}", o.stderr);
+        assert_eq!(read(&kept), b"keep", "{a:?} touched the output");
+    }
+    assert_eq!(listing(dir.path()), vec![kept], "nothing else written");
+}

@@ -1,0 +1,128 @@
+//! Colour for screens and prints: a palette of hex colours given to the shapes by size band,
+//! at random (fixed by the seed) or in turn, and a background colour.
+
+use crate::doc::FillDoc;
+
+/// A colour as `#rrggbb` (lower case).
+pub type Colour = String;
+
+/// How shapes take their colours from a palette.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum ColorBy {
+    /// By size: K bands of equal width in log(area) for K colours, the largest shapes taking
+    /// the first (the bands of `--layers size-bands:K`).
+    Size,
+    /// A pseudo-random colour per shape, fixed by the seed and the shape's index.
+    Random,
+    /// In turn: shape i takes colour i mod K.
+    Cycle,
+}
+
+impl ColorBy {
+    /// The name on the command line.
+    pub fn name(self) -> &'static str {
+        match self {
+            ColorBy::Size => "size",
+            ColorBy::Random => "random",
+            ColorBy::Cycle => "cycle",
+        }
+    }
+}
+
+/// Parses one colour: `rgb` or `rrggbb` in hex, with or without a leading `#` (a shell reads
+/// an unquoted ` #` as the start of a comment).
+pub fn colour(s: &str) -> Result<Colour, String> {
+    let h = s.strip_prefix('#').unwrap_or(s);
+    if !((h.len() == 3 || h.len() == 6) && h.chars().all(|c| c.is_ascii_hexdigit())) {
+        return Err(format!(
+            "'{s}' is not a colour; write it as rrggbb or rgb in hex, for example 1d3557"
+        ));
+    }
+    let hex = h.to_ascii_lowercase();
+    Ok(if hex.len() == 3 {
+        hex.chars().fold(String::from("#"), |mut out, c| {
+            out.push(c);
+            out.push(c);
+            out
+        })
+    } else {
+        format!("#{hex}")
+    })
+}
+
+/// A list of colours.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Palette(pub Vec<Colour>);
+
+impl Palette {
+    /// As written on a command line: the colours without `#`, separated by commas.
+    pub fn arg(&self) -> String {
+        self.0.iter().map(|c| c.trim_start_matches('#')).collect::<Vec<_>>().join(",")
+    }
+}
+
+/// Parses a palette: colours separated by commas, at most [`MAX_COLOURS`].
+pub fn palette(s: &str) -> Result<Palette, String> {
+    let list: Vec<Colour> = s.split(',').map(|c| colour(c.trim())).collect::<Result<_, _>>()?;
+    if list.len() > MAX_COLOURS {
+        return Err(format!("{} colours given; at most {MAX_COLOURS}", list.len()));
+    }
+    Ok(Palette(list))
+}
+
+/// The most colours a palette holds.
+pub const MAX_COLOURS: usize = 64;
+
+/// SplitMix64's output for `x`: a fixed, well-mixed hash of the seed and the shape's index.
+fn splitmix64(x: u64) -> u64 {
+    let mut z = x.wrapping_add(0x9e37_79b9_7f4a_7c15);
+    z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+    z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+    z ^ (z >> 31)
+}
+
+/// The palette index of shape `index` drawn at random for `seed`: `splitmix64(seed XOR
+/// splitmix64(index)) mod k`.
+pub fn random_pick(seed: u64, index: u64, k: usize) -> usize {
+    (splitmix64(seed ^ splitmix64(index)) % k as u64) as usize
+}
+
+/// Each shape's colour.
+pub fn assign(doc: &FillDoc, colours: &[Colour], by: ColorBy) -> Vec<Colour> {
+    let k = colours.len().max(1);
+    let pick = |i: usize| colours.get(i % k).cloned().unwrap_or_default();
+    match by {
+        ColorBy::Size => {
+            let (bands, _) = super::svg::size_bands(doc, k as u32);
+            bands.into_iter().map(pick).collect()
+        }
+        ColorBy::Random => doc.shapes.iter().map(|s| pick(random_pick(doc.params.seed, s.index, k))).collect(),
+        ColorBy::Cycle => doc.shapes.iter().map(|s| pick(s.index as usize)).collect(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn colours_parse_and_normalise() {
+        assert_eq!(colour("#1D3557"), Ok("#1d3557".to_string()));
+        assert_eq!(colour("#fA0"), Ok("#ffaa00".to_string()));
+        assert_eq!(colour("1d3557"), Ok("#1d3557".to_string()));
+        for bad in ["red", "#12", "#1234", "#ggg", "##123456", "#", ""] {
+            assert!(colour(bad).is_err(), "{bad}");
+        }
+        assert_eq!(palette("#000, fff").map(|p| p.arg()), Ok("000000,ffffff".to_string()));
+        assert!(palette("#000,,#fff").is_err());
+        assert!(palette(&vec!["#000"; 65].join(",")).is_err());
+    }
+
+    #[test]
+    fn splitmix_matches_its_published_outputs() {
+        // The first outputs of SplitMix64 seeded with 0 (the generator adds the constant
+        // before mixing, as here).
+        assert_eq!(splitmix64(0), 0xe220_a839_7b1d_cdaf);
+        assert_eq!(splitmix64(0x9e37_79b9_7f4a_7c15), 0x6e78_9e6a_a1b9_65f4);
+    }
+}

@@ -1,0 +1,261 @@
+//! Colours (`fill --palette`, `--color-by`, `--background`): the SVG is read back with usvg
+//! and every drawn shape's paint is compared with the colour its rule gives, worked out here
+//! from the JSON of the same run (size bands of equal width in log(area), SplitMix64 of the
+//! seed and index, or the index in turn); the PNG preview shows the colours; bad colours and
+//! colours where no picture is drawn are refused.
+
+mod common;
+
+use common::*;
+use serde_json::Value;
+
+const PALETTE: [&str; 4] = ["#264653", "#2a9d8f", "#e9c46a", "#e76f51"];
+
+/// SplitMix64's output for `x` (the published generator: add the constant, then mix).
+fn splitmix64(x: u64) -> u64 {
+    let mut z = x.wrapping_add(0x9e37_79b9_7f4a_7c15);
+    z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+    z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+    z ^ (z >> 31)
+}
+
+/// The colour each shape of `doc` should have under rule `by` (as the README states it).
+fn expected(doc: &Value, by: &str) -> Vec<&'static str> {
+    let list = shapes(doc);
+    let k = PALETTE.len();
+    let areas: Vec<f64> = list.iter().map(|s| f(s, "area")).collect();
+    let (amax, amin) = areas.iter().fold((0.0f64, f64::MAX), |(a, b), &x| (a.max(x), b.min(x)));
+    let seed = u(&doc["params"], "seed");
+    list.iter()
+        .zip(&areas)
+        .map(|(s, &a)| {
+            let i = u(s, "index");
+            let pick = match by {
+                "size" => {
+                    let t = (amax / a).ln() / (amax / amin).ln();
+                    ((t * k as f64).floor() as usize).min(k - 1)
+                }
+                "random" => (splitmix64(seed ^ splitmix64(i)) % k as u64) as usize,
+                "cycle" => i as usize % k,
+                other => panic!("rule {other}"),
+            };
+            PALETTE[pick]
+        })
+        .collect()
+}
+
+/// The paths usvg reads, in document order: their box centre and fill or stroke colour.
+fn painted(bytes: &[u8], stroke: bool) -> Vec<([f64; 2], String)> {
+    fn walk(g: &usvg::Group, stroke: bool, out: &mut Vec<([f64; 2], String)>) {
+        for n in g.children() {
+            match n {
+                usvg::Node::Group(g) => walk(g, stroke, out),
+                usvg::Node::Path(p) => {
+                    let paint = if stroke {
+                        p.stroke().map(|s| s.paint())
+                    } else {
+                        p.fill().map(|f| f.paint())
+                    };
+                    let colour = match paint {
+                        Some(usvg::Paint::Color(c)) => format!("#{:02x}{:02x}{:02x}", c.red, c.green, c.blue),
+                        other => format!("{other:?}"),
+                    };
+                    let b = p.abs_bounding_box();
+                    // usvg works in px at 96 per inch; the drawing is in mm.
+                    let mm = 25.4 / 96.0;
+                    out.push((
+                        [f64::from(b.x() + b.width() / 2.0) * mm, f64::from(b.y() + b.height() / 2.0) * mm],
+                        colour,
+                    ));
+                }
+                _ => {}
+            }
+        }
+    }
+    let tree = usvg::Tree::from_data(bytes, &usvg::Options::default()).unwrap_or_else(|e| panic!("usvg: {e}"));
+    let mut out = Vec::new();
+    walk(tree.root(), stroke, &mut out);
+    out
+}
+
+/// Whether every path has its shape's colour: path k is shape k (one path per shape).
+fn check(paths: &[([f64; 2], String)], want: &[&str]) -> Result<(), String> {
+    if paths.len() != want.len() {
+        return Err(format!("{} paths for {} shapes", paths.len(), want.len()));
+    }
+    for (k, ((_, got), w)) in paths.iter().zip(want).enumerate() {
+        if got != w {
+            return Err(format!("shape {k} is painted {got}, expected {w}"));
+        }
+    }
+    Ok(())
+}
+
+#[test]
+fn shapes_take_the_colour_of_their_rule() {
+    let dir = tmp();
+    let list = PALETTE.join(",");
+    for (by, style, shape) in [
+        ("size", "filled", "circle"),
+        ("random", "filled", "star:5:0.45"),
+        ("cycle", "outline", "square"),
+        ("random", "outline", "ring:0.5"),
+    ] {
+        let args = [
+            "--shape",
+            shape,
+            "--c",
+            "1.25",
+            "--n-offset",
+            "2",
+            "--count",
+            "150",
+            "--seed",
+            "9",
+            "-q",
+        ];
+        let mut a = args.to_vec();
+        a.extend_from_slice(&["--style", style, "--palette", &list, "--color-by", by]);
+        let svg = fill_to(dir.path(), "c.svg", &a);
+        let doc = fill_json(dir.path(), &args);
+        let want = expected(&doc, by);
+        check(&painted(&svg, style == "outline"), &want).unwrap_or_else(|e| panic!("{by} {style} {shape}: {e}"));
+        // Every colour is used, and the checker sees a wrong assignment.
+        for c in PALETTE {
+            assert!(want.contains(&c), "{by}: {c} unused among {} shapes", want.len());
+        }
+        let mut rotated = want.clone();
+        rotated.rotate_left(1);
+        assert!(
+            check(&painted(&svg, style == "outline"), &rotated).is_err(),
+            "{by}: a wrong colouring must be caught"
+        );
+    }
+}
+
+#[test]
+fn size_is_the_default_rule_and_the_largest_band_takes_the_first_colour() {
+    let dir = tmp();
+    let args = ["--count", "300", "-q"];
+    let mut a = args.to_vec();
+    a.extend_from_slice(&["--style", "filled", "--palette", "264653,2A9D8F,e9c46a,#e76f51"]);
+    let svg = fill_to(dir.path(), "d.svg", &a);
+    let doc = fill_json(dir.path(), &args);
+    let want = expected(&doc, "size");
+    check(&painted(&svg, false), &want).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(want[0], PALETTE[0]);
+    assert_eq!(*want.last().unwrap_or(&""), PALETTE[3], "the smallest shapes take the last colour");
+}
+
+#[test]
+fn periodic_images_share_their_shape_colour_and_the_background_is_behind() {
+    let dir = tmp();
+    let args = ["--count", "200", "--periodic", "--seed", "5", "-q"];
+    let mut a = args.to_vec();
+    let list = PALETTE.join(",");
+    a.extend_from_slice(&[
+        "--style",
+        "filled",
+        "--palette",
+        &list,
+        "--color-by",
+        "cycle",
+        "--background",
+        "fefae0",
+    ]);
+    let svg = fill_to(dir.path(), "p.svg", &a);
+    let doc = fill_json(dir.path(), &args);
+    let want = expected(&doc, "cycle");
+    let paths = painted(&svg, false);
+    // The background first, the size of the tile.
+    let (centre, colour) = &paths[0];
+    assert_eq!(colour, "#fefae0");
+    assert!((centre[0] - 100.0).abs() < 1e-3 && (centre[1] - 100.0).abs() < 1e-3, "{centre:?}");
+    // Every other path is a shape or one of its images: it is found by its centre, modulo
+    // the period, and has the shape's colour.
+    let centres: Vec<[f64; 2]> = shapes(&doc).iter().map(|s| pt(&s["center"])).collect();
+    assert!(paths.len() > centres.len() + 1, "edge-crossing shapes have images");
+    for (c, colour) in &paths[1..] {
+        // SVG y runs down from the top.
+        let (x, y) = (c[0].rem_euclid(200.0), (200.0 - c[1]).rem_euclid(200.0));
+        let k = centres
+            .iter()
+            .position(|s| {
+                let dx = (s[0] - x).abs();
+                let dy = (s[1] - y).abs();
+                dx.min(200.0 - dx) < 1e-3 && dy.min(200.0 - dy) < 1e-3
+            })
+            .unwrap_or_else(|| panic!("a path at {c:?} is no shape's"));
+        assert_eq!(colour, want[k], "shape {k} or its image");
+    }
+}
+
+#[test]
+fn the_png_preview_shows_the_colours() {
+    let dir = tmp();
+    let args = ["--count", "100", "-q"];
+    let mut a = args.to_vec();
+    a.extend_from_slice(&[
+        "--style",
+        "filled",
+        "--palette",
+        "ff0000,00ff00",
+        "--color-by",
+        "cycle",
+        "--background",
+        "0000ff",
+        "--pixels",
+        "200",
+    ]);
+    let png = fill_to(dir.path(), "c.png", &a);
+    let doc = fill_json(dir.path(), &args);
+    let mut reader = png::Decoder::new(&png[..]).read_info().unwrap_or_else(|e| panic!("{e}"));
+    let mut buf = vec![0u8; reader.output_buffer_size()];
+    let frame = reader.next_frame(&mut buf).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(frame.color_type, png::ColorType::Rgba);
+    let rgb = |x: f64, y: f64| {
+        let (i, j) = (x as usize, (200.0 - y) as usize);
+        let at = 4 * (j * frame.width as usize + i);
+        [buf[at], buf[at + 1], buf[at + 2]]
+    };
+    // 1 pixel per mm: the centres of the first two circles, then a corner of the gasket.
+    let c0 = pt(&shapes(&doc)[0]["center"]);
+    let c1 = pt(&shapes(&doc)[1]["center"]);
+    assert_eq!(rgb(c0[0], c0[1]), [255, 0, 0], "shape 0 takes the first colour");
+    assert_eq!(rgb(c1[0], c1[1]), [0, 255, 0], "shape 1 the second");
+    let corner = (0..200)
+        .flat_map(|j| (0..200).map(move |i| (i, j)))
+        .find(|&(i, j)| {
+            let p = [f64::from(i) + 0.5, 199.5 - f64::from(j)];
+            shapes(&doc).iter().all(|s| {
+                let c = pt(&s["center"]);
+                (c[0] - p[0]).hypot(c[1] - p[1]) > f(s, "radius") + 1.5
+            })
+        })
+        .unwrap_or_else(|| panic!("no pixel of gasket"));
+    assert_eq!(
+        rgb(f64::from(corner.0) + 0.5, 199.5 - f64::from(corner.1)),
+        [0, 0, 255],
+        "the gasket shows the background"
+    );
+}
+
+#[test]
+fn bad_colours_and_colours_without_a_picture_are_refused() {
+    let many = vec!["000"; 65].join(",");
+    let cases: [(&[&str], &str); 9] = [
+        (&["--palette", "red", "-o", "keep.svg"], "--palette"),
+        (&["--palette", "12", "-o", "keep.svg"], "--palette"),
+        (&["--palette", "000,,fff", "-o", "keep.svg"], "--palette"),
+        (&["--palette", &many, "-o", "keep.svg"], "--palette"),
+        (&["--background", "#12345g", "-o", "keep.svg"], "--background"),
+        (&["--color-by", "random", "-o", "keep.svg"], "--palette"),
+        (&["--palette", "000", "--format", "json", "-o", "keep.svg"], "--palette"),
+        (&["--palette", "000", "--voronoi", "-o", "keep.svg"], "--palette"),
+        (
+            &["--background", "000", "--relief", "dome", "--format", "png", "-o", "keep.svg"],
+            "--background",
+        ),
+    ];
+    assert_fill_refuses("keep.svg", &cases);
+}

@@ -143,12 +143,9 @@ pub struct FillArgs {
     /// SVG: also draw the region's outline.
     #[arg(long)]
     pub boundary: bool,
-    /// PNG: resolution in pixels per inch.
-    #[arg(long, default_value_t = 96.0, value_parser = spec::positive)]
-    pub dpi: f64,
-    /// PNG: the image's longer side in pixels (instead of --dpi).
-    #[arg(long, conflicts_with = "dpi", value_parser = clap::value_parser!(u32).range(1..=100_000))]
-    pub pixels: Option<u32>,
+    /// PNG size.
+    #[command(flatten)]
+    pub raster: crate::output::png::Raster,
     /// PNG: write a 16-bit height map (each shape a raised stone of this profile) instead
     /// of a picture.
     #[arg(long, value_enum)]
@@ -684,7 +681,7 @@ pub fn render(doc: &FillDoc, format: Format, a: &FillArgs) -> Result<Vec<u8>, Cl
     if a.voronoi {
         return match format {
             Format::Svg => crate::cobble::svg(doc, a.pen_width, a.boundary),
-            Format::Png => output::png::render(&crate::cobble::svg(doc, a.pen_width, a.boundary)?, a.dpi, a.pixels),
+            Format::Png => a.raster.render(&crate::cobble::svg(doc, a.pen_width, a.boundary)?),
             _ => Err(CliError::arg(
                 "--voronoi",
                 "cobblestones are drawn as SVG or PNG; write .svg or .png, or drop --voronoi",
@@ -699,17 +696,12 @@ pub fn render(doc: &FillDoc, format: Format, a: &FillArgs) -> Result<Vec<u8>, Cl
         Format::Digest => output::digest::render(doc),
         Format::Png => match a.relief {
             Some(relief) => {
-                let command = format!(
-                    "{} --relief {}{}",
-                    output::svg::command_line(doc),
-                    relief.name(),
-                    a.pixels.map_or_else(|| format!(" --dpi {}", a.dpi), |n| format!(" --pixels {n}"))
-                );
-                output::height::render(doc, relief, output::height::grid(doc, a.dpi, a.pixels)?, &command)?
+                let command = format!("{} --relief {}{}", output::svg::command_line(doc), relief.name(), a.raster.flag());
+                output::height::render(doc, relief, output::height::grid(doc, a.raster.dpi, a.raster.pixels)?, &command)?
             }
             None => {
                 let svg = output::svg::render(doc, &svg_options(doc, a)?);
-                output::png::render(&svg, a.dpi, a.pixels)?
+                a.raster.render(&svg)?
             }
         },
     })
@@ -731,12 +723,13 @@ pub fn run(a: &FillArgs) -> Result<(), CliError> {
             "is not available with --voronoi (cobblestones are drawn at the region's size)".to_string()
         })?;
     }
-    if format != Format::Png {
-        let flag = if a.relief.is_some() { "--relief" } else { "--pixels" };
-        if a.relief.is_some() || a.pixels.is_some() {
-            return Err(CliError::arg(flag, "is for PNG output: write .png (or --format png), or drop it"));
-        }
+    if format != Format::Png && a.relief.is_some() {
+        return Err(CliError::arg(
+            "--relief",
+            "is for PNG output: write .png (or --format png), or drop it",
+        ));
     }
+    a.raster.check(format == Format::Png)?;
     let colour_flag = if a.palette.is_some() {
         Some("--palette")
     } else {

@@ -4,7 +4,7 @@
 
 use crate::error::CliError;
 use crate::output::svg::Style;
-use crate::output::{self, num, Format};
+use crate::output::{num, Format};
 use crate::spec;
 use crate::stopping::{self, Unit};
 use crate::write::Dest;
@@ -117,9 +117,9 @@ pub struct LineArgs {
     /// SVG: also mark the ends of the interval.
     #[arg(long)]
     pub boundary: bool,
-    /// PNG: resolution in pixels per inch.
-    #[arg(long, default_value_t = 96.0, value_parser = spec::positive, allow_negative_numbers = true)]
-    pub dpi: f64,
+    /// PNG size.
+    #[command(flatten)]
+    pub raster: crate::output::png::Raster,
     /// No progress bar.
     #[arg(short, long)]
     pub quiet: bool,
@@ -809,7 +809,7 @@ pub fn render(doc: &LineDoc, format: Format, a: &LineArgs) -> Result<Vec<u8>, Cl
         Format::Json => render_json(doc)?,
         Format::Csv => render_csv(doc),
         Format::Digest => render_digest(doc),
-        Format::Png => output::png::render(&render_svg(doc, &opt), a.dpi, None)?,
+        Format::Png => a.raster.render(&render_svg(doc, &opt))?,
         Format::Gcode => render_gcode(doc, &opt, a)?,
         #[allow(unreachable_patterns)]
         f => {
@@ -859,6 +859,7 @@ pub fn run(a: &LineArgs) -> Result<(), CliError> {
     let inputs: Vec<&std::path::Path> = a.plot.machine_file().into_iter().collect();
     dest.check("--output", &inputs)?;
     let format = Format::resolve(a.format, &a.output)?;
+    a.raster.check(format == Format::Png)?;
     check_plot(a, format)?;
     let (doc, halt) = compute(a)?;
     let bytes = render(&doc, format, a)?;

@@ -374,13 +374,25 @@ fn height_map_flags_are_refused_where_they_mean_nothing() {
 }
 
 #[test]
-fn pixels_sizes_the_preview_too() {
+fn pixels_sizes_every_png_and_is_refused_elsewhere() {
     let dir = tmp();
-    let bytes = fill_to(
-        dir.path(),
-        "p.png",
-        &["--region", "rect:200:100", "--count", "50", "--pixels", "300", "-q"],
-    );
-    let img = png::Decoder::new(&bytes[..]).read_info().unwrap_or_else(|e| panic!("{e}"));
-    assert_eq!((img.info().width, img.info().height), (300, 150));
+    let size = |args: &[&str]| {
+        let mut a = args.to_vec();
+        a.extend_from_slice(&["--pixels", "300", "-q", "-o", "p.png"]);
+        zf_ok(dir.path(), &a);
+        let bytes = read(&dir.path().join("p.png"));
+        let img = png::Decoder::new(&bytes[..]).read_info().unwrap_or_else(|e| panic!("{e}"));
+        (img.info().width, img.info().height)
+    };
+    assert_eq!(size(&["fill", "--region", "rect:200:100", "--count", "50"]), (300, 150));
+    assert_eq!(size(&["fill", "--count", "50", "--voronoi"]), (300, 300));
+    assert_eq!(size(&["tile"]), (300, 300));
+    assert_eq!(size(&["territory", "--points", "300"]), (300, 300));
+    assert_eq!(size(&["line", "--count", "50"]).0, 300);
+    for cmd in ["line", "territory", "tile"] {
+        let o = zf(dir.path(), &[cmd, "--pixels", "64", "-o", "x.svg"]);
+        assert_eq!(o.code, 2, "{cmd}: {}", o.stderr);
+        assert!(o.stderr.contains("--pixels"), "{cmd}: {}", o.stderr);
+        assert!(!dir.path().join("x.svg").exists(), "{cmd} wrote a file");
+    }
 }

@@ -4,6 +4,41 @@
 
 use crate::error::CliError;
 
+/// The size of a PNG: pixels per inch, or the longer side in pixels.
+#[derive(Debug, Clone, clap::Args)]
+pub struct Raster {
+    /// PNG: resolution in pixels per inch.
+    #[arg(long, default_value_t = 96.0, value_parser = crate::spec::positive, allow_negative_numbers = true)]
+    pub dpi: f64,
+    /// PNG: the image's longer side in pixels (instead of --dpi).
+    #[arg(long, conflicts_with = "dpi", value_parser = clap::value_parser!(u32).range(1..=100_000))]
+    pub pixels: Option<u32>,
+}
+
+impl Raster {
+    /// Renders SVG bytes to PNG at this size.
+    pub fn render(&self, svg: &[u8]) -> Result<Vec<u8>, CliError> {
+        render(svg, self.dpi, self.pixels)
+    }
+
+    /// Refuses `--pixels` when the output is not a PNG.
+    pub fn check(&self, png: bool) -> Result<(), CliError> {
+        if self.pixels.is_some() && !png {
+            return Err(CliError::arg(
+                "--pixels",
+                "is for PNG output: write .png (or --format png), or drop it",
+            ));
+        }
+        Ok(())
+    }
+
+    /// The flag as written on a command line.
+    pub fn flag(&self) -> String {
+        self.pixels
+            .map_or_else(|| format!(" --dpi {}", self.dpi), |n| format!(" --pixels {n}"))
+    }
+}
+
 /// Renders SVG bytes to PNG bytes at `dpi`, or with the longer side `pixels` long.
 pub fn render(svg: &[u8], dpi: f64, pixels: Option<u32>) -> Result<Vec<u8>, CliError> {
     let opt = resvg::usvg::Options::default();

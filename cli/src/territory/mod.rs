@@ -116,9 +116,9 @@ pub struct TerritoryArgs {
     /// SVG: also draw the region's outline.
     #[arg(long)]
     pub boundary: bool,
-    /// PNG: resolution in pixels per inch.
-    #[arg(long, default_value_t = 96.0, value_parser = spec::positive)]
-    pub dpi: f64,
+    /// PNG size.
+    #[command(flatten)]
+    pub raster: crate::output::png::Raster,
     /// No progress bar (and no G-code figures on stderr).
     #[arg(short, long)]
     pub quiet: bool,
@@ -760,7 +760,7 @@ pub fn render_bytes(o: &Outcome, a: &TerritoryArgs, format: TerritoryFormat) -> 
     Ok(match format {
         TerritoryFormat::Gcode => gcode(o, a, desc.clone())?,
         TerritoryFormat::Svg => svg(),
-        TerritoryFormat::Png => crate::output::png::render(&svg(), a.dpi, None)?,
+        TerritoryFormat::Png => a.raster.render(&svg())?,
         TerritoryFormat::Json => {
             let mut v = serde_json::to_vec(&o.doc).map_err(|e| CliError::Io(format!("cannot encode JSON: {e}")))?;
             v.push(b'\n');
@@ -781,6 +781,7 @@ pub fn run(a: &TerritoryArgs) -> Result<(), CliError> {
     }
     dest.check("--output", &inputs)?;
     let format = TerritoryFormat::resolve(a.format, &a.output)?;
+    a.raster.check(format == TerritoryFormat::Png)?;
     check_plot(a, format)?;
     let o = compute(a)?;
     let bytes = render_bytes(&o, a, format)?;

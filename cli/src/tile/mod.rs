@@ -101,9 +101,9 @@ pub struct TileArgs {
     /// SVG: stroke width of the outlines in mm.
     #[arg(long = "pen-width", default_value_t = 0.3, value_parser = spec::positive, allow_negative_numbers = true)]
     pub pen_width: f64,
-    /// PNG: resolution in pixels per inch.
-    #[arg(long, default_value_t = 96.0, value_parser = spec::positive, allow_negative_numbers = true)]
-    pub dpi: f64,
+    /// PNG size.
+    #[command(flatten)]
+    pub raster: crate::output::png::Raster,
     /// No figures on stderr.
     #[arg(short, long)]
     pub quiet: bool,
@@ -442,6 +442,7 @@ pub fn svg(pieces: &[Piece], sheet: Sheet, style: Style, pen_width: f64, clip: b
 /// tile it shows.
 pub fn output(a: &TileArgs) -> Result<(Tile, Vec<u8>), CliError> {
     let format = TileFormat::resolve(a.format, &a.output)?;
+    a.raster.check(format == TileFormat::Png)?;
     let arr = arrangement(a)?;
     check_plot(a, format)?;
     if format == TileFormat::Json && a.layout != Layout::Tile {
@@ -497,7 +498,7 @@ pub fn output(a: &TileArgs) -> Result<(Tile, Vec<u8>), CliError> {
                 &command_line(a, &arr),
             );
             if format == TileFormat::Png {
-                crate::output::png::render(&svg, a.dpi, None)?
+                a.raster.render(&svg)?
             } else {
                 svg
             }

@@ -7,6 +7,7 @@
 
 use std::time::Instant;
 use zetafill_cli::output::height::{grid, render, Relief};
+use zetafill_cli::output::png::Raster;
 
 fn fill(args: &[&str]) -> zetafill_cli::doc::FillDoc {
     let mut v = vec!["zetafill", "fill", "-q", "-o", "x.json"];
@@ -31,7 +32,11 @@ fn main() {
     ] {
         let doc = make(n);
         for pixels in [1024u32, 4096] {
-            let size = grid(&doc, 96.0, Some(pixels)).unwrap_or_else(|e| panic!("{e}"));
+            let raster = Raster {
+                dpi: 96.0,
+                pixels: Some(pixels),
+            };
+            let size = grid(doc.extent(), &raster).unwrap_or_else(|e| panic!("{e}"));
             // The fastest of three runs.
             let (mut best, mut bytes) = (f64::MAX, 0);
             for _ in 0..3 {

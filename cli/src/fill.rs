@@ -697,7 +697,7 @@ pub fn render(doc: &FillDoc, format: Format, a: &FillArgs) -> Result<Vec<u8>, Cl
         Format::Png => match a.relief {
             Some(relief) => {
                 let command = format!("{} --relief {}{}", output::svg::command_line(doc), relief.name(), a.raster.flag());
-                output::height::render(doc, relief, output::height::grid(doc, a.raster.dpi, a.raster.pixels)?, &command)?
+                output::height::render(doc, relief, output::height::grid(doc.extent(), &a.raster)?, &command)?
             }
             None => {
                 let svg = output::svg::render(doc, &svg_options(doc, a)?);

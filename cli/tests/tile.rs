@@ -619,3 +619,150 @@ fn long_runs_are_quiet_when_piped() {
     let o = zf_ok(d, &["tile", "--tries", "2500000", "-q", "-o", "t.json"]);
     assert!(o.stderr.is_empty(), "{:?}", o.stderr);
 }
+
+/// The 16-bit samples of a greyscale PNG, with its width and height.
+fn grey16(bytes: &[u8]) -> (usize, usize, Vec<u16>) {
+    let mut reader = png::Decoder::new(bytes).read_info().unwrap_or_else(|e| panic!("not a PNG: {e}"));
+    let mut buf = vec![0u8; reader.output_buffer_size()];
+    let frame = reader.next_frame(&mut buf).unwrap_or_else(|e| panic!("bad PNG: {e}"));
+    assert_eq!(
+        (frame.color_type, frame.bit_depth),
+        (png::ColorType::Grayscale, png::BitDepth::Sixteen)
+    );
+    let px = buf[..frame.buffer_size()]
+        .chunks(2)
+        .map(|c| u16::from_be_bytes([c[0], c[1]]))
+        .collect();
+    (frame.width as usize, frame.height as usize, px)
+}
+
+/// The dome height map of the discs `plane` seen through the `w` x `h` tile, `n` x `n`
+/// pixels of 4 x 4 samples, white the tallest disc reaching the tile: by brute force.
+fn dome_map(plane: &[([f64; 2], f64)], w: f64, h: f64, n: usize) -> Vec<u16> {
+    let reaches = |c: [f64; 2], r: f64| c[0] + r > 0.0 && c[0] - r < w && c[1] + r > 0.0 && c[1] - r < h;
+    let top = plane.iter().filter(|(c, r)| reaches(*c, *r)).map(|(_, r)| *r).fold(0.0, f64::max);
+    let (sw, sh) = (w / (4 * n) as f64, h / (4 * n) as f64);
+    let mut out = Vec::with_capacity(n * n);
+    for j in 0..n {
+        for i in 0..n {
+            let mut sum = 0.0;
+            for b in 0..4 {
+                for a in 0..4 {
+                    let (x, y) = (((4 * i + a) as f64 + 0.5) * sw, h - ((4 * j + b) as f64 + 0.5) * sh);
+                    sum += plane
+                        .iter()
+                        .find_map(|(c, r)| {
+                            let d = r - (x - c[0]).hypot(y - c[1]);
+                            (d > 0.0).then(|| (d * (2.0 * r - d)).sqrt())
+                        })
+                        .unwrap_or(0.0);
+                }
+            }
+            out.push((sum / 16.0 / top * 65535.0).round() as u16);
+        }
+    }
+    out
+}
+
+/// The first pixel that differs by more than one unit.
+fn map_fault(want: &[u16], got: &[u16], n: usize) -> Option<String> {
+    want.iter()
+        .zip(got)
+        .position(|(a, b)| a.abs_diff(*b) > 1)
+        .map(|k| format!("pixel ({}, {}) is {}, expected {}", k % n, k / n, got[k], want[k]))
+}
+
+/// The tile's height map is the plane of rows seen through the tile, with the discs of the
+/// rows above and below and of the neighbours (so it repeats left and right and meets its
+/// half-scale copies along the top), compared pixel by pixel with a brute-force rendering of
+/// the plane built from the JSON.
+#[test]
+fn the_height_map_is_the_plane_seen_through_the_tile() {
+    let dir = tmp();
+    let args = ["--radius", "4", "--spacing", "1", "--tries", "3000", "--seed", "3"];
+    let doc = tile_json(dir.path(), &args);
+    let (w, h, _, _) = spec(&doc);
+    zf_ok(
+        dir.path(),
+        &[&["tile"], &args[..], &["--relief", "dome", "--pixels", "90", "-q", "-o", "h.png"]].concat(),
+    );
+    let (nx, ny, px) = grey16(&read(&dir.path().join("h.png")));
+    assert_eq!((nx, ny), (90, 90));
+    let ds = discs(&doc);
+    let all = plane(&ds, w, h);
+    if let Some(fault) = map_fault(&dome_map(&all, w, h, 90), &px, 90) {
+        panic!("{fault}");
+    }
+    // The check fails for a plane without the rows above and below.
+    let own_row = plane_rows(&ds, w, h, 0..=0, [-w, 2.0 * w, -2.0 * h, 2.0 * h]);
+    assert!(
+        map_fault(&dome_map(&own_row, w, h, 90), &px, 90).is_some(),
+        "the other rows must show"
+    );
+    // Tile refusals: a height map is a PNG of the tile itself.
+    for (extra, flag) in [
+        (&["-o", "x.svg"][..], "--relief"),
+        (&["--layout", "mosaic", "-o", "x.png"][..], "--layout"),
+    ] {
+        let o = zf(dir.path(), &[&["tile", "--relief", "dome"], extra].concat());
+        assert_eq!(o.code, 2, "{extra:?}: {}", o.stderr);
+        assert!(o.stderr.contains(flag), "{extra:?}: {}", o.stderr);
+        assert!(!dir.path().join("x.svg").exists() && !dir.path().join("x.png").exists());
+    }
+}
+
+/// The cobblestone height map raises exactly the cells the filled picture draws: a stone at
+/// every centre in the tile; floor wherever resvg's picture is wholly white, a stone wherever
+/// it is wholly black (pixels the two rasterisers share an edge in are not judged), so no copy
+/// from a neighbour or another row is missing or extra.
+#[test]
+fn the_cobblestone_height_map_covers_the_drawn_cells() {
+    let dir = tmp();
+    let doc = tile_json(dir.path(), &COBBLES);
+    let (w, h, _, _) = spec(&doc);
+    // Pixels of an eighth of a millimetre: the gaps between cells are several pixels wide.
+    let n = 800;
+    let pixels = n.to_string();
+    zf_ok(
+        dir.path(),
+        &[
+            &["tile"],
+            &COBBLES[..],
+            &["--relief", "cone", "--pixels", &pixels, "-q", "-o", "h.png"],
+        ]
+        .concat(),
+    );
+    let (_, _, px) = grey16(&read(&dir.path().join("h.png")));
+    for d in discs(&doc) {
+        let (i, j) = ((d.c[0] / w * n as f64) as usize, ((h - d.c[1]) / h * n as f64) as usize);
+        assert!(px[j.min(n - 1) * n + i.min(n - 1)] > 0, "no stone at the centre {:?}", d.c);
+    }
+    zf_ok(
+        dir.path(),
+        &[
+            &["tile"],
+            &COBBLES[..],
+            &["--style", "filled", "--pixels", &pixels, "-q", "-o", "f.png"],
+        ]
+        .concat(),
+    );
+    let bytes = read(&dir.path().join("f.png"));
+    let mut reader = png::Decoder::new(&bytes[..]).read_info().unwrap_or_else(|e| panic!("{e}"));
+    let mut buf = vec![0u8; reader.output_buffer_size()];
+    let frame = reader.next_frame(&mut buf).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(
+        (frame.width, frame.height, frame.color_type),
+        (n as u32, n as u32, png::ColorType::Rgba)
+    );
+    let faults = |px: &[u16]| {
+        buf.chunks(4)
+            .zip(px)
+            .filter(|(p, &v)| (p[0] == 255 && v > 0) || (p[0] == 0 && v == 0))
+            .count()
+    };
+    let bad = faults(&px);
+    assert!(bad * 1000 <= n * n, "{bad} pixels disagree with the drawn cells");
+    // The check fails for a map shifted by two pixels.
+    let shifted: Vec<u16> = (0..n * n).map(|k| if k % n >= 2 { px[k - 2] } else { 0 }).collect();
+    assert!(faults(&shifted) * 1000 > n * n, "a shifted map must be caught");
+}

@@ -3,7 +3,9 @@
 //! roughness"). Every shape is a raised stone on a floor of zero (the gasket, and everything
 //! outside the region); its height at a point grows with the point's depth inside it (the
 //! distance to its outline), and its top is as high as the stone's own half-width, so the
-//! relief is as self-similar as the fill. A periodic fill gives a map that tiles seamlessly.
+//! relief is as self-similar as the fill. A periodic fill gives a map that tiles seamlessly;
+//! the fractal tile's map ([`render_shapes`] with the stones of its plane) repeats as the tile
+//! does.
 //!
 //! Written as a 16-bit greyscale PNG (white is the highest stone; the text chunks say how
 //! many mm that is, and give the command that reproduces the file). Each pixel is the mean of
@@ -59,11 +61,10 @@ impl Relief {
     }
 }
 
-/// The pixel grid of a height map over the region's bounding box: `nx` by `ny` pixels, the
-/// longer side `pixels` long when given, otherwise `dpi` pixels per inch.
-pub fn grid(doc: &FillDoc, dpi: f64, pixels: Option<u32>) -> Result<(usize, usize), CliError> {
-    let (w, h) = doc.extent();
-    let (nx, ny) = match pixels {
+/// The pixel grid of a height map over a `w` x `h` box: the longer side `--pixels` long when
+/// given, otherwise `--dpi` pixels per inch.
+pub fn grid((w, h): (f64, f64), raster: &super::png::Raster) -> Result<(usize, usize), CliError> {
+    let (nx, ny) = match raster.pixels {
         Some(n) => {
             let n = f64::from(n);
             if w >= h {
@@ -72,10 +73,10 @@ pub fn grid(doc: &FillDoc, dpi: f64, pixels: Option<u32>) -> Result<(usize, usiz
                 ((n * w / h).round().max(1.0), n)
             }
         }
-        None => ((w / 25.4 * dpi).round().max(1.0), (h / 25.4 * dpi).round().max(1.0)),
+        None => ((w / 25.4 * raster.dpi).round().max(1.0), (h / 25.4 * raster.dpi).round().max(1.0)),
     };
     if nx * ny > MAX_PIXELS as f64 || !(nx * ny).is_finite() {
-        let flag = if pixels.is_some() { "--pixels" } else { "--dpi" };
+        let flag = if raster.pixels.is_some() { "--pixels" } else { "--dpi" };
         return Err(CliError::arg(
             flag,
             format!("a {nx} x {ny} pixel height map is too large (at most {MAX_PIXELS} pixels); lower {flag}"),
@@ -152,20 +153,32 @@ fn span(lo: f64, hi: f64, step: f64, n: usize) -> Option<(usize, usize)> {
 
 /// Renders the height map of `doc`: `nx` by `ny` pixels over the region's bounding box, with
 /// the command that reproduces it in a text chunk.
-pub fn render(doc: &FillDoc, relief: Relief, (nx, ny): (usize, usize), command: &str) -> Result<Vec<u8>, CliError> {
-    let (x0, _, _, y1) = doc.bbox();
-    let (w, h) = doc.extent();
+pub fn render(doc: &FillDoc, relief: Relief, size: (usize, usize), command: &str) -> Result<Vec<u8>, CliError> {
+    render_shapes(&doc.shapes, doc.bbox(), doc.periodic(), relief, size, command)
+}
+
+/// Renders the height map of `shapes` over the box `(x0, y0, x1, y1)`, `nx` by `ny` pixels;
+/// with `periodic` (a box at the origin) the shapes' images across its edges too.
+pub fn render_shapes(
+    shapes: &[ShapeDoc],
+    (x0, y0, x1, y1): (f64, f64, f64, f64),
+    periodic: bool,
+    relief: Relief,
+    (nx, ny): (usize, usize),
+    command: &str,
+) -> Result<Vec<u8>, CliError> {
+    let (w, h) = (x1 - x0, y1 - y0);
     let (sx_n, sy_n) = (SUB * nx, SUB * ny);
     let (sw, sh) = (w / sx_n as f64, h / sy_n as f64);
     // Each stone (and periodic image) with its samples: columns i0..=i1, rows j0..=j1
     // counted down from the top.
     let mut pieces = Vec::new();
-    let mut stones = Vec::with_capacity(doc.shapes.len());
+    let mut stones = Vec::with_capacity(shapes.len());
     let mut top = 0.0f64;
-    for shape in &doc.shapes {
+    for shape in shapes {
         let stone = Stone::new(shape);
         top = top.max(relief.height(stone.rho, stone.rho));
-        let shifts = if doc.periodic() {
+        let shifts = if periodic {
             super::svg::images(shape, w, h)
         } else {
             vec![(0.0, 0.0)]

@@ -104,6 +104,10 @@ pub struct TileArgs {
     /// PNG size.
     #[command(flatten)]
     pub raster: crate::output::png::Raster,
+    /// PNG: write a 16-bit height map of the tile (each disc or cobblestone a raised stone of
+    /// this profile) instead of a picture.
+    #[arg(long, value_enum)]
+    pub relief: Option<crate::output::height::Relief>,
     /// No figures on stderr.
     #[arg(short, long)]
     pub quiet: bool,
@@ -443,6 +447,18 @@ pub fn svg(pieces: &[Piece], sheet: Sheet, style: Style, pen_width: f64, clip: b
 pub fn output(a: &TileArgs) -> Result<(Tile, Vec<u8>), CliError> {
     let format = TileFormat::resolve(a.format, &a.output)?;
     a.raster.check(format == TileFormat::Png)?;
+    if a.relief.is_some() && format != TileFormat::Png {
+        return Err(CliError::arg(
+            "--relief",
+            "is for PNG output: write .png (or --format png), or drop it",
+        ));
+    }
+    if a.relief.is_some() && a.layout != Layout::Tile {
+        return Err(CliError::arg(
+            "--layout",
+            "a height map is of the tile itself (it repeats seamlessly); drop --layout or --relief",
+        ));
+    }
     let arr = arrangement(a)?;
     check_plot(a, format)?;
     if format == TileFormat::Json && a.layout != Layout::Tile {
@@ -462,6 +478,13 @@ pub fn output(a: &TileArgs) -> Result<(Tile, Vec<u8>), CliError> {
                 pieces.len()
             ),
         ));
+    }
+    if let (TileFormat::Png, Some(relief)) = (format, a.relief) {
+        let command = format!("{} --relief {}{}", command_line(a, &arr), relief.name(), a.raster.flag());
+        let size = crate::output::height::grid((w, h), &a.raster)?;
+        let stones = render::stones(&tile, a.render)?;
+        let bytes = crate::output::height::render_shapes(&stones, (0.0, 0.0, w, h), false, relief, size, &command)?;
+        return Ok((tile, bytes));
     }
     let bytes = match format {
         TileFormat::Json => {

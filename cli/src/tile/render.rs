@@ -255,6 +255,48 @@ fn inset_cell(tile: &Tile, tri: &Tri, sites: &[Pt], v: usize) -> Vec<Pt> {
     poly
 }
 
+/// The stones of the tile's height map: every disc of the plane that reaches the tile, or
+/// every inset cell of a centre whose cell can, whole (the map's edge cuts them, so a stone
+/// crossing an edge goes on in the copy beyond it).
+pub fn stones(tile: &Tile, render: Render) -> Result<Vec<crate::doc::ShapeDoc>, CliError> {
+    let (w, h) = (tile.spec.width, tile.spec.height);
+    let stone = |index: usize, c: Pt, radius: Option<f64>, vertices: Option<Vec<Pt>>| crate::doc::ShapeDoc {
+        index: index as u64,
+        kind: if radius.is_some() { "circle" } else { "polygon" },
+        center: c,
+        radius,
+        inner_radius: None,
+        angle: None,
+        area: 0.0,
+        trials: 0,
+        vertices,
+    };
+    Ok(match render {
+        Render::Discs => images(tile, 0.0)
+            .iter()
+            .enumerate()
+            .map(|(i, im)| stone(i, im.c, Some(im.r), None))
+            .collect(),
+        Render::Voronoi => {
+            let (sites, tri) = plane_diagram(tile)?;
+            if tri.num_vertices() < 3 {
+                return Ok(Vec::new());
+            }
+            (0..tri.num_vertices())
+                .filter_map(|v| {
+                    let cell = inset_cell(tile, &tri, &sites, v);
+                    let reaches = cell.len() >= 3
+                        && cell.iter().any(|p| p[0] > 0.0)
+                        && cell.iter().any(|p| p[0] < w)
+                        && cell.iter().any(|p| p[1] > 0.0)
+                        && cell.iter().any(|p| p[1] < h);
+                    reaches.then(|| stone(v, sites[v], None, Some(cell)))
+                })
+                .collect()
+        }
+    })
+}
+
 /// The tile's own shapes, whole and filled: its discs, or the inset cells of its centres. Laid
 /// out, every shape of the plane is drawn once and whole, so copies meet without the hairline
 /// seams that anti-aliasing leaves where two cut pieces abut.

@@ -590,10 +590,7 @@ fn run_engine<S: zetafill::Scalar>(
 pub fn compute(a: &FillArgs) -> Result<(FillDoc, Option<StepError>), CliError> {
     let data = RegionData::load(&a.region)?;
     let region = data.region(a.periodic)?;
-    let order = match a.mix_order {
-        MixArg::Cycle => MixOrder::Cycle,
-        MixArg::Random => MixOrder::Random,
-    };
+    let order = mix_order(a.mix_order);
     let params = Params {
         c: a.c(),
         n_offset: a.n_offset,
@@ -661,12 +658,26 @@ pub fn compute(a: &FillArgs) -> Result<(FillDoc, Option<StepError>), CliError> {
     Ok((doc, halt))
 }
 
+/// The core's mix order.
+fn mix_order(m: MixArg) -> MixOrder {
+    match m {
+        MixArg::Cycle => MixOrder::Cycle,
+        MixArg::Random => MixOrder::Random,
+    }
+}
+
 /// The SVG options of the drawing flags, colours included.
 fn svg_options(doc: &FillDoc, a: &FillArgs) -> Result<output::svg::SvgOptions, CliError> {
     let mut o = a.plot.svg_options(doc, a.style, a.pen_width, a.boundary)?;
     if let Some(p) = &a.palette {
         let by = a.color_by.unwrap_or(output::palette::ColorBy::Size);
-        o.colours = Some(output::palette::assign(doc, &p.0, by));
+        // The mix entry of each shape, as the engine chose it.
+        let list = a.shape.list(mix_order(a.mix_order), a.seed);
+        let entry = |i: u64| {
+            let kind = list.kind_of(i);
+            list.kinds().iter().position(|k| *k == kind).unwrap_or(0)
+        };
+        o.colours = Some(output::palette::assign(doc, &p.0, by, entry));
         o.flags.push_str(&format!(" --palette {} --color-by {}", p.arg(), by.name()));
     }
     if let Some(bg) = &a.background {

@@ -259,3 +259,39 @@ fn bad_colours_and_colours_without_a_picture_are_refused() {
     ];
     assert_fill_refuses("keep.svg", &cases);
 }
+
+#[test]
+fn kind_colours_each_entry_of_a_mix() {
+    let dir = tmp();
+    let kinds = ["circle", "triangle", "ring"];
+    let args = [
+        "--shape",
+        "mix:circle,triangle,ring:0.5",
+        "--mix-order",
+        "random",
+        "--c",
+        "1.25",
+        "--n-offset",
+        "2",
+        "--count",
+        "200",
+        "-q",
+    ];
+    let mut a = args.to_vec();
+    let list = PALETTE.join(",");
+    a.extend_from_slice(&["--style", "filled", "--palette", &list, "--color-by", "kind"]);
+    let svg = fill_to(dir.path(), "k.svg", &a);
+    let doc = fill_json(dir.path(), &args);
+    // Each shape's kind, as the JSON names it, picks its entry's colour.
+    let want: Vec<&str> = shapes(&doc)
+        .iter()
+        .map(|sh| {
+            let k = s(sh, "kind");
+            PALETTE[kinds.iter().position(|n| *n == k).unwrap_or_else(|| panic!("kind {k}"))]
+        })
+        .collect();
+    check(&painted(&svg, false), &want).unwrap_or_else(|e| panic!("{e}"));
+    assert!(want.iter().any(|c| *c == PALETTE[2]) && want.iter().any(|c| *c == PALETTE[1]));
+    // Cycling the colours instead would not match a random mix.
+    assert!(check(&painted(&svg, false), &expected(&doc, "cycle")).is_err());
+}

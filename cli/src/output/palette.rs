@@ -2,6 +2,7 @@
 //! at random (fixed by the seed) or in turn, and a background colour.
 
 use crate::doc::FillDoc;
+use zetafill::shape::mix64;
 
 /// A colour as `#rrggbb` (lower case).
 pub type Colour = String;
@@ -16,6 +17,8 @@ pub enum ColorBy {
     Random,
     /// In turn: shape i takes colour i mod K.
     Cycle,
+    /// By the shape's entry in a mix (`--shape mix:...`): entry j takes colour j mod K.
+    Kind,
 }
 
 impl ColorBy {
@@ -25,6 +28,7 @@ impl ColorBy {
             ColorBy::Size => "size",
             ColorBy::Random => "random",
             ColorBy::Cycle => "cycle",
+            ColorBy::Kind => "kind",
         }
     }
 }
@@ -73,22 +77,14 @@ pub fn palette(s: &str) -> Result<Palette, String> {
 /// The most colours a palette holds.
 pub const MAX_COLOURS: usize = 64;
 
-/// SplitMix64's output for `x`: a fixed, well-mixed hash of the seed and the shape's index.
-fn splitmix64(x: u64) -> u64 {
-    let mut z = x.wrapping_add(0x9e37_79b9_7f4a_7c15);
-    z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-    z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-    z ^ (z >> 31)
-}
-
 /// The palette index of shape `index` drawn at random for `seed`: `splitmix64(seed XOR
-/// splitmix64(index)) mod k`.
+/// splitmix64(index)) mod k`, with SplitMix64's output function (the core's [`mix64`]).
 pub fn random_pick(seed: u64, index: u64, k: usize) -> usize {
-    (splitmix64(seed ^ splitmix64(index)) % k as u64) as usize
+    (mix64(seed ^ mix64(index)) % k as u64) as usize
 }
 
-/// Each shape's colour.
-pub fn assign(doc: &FillDoc, colours: &[Colour], by: ColorBy) -> Vec<Colour> {
+/// Each shape's colour; `entry` gives the mix entry of shape i (for [`ColorBy::Kind`]).
+pub fn assign(doc: &FillDoc, colours: &[Colour], by: ColorBy, entry: impl Fn(u64) -> usize) -> Vec<Colour> {
     let k = colours.len().max(1);
     let pick = |i: usize| colours.get(i % k).cloned().unwrap_or_default();
     match by {
@@ -98,6 +94,7 @@ pub fn assign(doc: &FillDoc, colours: &[Colour], by: ColorBy) -> Vec<Colour> {
         }
         ColorBy::Random => doc.shapes.iter().map(|s| pick(random_pick(doc.params.seed, s.index, k))).collect(),
         ColorBy::Cycle => doc.shapes.iter().map(|s| pick(s.index as usize)).collect(),
+        ColorBy::Kind => doc.shapes.iter().map(|s| pick(entry(s.index))).collect(),
     }
 }
 
@@ -119,10 +116,10 @@ mod tests {
     }
 
     #[test]
-    fn splitmix_matches_its_published_outputs() {
+    fn the_mix_is_splitmix64() {
         // The first outputs of SplitMix64 seeded with 0 (the generator adds the constant
-        // before mixing, as here).
-        assert_eq!(splitmix64(0), 0xe220_a839_7b1d_cdaf);
-        assert_eq!(splitmix64(0x9e37_79b9_7f4a_7c15), 0x6e78_9e6a_a1b9_65f4);
+        // before mixing, as the README's formula does).
+        assert_eq!(mix64(0), 0xe220_a839_7b1d_cdaf);
+        assert_eq!(mix64(0x9e37_79b9_7f4a_7c15), 0x6e78_9e6a_a1b9_65f4);
     }
 }

@@ -735,10 +735,7 @@ pub fn run(a: &FillArgs) -> Result<(), CliError> {
         })?;
     }
     if format != Format::Png && a.relief.is_some() {
-        return Err(CliError::arg(
-            "--relief",
-            "is for PNG output: write .png (or --format png), or drop it",
-        ));
+        return Err(crate::output::png::only_png("--relief"));
     }
     a.raster.check(format == Format::Png)?;
     let colour_flag = if a.palette.is_some() {

@@ -166,14 +166,7 @@ fn expected(doc: &Value, relief: &str, w: usize, h: usize) -> Vec<u16> {
         .collect();
     let top = stones.iter().map(|(_, rho)| profile(relief, *rho, *rho)).fold(0.0, f64::max);
     let (pw, ph) = (x1 - x0, y1 - y0);
-    let shifts: Vec<(f64, f64)> = if periodic {
-        [-1.0, 0.0, 1.0]
-            .iter()
-            .flat_map(|&a| [-1.0, 0.0, 1.0].iter().map(move |&b| (a * pw, b * ph)))
-            .collect()
-    } else {
-        vec![(0.0, 0.0)]
-    };
+    let shifts = period_shifts(periodic, pw, ph);
     let (sw, sh) = (pw / (SUB * w) as f64, ph / (SUB * h) as f64);
     let mut out = Vec::with_capacity(w * h);
     for j in 0..h {

@@ -4,6 +4,11 @@
 
 use crate::error::CliError;
 
+/// The refusal of a flag that only a PNG output reads.
+pub fn only_png(flag: &str) -> CliError {
+    CliError::arg(flag, "is for PNG output: write .png (or --format png), or drop it")
+}
+
 /// The size of a PNG: pixels per inch, or the longer side in pixels.
 #[derive(Debug, Clone, clap::Args)]
 pub struct Raster {
@@ -23,13 +28,10 @@ impl Raster {
 
     /// Refuses `--pixels` when the output is not a PNG.
     pub fn check(&self, png: bool) -> Result<(), CliError> {
-        if self.pixels.is_some() && !png {
-            return Err(CliError::arg(
-                "--pixels",
-                "is for PNG output: write .png (or --format png), or drop it",
-            ));
+        match self.pixels {
+            Some(_) if !png => Err(only_png("--pixels")),
+            _ => Ok(()),
         }
-        Ok(())
     }
 
     /// The flag as written on a command line.

@@ -448,10 +448,7 @@ pub fn output(a: &TileArgs) -> Result<(Tile, Vec<u8>), CliError> {
     let format = TileFormat::resolve(a.format, &a.output)?;
     a.raster.check(format == TileFormat::Png)?;
     if a.relief.is_some() && format != TileFormat::Png {
-        return Err(CliError::arg(
-            "--relief",
-            "is for PNG output: write .png (or --format png), or drop it",
-        ));
+        return Err(crate::output::png::only_png("--relief"));
     }
     if a.relief.is_some() && a.layout != Layout::Tile {
         return Err(CliError::arg(

@@ -557,14 +557,7 @@ pub fn check_overlaps(doc: &Value) -> Vec<String> {
     let gap = doc.get("params").map(|p| f(p, "gap")).unwrap_or(0.0);
     let gs: Vec<G> = shapes(doc).iter().map(G::from_json).collect();
     let bc: Vec<([f64; 2], f64)> = gs.iter().map(G::bcircle).collect();
-    let shifts: Vec<(f64, f64)> = if periodic {
-        [-1.0, 0.0, 1.0]
-            .iter()
-            .flat_map(|&i| [-1.0, 0.0, 1.0].iter().map(move |&j| (i * w, j * h)))
-            .collect()
-    } else {
-        vec![(0.0, 0.0)]
-    };
+    let shifts = period_shifts(periodic, w, h);
     let mut errs = Vec::new();
     for i in 0..gs.len() {
         for j in i..gs.len() {
@@ -676,4 +669,16 @@ pub fn assert_fill_refuses(keep: &str, cases: &[(&[&str], &str)]) {
         assert_eq!(read(&kept), b"keep", "{a:?} touched the output");
     }
     assert_eq!(listing(dir.path()), vec![kept], "nothing else written");
+}
+
+/// The shifts that bring a shape's images next to the `w` x `h` tile: the nine of a period
+/// each way when `periodic`, only none otherwise.
+pub fn period_shifts(periodic: bool, w: f64, h: f64) -> Vec<(f64, f64)> {
+    if !periodic {
+        return vec![(0.0, 0.0)];
+    }
+    [-1.0, 0.0, 1.0]
+        .iter()
+        .flat_map(|&i| [-1.0, 0.0, 1.0].iter().map(move |&j| (i * w, j * h)))
+        .collect()
 }

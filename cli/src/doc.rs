@@ -105,6 +105,29 @@ pub enum RegionDoc {
     },
 }
 
+impl RegionDoc {
+    /// The `--region` argument that makes this region again. An outline lists its rings in
+    /// the order the core was given them (the outer outlines, then the holes), separated by
+    /// `/`, each number in shortest round-trip form, so an `svg:FILE` region is reproduced
+    /// without its file.
+    pub fn arg(&self) -> String {
+        let ring = |r: &[[f64; 2]]| r.iter().map(|v| format!("{},{}", v[0], v[1])).collect::<Vec<_>>().join(",");
+        match self {
+            RegionDoc::Rect { width, height, .. } => format!("rect:{width}:{height}"),
+            RegionDoc::Circle { radius, .. } => format!("circle:{radius}"),
+            RegionDoc::Annulus {
+                radius_outer,
+                radius_inner,
+                ..
+            } => format!("annulus:{radius_outer}:{radius_inner}"),
+            RegionDoc::Polygon { vertices, holes, outers } => {
+                let rings = std::iter::once(vertices).chain(outers).chain(holes);
+                format!("polygon:{}", rings.map(|r| ring(r)).collect::<Vec<_>>().join("/"))
+            }
+        }
+    }
+}
+
 /// One placed shape.
 #[derive(Debug, Clone, Serialize)]
 pub struct ShapeDoc {

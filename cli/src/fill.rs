@@ -87,7 +87,8 @@ pub struct FillArgs {
     /// Rotation: none or random (default: random for non-circles).
     #[arg(long, value_enum)]
     pub rotate: Option<Rotate>,
-    /// rect:W:H | circle:R | annulus:R_OUTER:R_INNER | polygon:X1,Y1,X2,Y2,... | svg:FILE (mm).
+    /// rect:W:H | circle:R | annulus:R_OUTER:R_INNER | polygon:X1,Y1,X2,Y2,...[/X1,Y1,...] (rings,
+    /// even-odd) | svg:FILE (mm).
     #[arg(long, default_value = "rect:200:200", value_parser = spec::region)]
     pub region: RegionSpec,
     /// Periodic (toroidal) boundary: the fill tiles seamlessly (rect regions only).
@@ -295,8 +296,9 @@ impl RegionData {
         let spec = match spec {
             RegionSpec::Svg(path) => {
                 let (points, ends) = crate::svgin::read_outline(path)?;
-                RegionSpec::Polygon { points, ends }
+                outers_first(&points, &ends)
             }
+            RegionSpec::Polygon { points, ends } => outers_first(points, ends),
             other => other.clone(),
         };
         Ok(RegionData { spec })
@@ -345,14 +347,8 @@ impl RegionData {
                 let rings: Vec<&[zetafill::Point<f64>]> = p.rings().collect();
                 let as_vec = |r: &[zetafill::Point<f64>]| r.iter().map(|q| [q.x, q.y]).collect::<Vec<_>>();
                 let (mut vertices, mut holes, mut outers) = (Vec::new(), Vec::new(), Vec::new());
-                for (i, r) in rings.iter().enumerate() {
-                    let probe = r.first().copied().unwrap_or_default();
-                    let depth = rings
-                        .iter()
-                        .enumerate()
-                        .filter(|(j, o)| *j != i && zetafill::geom::point_in_poly(probe, o))
-                        .count();
-                    if depth % 2 == 1 {
+                for (r, hole) in rings.iter().zip(holes_of(&rings)) {
+                    if hole {
                         holes.push(as_vec(r));
                     } else if vertices.is_empty() {
                         vertices = as_vec(r);
@@ -363,6 +359,42 @@ impl RegionData {
                 RegionDoc::Polygon { vertices, holes, outers }
             }
         }
+    }
+}
+
+/// Whether each ring is a hole: inside an odd number of the others (the even-odd rule), judged
+/// by its first vertex.
+fn holes_of(rings: &[&[zetafill::Point<f64>]]) -> Vec<bool> {
+    (0..rings.len())
+        .map(|i| {
+            let probe = rings.get(i).and_then(|r| r.first()).copied().unwrap_or_default();
+            let depth = rings
+                .iter()
+                .enumerate()
+                .filter(|(j, o)| *j != i && zetafill::geom::point_in_poly(probe, o))
+                .count();
+            depth % 2 == 1
+        })
+        .collect()
+}
+
+/// The rings reordered as the JSON lists them (the outer outlines, then the holes, each in
+/// their own order), so that the `--region polygon:` written from the JSON gives the core the
+/// same rings in the same order, and so the same bits.
+fn outers_first(points: &[zetafill::Point<f64>], ends: &[usize]) -> RegionSpec {
+    let starts = std::iter::once(0).chain(ends.iter().copied());
+    let rings: Vec<&[zetafill::Point<f64>]> = starts.zip(ends).filter_map(|(a, &b)| points.get(a..b)).collect();
+    let holes = holes_of(&rings);
+    let (mut out, mut out_ends) = (Vec::with_capacity(points.len()), Vec::with_capacity(ends.len()));
+    for want_hole in [false, true] {
+        for (r, _) in rings.iter().zip(&holes).filter(|(_, h)| **h == want_hole) {
+            out.extend_from_slice(r);
+            out_ends.push(out.len());
+        }
+    }
+    RegionSpec::Polygon {
+        points: out,
+        ends: out_ends,
     }
 }
 
@@ -773,4 +805,28 @@ pub fn run(a: &FillArgs) -> Result<(), CliError> {
     let bytes = render(&doc, format, a)?;
     dest.write(&bytes)?;
     stopping::outcome(halt, SHAPES, halt_advice)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn outlines_come_before_holes() {
+        // A hole, the outline around it, and an island beside them.
+        let Ok(RegionSpec::Polygon { points, ends }) = spec::region("polygon:4,4,6,4,6,6/0,0,10,0,10,10,0,10/20,0,30,0,30,9") else {
+            panic!("rings refused");
+        };
+        let RegionSpec::Polygon { points: p, ends: e } = outers_first(&points, &ends) else {
+            panic!("not a polygon");
+        };
+        assert_eq!(e, [4, 7, 10]);
+        let xs: Vec<f64> = p.iter().map(|q| q.x).collect();
+        assert_eq!(xs, [0.0, 10.0, 10.0, 0.0, 20.0, 30.0, 30.0, 4.0, 6.0, 6.0]);
+        // Already in order: unchanged.
+        let RegionSpec::Polygon { points: again, ends: e2 } = outers_first(&p, &e) else {
+            panic!("not a polygon");
+        };
+        assert_eq!((again, e2), (p, e));
+    }
 }

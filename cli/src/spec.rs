@@ -225,26 +225,39 @@ pub enum RegionSpec {
     Svg(std::path::PathBuf),
 }
 
-/// `rect:W:H | circle:R | annulus:R_OUTER:R_INNER | polygon:X1,Y1,... | svg:FILE` (mm).
+/// `polygon:X1,Y1,X2,Y2,...[/X1,Y1,...]...`: one ring of vertices, or several separated by
+/// `/`, filled by the even-odd rule (a ring inside another is a hole).
+fn polygon(list: &str) -> Result<RegionSpec, String> {
+    const FORM: &str = "polygon:X1,Y1,X2,Y2,...[/X1,Y1,...]";
+    let several = list.contains('/');
+    let mut points = Vec::new();
+    let mut ends = Vec::new();
+    for (k, ring) in list.split('/').enumerate() {
+        let which = if several { format!(" (ring {})", k + 1) } else { String::new() };
+        let nums = ring
+            .split(',')
+            .map(finite)
+            .collect::<Result<Vec<f64>, _>>()
+            .map_err(|e| format!("{FORM}{which}: {e}"))?;
+        if nums.len() % 2 != 0 {
+            return Err(format!("{FORM}{which}: give an even count of numbers (x,y pairs)"));
+        }
+        if nums.len() < 6 {
+            return Err(format!("{FORM}{which}: a ring needs at least 3 vertices"));
+        }
+        points.extend(nums.chunks(2).map(|c| Point::new(c[0], c.get(1).copied().unwrap_or(0.0))));
+        ends.push(points.len());
+    }
+    Ok(RegionSpec::Polygon { points, ends })
+}
+
+/// `rect:W:H | circle:R | annulus:R_OUTER:R_INNER | polygon:X1,Y1,...[/...] | svg:FILE` (mm).
 pub fn region(s: &str) -> Result<RegionSpec, String> {
     if let Some(file) = s.strip_prefix("svg:") {
         return Ok(RegionSpec::Svg(file.into()));
     }
     if let Some(list) = s.strip_prefix("polygon:") {
-        let nums = list
-            .split(',')
-            .map(finite)
-            .collect::<Result<Vec<f64>, _>>()
-            .map_err(|e| format!("polygon:X1,Y1,...: {e}"))?;
-        if nums.len() % 2 != 0 {
-            return Err("polygon:X1,Y1,X2,Y2,...: give an even count of numbers (x,y pairs)".into());
-        }
-        if nums.len() < 6 {
-            return Err("polygon:X1,Y1,X2,Y2,...: a polygon needs at least 3 vertices".into());
-        }
-        let points: Vec<Point<f64>> = nums.chunks(2).map(|c| Point::new(c[0], c.get(1).copied().unwrap_or(0.0))).collect();
-        let ends = vec![points.len()];
-        return Ok(RegionSpec::Polygon { points, ends });
+        return polygon(list);
     }
     let parts: Vec<&str> = s.split(':').collect();
     match parts.as_slice() {
@@ -321,6 +334,19 @@ mod tests {
         assert!(region("annulus:10:10").is_err());
         assert!(region("polygon:0,0,1,1").is_err());
         assert!(region("polygon:0,0,1,1,2").is_err());
+        assert!(region("polygon:0,0,9,0,9,9/1,1,2").is_err());
+        assert!(region("polygon:0,0,9,0,9,9/").is_err());
         assert!(region("circle:0").is_err());
+    }
+
+    #[test]
+    fn polygon_rings_are_split_at_slashes() {
+        let Ok(RegionSpec::Polygon { points, ends }) = region("polygon:0,0,9,0,9,9,0,9/2,2,4,2,4,4") else {
+            panic!("two rings refused");
+        };
+        assert_eq!(ends, [4, 7]);
+        assert_eq!((points[4].x, points[6].y), (2.0, 4.0));
+        let e = region("polygon:0,0,9,0,9,9/1,1,2,2").err().unwrap_or_default();
+        assert!(e.contains("(ring 2): a ring needs at least 3 vertices"), "{e}");
     }
 }

@@ -122,6 +122,13 @@ fn bad_region() {
     bad(&["--region", "circle:0"], &["--region"]);
     bad(&["--region", "annulus:5:6"], &["--region"]);
     bad(&["--region", "polygon:0,0,1,1"], &["--region"]);
+    bad(&["--region", "polygon:0,0,100,0,100,100/10,10,20"], &["--region"]);
+    bad(&["--region", "polygon:0,0,100,0,100,100,0,100/"], &["--region"]);
+    // Two rings that cross each other.
+    bad(
+        &["--region", "polygon:0,0,100,0,100,100,0,100/50,50,150,50,150,150,50,150"],
+        &["--region"],
+    );
     // Only rect regions can be periodic.
     bad(&["--region", "circle:50", "--periodic"], &["--periodic"]);
 }

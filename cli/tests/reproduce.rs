@@ -227,3 +227,41 @@ fn json_names_the_mix_order() {
         "only mixes have an order"
     );
 }
+
+/// An outline whose hole comes first in the file, with a second, separate outline beside it.
+const HOLE_FIRST: &str = r#"<svg xmlns="http://www.w3.org/2000/svg" width="150mm" height="100mm" viewBox="0 0 150 100">
+<path d="M40,30 L80,30 Q95,50 80,70 L40,70 Z"/>
+<path d="M0,0 H120 V100 H0 Z"/>
+<path d="M125,10 H148 V90 H125 Z"/>
+</svg>"#;
+
+/// An `svg:FILE` region is written out as its rings (`polygon:...[/...]`), so the command a
+/// file carries makes it again without the SVG it was read from.
+#[test]
+fn an_svg_region_travels_as_its_rings() {
+    let dir = tmp();
+    let d = dir.path();
+    std::fs::write(d.join("outline.svg"), HOLE_FIRST).unwrap_or_else(|e| panic!("{e}"));
+    let fill = ["fill", "--region", "svg:outline.svg", "--count", "300", "--n-offset", "5"];
+    assert!(reproduces(d, &fill, "a.svg", svg_desc), "fill SVG");
+    assert!(reproduces(d, &fill, "a.gcode", gcode_command), "fill G-code");
+    let territory = ["territory", "--region", "svg:outline.svg", "--sites", "3", "--points", "800"];
+    assert!(reproduces(d, &territory, "t.svg", svg_desc), "territory SVG");
+
+    let svg = std::fs::read_to_string(d.join("a.svg")).unwrap_or_default();
+    let desc = svg_desc(&svg).unwrap_or_default();
+    assert!(!desc.contains("svg:"), "the command still names a file: {desc}");
+    // The rings as the JSON lists them: the first outline, the other one, then the hole.
+    let rings: Vec<&str> = desc
+        .split_whitespace()
+        .find_map(|w| w.strip_prefix("polygon:"))
+        .unwrap_or_default()
+        .split('/')
+        .collect();
+    assert_eq!(rings.len(), 3, "{desc}");
+    assert!(rings[0].starts_with("0,100,") && rings[1].starts_with("125,90,") && rings[2].starts_with("40,70,"));
+
+    // The check can fail: without its hole the region makes another fill.
+    let without_hole = desc.replace(&format!("/{}", rings[2]), "");
+    assert_ne!(svg.into_bytes(), rerun(d, &without_hole, "no-hole.svg"));
+}

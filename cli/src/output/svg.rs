@@ -309,22 +309,7 @@ pub(crate) fn bounds(sh: &ShapeDoc) -> (f64, f64, f64, f64) {
 /// The `zetafill fill` command line that reproduces the document.
 pub fn command_line(doc: &FillDoc) -> String {
     let p = &doc.params;
-    let region = match &doc.region {
-        RegionDoc::Rect { width, height, .. } => format!("rect:{width}:{height}"),
-        RegionDoc::Circle { radius, .. } => format!("circle:{radius}"),
-        RegionDoc::Annulus {
-            radius_outer,
-            radius_inner,
-            ..
-        } => format!("annulus:{radius_outer}:{radius_inner}"),
-        RegionDoc::Polygon { vertices, holes, outers } if holes.is_empty() && outers.is_empty() => {
-            format!(
-                "polygon:{}",
-                vertices.iter().map(|v| format!("{},{}", v[0], v[1])).collect::<Vec<_>>().join(",")
-            )
-        }
-        RegionDoc::Polygon { .. } => "svg:(outline with holes; see the JSON output)".to_string(),
-    };
+    let region = doc.region.arg();
     let mut s = format!(
         "zetafill fill --shape {}{} --rotate {} --region {}{} --c {} --n-offset {} --gap {} --max-trials {} --seed {} --sampler {}{}",
         p.shape,

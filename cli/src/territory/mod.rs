@@ -75,7 +75,8 @@ pub struct TerritoryArgs {
     /// Total number of sites, seeds included (the paper's pictures use about 7,000).
     #[arg(long, value_parser = clap::value_parser!(u64).range(2..=MAX_POINTS as u64))]
     pub points: Option<u64>,
-    /// rect:W:H | circle:R | annulus:R_OUTER:R_INNER | polygon:X1,Y1,X2,Y2,... | svg:FILE (mm).
+    /// rect:W:H | circle:R | annulus:R_OUTER:R_INNER | polygon:X1,Y1,X2,Y2,...[/X1,Y1,...] (rings,
+    /// even-odd) | svg:FILE (mm).
     #[arg(long, default_value = "rect:200:200", value_parser = spec::region)]
     pub region: RegionSpec,
     /// RNG seed.
@@ -461,25 +462,6 @@ fn command_line(a: &TerritoryArgs, k: usize, points: usize, region: &str) -> Str
     s
 }
 
-fn region_text(doc: &RegionDoc) -> String {
-    match doc {
-        RegionDoc::Rect { width, height, .. } => format!("rect:{width}:{height}"),
-        RegionDoc::Circle { radius, .. } => format!("circle:{radius}"),
-        RegionDoc::Annulus {
-            radius_outer,
-            radius_inner,
-            ..
-        } => format!("annulus:{radius_outer}:{radius_inner}"),
-        RegionDoc::Polygon { vertices, holes, outers } if holes.is_empty() && outers.is_empty() => {
-            format!(
-                "polygon:{}",
-                vertices.iter().map(|v| format!("{},{}", v[0], v[1])).collect::<Vec<_>>().join(",")
-            )
-        }
-        RegionDoc::Polygon { .. } => "svg:(outline with holes; see the JSON output)".into(),
-    }
-}
-
 fn model_error(flag: &str, e: ModelError) -> CliError {
     CliError::arg(flag, e)
 }
@@ -740,7 +722,7 @@ pub fn compute(a: &TerritoryArgs) -> Result<Outcome, CliError> {
 
 /// Renders a finished run.
 pub fn render_bytes(o: &Outcome, a: &TerritoryArgs, format: TerritoryFormat) -> Result<Vec<u8>, CliError> {
-    let desc = command_line(a, o.doc.seeds, o.doc.params.points, &region_text(&o.doc.region));
+    let desc = command_line(a, o.doc.seeds, o.doc.params.points, &o.doc.region.arg());
     let svg = || {
         let colours: Vec<[f64; 3]> = o.doc.sites.iter().map(|s| s.color).collect();
         let style = Style {

@@ -151,16 +151,9 @@ pub struct FillArgs {
     /// of a picture.
     #[arg(long, value_enum)]
     pub relief: Option<output::height::Relief>,
-    /// SVG/PNG: colours for the shapes, hex rrggbb (or rgb, '#' optional) separated by
-    /// commas; their fill, or their stroke with --style outline.
-    #[arg(long, value_parser = output::palette::palette)]
-    pub palette: Option<output::palette::Palette>,
-    /// SVG/PNG: how shapes take the palette's colours (default size).
-    #[arg(long = "color-by", value_enum, requires = "palette")]
-    pub color_by: Option<output::palette::ColorBy>,
-    /// SVG/PNG: a background colour (hex rrggbb or rgb) behind the drawing.
-    #[arg(long, value_parser = output::palette::colour)]
-    pub background: Option<output::palette::Colour>,
+    /// Colours (SVG/PNG).
+    #[command(flatten)]
+    pub colour: output::palette::ColourArgs,
     /// SVG/PNG: draw the Voronoi cells of the shapes' centres ("cobblestones") instead of the
     /// shapes; with --periodic the cells tile seamlessly.
     #[arg(long)]
@@ -701,21 +694,17 @@ fn mix_order(m: MixArg) -> MixOrder {
 /// The SVG options of the drawing flags, colours included.
 fn svg_options(doc: &FillDoc, a: &FillArgs) -> Result<output::svg::SvgOptions, CliError> {
     let mut o = a.plot.svg_options(doc, a.style, a.pen_width, a.boundary)?;
-    if let Some(p) = &a.palette {
-        let by = a.color_by.unwrap_or(output::palette::ColorBy::Size);
+    if let Some(p) = &a.colour.palette {
         // The mix entry of each shape, as the engine chose it.
         let list = a.shape.list(mix_order(a.mix_order), a.seed);
         let entry = |i: u64| {
             let kind = list.kind_of(i);
             list.kinds().iter().position(|k| *k == kind).unwrap_or(0)
         };
-        o.colours = Some(output::palette::assign(doc, &p.0, by, entry));
-        o.flags.push_str(&format!(" --palette {} --color-by {}", p.arg(), by.name()));
+        o.colours = Some(output::palette::assign(doc, &p.0, a.colour.by(), entry));
     }
-    if let Some(bg) = &a.background {
-        o.flags.push_str(&format!(" --background {}", bg.trim_start_matches('#')));
-        o.background = Some(bg.clone());
-    }
+    o.flags.push_str(&a.colour.flags());
+    o.background.clone_from(&a.colour.background);
     Ok(o)
 }
 
@@ -770,12 +759,7 @@ pub fn run(a: &FillArgs) -> Result<(), CliError> {
         return Err(crate::output::png::only_png("--relief"));
     }
     a.raster.check(format == Format::Png)?;
-    let colour_flag = if a.palette.is_some() {
-        Some("--palette")
-    } else {
-        a.background.as_ref().map(|_| "--background")
-    };
-    if let Some(flag) = colour_flag {
+    if let Some(flag) = a.colour.given() {
         if !matches!(format, Format::Svg | Format::Png) || a.relief.is_some() || a.voronoi {
             return Err(CliError::arg(
                 flag,

@@ -11,14 +11,6 @@ use serde_json::Value;
 
 const PALETTE: [&str; 4] = ["#264653", "#2a9d8f", "#e9c46a", "#e76f51"];
 
-/// SplitMix64's output for `x` (the published generator: add the constant, then mix).
-fn splitmix64(x: u64) -> u64 {
-    let mut z = x.wrapping_add(0x9e37_79b9_7f4a_7c15);
-    z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-    z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-    z ^ (z >> 31)
-}
-
 /// The colour each shape of `doc` should have under rule `by` (as the README states it).
 fn expected(doc: &Value, by: &str) -> Vec<&'static str> {
     let list = shapes(doc);
@@ -44,46 +36,13 @@ fn expected(doc: &Value, by: &str) -> Vec<&'static str> {
         .collect()
 }
 
-/// The paths usvg reads, in document order: their box centre and fill or stroke colour.
-fn painted(bytes: &[u8], stroke: bool) -> Vec<([f64; 2], String)> {
-    fn walk(g: &usvg::Group, stroke: bool, out: &mut Vec<([f64; 2], String)>) {
-        for n in g.children() {
-            match n {
-                usvg::Node::Group(g) => walk(g, stroke, out),
-                usvg::Node::Path(p) => {
-                    let paint = if stroke {
-                        p.stroke().map(|s| s.paint())
-                    } else {
-                        p.fill().map(|f| f.paint())
-                    };
-                    let colour = match paint {
-                        Some(usvg::Paint::Color(c)) => format!("#{:02x}{:02x}{:02x}", c.red, c.green, c.blue),
-                        other => format!("{other:?}"),
-                    };
-                    let b = p.abs_bounding_box();
-                    // usvg works in px at 96 per inch; the drawing is in mm.
-                    let mm = 25.4 / 96.0;
-                    out.push((
-                        [f64::from(b.x() + b.width() / 2.0) * mm, f64::from(b.y() + b.height() / 2.0) * mm],
-                        colour,
-                    ));
-                }
-                _ => {}
-            }
-        }
-    }
-    let tree = usvg::Tree::from_data(bytes, &usvg::Options::default()).unwrap_or_else(|e| panic!("usvg: {e}"));
-    let mut out = Vec::new();
-    walk(tree.root(), stroke, &mut out);
-    out
-}
-
 /// Whether every path has its shape's colour: path k is shape k (one path per shape).
-fn check(paths: &[([f64; 2], String)], want: &[&str]) -> Result<(), String> {
+fn check(paths: &[Painted], want: &[&str]) -> Result<(), String> {
     if paths.len() != want.len() {
         return Err(format!("{} paths for {} shapes", paths.len(), want.len()));
     }
-    for (k, ((_, got), w)) in paths.iter().zip(want).enumerate() {
+    for (k, (p, w)) in paths.iter().zip(want).enumerate() {
+        let got = &p.colour;
         if got != w {
             return Err(format!("shape {k} is painted {got}, expected {w}"));
         }
@@ -168,14 +127,14 @@ fn periodic_images_share_their_shape_colour_and_the_background_is_behind() {
     let want = expected(&doc, "cycle");
     let paths = painted(&svg, false);
     // The background first, the size of the tile.
-    let (centre, colour) = &paths[0];
+    let Painted { centre, colour, .. } = &paths[0];
     assert_eq!(colour, "#fefae0");
     assert!((centre[0] - 100.0).abs() < 1e-3 && (centre[1] - 100.0).abs() < 1e-3, "{centre:?}");
     // Every other path is a shape or one of its images: it is found by its centre, modulo
     // the period, and has the shape's colour.
     let centres: Vec<[f64; 2]> = shapes(&doc).iter().map(|s| pt(&s["center"])).collect();
     assert!(paths.len() > centres.len() + 1, "edge-crossing shapes have images");
-    for (c, colour) in &paths[1..] {
+    for Painted { centre: c, colour, .. } in &paths[1..] {
         // SVG y runs down from the top.
         let (x, y) = (c[0].rem_euclid(200.0), (200.0 - c[1]).rem_euclid(200.0));
         let k = centres

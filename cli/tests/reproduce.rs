@@ -186,6 +186,10 @@ fn line_territory_and_tile_files_carry_their_commands() {
         ("territory --sites 3 --points 1500 --render filled --boundary --pen-width 0.4", svg),
         ("tile --tries 3000 --style filled --layout mosaic --rows 2", svg),
         ("tile --tries 3000 --render voronoi --pen-width 0.2", svg),
+        (
+            "tile --tries 3000 --style filled --layout planet --rows 2 --palette 264653,e76f51 --color-by random --background fefae0",
+            svg,
+        ),
         ("line --count 200 --render bars --hatch 0.5 --machine grbl-laser", gcode),
         ("territory --sites 3 --points 1500 --render cells --order greedy", gcode),
         ("tile --tries 3000 --layout mosaic --fit --passes 2 --machine grbl-laser", gcode),

@@ -68,6 +68,11 @@ fn plane(ds: &[D], w: f64, h: f64) -> Vec<([f64; 2], f64)> {
 
 /// The discs of rows `rows` of the plane whose centres lie in the window `[x0, x1, y0, y1]`.
 fn plane_rows(ds: &[D], w: f64, h: f64, rows: std::ops::RangeInclusive<i32>, window: [f64; 4]) -> Vec<([f64; 2], f64)> {
+    plane_indexed(ds, w, h, rows, window).into_iter().map(|(c, r, _)| (c, r)).collect()
+}
+
+/// [`plane_rows`], each disc with the index of the tile disc it copies.
+fn plane_indexed(ds: &[D], w: f64, h: f64, rows: std::ops::RangeInclusive<i32>, window: [f64; 4]) -> Vec<([f64; 2], f64, usize)> {
     let [wx0, wx1, wy0, wy1] = window;
     let mut out = Vec::new();
     for row in rows {
@@ -75,10 +80,10 @@ fn plane_rows(ds: &[D], w: f64, h: f64, rows: std::ops::RangeInclusive<i32>, win
         let y0 = 2.0 * h * (1.0 - s);
         let (first, last) = ((wx0 / (w * s)).floor() as i64 - 1, (wx1 / (w * s)).ceil() as i64 + 1);
         for i in first..=last {
-            for d in ds {
+            for (k, d) in ds.iter().enumerate() {
                 let c = [i as f64 * w * s + s * d.c[0], y0 + s * d.c[1]];
                 if c[0] > wx0 && c[0] < wx1 && c[1] > wy0 && c[1] < wy1 {
-                    out.push((c, s * d.r));
+                    out.push((c, s * d.r, k));
                 }
             }
         }
@@ -491,6 +496,13 @@ fn bad_input_is_refused_naming_the_flag() {
         (vec!["--tries", "0"], "--tries"),
         (vec!["--layout", "planet", "--format", "json"], "--layout"),
         (vec!["--layout", "planet", "--rows", "10", "--columns", "4096"], "--rows"),
+        (vec!["--palette", "000,fff", "--format", "json"], "--palette"),
+        (vec!["--background", "fff", "--format", "gcode"], "--background"),
+        (vec!["--palette", "000,fff", "--render", "voronoi"], "--palette"),
+        (vec!["--palette", "000,fff", "--color-by", "kind"], "--color-by"),
+        (vec!["--palette", "000,ggg"], "--palette"),
+        (vec!["--color-by", "size"], "--palette"),
+        (vec!["--relief", "dome", "--palette", "000,fff", "--format", "png"], "--palette"),
     ] {
         let o = zf(d, &[&["tile"], &args[..], &["-o", "keep.svg"]].concat());
         assert_eq!(o.code, 2, "{args:?}: {}", o.stderr);
@@ -765,4 +777,163 @@ fn the_cobblestone_height_map_covers_the_drawn_cells() {
     // The check fails for a map shifted by two pixels.
     let shifted: Vec<u16> = (0..n * n).map(|k| if k % n >= 2 { px[k - 2] } else { 0 }).collect();
     assert!(faults(&shifted) * 1000 > n * n, "a shifted map must be caught");
+}
+
+const PALETTE: [&str; 5] = ["#264653", "#2a9d8f", "#e9c46a", "#f4a261", "#e76f51"];
+
+/// The palette index a rule gives tile disc `i` (`cycle` or `random`, as the README states them).
+fn rule(by: &str, seed: u64, i: usize) -> usize {
+    let k = PALETTE.len();
+    match by {
+        "cycle" => i % k,
+        "random" => (splitmix64(seed ^ splitmix64(i as u64)) % k as u64) as usize,
+        other => panic!("rule {other}"),
+    }
+}
+
+/// The pieces of a tile picture whose colour is not `want` of the disc they show: a disc (or
+/// part of one) is found as the disc of the plane holding a point inside it, a cobblestone as
+/// the nearest centre to a point inside it. Pieces of the same disc on opposite edges must so
+/// agree.
+fn colour_faults(paths: &[Painted], plane: &[([f64; 2], f64, usize)], h: f64, cells: bool, want: impl Fn(usize) -> usize) -> Vec<String> {
+    let mut bad = Vec::new();
+    for p in paths {
+        let q = [p.inside[0], h - p.inside[1]];
+        // Distance to a disc's edge (negative inside), or to a cobblestone's centre.
+        let key = |(c, r, _): &([f64; 2], f64, usize)| (q[0] - c[0]).hypot(q[1] - c[1]) - if cells { 0.0 } else { *r };
+        let Some(best) = plane.iter().min_by(|a, b| key(a).total_cmp(&key(b))) else {
+            bad.push("no disc".to_string());
+            continue;
+        };
+        let i = best.2;
+        if !cells && key(best) >= 0.0 {
+            bad.push(format!("the piece at {q:?} lies in no disc"));
+        } else if p.colour != PALETTE[want(i)] {
+            bad.push(format!(
+                "the piece at {q:?} of disc {i} is {}, expected {}",
+                p.colour,
+                PALETTE[want(i)]
+            ));
+        }
+    }
+    bad
+}
+
+/// Every piece of a coloured tile has its disc's colour: whole discs, discs cut at the edges
+/// (so copies meet in one colour), their outlines and cobblestone cells, by the `cycle` and
+/// `random` rules; and the background lies behind.
+#[test]
+fn pieces_take_the_colour_of_their_disc() {
+    let dir = tmp();
+    let d = dir.path();
+    let list = PALETTE.join(",");
+    for (extra, by, cells) in [
+        (
+            &["--radius", "8", "--spacing", "2", "--tries", "3000", "--style", "filled"][..],
+            "cycle",
+            false,
+        ),
+        (&["--radius", "8", "--spacing", "2", "--tries", "3000"][..], "random", false),
+        (&COBBLES[2..], "random", true),
+    ] {
+        let base = [&["--seed", "3"][..], extra].concat();
+        let mut coloured = base.clone();
+        coloured.extend_from_slice(&["--palette", &list, "--color-by", by, "--background", "fefae0"]);
+        if cells {
+            coloured.extend_from_slice(&["--style", "filled"]);
+        }
+        zf_ok(d, &[&["tile"], &coloured[..], &["-o", "c.svg"]].concat());
+        let doc = tile_json(d, &base);
+        let (w, h, _, _) = spec(&doc);
+        let plane = plane_indexed(&discs(&doc), w, h, -1..=2, [-w, 2.0 * w, -2.0 * h, 2.0 * h]);
+        let svg = read(&d.join("c.svg"));
+        // The background (read by its fill), then the pieces (by their fill, or their stroke
+        // for outlines).
+        let bg = painted(&svg, false).swap_remove(0);
+        assert_eq!(bg.colour, "#fefae0");
+        assert!(
+            (bg.centre[0] - 0.5 * w).abs() < 1e-3 && (bg.centre[1] - 0.5 * h).abs() < 1e-3,
+            "{:?}",
+            bg.centre
+        );
+        let outline = !(extra.contains(&"filled") || cells);
+        let pieces = painted(&svg, outline).split_off(1);
+        assert!(pieces.len() > 30, "{by}: {} pieces", pieces.len());
+        let faults = colour_faults(&pieces, &plane, h, cells, |i| rule(by, 3, i));
+        assert!(
+            faults.is_empty(),
+            "{by} cells {cells}: {} faults, first {:?}",
+            faults.len(),
+            faults.first()
+        );
+        // The check can fail: the next colour along is caught.
+        let shifted = colour_faults(&pieces, &plane, h, cells, |i| (rule(by, 3, i) + 1) % PALETTE.len());
+        assert_eq!(shifted.len(), pieces.len(), "{by}: the check misses a wrong colour");
+    }
+}
+
+/// `--color-by size` (the default) bands the drawn discs by their drawn size: a mosaic's rows,
+/// each half the scale of the one below, run through the palette from the bottom up.
+#[test]
+fn size_bands_follow_the_drawn_size() {
+    let dir = tmp();
+    let d = dir.path();
+    let list = PALETTE.join(",");
+    let args = [
+        "tile",
+        "--radius",
+        "8",
+        "--spacing",
+        "2",
+        "--tries",
+        "3000",
+        "--layout",
+        "mosaic",
+        "--rows",
+        "3",
+        "--style",
+        "filled",
+    ];
+    zf_ok(d, &[&args[..], &["--palette", &list, "-o", "m.svg"]].concat());
+    let paths = painted(&read(&d.join("m.svg")), false);
+    // Every piece is a whole circle: its radius is half its box.
+    let tree = usvg::Tree::from_data(&read(&d.join("m.svg")), &usvg::Options::default()).unwrap_or_else(|e| panic!("{e}"));
+    let mut boxes = Vec::new();
+    fn walk(g: &usvg::Group, out: &mut Vec<f64>) {
+        for n in g.children() {
+            match n {
+                usvg::Node::Group(g) => walk(g, out),
+                usvg::Node::Path(p) => out.push(f64::from(p.abs_bounding_box().width()) * 25.4 / 96.0 / 2.0),
+                _ => {}
+            }
+        }
+    }
+    walk(tree.root(), &mut boxes);
+    assert_eq!(boxes.len(), paths.len());
+    let (rmax, rmin) = boxes.iter().fold((0.0f64, f64::INFINITY), |(a, b), &r| (a.max(r), b.min(r)));
+    let k = PALETTE.len() as f64;
+    let check = |shift: usize| {
+        let mut bad = 0;
+        let mut judged = 0;
+        for (p, &r) in paths.iter().zip(&boxes) {
+            let t = k * (rmax / r).ln() / (rmax / rmin).ln();
+            // Radii are written to 0.1 µm: a disc at a band's edge is not judged.
+            if (t - t.round()).abs() < 1e-3 {
+                continue;
+            }
+            judged += 1;
+            let band = ((t.floor() as usize).min(PALETTE.len() - 1) + shift) % PALETTE.len();
+            if p.colour != PALETTE[band] {
+                bad += 1;
+            }
+        }
+        (bad, judged)
+    };
+    let (bad, judged) = check(0);
+    assert!(judged > 100 && bad == 0, "{bad} of {judged} discs out of their size band");
+    assert_eq!(check(1).0, judged, "the check misses a wrong band");
+    // Every band is used: the rows span a factor of eight in size.
+    for c in PALETTE {
+        assert!(paths.iter().any(|p| p.colour == c), "{c} unused");
+    }
 }

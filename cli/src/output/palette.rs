@@ -83,18 +83,88 @@ pub fn random_pick(seed: u64, index: u64, k: usize) -> usize {
     (mix64(seed ^ mix64(index)) % k as u64) as usize
 }
 
-/// Each shape's colour; `entry` gives the mix entry of shape i (for [`ColorBy::Kind`]).
-pub fn assign(doc: &FillDoc, colours: &[Colour], by: ColorBy, entry: impl Fn(u64) -> usize) -> Vec<Colour> {
+/// The band (0 = the largest) of each of `sizes` when their range is split into `k` bands of
+/// equal width in log(size). With no spread (or no positive size) every one is band 0.
+pub fn log_bands(sizes: &[f64], k: usize) -> Vec<usize> {
+    let k = k.max(1);
+    let (max, min) = sizes.iter().fold((0.0f64, f64::INFINITY), |(a, b), &v| (a.max(v), b.min(v)));
+    let span = if min > 0.0 && max > min { (max / min).ln() } else { 0.0 };
+    sizes
+        .iter()
+        .map(|&v| {
+            if span > 0.0 && v > 0.0 {
+                ((k as f64 * (max / v).ln() / span).floor() as usize).min(k - 1)
+            } else {
+                0
+            }
+        })
+        .collect()
+}
+
+/// The colours of items known by an identity and a size: by size band, at random for `seed`
+/// ([`random_pick`] of the identity), or in turn (identity mod K). [`ColorBy::Kind`] is the
+/// caller's (`kind`): the entry of each item's kind.
+pub fn assign_items(colours: &[Colour], by: ColorBy, seed: u64, items: &[(u64, f64)], kind: impl Fn(u64) -> usize) -> Vec<Colour> {
     let k = colours.len().max(1);
     let pick = |i: usize| colours.get(i % k).cloned().unwrap_or_default();
     match by {
         ColorBy::Size => {
-            let (bands, _) = super::svg::size_bands(doc, k as u32);
-            bands.into_iter().map(pick).collect()
+            let sizes: Vec<f64> = items.iter().map(|it| it.1).collect();
+            log_bands(&sizes, k).into_iter().map(pick).collect()
         }
-        ColorBy::Random => doc.shapes.iter().map(|s| pick(random_pick(doc.params.seed, s.index, k))).collect(),
-        ColorBy::Cycle => doc.shapes.iter().map(|s| pick(s.index as usize)).collect(),
-        ColorBy::Kind => doc.shapes.iter().map(|s| pick(entry(s.index))).collect(),
+        ColorBy::Random => items.iter().map(|it| pick(random_pick(seed, it.0, k))).collect(),
+        ColorBy::Cycle => items.iter().map(|it| pick(it.0 as usize)).collect(),
+        ColorBy::Kind => items.iter().map(|it| pick(kind(it.0))).collect(),
+    }
+}
+
+/// Each shape of a fill's colour, its size being its area (so the size bands are those of
+/// `--layers size-bands:K`); `entry` gives the mix entry of shape i (for [`ColorBy::Kind`]).
+pub fn assign(doc: &FillDoc, colours: &[Colour], by: ColorBy, entry: impl Fn(u64) -> usize) -> Vec<Colour> {
+    let items: Vec<(u64, f64)> = doc.shapes.iter().map(|s| (s.index, s.area)).collect();
+    assign_items(colours, by, doc.params.seed, &items, entry)
+}
+
+/// `--palette`, `--color-by` and `--background`: colours for the shapes of a picture.
+#[derive(Debug, Clone, Default, clap::Args)]
+pub struct ColourArgs {
+    /// SVG/PNG: colours for the shapes, hex rrggbb (or rgb, '#' optional) separated by
+    /// commas; their fill, or their stroke with --style outline.
+    #[arg(long, value_parser = palette)]
+    pub palette: Option<Palette>,
+    /// SVG/PNG: how shapes take the palette's colours (default size).
+    #[arg(long = "color-by", value_enum, requires = "palette")]
+    pub color_by: Option<ColorBy>,
+    /// SVG/PNG: a background colour (hex rrggbb or rgb) behind the drawing.
+    #[arg(long, value_parser = colour)]
+    pub background: Option<Colour>,
+}
+
+impl ColourArgs {
+    /// The first colour flag given, if any.
+    pub fn given(&self) -> Option<&'static str> {
+        if self.palette.is_some() {
+            Some("--palette")
+        } else {
+            self.background.as_ref().map(|_| "--background")
+        }
+    }
+
+    /// The rule that gives out the colours.
+    pub fn by(&self) -> ColorBy {
+        self.color_by.unwrap_or(ColorBy::Size)
+    }
+
+    /// The flags as a command that reproduces the picture writes them.
+    pub fn flags(&self) -> String {
+        let mut s = String::new();
+        if let Some(p) = &self.palette {
+            s.push_str(&format!(" --palette {} --color-by {}", p.arg(), self.by().name()));
+        }
+        if let Some(bg) = &self.background {
+            s.push_str(&format!(" --background {}", bg.trim_start_matches('#')));
+        }
+        s
     }
 }
 
@@ -113,6 +183,14 @@ mod tests {
         assert_eq!(palette("#000, fff").map(|p| p.arg()), Ok("000000,ffffff".to_string()));
         assert!(palette("#000,,#fff").is_err());
         assert!(palette(&vec!["#000"; 65].join(",")).is_err());
+    }
+
+    #[test]
+    fn log_bands_split_the_range_evenly() {
+        assert_eq!(log_bands(&[8.0, 4.0, 2.0, 1.0, 5.0], 3), [0, 1, 2, 2, 0]);
+        assert_eq!(log_bands(&[3.0, 3.0], 4), [0, 0]);
+        assert_eq!(log_bands(&[2.0, 0.0, 1.0], 2), [0, 0, 1]);
+        assert!(log_bands(&[], 2).is_empty());
     }
 
     #[test]

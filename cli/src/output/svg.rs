@@ -341,29 +341,18 @@ pub fn command_line(doc: &FillDoc) -> String {
 /// equal width in log(area), and each band's (largest, smallest) shape width in mm.
 pub fn size_bands(doc: &FillDoc, k: u32) -> (Vec<usize>, Vec<Option<(f64, f64)>>) {
     let k = k.max(1) as usize;
-    let (amax, amin) = doc
-        .shapes
-        .iter()
-        .fold((0.0f64, f64::INFINITY), |(a, b), s| (a.max(s.area), b.min(s.area)));
-    let span = if amin > 0.0 && amax > amin { (amax / amin).ln() } else { 0.0 };
+    let areas: Vec<f64> = doc.shapes.iter().map(|s| s.area).collect();
+    let bands = crate::output::palette::log_bands(&areas, k);
     let mut widths: Vec<Option<(f64, f64)>> = vec![None; k];
-    let bands = doc
-        .shapes
-        .iter()
-        .map(|s| {
-            let b = if span > 0.0 && s.area > 0.0 {
-                ((k as f64 * (amax / s.area).ln() / span).floor() as usize).min(k - 1)
-            } else {
-                0
-            };
-            let w = crate::plot::shape_width(s);
-            widths[b] = Some(match widths[b] {
+    for (s, &b) in doc.shapes.iter().zip(&bands) {
+        let w = crate::plot::shape_width(s);
+        if let Some(slot) = widths.get_mut(b) {
+            *slot = Some(match *slot {
                 Some((hi, lo)) => (hi.max(w), lo.min(w)),
                 None => (w, w),
             });
-            b
-        })
-        .collect();
+        }
+    }
     (bands, widths)
 }
 

@@ -18,7 +18,7 @@ use serde::Serialize;
 use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 use svg::node::element::{Circle, ClipPath, Definitions, Description, Group, Path as SvgPath, Rectangle, Title};
-use svg::node::Text;
+use svg::node::{Node, Text};
 use svg::Document;
 
 /// Output formats of `zetafill tile`.
@@ -101,6 +101,9 @@ pub struct TileArgs {
     /// SVG: stroke width of the outlines in mm.
     #[arg(long = "pen-width", default_value_t = 0.3, value_parser = spec::positive, allow_negative_numbers = true)]
     pub pen_width: f64,
+    /// Colours (SVG/PNG).
+    #[command(flatten)]
+    pub colour: crate::output::palette::ColourArgs,
     /// PNG size.
     #[command(flatten)]
     pub raster: crate::output::png::Raster,
@@ -265,7 +268,7 @@ const SEAM_TOLERANCE: f64 = 1e-9;
 
 /// Grows the tile the flags ask for and its picture. For cobblestones the band of twins
 /// doubles until the picture meets its copies; a picture that cannot is refused.
-pub fn compute(a: &TileArgs) -> Result<(Tile, Vec<Piece>), CliError> {
+pub fn compute(a: &TileArgs) -> Result<(Tile, Vec<Piece>, Vec<render::Tag>), CliError> {
     let mut spec = TileSpec {
         width: a.width,
         height: a.height,
@@ -300,12 +303,8 @@ pub fn compute(a: &TileArgs) -> Result<(Tile, Vec<Piece>), CliError> {
             if let Some(b) = &bar {
                 b.finish_and_clear();
             }
-            let pieces = if a.style == Style::Outline {
-                lines
-            } else {
-                render::tile_pieces(&tile, a.render, a.style)?
-            };
-            return Ok((tile, pieces));
+            let (pieces, tags) = render::tagged_pieces(&tile, a.render, a.style)?;
+            return Ok((tile, pieces, tags));
         }
         if a.render == Render::Voronoi && spec.band < 1.0 {
             spec.band = (2.0 * spec.band).min(1.0);
@@ -385,17 +384,33 @@ fn command_line(a: &TileArgs, arr: &Arrangement) -> String {
     if a.pen_width != 0.3 {
         s.push_str(&format!(" --pen-width {}", a.pen_width));
     }
+    s.push_str(&a.colour.flags());
     s.push_str(&a.plot.flags());
     s
 }
 
 const P: usize = 4;
 
-/// The drawing as SVG (mm, y up in the tile's frame, so flipped on the page). With `clip`,
-/// the drawing is clipped to the sheet (whole shapes of copies reach past its edges).
-pub fn svg(pieces: &[Piece], sheet: Sheet, style: Style, pen_width: f64, clip: bool, title: &str, desc: &str) -> Vec<u8> {
+/// How a drawing is painted.
+#[derive(Debug, Clone, Copy)]
+pub struct Look<'a> {
+    /// Outlines or filled shapes.
+    pub style: Style,
+    /// Stroke width of outlines (mm).
+    pub pen_width: f64,
+    /// Clip the drawing to the sheet (whole shapes of copies reach past its edges).
+    pub clip: bool,
+    /// Each piece's colour (its fill, or its stroke for outlines); black without.
+    pub colours: Option<&'a [crate::output::palette::Colour]>,
+    /// A colour behind the drawing.
+    pub background: Option<&'a str>,
+}
+
+/// The drawing as SVG (mm, y up in the tile's frame, so flipped on the page).
+pub fn svg(pieces: &[Piece], sheet: Sheet, look: &Look<'_>, title: &str, desc: &str) -> Vec<u8> {
     let pt = |p: [f64; 2]| format!("{},{}", num(p[0], P), num(sheet.height - p[1], P));
     let line = |l: &[[f64; 2]]| l.iter().map(|&p| pt(p)).collect::<Vec<_>>().join(" L");
+    let style = look.style;
     let mut g = Group::new()
         .set("id", "tile")
         .set("inkscape:groupmode", "layer")
@@ -404,23 +419,31 @@ pub fn svg(pieces: &[Piece], sheet: Sheet, style: Style, pen_width: f64, clip: b
         Style::Outline => g
             .set("fill", "none")
             .set("stroke", "black")
-            .set("stroke-width", num(pen_width, P))
+            .set("stroke-width", num(look.pen_width, P))
             .set("stroke-linecap", "round")
             .set("stroke-linejoin", "round"),
         Style::Filled => g.set("fill", "black").set("stroke", "none"),
     };
-    for piece in pieces {
-        g = match piece {
-            Piece::Circle { c, r } => g.add(
+    let paint = if style == Style::Filled { "fill" } else { "stroke" };
+    for (j, piece) in pieces.iter().enumerate() {
+        let node: Option<svg::node::element::Element> = match piece {
+            Piece::Circle { c, r } => Some(
                 Circle::new()
                     .set("cx", num(c[0], P))
                     .set("cy", num(sheet.height - c[1], P))
-                    .set("r", num(*r, P)),
+                    .set("r", num(*r, P))
+                    .into(),
             ),
-            Piece::Open(l) if l.len() >= 2 && style == Style::Outline => g.add(SvgPath::new().set("d", format!("M{}", line(l)))),
-            Piece::Closed(l) if l.len() >= 3 => g.add(SvgPath::new().set("d", format!("M{} Z", line(l)))),
-            _ => g,
+            Piece::Open(l) if l.len() >= 2 && style == Style::Outline => Some(SvgPath::new().set("d", format!("M{}", line(l))).into()),
+            Piece::Closed(l) if l.len() >= 3 => Some(SvgPath::new().set("d", format!("M{} Z", line(l))).into()),
+            _ => None,
         };
+        if let Some(mut n) = node {
+            if let Some(c) = look.colours.and_then(|cs| cs.get(j)) {
+                n.assign(paint, c.as_str());
+            }
+            g = g.add(n);
+        }
     }
     let mut d = Document::new()
         .set("xmlns:inkscape", "http://www.inkscape.org/namespaces/inkscape")
@@ -429,7 +452,16 @@ pub fn svg(pieces: &[Piece], sheet: Sheet, style: Style, pen_width: f64, clip: b
         .set("viewBox", format!("0 0 {} {}", num(sheet.width, P), num(sheet.height, P)))
         .add(Title::new("").add(Text::new(title)))
         .add(Description::new().add(Text::new(desc)));
-    if clip {
+    if let Some(bg) = look.background {
+        d = d.add(
+            Rectangle::new()
+                .set("id", "background")
+                .set("width", num(sheet.width, P))
+                .set("height", num(sheet.height, P))
+                .set("fill", bg),
+        );
+    }
+    if look.clip {
         let rect = Rectangle::new()
             .set("width", num(sheet.width, P))
             .set("height", num(sheet.height, P));
@@ -440,6 +472,32 @@ pub fn svg(pieces: &[Piece], sheet: Sheet, style: Style, pen_width: f64, clip: b
     let mut s = d.to_string();
     s.push('\n');
     s.into_bytes()
+}
+
+/// Refuses colour flags the output cannot show.
+fn check_colours(a: &TileArgs, format: TileFormat) -> Result<(), CliError> {
+    let Some(flag) = a.colour.given() else {
+        return Ok(());
+    };
+    if !matches!(format, TileFormat::Svg | TileFormat::Png) || a.relief.is_some() {
+        return Err(CliError::arg(
+            flag,
+            "colours the pieces of an SVG or PNG picture: write .svg or .png, without --relief, or drop it",
+        ));
+    }
+    if a.colour.palette.is_some() && a.render == Render::Voronoi && a.style == Style::Outline {
+        return Err(CliError::arg(
+            "--palette",
+            "cobblestone outlines are edges, each shared by two cells; add --style filled to colour the cells",
+        ));
+    }
+    if a.colour.color_by == Some(crate::output::palette::ColorBy::Kind) {
+        return Err(CliError::arg(
+            "--color-by",
+            "the tile has one kind of shape; use size, random or cycle",
+        ));
+    }
+    Ok(())
 }
 
 /// The output the flags ask for (checked first: nothing is computed for bad input), and the
@@ -464,7 +522,8 @@ pub fn output(a: &TileArgs) -> Result<(Tile, Vec<u8>), CliError> {
             "the JSON holds the tile's discs; draw a mosaic or a planet as SVG, PNG or G-code",
         ));
     }
-    let (tile, pieces) = compute(a)?;
+    check_colours(a, format)?;
+    let (tile, pieces, tags) = compute(a)?;
     let (w, h) = (a.width, a.height);
     let copies = arr.copies();
     if copies.saturating_mul(pieces.len() as u64) > MAX_PIECES {
@@ -502,21 +561,34 @@ pub fn output(a: &TileArgs) -> Result<(Tile, Vec<u8>), CliError> {
             // Filled copies draw the tile's own shapes whole (the sheet's edge cuts them).
             let whole = a.style == Style::Filled && a.layout != Layout::Tile;
             let own;
-            let drawn = if whole {
+            let (drawn, drawn_tags) = if whole {
                 own = render::own_pieces(&tile, a.render)?;
-                &own
+                (&own.0, &own.1)
             } else {
-                &pieces
+                (&pieces, &tags)
             };
-            let svg = svg(
-                &arr.lay_out(drawn, w, h, whole),
-                arr.sheet(w, h),
-                a.style,
-                a.pen_width,
-                whole,
-                &title,
-                &command_line(a, &arr),
-            );
+            let (laid, scales) = arr.lay_out_scaled(drawn, w, h, whole);
+            let colours = a.colour.palette.as_ref().map(|p| {
+                // A copy of piece j mod n, at its copy's scale: ids are the tile's discs, so
+                // every image and copy of a disc takes the same colour (but for size).
+                let items: Vec<(u64, f64)> = scales
+                    .iter()
+                    .enumerate()
+                    .map(|(j, s)| {
+                        let t = drawn_tags.get(j % drawn_tags.len().max(1));
+                        t.map_or((0, 0.0), |t| (t.disc as u64, t.r * s))
+                    })
+                    .collect();
+                crate::output::palette::assign_items(&p.0, a.colour.by(), a.seed, &items, |_| 0)
+            });
+            let look = Look {
+                style: a.style,
+                pen_width: a.pen_width,
+                clip: whole,
+                colours: colours.as_deref(),
+                background: a.colour.background.as_deref(),
+            };
+            let svg = svg(&laid, arr.sheet(w, h), &look, &title, &command_line(a, &arr));
             if format == TileFormat::Png {
                 a.raster.render(&svg)?
             } else {

@@ -7,7 +7,7 @@
 //! the tile). It shows every disc of the plane that reaches into the tile, copies from the
 //! neighbouring tiles and rows included, so copies of the picture meet without a seam.
 
-use super::model::{images, Tile};
+use super::model::{images, Image, Tile};
 use crate::error::CliError;
 use crate::territory::geom::{self, Clip, Pt};
 use spade::{DelaunayTriangulation, Triangulation};
@@ -57,6 +57,17 @@ pub enum Piece {
     Open(Vec<Pt>),
     /// A closed polygon (the last point joins the first).
     Closed(Vec<Pt>),
+}
+
+/// Which disc of the tile a piece belongs to (a disc, part of one, or its cobblestone), and
+/// that disc's radius where the piece shows it (in the tile's frame: an image from the row
+/// above is half the size).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Tag {
+    /// The tile disc's index.
+    pub disc: usize,
+    /// Its radius as drawn in the tile's frame.
+    pub r: f64,
 }
 
 /// Largest distance between a circle and its polygon (mm, in the tile's frame).
@@ -181,21 +192,26 @@ fn cut_to_box(mut poly: Vec<Pt>, w: f64, h: f64) -> Vec<Pt> {
 
 /// The tile's picture.
 pub fn tile_pieces(tile: &Tile, render: Render, style: Style) -> Result<Vec<Piece>, CliError> {
+    tagged_pieces(tile, render, style).map(|(pieces, _)| pieces)
+}
+
+/// The tile's picture and the [`Tag`] of each piece; no tags for cobblestone outlines, whose
+/// edges each belong to two cells.
+pub fn tagged_pieces(tile: &Tile, render: Render, style: Style) -> Result<(Vec<Piece>, Vec<Tag>), CliError> {
     let (w, h) = (tile.spec.width, tile.spec.height);
     let mut out = Vec::new();
+    let mut tags = Vec::new();
     match render {
         Render::Discs => {
             for im in images(tile, 0.0) {
                 disc_pieces(im.c, im.r, w, h, style, &mut out);
+                tags.resize(out.len(), Tag { disc: im.disc, r: im.r });
             }
         }
         Render::Voronoi => {
-            // Every centre whose cell can reach the tile: in a grown tile the cells are a few
-            // disc spacings wide, well inside half a tile side (the seam check would catch a
-            // tile too sparse for that).
             let (sites, tri) = plane_diagram(tile)?;
             if tri.num_vertices() < 3 {
-                return Ok(out);
+                return Ok((out, tags));
             }
             let clip = Clip::Rect {
                 x0: 0.0,
@@ -209,40 +225,42 @@ pub fn tile_pieces(tile: &Tile, render: Render, style: Style) -> Result<Vec<Piec
                     out.extend(geom::polylines(&dual, 0..dual.edges.len(), &clip).into_iter().map(Piece::Open));
                 }
                 Style::Filled => {
-                    for v in 0..tri.num_vertices() {
+                    for (v, im) in sites.iter().enumerate() {
                         let poly = cut_to_box(inset_cell(tile, &tri, &sites, v), w, h);
                         if poly.len() >= 3 {
                             out.push(Piece::Closed(poly));
+                            tags.push(Tag { disc: im.disc, r: im.r });
                         }
                     }
                 }
             }
         }
     }
-    Ok(out)
+    Ok((out, tags))
 }
 
 type Tri = DelaunayTriangulation<spade::Point2<f64>>;
 
 /// The Delaunay triangulation of every centre of the plane whose cell can reach the tile: in a
 /// grown tile the cells are a few disc spacings wide, well inside half a tile side (the seam
-/// check would catch a tile too sparse for that). The tile's own centres come first, in order.
-fn plane_diagram(tile: &Tile) -> Result<(Vec<Pt>, Tri), CliError> {
+/// check would catch a tile too sparse for that). The sites are the discs' images, the tile's
+/// own first, in order; vertex v of the triangulation is site v.
+fn plane_diagram(tile: &Tile) -> Result<(Vec<Image>, Tri), CliError> {
     let (w, h) = (tile.spec.width, tile.spec.height);
-    let sites: Vec<Pt> = images(tile, 0.5 * w.min(h)).iter().map(|im| im.c).collect();
-    let pts = sites.iter().map(|&p| geom::p2(p)).collect();
+    let sites = images(tile, 0.5 * w.min(h));
+    let pts = sites.iter().map(|im| geom::p2(im.c)).collect();
     let tri = Tri::bulk_load_stable(pts).map_err(|e| CliError::Io(format!("internal: cannot triangulate the centres: {e}")))?;
     Ok((sites, tri))
 }
 
 /// The Voronoi cell of site `v`, each bisector moved towards the site by half the gap of the
 /// pair (so the lines between cells follow the size law).
-fn inset_cell(tile: &Tile, tri: &Tri, sites: &[Pt], v: usize) -> Vec<Pt> {
+fn inset_cell(tile: &Tile, tri: &Tri, sites: &[Image], v: usize) -> Vec<Pt> {
     let (w, h) = (tile.spec.width, tile.spec.height);
-    let s = sites[v];
+    let s = sites[v].c;
     let mut poly = vec![[-w, -h], [2.0 * w, -h], [2.0 * w, 2.0 * h], [-w, 2.0 * h]];
     for o in geom::neighbours(tri, v) {
-        let q = sites[o];
+        let q = sites[o].c;
         let n = [q[0] - s[0], q[1] - s[1]];
         let len = (n[0] * n[0] + n[1] * n[1]).sqrt();
         if len == 0.0 || poly.is_empty() {
@@ -290,7 +308,7 @@ pub fn stones(tile: &Tile, render: Render) -> Result<Vec<crate::doc::ShapeDoc>, 
                         && cell.iter().any(|p| p[0] < w)
                         && cell.iter().any(|p| p[1] > 0.0)
                         && cell.iter().any(|p| p[1] < h);
-                    reaches.then(|| stone(v, sites[v], None, Some(cell)))
+                    reaches.then(|| stone(v, sites[v].c, None, Some(cell)))
                 })
                 .collect()
         }
@@ -300,20 +318,29 @@ pub fn stones(tile: &Tile, render: Render) -> Result<Vec<crate::doc::ShapeDoc>, 
 /// The tile's own shapes, whole and filled: its discs, or the inset cells of its centres. Laid
 /// out, every shape of the plane is drawn once and whole, so copies meet without the hairline
 /// seams that anti-aliasing leaves where two cut pieces abut.
-pub fn own_pieces(tile: &Tile, render: Render) -> Result<Vec<Piece>, CliError> {
+pub fn own_pieces(tile: &Tile, render: Render) -> Result<(Vec<Piece>, Vec<Tag>), CliError> {
+    let tag = |disc: usize| Tag {
+        disc,
+        r: tile.discs.get(disc).map_or(0.0, |d| d.r),
+    };
     match render {
-        Render::Discs => Ok(tile.discs.iter().map(|d| Piece::Circle { c: d.c, r: d.r }).collect()),
+        Render::Discs => Ok(tile
+            .discs
+            .iter()
+            .enumerate()
+            .map(|(i, d)| (Piece::Circle { c: d.c, r: d.r }, tag(i)))
+            .unzip()),
         Render::Voronoi => {
             let (sites, tri) = plane_diagram(tile)?;
             if tri.num_vertices() < 3 {
-                return Ok(Vec::new());
+                return Ok((Vec::new(), Vec::new()));
             }
             // The identity map comes first: the first sites are the tile's own centres.
             Ok((0..tile.discs.len().min(tri.num_vertices()))
-                .map(|v| inset_cell(tile, &tri, &sites, v))
-                .filter(|p| p.len() >= 3)
-                .map(Piece::Closed)
-                .collect())
+                .map(|v| (inset_cell(tile, &tri, &sites, v), tag(v)))
+                .filter(|(p, _)| p.len() >= 3)
+                .map(|(p, t)| (Piece::Closed(p), t))
+                .unzip())
         }
     }
 }
@@ -456,8 +483,15 @@ impl Arrangement {
     /// the copies just outside the sheet (a column each side, a row below and above), whose
     /// shapes reach in across its edges; the sheet's edge cuts them.
     pub fn lay_out(&self, pieces: &[Piece], w: f64, h: f64, whole: bool) -> Vec<Piece> {
+        self.lay_out_scaled(pieces, w, h, whole).0
+    }
+
+    /// [`Arrangement::lay_out`], with the scale of the copy each laid-out piece is in (1 for
+    /// the bottom row, 1/2 for the next, ...). Piece `j` of the result is a copy of piece
+    /// `j mod pieces.len()`.
+    pub fn lay_out_scaled(&self, pieces: &[Piece], w: f64, h: f64, whole: bool) -> (Vec<Piece>, Vec<f64>) {
         if self.layout == Layout::Tile {
-            return pieces.to_vec();
+            return (pieces.to_vec(), vec![1.0; pieces.len()]);
         }
         let rim = whole && self.layout == Layout::Mosaic;
         let rows: Vec<i32> = if rim {
@@ -466,6 +500,7 @@ impl Arrangement {
             (0..self.rows as i32).collect()
         };
         let mut out = Vec::new();
+        let mut scales = Vec::new();
         for k in rows {
             let s = 0.5f64.powi(k);
             let y0 = 2.0 * h * (1.0 - s);
@@ -489,9 +524,10 @@ impl Arrangement {
                         },
                     });
                 }
+                scales.resize(out.len(), s);
             }
         }
-        out
+        (out, scales)
     }
 
     /// A piece through the planet's map: circles become polygons, and straight segments are

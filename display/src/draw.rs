@@ -1,20 +1,30 @@
-//! Drawing placed shapes onto a monochrome display.
+//! Drawing placed shapes onto a display.
 //!
 //! A [`View`] maps the region's frame (mm, x right, y up, origin at the lower-left corner)
 //! onto pixels (x right, y down): one scale `k` for both axes, the largest that fits the
-//! region's bounding box into the display, its lower-left corner at the bottom-left pixel. Each
-//! shape is drawn as an outline one pixel wide: a circle with `embedded-graphics`' circle,
-//! a ring as its two circles, a polygon as the lines between its vertices, exactly the [`Geo`] the engine tested. In a
-//! periodic region every image of a shape that crosses an edge is drawn too, so the picture
-//! tiles. Pixel coordinates are computed in `f64` with basic IEEE operations and truncating
-//! casts only: the same on every target, for every scalar.
+//! region's bounding box into the display, its lower-left corner at the bottom-left pixel.
+//!
+//! - [`View::draw`] draws a shape as an outline one pixel wide on a monochrome display: a
+//!   circle with `embedded-graphics`' circle, a ring as its two circles, a polygon as the lines
+//!   between its vertices, exactly the [`Geo`] the engine tested.
+//! - [`View::fill`] fills a shape in any colour type (`BinaryColor` for an OLED, `Rgb565` for
+//!   a TFT, ...): every pixel whose centre lies inside the shape takes the colour, and no
+//!   other. Rows are filled in spans, from the crossings of each pixel row's centre line with
+//!   the shape's outline (even-odd for polygons, so stars and blobs come out whole; a ring
+//!   leaves its hole).
+//!
+//! In a periodic region every image of a shape that crosses an edge is drawn too, so the
+//! picture tiles (a fill shows one period: the pixels whose centres lie in the region's box). Pixel coordinates are computed in `f64` with basic IEEE operations, libm's
+//! correctly rounded square root and truncating casts only: the same on every target, for
+//! every scalar.
 
 use embedded_graphics::framebuffer::{buffer_size, Framebuffer};
 use embedded_graphics::geometry::Point as Px;
 use embedded_graphics::pixelcolor::raw::{BigEndian, RawU1};
 use embedded_graphics::pixelcolor::BinaryColor;
 use embedded_graphics::prelude::*;
-use embedded_graphics::primitives::{Circle, Line, PrimitiveStyle};
+use embedded_graphics::primitives::{Circle, Line, PrimitiveStyle, Rectangle};
+use zetafill::geom::MAX_VERTS;
 use zetafill::{Geo, Region, Scalar};
 
 /// Display width in pixels.
@@ -40,6 +50,11 @@ fn floor_i32(v: f64) -> i32 {
     } else {
         t
     }
+}
+
+/// Smallest integer not below `v`, saturated to `i32` (NaN gives 0).
+fn ceil_i32(v: f64) -> i32 {
+    floor_i32(-v).saturating_neg()
 }
 
 /// How a region maps onto a display.
@@ -84,8 +99,25 @@ impl View {
         Px::new(floor_i32((x - self.x0) * self.k), floor_i32(self.bottom - (y - self.y0) * self.k))
     }
 
-    /// Draws a shape (and, in a periodic region, its images across the edges).
+    /// Draws a shape's outline (and, in a periodic region, its images across the edges).
     pub fn draw<S: Scalar, D: DrawTarget<Color = BinaryColor>>(&self, geo: &Geo<S>, target: &mut D) -> Result<(), D::Error> {
+        self.each_image(geo, |dx, dy| self.draw_at(geo, dx, dy, target))
+    }
+
+    /// Fills a shape with `colour` (and, in a periodic region, its images across the edges):
+    /// exactly the pixels whose centres lie inside it.
+    pub fn fill<S: Scalar, C: PixelColor, D: DrawTarget<Color = C>>(
+        &self,
+        geo: &Geo<S>,
+        colour: C,
+        target: &mut D,
+    ) -> Result<(), D::Error> {
+        self.each_image(geo, |dx, dy| self.fill_at(geo, dx, dy, colour, target))
+    }
+
+    /// Calls `f` with the shift of the shape and of each of its periodic images that reaches
+    /// the region's bounding box.
+    fn each_image<S: Scalar, E>(&self, geo: &Geo<S>, mut f: impl FnMut(f64, f64) -> Result<(), E>) -> Result<(), E> {
         let (x0, y0, x1, y1) = geo.bounds();
         let (x0, y0, x1, y1) = (x0.to_f64(), y0.to_f64(), x1.to_f64(), y1.to_f64());
         let shifts: &[f64] = if self.periodic { &[0.0, -1.0, 1.0] } else { &[0.0] };
@@ -97,10 +129,132 @@ impl View {
                 if x1 + dx < bx0 || x0 + dx > bx0 + self.w || y1 + dy < by0 || y0 + dy > by0 + self.h {
                     continue;
                 }
-                self.draw_at(geo, dx, dy, target)?;
+                f(dx, dy)?;
             }
         }
         Ok(())
+    }
+
+    /// The point (x, y) in mm in pixel units: pixel (i, j) covers `[i, i + 1) x [j, j + 1)`,
+    /// its centre at (i + 1/2, j + 1/2).
+    fn px_of(&self, x: f64, y: f64) -> (f64, f64) {
+        ((x - self.x0) * self.k, self.bottom - (y - self.y0) * self.k)
+    }
+
+    fn fill_at<S: Scalar, C: PixelColor, D: DrawTarget<Color = C>>(
+        &self,
+        geo: &Geo<S>,
+        dx: f64,
+        dy: f64,
+        colour: C,
+        target: &mut D,
+    ) -> Result<(), D::Error> {
+        let mut area = target.bounding_box();
+        if self.periodic {
+            // A torus shows one period: the pixels whose centres lie in the region's box.
+            let (i0, j0) = (0, ceil_i32(self.bottom - self.h * self.k - 0.5));
+            let (i1, j1) = (floor_i32(self.w * self.k - 0.5), floor_i32(self.bottom - 0.5));
+            let size = Size::new(
+                i1.saturating_sub(i0).saturating_add(1).max(0) as u32,
+                j1.saturating_sub(j0).saturating_add(1).max(0) as u32,
+            );
+            area = area.intersection(&Rectangle::new(Px::new(i0, j0), size));
+        }
+        let (x0, y0, x1, y1) = geo.bounds();
+        let (px0, py1) = self.px_of(x0.to_f64() + dx, y0.to_f64() + dy);
+        let (px1, py0) = self.px_of(x1.to_f64() + dx, y1.to_f64() + dy);
+        // Rows whose centre line can meet the shape, within the display.
+        let top = area.top_left.y;
+        let bottom = top.saturating_add(area.size.height as i32);
+        let first = ceil_i32(py0 - 0.5).max(top);
+        let last = floor_i32(py1 - 0.5).min(bottom.saturating_sub(1));
+        if px1 < f64::from(area.top_left.x) || px0 > f64::from(area.top_left.x.saturating_add(area.size.width as i32)) {
+            return Ok(());
+        }
+        let mut row = first;
+        while row <= last {
+            let yc = f64::from(row) + 0.5;
+            let mut xs = [0.0f64; MAX_VERTS + 2];
+            let n = self.crossings(geo, dx, dy, yc, &mut xs);
+            let xs = xs.get(..n).unwrap_or(&[]);
+            for pair in xs.chunks_exact(2) {
+                if let [a, b] = *pair {
+                    // Pixels whose centre i + 1/2 lies in [a, b).
+                    let (i0, i1) = (ceil_i32(a - 0.5), ceil_i32(b - 0.5).saturating_sub(1));
+                    if i1 >= i0 {
+                        let span = Rectangle::new(Px::new(i0, row), Size::new(i1.saturating_sub(i0).saturating_add(1) as u32, 1));
+                        target.fill_solid(&span.intersection(&area), colour)?;
+                    }
+                }
+            }
+            row = row.saturating_add(1);
+        }
+        Ok(())
+    }
+
+    /// The x (pixel units) where the row line y = `yc` crosses the shape's outline, sorted
+    /// into `xs`; their count (even: inside between each pair).
+    fn crossings<S: Scalar>(&self, geo: &Geo<S>, dx: f64, dy: f64, yc: f64, xs: &mut [f64; MAX_VERTS + 2]) -> usize {
+        let mut n = 0;
+        let mut push = |x: f64, n: &mut usize| {
+            if let Some(slot) = xs.get_mut(*n) {
+                *slot = x;
+                *n += 1;
+            }
+        };
+        // Half the chord of a circle of radius r (px) at height h from its centre.
+        let chord = |r: f64, h: f64| {
+            let q = r * r - h * h;
+            if q > 0.0 {
+                Some(zetafill::scalar::sqrtf(q))
+            } else {
+                None
+            }
+        };
+        match *geo {
+            Geo::Circle { c, r } | Geo::Ring { c, r, .. } => {
+                let (cx, cy) = self.px_of(c.x.to_f64() + dx, c.y.to_f64() + dy);
+                let h = yc - cy;
+                if let Some(half) = chord(r.to_f64() * self.k, h) {
+                    push(cx - half, &mut n);
+                    if let Geo::Ring { inner, .. } = *geo {
+                        if let Some(hole) = chord(inner.to_f64() * self.k, h) {
+                            push(cx - hole, &mut n);
+                            push(cx + hole, &mut n);
+                        }
+                    }
+                    push(cx + half, &mut n);
+                }
+            }
+            Geo::Poly { .. } => {
+                let vs = geo.vertices();
+                let m = vs.len();
+                for i in 0..m {
+                    if let (Some(a), Some(b)) = (vs.get(i), vs.get((i + 1) % m)) {
+                        let (ax, ay) = self.px_of(a.x.to_f64() + dx, a.y.to_f64() + dy);
+                        let (bx, by) = self.px_of(b.x.to_f64() + dx, b.y.to_f64() + dy);
+                        // Half-open in y, so a vertex on the line counts once.
+                        if (ay <= yc) != (by <= yc) {
+                            push(ax + (yc - ay) * (bx - ax) / (by - ay), &mut n);
+                        }
+                    }
+                }
+                // Insertion sort: at most MAX_VERTS crossings.
+                let mut i = 1;
+                while i < n {
+                    let mut j = i;
+                    while j > 0 {
+                        match (xs.get(j - 1).copied(), xs.get(j).copied()) {
+                            (Some(p), Some(q)) if p > q => xs.swap(j - 1, j),
+                            _ => break,
+                        }
+                        j -= 1;
+                    }
+                    i += 1;
+                }
+            }
+        }
+        n
     }
 
     fn draw_at<S: Scalar, D: DrawTarget<Color = BinaryColor>>(

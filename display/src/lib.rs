@@ -4,8 +4,9 @@
 //! the host tests, so that both draw a fill through the very same code:
 //!
 //! - [`draw`]: maps a region onto a display and draws each placed shape, exactly the
-//!   [`zetafill::Geo`] the engine tested, onto any `embedded-graphics` [`DrawTarget`] with
-//!   [`BinaryColor`] pixels; [`draw::Frame`] is the 128x64 monochrome framebuffer (an SSD1306
+//!   [`zetafill::Geo`] the engine tested, onto any `embedded-graphics` [`DrawTarget`]: as an
+//!   outline on [`BinaryColor`] pixels, or filled in any colour type (the pixels whose
+//!   centres lie inside it); [`draw::Frame`] is the 128x64 monochrome framebuffer (an SSD1306
 //!   OLED's worth, 1 KiB) whose bytes are the data of a binary PBM image;
 //! - [`scenes`]: the scenes the firmware runs (the canonical runs of DESIGN section 4 and one
 //!   per shape kind, region and scalar), the storage sizes of the 1,024-shape engine, and

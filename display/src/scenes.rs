@@ -106,6 +106,8 @@ pub struct Scene {
     pub count: u64,
     /// Placed with the cell sampler (`Engine::step_fast`) rather than the paper's.
     pub fast: bool,
+    /// Drawn filled ([`View::fill`]) rather than as outlines ([`View::draw`]).
+    pub filled: bool,
 }
 
 impl Scene {
@@ -154,12 +156,18 @@ const fn scene(
         seed,
         count,
         fast: false,
+        filled: false,
     }
 }
 
 /// The same scene placed with the cell sampler.
 const fn fast(s: Scene) -> Scene {
     Scene { fast: true, ..s }
+}
+
+/// The same scene drawn filled.
+const fn filled(s: Scene) -> Scene {
+    Scene { filled: true, ..s }
 }
 
 const fn pt(x: f64, y: f64) -> Point<f64> {
@@ -210,6 +218,11 @@ pub const SCENES: &[Scene] = &[
     // The cell sampler on the board, against the host's bits.
     fast(scene("circles-cells",  F64, &[Circle], false, rect(200.0, 200.0),  1.3,  1.0, 0.0, 16, 250)),
     fast(scene("squares-cells-fixed", FX, &[Square], true, torus(100.0, 100.0), 1.25, 2.0, 0.0, 17, 200)),
+    // Filled shapes: the pixels whose centres are inside (non-convex stars on a torus, rings
+    // with their holes, rotated squares through the cell sampler).
+    filled(scene("stars-filled", F64, &[ShapeKind::Star { points: 5, inner: 0.45 }], true, torus(100.0, 100.0), 1.25, 4.0, 0.0, 18, 50)),
+    filled(scene("rings-filled-fixed", FX, &[ShapeKind::Ring { inner: 0.5 }], false, SceneRegion::Circle(60.0), 1.3, 3.0, 0.0, 19, 60)),
+    filled(fast(scene("squares-cells-filled", F64, &[Square], true, rect(200.0, 100.0), 1.25, 2.0, 0.0, 20, 150))),
     // The whole capacity: 1,024 rectangles.
     scene("capacity",        F64, &[RECT2],  false, rect(150.0, 100.0),  1.2,  3.0, 0.0, 8, CAPACITY as u64),
 ];
@@ -269,6 +282,20 @@ impl<E: core::fmt::Debug> core::fmt::Display for RunError<E> {
     }
 }
 
+/// Draws one placed shape as the scene asks: filled or as an outline.
+fn paint<S: Scalar, D: DrawTarget<Color = BinaryColor>>(
+    scene: &Scene,
+    view: &View,
+    geo: &zetafill::Geo<S>,
+    target: &mut D,
+) -> Result<(), D::Error> {
+    if scene.filled {
+        view.fill(geo, BinaryColor::On, target)
+    } else {
+        view.draw(geo, target)
+    }
+}
+
 /// Runs `scene` on the caller's storage, drawing each shape onto `target` as it is placed.
 /// `clock` is read before and after each step, so [`Outcome::ticks`] counts the engine's
 /// time only (pass `|| 0` where there is no clock).
@@ -291,7 +318,7 @@ pub fn run<S: Scalar, D: DrawTarget<Color = BinaryColor>>(
         ticks = ticks.wrapping_add(clock().wrapping_sub(t0));
         let placement = step.map_err(RunError::Step)?;
         if let Some(geo) = engine.geo(placement.index as usize) {
-            view.draw(&geo, target).map_err(RunError::Draw)?;
+            paint(scene, &view, &geo, target).map_err(RunError::Draw)?;
         }
     }
     let (count, digest) = digest::engine_digest(&engine);
@@ -327,7 +354,7 @@ pub fn run_fast<S: Scalar, D: DrawTarget<Color = BinaryColor>>(
         ticks = ticks.wrapping_add(clock().wrapping_sub(t0));
         let placement = step.map_err(RunError::Step)?;
         if let Some(geo) = engine.geo(placement.index as usize) {
-            view.draw(&geo, target).map_err(RunError::Draw)?;
+            paint(scene, &view, &geo, target).map_err(RunError::Draw)?;
         }
     }
     let (count, digest) = digest::engine_digest(&engine);

@@ -2,7 +2,7 @@
 # Runs every zetafill test on a fresh machine, installing what it needs first.
 #   bash scripts/test-all.sh
 # Steps: the Cortex-M3 Rust target, qemu-system-arm and defmt-print; the core built and linted
-# for it (no_std, no alloc, no panicking constructs); the firmware run under QEMU; every host
+# for it (no_std, no alloc, no panicking constructs); the API docs; the firmware run under QEMU; every host
 # test of the workspace in release mode (including host-vs-firmware parity).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -43,6 +43,9 @@ if cargo clippy --version >/dev/null 2>&1; then
     step "workspace lints (libraries, binaries, tests, benches, examples)"
     cargo clippy --workspace --release --all-targets -- -D warnings
 fi
+
+step "API documentation builds without a broken link"
+RUSTDOCFLAGS="-D warnings" cargo doc -p zetafill -p zetafill-display -p zetafill-cli --lib --no-deps
 
 step "firmware: every scene under qemu-system-arm (lm3s6965evb, Cortex-M3, no FPU)"
 (cd firmware-sim && env -u CARGO_TARGET_DIR cargo run --release)

@@ -14,7 +14,7 @@
 //! - [`spatial`]: the fixed-capacity multi-level spatial hash;
 //! - [`engine`]: parameters, the placement step, stop conditions, statistics;
 //! - [`sampler`]: the cell sampler, candidates only where the next shape could fit;
-//! - [`line`]: the 1D fill (segments in an interval) over its own 1D multi-level hash;
+//! - [`line`](mod@line): the 1D fill (segments in an interval) over its own 1D multi-level hash;
 //! - [`stats`]: the gasket width of the paper's Table 1, exact dimensions, power-law fits.
 //!
 //! ## Guarantees

@@ -6,7 +6,7 @@
 //! - [`Drawing`] (this file): paths in mm, in the *bed frame* (x right, y up, (0, 0) at the
 //!   bed's front-left corner). A [`Path`] is an open or closed polyline, or a circular arc (a
 //!   full circle when its sweep is ±2π). [`from_fill`] builds one from a
-//!   [`FillDoc`](crate::doc::FillDoc): circles as full circles, rings as two circles, polygons
+//!   [`crate::doc::FillDoc`]: circles as full circles, rings as two circles, polygons
 //!   as closed polylines (their tested vertices); in a periodic fill every image that shows
 //!   in the tile is clipped exactly to the tile rectangle (circles into arcs, polygons into
 //!   open polylines). [`Placement`] scales and moves a drawing onto a bed or a page.
@@ -925,7 +925,7 @@ pub struct PlotArgs {
     /// [default: 0.01].
     #[arg(long = "chord-tolerance", value_parser = positive, help_heading = "Plotters and lasers")]
     pub chord_tolerance: Option<f64>,
-    /// Hatch every shape: SPACING[:ANGLE] in mm and degrees (default angle 45).
+    /// Hatch every shape: SPACING or SPACING:ANGLE, in mm and degrees (default angle 45).
     #[arg(long, allow_hyphen_values = true, help_heading = "Plotters and lasers")]
     pub hatch: Option<String>,
     /// With --hatch: hatch lines only, no outlines.

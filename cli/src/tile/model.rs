@@ -29,7 +29,8 @@
 //! crosses the top edge gets a twin shifted by W/2; both must fit, and both are added. For
 //! Voronoi cobblestones every centre in a band at the top gets a twin, since a cell can cross
 //! the edge without its disc doing so (the post uses the top quarter; the band doubles until
-//! the edges crossing the top repeat with period W/2 exactly, see [`seam_gaps`]).
+//! the edges crossing the top repeat with period W/2 exactly, see
+//! [`seam_gaps`](super::render::seam_gaps)).
 
 use crate::territory::geom::Pt;
 

@@ -759,14 +759,11 @@ pub fn run(a: &FillArgs) -> Result<(), CliError> {
         return Err(crate::output::png::only_png("--relief"));
     }
     a.raster.check(format == Format::Png)?;
-    if let Some(flag) = a.colour.given() {
-        if !matches!(format, Format::Svg | Format::Png) || a.relief.is_some() || a.voronoi {
-            return Err(CliError::arg(
-                flag,
-                "colours the shapes of an SVG or PNG picture: write .svg or .png, without --relief or --voronoi, or drop it",
-            ));
-        }
-    }
+    a.colour.check(
+        matches!(format, Format::Svg | Format::Png) && a.relief.is_none() && !a.voronoi,
+        "write .svg or .png, without --relief or --voronoi",
+        false,
+    )?;
     if a.relief.is_some() {
         if a.voronoi {
             return Err(CliError::arg(

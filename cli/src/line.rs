@@ -117,6 +117,9 @@ pub struct LineArgs {
     /// SVG: also mark the ends of the interval.
     #[arg(long)]
     pub boundary: bool,
+    /// Colours (SVG/PNG).
+    #[command(flatten)]
+    pub colour: crate::output::palette::ColourArgs,
     /// PNG size.
     #[command(flatten)]
     pub raster: crate::output::png::Raster,
@@ -382,7 +385,7 @@ const P: usize = 4;
 const INVISIBLE: f64 = 0.5e-4;
 
 /// SVG options of the 1D renders.
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone)]
 pub struct LineSvgOptions {
     /// How segments are drawn.
     pub render: Render,
@@ -400,6 +403,13 @@ pub struct LineSvgOptions {
     pub zoom_center: f64,
     /// Mark the interval's ends.
     pub boundary: bool,
+    /// Each segment's colour (its stroke, or its fill for bars and filled circles); black
+    /// without.
+    pub colours: Option<Vec<crate::output::palette::Colour>>,
+    /// A colour behind the drawing.
+    pub background: Option<crate::output::palette::Colour>,
+    /// The colour flags, as a command that reproduces the drawing writes them.
+    pub colour_flags: String,
 }
 
 /// The pieces `[a, b]` of a segment inside `[0, L]`: itself, or, when it wraps past L in a
@@ -441,6 +451,7 @@ fn drawing_flags(opt: &LineSvgOptions) -> String {
     if opt.boundary {
         s.push_str(" --boundary");
     }
+    s.push_str(&opt.colour_flags);
     s
 }
 
@@ -496,8 +507,18 @@ fn circle(cx: f64, cy: f64, r: f64) -> svg::node::element::Circle {
         .set("r", num(r, P))
 }
 
+/// `node` in segment `k`'s colour, if the drawing has colours: its `attr` (`fill` or
+/// `stroke`).
+fn paint<N: svg::Node>(mut node: N, opt: &LineSvgOptions, k: usize, attr: &str) -> N {
+    if let Some(c) = opt.colours.as_ref().and_then(|cs| cs.get(k)) {
+        node.assign(attr, c.as_str());
+    }
+    node
+}
+
 /// Renders a 1D fill as SVG (mm units; the line runs left to right at x = 0 ... L).
 pub fn render_svg(doc: &LineDoc, opt: &LineSvgOptions) -> Vec<u8> {
+    let circle_paint = if opt.style == Style::Filled { "fill" } else { "stroke" };
     let l = doc.region.length;
     let periodic = doc.region.periodic;
     let d0 = doc.shapes.first().map_or(l / 10.0, |s| s.length);
@@ -509,16 +530,15 @@ pub fn render_svg(doc: &LineDoc, opt: &LineSvgOptions) -> Vec<u8> {
             height = (4.0 * opt.pen_width).max(2.0);
             let y = height / 2.0;
             let mut g = stroke_group("segments", opt.pen_width);
-            for s in &doc.shapes {
+            for (k, s) in doc.shapes.iter().enumerate() {
                 for (a, b) in pieces(s, l, periodic) {
                     if b - a >= INVISIBLE {
-                        g = g.add(
-                            Line::new()
-                                .set("x1", num(a, P))
-                                .set("y1", num(y, P))
-                                .set("x2", num(b, P))
-                                .set("y2", num(y, P)),
-                        );
+                        let line = Line::new()
+                            .set("x1", num(a, P))
+                            .set("y1", num(y, P))
+                            .set("x2", num(b, P))
+                            .set("y2", num(y, P));
+                        g = g.add(paint(line, opt, k, "stroke"));
                     }
                 }
             }
@@ -527,16 +547,15 @@ pub fn render_svg(doc: &LineDoc, opt: &LineSvgOptions) -> Vec<u8> {
         Render::Bars => {
             height = opt.bar_height;
             let mut g = Group::new().set("id", "segments").set("fill", "black").set("stroke", "none");
-            for s in &doc.shapes {
+            for (k, s) in doc.shapes.iter().enumerate() {
                 for (a, b) in pieces(s, l, periodic) {
                     if b - a >= INVISIBLE {
-                        g = g.add(
-                            Rectangle::new()
-                                .set("x", num(a, P))
-                                .set("y", 0)
-                                .set("width", num(b - a, P))
-                                .set("height", num(opt.bar_height, P)),
-                        );
+                        let bar = Rectangle::new()
+                            .set("x", num(a, P))
+                            .set("y", 0)
+                            .set("width", num(b - a, P))
+                            .set("height", num(opt.bar_height, P));
+                        g = g.add(paint(bar, opt, k, "fill"));
                     }
                 }
             }
@@ -545,15 +564,15 @@ pub fn render_svg(doc: &LineDoc, opt: &LineSvgOptions) -> Vec<u8> {
         Render::Circles => {
             height = d0;
             let mut g = circle_group("segments", opt);
-            for s in &doc.shapes {
+            for (k, s) in doc.shapes.iter().enumerate() {
                 let r = s.length / 2.0;
                 if r < INVISIBLE {
                     continue;
                 }
                 let mid = s.start + r;
-                g = g.add(circle(mid, height / 2.0, r));
+                g = g.add(paint(circle(mid, height / 2.0, r), opt, k, circle_paint));
                 if periodic && s.start + s.length > l {
-                    g = g.add(circle(mid - l, height / 2.0, r));
+                    g = g.add(paint(circle(mid - l, height / 2.0, r), opt, k, circle_paint));
                 }
             }
             if periodic {
@@ -591,7 +610,7 @@ pub fn render_svg(doc: &LineDoc, opt: &LineSvgOptions) -> Vec<u8> {
                     ),
                 );
                 let mut g = circle_group(&id, opt).set("clip-path", format!("url(#clip-{id})"));
-                for s in &doc.shapes {
+                for (n, s) in doc.shapes.iter().enumerate() {
                     let r = s.length / 2.0 * scale;
                     if r < INVISIBLE {
                         continue;
@@ -602,7 +621,7 @@ pub fn render_svg(doc: &LineDoc, opt: &LineSvgOptions) -> Vec<u8> {
                             continue;
                         }
                         let m = (s0 + s1) / 2.0;
-                        g = g.add(circle((m - a) * scale, cy, r));
+                        g = g.add(paint(circle((m - a) * scale, cy, r), opt, n, circle_paint));
                     }
                 }
                 body.push(g);
@@ -638,6 +657,9 @@ pub fn render_svg(doc: &LineDoc, opt: &LineSvgOptions) -> Vec<u8> {
             p.seed
         ))))
         .add(Description::new().add(Text::new(format!("{}{}", command_line(doc), drawing_flags(opt)))));
+    if let Some(bg) = &opt.background {
+        d = d.add(crate::output::palette::background(bg.as_str(), l, height));
+    }
     if opt.render == Render::Zoom || (periodic && opt.render == Render::Circles) {
         d = d.add(defs);
     }
@@ -803,6 +825,12 @@ pub fn render(doc: &LineDoc, format: Format, a: &LineArgs) -> Result<Vec<u8>, Cl
         zoom_fraction: a.zoom_fraction,
         zoom_center: a.zoom_center.unwrap_or(a.length / 2.0),
         boundary: a.boundary,
+        colours: a.colour.palette.as_ref().map(|p| {
+            let items: Vec<(u64, f64)> = doc.shapes.iter().map(|s| (s.index, s.length)).collect();
+            crate::output::palette::assign_items(&p.0, a.colour.by(), doc.params.seed, &items, |_| 0)
+        }),
+        background: a.colour.background.clone(),
+        colour_flags: a.colour.flags(),
     };
     Ok(match format {
         Format::Svg => render_svg(doc, &opt),
@@ -861,6 +889,8 @@ pub fn run(a: &LineArgs) -> Result<(), CliError> {
     let format = Format::resolve(a.format, &a.output)?;
     a.raster.check(format == Format::Png)?;
     check_plot(a, format)?;
+    a.colour
+        .check(matches!(format, Format::Svg | Format::Png), "write .svg or .png", true)?;
     let (doc, halt) = compute(a)?;
     let bytes = render(&doc, format, a)?;
     dest.write(&bytes)?;

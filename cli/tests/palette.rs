@@ -11,29 +11,37 @@ use serde_json::Value;
 
 const PALETTE: [&str; 4] = ["#264653", "#2a9d8f", "#e9c46a", "#e76f51"];
 
-/// The colour each shape of `doc` should have under rule `by` (as the README states it).
-fn expected(doc: &Value, by: &str) -> Vec<&'static str> {
-    let list = shapes(doc);
+/// The palette index rule `by` gives item `i` of size `size`, the sizes ranging over
+/// `[min, max]` (as the README states the rules).
+fn pick(by: &str, seed: u64, i: u64, size: f64, (max, min): (f64, f64)) -> usize {
     let k = PALETTE.len();
-    let areas: Vec<f64> = list.iter().map(|s| f(s, "area")).collect();
-    let (amax, amin) = areas.iter().fold((0.0f64, f64::MAX), |(a, b), &x| (a.max(x), b.min(x)));
+    match by {
+        "size" => {
+            let t = (max / size).ln() / (max / min).ln();
+            ((t * k as f64).floor() as usize).min(k - 1)
+        }
+        "random" => (splitmix64(seed ^ splitmix64(i)) % k as u64) as usize,
+        "cycle" => i as usize % k,
+        other => panic!("rule {other}"),
+    }
+}
+
+/// The colour each item of `doc` should have under rule `by`, its size being `key` (a
+/// fill's shapes by area, a line's segments by length).
+fn expected_by(doc: &Value, by: &str, key: &str) -> Vec<&'static str> {
+    let list = shapes(doc);
+    let sizes: Vec<f64> = list.iter().map(|s| f(s, key)).collect();
+    let range = sizes.iter().fold((0.0f64, f64::MAX), |(a, b), &x| (a.max(x), b.min(x)));
     let seed = u(&doc["params"], "seed");
     list.iter()
-        .zip(&areas)
-        .map(|(s, &a)| {
-            let i = u(s, "index");
-            let pick = match by {
-                "size" => {
-                    let t = (amax / a).ln() / (amax / amin).ln();
-                    ((t * k as f64).floor() as usize).min(k - 1)
-                }
-                "random" => (splitmix64(seed ^ splitmix64(i)) % k as u64) as usize,
-                "cycle" => i as usize % k,
-                other => panic!("rule {other}"),
-            };
-            PALETTE[pick]
-        })
+        .zip(&sizes)
+        .map(|(s, &a)| PALETTE[pick(by, seed, u(s, "index"), a, range)])
         .collect()
+}
+
+/// The colour each shape of a fill should have under rule `by`.
+fn expected(doc: &Value, by: &str) -> Vec<&'static str> {
+    expected_by(doc, by, "area")
 }
 
 /// Whether every path has its shape's colour: path k is shape k (one path per shape).
@@ -253,4 +261,80 @@ fn kind_colours_each_entry_of_a_mix() {
     assert!(want.iter().any(|c| *c == PALETTE[2]) && want.iter().any(|c| *c == PALETTE[1]));
     // Cycling the colours instead would not match a random mix.
     assert!(check(&painted(&svg, false), &expected(&doc, "cycle")).is_err());
+}
+
+/// A 1D fill's segments take the colours of their rule: each drawn piece (a bar, a dash, a
+/// circle, a periodic segment's two pieces or its circle's image) is found by its middle
+/// among the segments of the JSON.
+#[test]
+fn line_segments_take_the_colour_of_their_rule() {
+    let dir = tmp();
+    let d = dir.path();
+    let list = PALETTE.join(",");
+    for (render, style, by, periodic) in [
+        ("bars", "outline", "size", false),
+        ("dashes", "outline", "cycle", true),
+        ("circles", "outline", "random", true),
+        ("circles", "filled", "size", false),
+    ] {
+        let mut args = vec!["line", "--count", "200", "--seed", "4", "--length", "150"];
+        if periodic {
+            args.push("--periodic");
+        }
+        zf_ok(d, &[&args[..], &["-o", "l.json"]].concat());
+        let doc = parse_json(&read(&d.join("l.json")));
+        let colour = [
+            "--render",
+            render,
+            "--style",
+            style,
+            "--palette",
+            &list,
+            "--color-by",
+            by,
+            "--background",
+            "fefae0",
+        ];
+        zf_ok(d, &[&args[..], &colour, &["-o", "l.svg"]].concat());
+        let svg = read(&d.join("l.svg"));
+        assert_eq!(painted(&svg, false)[0].colour, "#fefae0", "{render}: the background comes first");
+        let stroke = render == "dashes" || style == "outline" && render == "circles";
+        let pieces = painted(&svg, stroke).split_off(1);
+        let want = expected_by(&doc, by, "length");
+        let segs: Vec<(f64, f64)> = shapes(&doc).iter().map(|s| (f(s, "start"), f(s, "length"))).collect();
+        let faults = |shift: usize| {
+            let mut bad = Vec::new();
+            for p in &pieces {
+                let x = p.centre[0].rem_euclid(150.0);
+                let k = segs.iter().position(|&(a, len)| (x - a).rem_euclid(150.0) < len);
+                match k {
+                    Some(k) if p.colour == PALETTE[(PALETTE.iter().position(|c| *c == want[k]).unwrap_or(0) + shift) % PALETTE.len()] => {}
+                    Some(k) => bad.push(format!("segment {k} at {x}: {}", p.colour)),
+                    None => bad.push(format!("a piece at {x} lies on no segment")),
+                }
+            }
+            bad
+        };
+        assert!(pieces.len() >= 150, "{render}: {} pieces", pieces.len());
+        let bad = faults(0);
+        assert!(bad.is_empty(), "{render} {by}: {} wrong, first {:?}", bad.len(), bad.first());
+        assert_eq!(faults(1).len(), pieces.len(), "{render}: the check misses colours shifted by one");
+    }
+}
+
+#[test]
+fn line_colours_are_refused_where_nothing_shows_them() {
+    let dir = tmp();
+    let d = dir.path();
+    std::fs::write(d.join("keep.json"), b"precious").unwrap_or_else(|e| panic!("{e}"));
+    for (args, flag) in [
+        (&["--palette", "000,fff"][..], "--palette"),
+        (&["--background", "fff"][..], "--background"),
+        (&["--palette", "000", "--color-by", "kind", "--format", "svg"][..], "--color-by"),
+    ] {
+        let o = zf(d, &[&["line", "--count", "20"][..], args, &["-o", "keep.json"]].concat());
+        assert_eq!(o.code, 2, "{args:?}: {}", o.stderr);
+        assert!(names_flag(&o.stderr, flag), "{args:?}: {}", o.stderr);
+        assert_eq!(read(&d.join("keep.json")), b"precious", "{args:?} touched the file");
+    }
 }

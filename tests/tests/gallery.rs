@@ -1,4 +1,4 @@
-//! Reference outputs: every `examples/gallery/NAME.args` (a `fill` or a `tile` command) run in
+//! Reference outputs: every `examples/gallery/NAME.args` (a `fill`, `line` or `tile` command) run in
 //! process must write exactly the committed picture. Set `ZETAFILL_REGENERATE=1` to rewrite the pictures after an intended
 //! change (and look at them before committing).
 
@@ -21,16 +21,20 @@ fn render(args_file: &Path) -> (PathBuf, Vec<u8>) {
     let text = std::fs::read_to_string(args_file).unwrap_or_default();
     let mut args: Vec<String> = vec!["zetafill".into()];
     args.extend(text.split_whitespace().map(String::from));
-    if args.get(1).is_some_and(|c| c == "tile") {
-        use clap::Parser;
-        let Ok(zetafill_cli::Cli {
-            command: zetafill_cli::Command::Tile(t),
-        }) = zetafill_cli::Cli::try_parse_from(&args)
-        else {
-            panic!("{}: not a tile command", args_file.display())
-        };
+    use clap::Parser;
+    let command = zetafill_cli::Cli::try_parse_from(&args)
+        .unwrap_or_else(|e| panic!("{}: {e}", args_file.display()))
+        .command;
+    if let zetafill_cli::Command::Tile(t) = command {
         let (_, bytes) = zetafill_cli::tile::output(&t).unwrap_or_else(|e| panic!("{}: {e}", args_file.display()));
         return (gallery().join(&t.output), bytes);
+    }
+    if let zetafill_cli::Command::Line(l) = command {
+        let (doc, halt) = zetafill_cli::line::compute(&l).unwrap_or_else(|e| panic!("{}: {e}", args_file.display()));
+        assert!(halt.is_none(), "{} halted", args_file.display());
+        let format = zetafill_cli::output::Format::resolve(l.format, &l.output).unwrap_or(zetafill_cli::output::Format::Svg);
+        let bytes = zetafill_cli::line::render(&doc, format, &l).unwrap_or_else(|e| panic!("{}: {e}", args_file.display()));
+        return (gallery().join(&l.output), bytes);
     }
     let a = parse_fill(&args);
     let (doc, halt) = zetafill_cli::fill::compute(&a).unwrap_or_else(|e| panic!("{}: {e}", args_file.display()));

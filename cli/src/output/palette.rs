@@ -54,6 +54,16 @@ pub fn colour(s: &str) -> Result<Colour, String> {
     })
 }
 
+/// The background of a drawing `width` x `height` mm: a rectangle filled with `colour` from
+/// the origin, to be added before the shapes (`id="background"`).
+pub fn background(colour: &str, width: f64, height: f64) -> svg::node::element::Rectangle {
+    svg::node::element::Rectangle::new()
+        .set("id", "background")
+        .set("width", super::num(width, 4))
+        .set("height", super::num(height, 4))
+        .set("fill", colour)
+}
+
 /// A list of colours.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Palette(pub Vec<Colour>);
@@ -148,6 +158,28 @@ impl ColourArgs {
         } else {
             self.background.as_ref().map(|_| "--background")
         }
+    }
+
+    /// Refuses colour flags where they would show nothing: unless `shown` (the output is a
+    /// picture that shows them; `what` says what to change), and `--color-by kind` when the
+    /// picture has `one_kind` of shape.
+    pub fn check(&self, shown: bool, what: &str, one_kind: bool) -> Result<(), crate::error::CliError> {
+        let Some(flag) = self.given() else {
+            return Ok(());
+        };
+        if !shown {
+            return Err(crate::error::CliError::arg(
+                flag,
+                format!("colours the shapes of an SVG or PNG picture: {what}, or drop it"),
+            ));
+        }
+        if one_kind && self.color_by == Some(ColorBy::Kind) {
+            return Err(crate::error::CliError::arg(
+                "--color-by",
+                "there is one kind of shape here; use size, random or cycle",
+            ));
+        }
+        Ok(())
     }
 
     /// The rule that gives out the colours.

@@ -469,13 +469,7 @@ pub fn render(doc: &FillDoc, opt: &SvgOptions) -> Vec<u8> {
         ))))
         .add(Description::new().add(Text::new(format!("{}{}", command_line(doc), opt.flags))));
     if let Some(bg) = &opt.background {
-        d = d.add(
-            Rectangle::new()
-                .set("id", "background")
-                .set("width", num(page_w, P))
-                .set("height", num(page_h, P))
-                .set("fill", bg.as_str()),
-        );
+        d = d.add(crate::output::palette::background(bg.as_str(), page_w, page_h));
     }
     if periodic && !geometric_clip {
         // Images of edge-crossing shapes tile seamlessly; the clip keeps the tile's bounds.

@@ -453,13 +453,7 @@ pub fn svg(pieces: &[Piece], sheet: Sheet, look: &Look<'_>, title: &str, desc: &
         .add(Title::new("").add(Text::new(title)))
         .add(Description::new().add(Text::new(desc)));
     if let Some(bg) = look.background {
-        d = d.add(
-            Rectangle::new()
-                .set("id", "background")
-                .set("width", num(sheet.width, P))
-                .set("height", num(sheet.height, P))
-                .set("fill", bg),
-        );
+        d = d.add(crate::output::palette::background(bg, sheet.width, sheet.height));
     }
     if look.clip {
         let rect = Rectangle::new()
@@ -476,25 +470,12 @@ pub fn svg(pieces: &[Piece], sheet: Sheet, look: &Look<'_>, title: &str, desc: &
 
 /// Refuses colour flags the output cannot show.
 fn check_colours(a: &TileArgs, format: TileFormat) -> Result<(), CliError> {
-    let Some(flag) = a.colour.given() else {
-        return Ok(());
-    };
-    if !matches!(format, TileFormat::Svg | TileFormat::Png) || a.relief.is_some() {
-        return Err(CliError::arg(
-            flag,
-            "colours the pieces of an SVG or PNG picture: write .svg or .png, without --relief, or drop it",
-        ));
-    }
+    let picture = matches!(format, TileFormat::Svg | TileFormat::Png) && a.relief.is_none();
+    a.colour.check(picture, "write .svg or .png, without --relief", true)?;
     if a.colour.palette.is_some() && a.render == Render::Voronoi && a.style == Style::Outline {
         return Err(CliError::arg(
             "--palette",
             "cobblestone outlines are edges, each shared by two cells; add --style filled to colour the cells",
-        ));
-    }
-    if a.colour.color_by == Some(crate::output::palette::ColorBy::Kind) {
-        return Err(CliError::arg(
-            "--color-by",
-            "the tile has one kind of shape; use size, random or cycle",
         ));
     }
     Ok(())

@@ -702,6 +702,14 @@ fn svg_options(doc: &FillDoc, a: &FillArgs) -> Result<output::svg::SvgOptions, C
             list.kinds().iter().position(|k| *k == kind).unwrap_or(0)
         };
         o.colours = Some(output::palette::assign(doc, &p.0, a.colour.by(), entry));
+        if a.plot.layers == crate::plot::Layers::Colours {
+            o.colour_layers = Some(p.0.clone());
+        }
+    } else if a.plot.layers == crate::plot::Layers::Colours {
+        return Err(CliError::arg(
+            "--layers",
+            "colours makes one layer per --palette colour: give --palette, or use size-bands:K",
+        ));
     }
     o.flags.push_str(&a.colour.flags());
     o.background.clone_from(&a.colour.background);

@@ -13,6 +13,19 @@ fn tree(bytes: &[u8]) -> usvg::Tree {
 }
 
 /// Bounding boxes (px) of every drawn path, and how many there are per top-level group id.
+/// The Inkscape layers of a drawing: the groups whose id starts with `layer`, in order.
+fn layer_groups<'a>(g: &'a usvg::Group, out: &mut Vec<&'a usvg::Group>) {
+    for node in g.children() {
+        if let usvg::Node::Group(g) = node {
+            if g.id().starts_with("layer") {
+                out.push(g);
+            } else {
+                layer_groups(g, out);
+            }
+        }
+    }
+}
+
 fn paths(g: &usvg::Group, out: &mut Vec<usvg::Rect>) {
     for n in g.children() {
         match n {
@@ -157,21 +170,16 @@ fn layers_split_shapes_by_size() {
     }
     let t = tree(&svg);
     // Each layer is a top-level group (usvg keeps groups with an id).
-    fn layers(g: &usvg::Group, out: &mut Vec<(String, Vec<usvg::Rect>)>) {
-        for node in g.children() {
-            if let usvg::Node::Group(g) = node {
-                if g.id().starts_with("layer") {
-                    let mut v = Vec::new();
-                    paths(g, &mut v);
-                    out.push((g.id().to_string(), v));
-                } else {
-                    layers(g, out);
-                }
-            }
-        }
-    }
-    let mut per_layer: Vec<(String, Vec<usvg::Rect>)> = Vec::new();
-    layers(t.root(), &mut per_layer);
+    let mut groups = Vec::new();
+    layer_groups(t.root(), &mut groups);
+    let per_layer: Vec<(String, Vec<usvg::Rect>)> = groups
+        .iter()
+        .map(|g| {
+            let mut v = Vec::new();
+            paths(g, &mut v);
+            (g.id().to_string(), v)
+        })
+        .collect();
     let ids: Vec<&str> = per_layer.iter().map(|(i, _)| i.as_str()).collect();
     assert_eq!(ids, ["layer1", "layer2", "layer3"]);
     assert_eq!(
@@ -495,4 +503,79 @@ fn plot_flags_are_refused_where_nothing_reads_them() {
             "ok.gcode",
         ],
     );
+}
+
+/// `--layers colours` puts each shape in the Inkscape layer of its palette colour (one pen
+/// each), in the palette's order: every path of a layer is stroked in the colour its label
+/// names, every layer has shapes, and each shape is in exactly one layer.
+#[test]
+fn layers_split_shapes_by_colour() {
+    let dir = tmp();
+    let d = dir.path();
+    let palette = ["#264653", "#e9c46a", "#e76f51"];
+    for (extra, page) in [
+        (&["--region", "rect:150:150"][..], &[][..]),
+        (&["--periodic", "--region", "rect:150:150"][..], &["--page", "a4"][..]),
+    ] {
+        let base = [&["--count", "300", "--seed", "29"][..], extra].concat();
+        let doc = fill_json(d, &base);
+        let list = palette.join(",");
+        let colour = ["--palette", &list, "--color-by", "random", "--layers", "colours"];
+        let svg = fill_to(d, "c.svg", &[&base[..], page, &colour].concat());
+        let text = String::from_utf8_lossy(&svg).into_owned();
+        for (k, c) in palette.iter().enumerate() {
+            assert!(
+                text.contains(&format!(
+                    "id=\"layer{}\" inkscape:groupmode=\"layer\" inkscape:label=\"{} {c}\"",
+                    k + 1,
+                    k + 1
+                )),
+                "{extra:?}: layer {c}"
+            );
+        }
+        fn strokes(g: &usvg::Group, out: &mut Vec<String>) {
+            for node in g.children() {
+                match node {
+                    usvg::Node::Group(g) => strokes(g, out),
+                    usvg::Node::Path(p) => out.push(match p.stroke().map(|s| s.paint()) {
+                        Some(usvg::Paint::Color(c)) => format!("#{:02x}{:02x}{:02x}", c.red, c.green, c.blue),
+                        other => format!("{other:?}"),
+                    }),
+                    _ => {}
+                }
+            }
+        }
+        let t = tree(&svg);
+        let mut groups = Vec::new();
+        layer_groups(t.root(), &mut groups);
+        // (layer id, stroke colours of its paths)
+        let per_layer: Vec<(String, Vec<String>)> = groups
+            .iter()
+            .map(|g| {
+                let mut v = Vec::new();
+                strokes(g, &mut v);
+                (g.id().to_string(), v)
+            })
+            .collect();
+        assert_eq!(per_layer.len(), 3, "{extra:?}");
+        for (k, (id, colours)) in per_layer.iter().enumerate() {
+            assert!(!colours.is_empty(), "{extra:?}: {id} is empty");
+            assert!(
+                colours.iter().all(|c| c == palette[k]),
+                "{extra:?}: {id} holds another pen's shapes"
+            );
+        }
+        let drawn: usize = per_layer.iter().map(|(_, v)| v.len()).sum();
+        if extra.contains(&"--periodic") {
+            // Edge-crossing shapes are cut into pieces at the tile's edges.
+            assert!(drawn > shapes(&doc).len(), "{extra:?}: {drawn} paths");
+        } else {
+            assert_eq!(drawn, shapes(&doc).len(), "every shape in exactly one layer");
+        }
+    }
+    // Without a palette there is nothing to split by.
+    let o = zf(d, &["fill", "--count", "20", "--layers", "colours", "-o", "x.svg"]);
+    assert_eq!(o.code, 2);
+    assert!(names_flag(&o.stderr, "--layers"), "{}", o.stderr);
+    assert!(!d.join("x.svg").exists());
 }

@@ -49,6 +49,9 @@ pub struct SvgOptions {
     pub colours: Option<Vec<crate::output::palette::Colour>>,
     /// A rectangle of this colour behind everything (`--background`).
     pub background: Option<crate::output::palette::Colour>,
+    /// `Some(palette)`: the shapes in one Inkscape layer per palette colour, in its order
+    /// (`--layers colours`), each shape in the layer of its colour.
+    pub colour_layers: Option<Vec<crate::output::palette::Colour>>,
 }
 
 /// Where the drawing goes on a page: page point = `scale * p + (dx, dy)` for a region point
@@ -395,34 +398,50 @@ pub fn render(doc: &FillDoc, opt: &SvgOptions) -> Vec<u8> {
             .set("stroke-width", num(opt.pen_width, P)),
         Style::Filled => g.set("fill", "black").set("stroke", "none"),
     };
-    // One group, or one Inkscape layer per size band (largest shapes first).
-    let (bands, widths) = match opt.layers {
-        Some(k) => size_bands(doc, k),
-        None => (vec![0; doc.shapes.len()], vec![None]),
+    // One group, one Inkscape layer per size band (largest shapes first), or one per colour.
+    let layer = |i: usize, label: String| {
+        style(
+            Group::new()
+                .set("id", format!("layer{}", i + 1))
+                .set("inkscape:groupmode", "layer")
+                .set("inkscape:label", label),
+        )
     };
-    let mut groups: Vec<Group> = match opt.layers {
-        None => vec![style(Group::new().set("id", "shapes"))],
-        Some(_) => widths
-            .iter()
-            .enumerate()
-            .map(|(i, wd)| {
-                let label = match wd {
-                    Some((hi, lo)) => format!("{} widths {}-{} mm", i + 1, num(*hi, 3), num(*lo, 3)),
-                    None => format!("{} (empty)", i + 1),
-                };
-                style(
-                    Group::new()
-                        .set("id", format!("layer{}", i + 1))
-                        .set("inkscape:groupmode", "layer")
-                        .set("inkscape:label", label),
-                )
-            })
-            .collect(),
+    let (bands, mut groups): (Vec<usize>, Vec<Group>) = match (&opt.colour_layers, opt.layers) {
+        (Some(palette), _) => {
+            let of = |k: usize| {
+                let c = opt.colours.as_ref().and_then(|cs| cs.get(k));
+                c.and_then(|c| palette.iter().position(|p| p == c)).unwrap_or(0)
+            };
+            let groups = palette
+                .iter()
+                .enumerate()
+                .map(|(i, c)| layer(i, format!("{} {c}", i + 1)))
+                .collect();
+            ((0..doc.shapes.len()).map(of).collect(), groups)
+        }
+        (None, Some(k)) => {
+            let (bands, widths) = size_bands(doc, k);
+            let groups = widths
+                .iter()
+                .enumerate()
+                .map(|(i, wd)| {
+                    let label = match wd {
+                        Some((hi, lo)) => format!("{} widths {}-{} mm", i + 1, num(*hi, 3), num(*lo, 3)),
+                        None => format!("{} (empty)", i + 1),
+                    };
+                    layer(i, label)
+                })
+                .collect();
+            (bands, groups)
+        }
+        (None, None) => (vec![0; doc.shapes.len()], vec![style(Group::new().set("id", "shapes"))]),
     };
     let periodic = doc.periodic();
     // Plotter output (a page or layers) of a periodic outline fill: images cut exactly to the
     // tile, since vpype and plotter drivers ignore clip-path. Otherwise a clip-path.
-    let geometric_clip = periodic && opt.style == Style::Outline && (opt.page.is_some() || opt.layers.is_some());
+    let layered = opt.layers.is_some() || opt.colour_layers.is_some();
+    let geometric_clip = periodic && opt.style == Style::Outline && (opt.page.is_some() || layered);
     let min_feature = opt.build.min_feature;
     let paint = if opt.style == Style::Filled { "fill" } else { "stroke" };
     for (k, (sh, &band)) in doc.shapes.iter().zip(&bands).enumerate() {

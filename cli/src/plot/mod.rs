@@ -855,13 +855,15 @@ pub fn parse_page(s: &str) -> Result<Page, String> {
     })
 }
 
-/// `--layers`: none, or `size-bands:K`.
+/// `--layers`: none, `size-bands:K` or `colours`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Layers {
     /// One group.
     None,
     /// K Inkscape layers by shape size, largest first.
     SizeBands(u32),
+    /// One Inkscape layer per `--palette` colour (one pen each), in the palette's order.
+    Colours,
 }
 
 /// Parses `--layers`.
@@ -869,9 +871,12 @@ pub fn parse_layers(s: &str) -> Result<Layers, String> {
     if s == "none" {
         return Ok(Layers::None);
     }
+    if s == "colours" || s == "colors" {
+        return Ok(Layers::Colours);
+    }
     match s.strip_prefix("size-bands:").map(str::parse::<u32>) {
         Some(Ok(k)) if (1..=64).contains(&k) => Ok(Layers::SizeBands(k)),
-        _ => Err(format!("'{s}' is not none or size-bands:K with K from 1 to 64")),
+        _ => Err(format!("'{s}' is not none, size-bands:K with K from 1 to 64, or colours")),
     }
 }
 
@@ -952,7 +957,8 @@ pub struct PlotArgs {
     /// Margin in mm: SVG pages (default 10), G-code bed (default 0).
     #[arg(long, value_parser = non_negative, allow_negative_numbers = true, help_heading = "Plotters and lasers")]
     pub margin: Option<f64>,
-    /// SVG: none | size-bands:K (K Inkscape layers by shape size, largest first).
+    /// SVG: none | size-bands:K (K Inkscape layers by shape size, largest first) | colours
+    /// (one layer per --palette colour, a pen each).
     #[arg(long, default_value = "none", value_parser = parse_layers, help_heading = "Plotters and lasers")]
     pub layers: Layers,
 }
@@ -1086,6 +1092,7 @@ impl PlotArgs {
             .and_then(|o| clap::ValueEnum::to_possible_value(&o).map(|v| v.get_name().to_string()));
         let layers = match self.layers {
             Layers::SizeBands(k) => Some(format!("size-bands:{k}")),
+            Layers::Colours => Some("colours".to_string()),
             Layers::None => None,
         };
         // (flag, given, value)
@@ -1248,6 +1255,7 @@ impl PlotArgs {
             ),
             colours: None,
             background: None,
+            colour_layers: None,
         };
         if let Layers::SizeBands(k) = self.layers {
             o.layers = Some(k);
@@ -1436,6 +1444,8 @@ mod tests {
         assert!(parse_page("b5").is_err());
         assert_eq!(parse_layers("size-bands:3"), Ok(Layers::SizeBands(3)));
         assert!(parse_layers("size-bands:0").is_err());
+        assert_eq!(parse_layers("colours"), Ok(Layers::Colours));
+        assert_eq!(parse_layers("colors"), Ok(Layers::Colours));
     }
 
     #[test]

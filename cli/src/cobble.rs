@@ -6,10 +6,10 @@
 
 use crate::doc::FillDoc;
 use crate::error::CliError;
-use crate::output::num;
 use crate::territory::geom::{self, Clip, Dual, Pt};
 use crate::territory::render::{document, polyline_d, region_d, stroke_layer, Frame};
 use spade::{DelaunayTriangulation, Point2, Triangulation};
+use svg::node::element::{ClipPath, Definitions, Group, Path as SvgPath, Polygon};
 
 /// The sites of the diagram: the centres, plus their 8 periodic copies when periodic.
 pub fn sites(doc: &FillDoc) -> Vec<Pt> {
@@ -40,9 +40,48 @@ pub fn polylines(doc: &FillDoc) -> Result<Vec<Vec<Pt>>, CliError> {
     Ok(geom::polylines(&dual, 0..dual.edges.len(), &clip))
 }
 
-/// The cobblestones as SVG (mm, y flipped like the fill's SVG); `outline` adds the region's
-/// outline in its own layer.
-pub fn svg(doc: &FillDoc, pen_width: f64, outline: bool) -> Result<Vec<u8>, CliError> {
+/// How cobblestones are drawn.
+#[derive(Debug, Clone, Default)]
+pub struct Look {
+    /// Fill the cells (`--style filled`) rather than draw their edges.
+    pub filled: bool,
+    /// Stroke width of the edges (mm); with filled cells, the width of the mortar between them.
+    pub pen_width: f64,
+    /// Add the region's outline.
+    pub outline: bool,
+    /// Each shape's colour, for its cell (filled cells only); black without.
+    pub colours: Option<Vec<crate::output::palette::Colour>>,
+    /// A colour behind the drawing; with filled cells, also the mortar's (white without).
+    pub background: Option<crate::output::palette::Colour>,
+    /// The drawing flags, as the command that reproduces the drawing writes them.
+    pub flags: String,
+}
+
+/// Every cell of the diagram: the Voronoi cell of each site cut to the region's box (the tile
+/// when periodic, where the cells of the copies fill in what wraps around), with the index of
+/// the shape whose centre (or copy of it) is the site.
+pub fn cells(doc: &FillDoc) -> Result<Vec<(usize, Vec<Pt>)>, CliError> {
+    let clip = Clip::from_doc(&doc.region);
+    let sites = sites(doc);
+    let pts: Vec<Point2<f64>> = sites.iter().map(|&p| geom::p2(p)).collect();
+    let tri: DelaunayTriangulation<Point2<f64>> =
+        DelaunayTriangulation::bulk_load_stable(pts).map_err(|e| CliError::Io(format!("internal: cannot triangulate the centres: {e}")))?;
+    let n = doc.shapes.len().max(1);
+    if tri.num_vertices() < sites.len() {
+        return Err(CliError::Io("internal: two centres coincide".into()));
+    }
+    Ok((0..sites.len())
+        .map(|v| {
+            let others = geom::neighbours(&tri, v).filter_map(|j| sites.get(j).copied());
+            (v % n, geom::cell(sites[v], others, clip.bbox()))
+        })
+        .filter(|(_, c)| c.len() >= 3)
+        .collect())
+}
+
+/// The cobblestones as SVG (mm, y flipped like the fill's SVG): the edges, or the cells
+/// filled in their shapes' colours with the edges drawn over them as mortar.
+pub fn svg(doc: &FillDoc, look: &Look) -> Result<Vec<u8>, CliError> {
     let clip = Clip::from_doc(&doc.region);
     let f = Frame::of(&clip);
     let lines = polylines(doc)?;
@@ -55,14 +94,37 @@ pub fn svg(doc: &FillDoc, pen_width: f64, outline: bool) -> Result<Vec<u8>, CliE
         p.n_offset,
         p.seed
     );
-    let desc = format!(
-        "{} --voronoi --pen-width {}",
-        crate::output::svg::command_line(doc),
-        num(pen_width, 4)
-    );
-    let mut d = document(&clip, &title, &desc).add(stroke_layer("cobblestones", polyline_d(&f, &lines), pen_width));
-    if outline {
-        d = d.add(stroke_layer("outline", vec![region_d(&f, &clip)], pen_width));
+    let desc = format!("{} --voronoi{}", crate::output::svg::command_line(doc), look.flags);
+    let mut d = document(&clip, &title, &desc);
+    if let Some(bg) = &look.background {
+        let (x0, y0, x1, y1) = clip.bbox();
+        d = d.add(crate::output::palette::background(bg, x1 - x0, y1 - y0));
+    }
+    if look.filled {
+        let mut g = Group::new().set("id", "cells").set("stroke", "none").set("fill", "black");
+        if !clip.is_rect() {
+            let cp = ClipPath::new()
+                .set("id", "region")
+                .add(SvgPath::new().set("d", region_d(&f, &clip)).set("clip-rule", "evenodd"));
+            d = d.add(Definitions::new().add(cp));
+            g = g.set("clip-path", "url(#region)");
+        }
+        for (k, cell) in cells(doc)? {
+            let pts: Vec<String> = cell.iter().map(|&q| f.pt(q)).collect();
+            let mut poly = Polygon::new().set("points", pts.join(" "));
+            if let Some(c) = look.colours.as_ref().and_then(|cs| cs.get(k)) {
+                poly = poly.set("fill", c.as_str());
+            }
+            g = g.add(poly);
+        }
+        d = d.add(g);
+        let mortar = look.background.as_deref().unwrap_or("#ffffff");
+        d = d.add(stroke_layer("cobblestones", polyline_d(&f, &lines), look.pen_width).set("stroke", mortar));
+    } else {
+        d = d.add(stroke_layer("cobblestones", polyline_d(&f, &lines), look.pen_width));
+    }
+    if look.outline {
+        d = d.add(stroke_layer("outline", vec![region_d(&f, &clip)], look.pen_width));
     }
     let mut s = d.to_string();
     s.push('\n');

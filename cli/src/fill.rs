@@ -695,13 +695,7 @@ fn mix_order(m: MixArg) -> MixOrder {
 fn svg_options(doc: &FillDoc, a: &FillArgs) -> Result<output::svg::SvgOptions, CliError> {
     let mut o = a.plot.svg_options(doc, a.style, a.pen_width, a.boundary)?;
     if let Some(p) = &a.colour.palette {
-        // The mix entry of each shape, as the engine chose it.
-        let list = a.shape.list(mix_order(a.mix_order), a.seed);
-        let entry = |i: u64| {
-            let kind = list.kind_of(i);
-            list.kinds().iter().position(|k| *k == kind).unwrap_or(0)
-        };
-        o.colours = Some(output::palette::assign(doc, &p.0, a.colour.by(), entry));
+        o.colours = Some(shape_colours(doc, a, &p.0));
         if a.plot.layers == crate::plot::Layers::Colours {
             o.colour_layers = Some(p.0.clone());
         }
@@ -716,12 +710,45 @@ fn svg_options(doc: &FillDoc, a: &FillArgs) -> Result<output::svg::SvgOptions, C
     Ok(o)
 }
 
+/// Each shape's colour from `palette` by the `--color-by` rule.
+fn shape_colours(doc: &FillDoc, a: &FillArgs, palette: &[output::palette::Colour]) -> Vec<output::palette::Colour> {
+    // The mix entry of each shape, as the engine chose it.
+    let list = a.shape.list(mix_order(a.mix_order), a.seed);
+    let entry = |i: u64| {
+        let kind = list.kind_of(i);
+        list.kinds().iter().position(|k| *k == kind).unwrap_or(0)
+    };
+    output::palette::assign(doc, palette, a.colour.by(), entry)
+}
+
+/// How `--voronoi` draws the cobblestones: edges, or cells filled in their shapes' colours.
+fn cobble_look(doc: &FillDoc, a: &FillArgs) -> crate::cobble::Look {
+    let filled = a.style == output::svg::Style::Filled;
+    let mut flags = format!(" --pen-width {}", output::num(a.pen_width, 4));
+    if filled {
+        flags.push_str(" --style filled");
+    }
+    if a.boundary {
+        flags.push_str(" --boundary");
+    }
+    flags.push_str(&a.colour.flags());
+    crate::cobble::Look {
+        filled,
+        pen_width: a.pen_width,
+        outline: a.boundary,
+        colours: a.colour.palette.as_ref().map(|p| shape_colours(doc, a, &p.0)),
+        background: a.colour.background.clone(),
+        flags,
+    }
+}
+
 /// Renders a document in a format.
 pub fn render(doc: &FillDoc, format: Format, a: &FillArgs) -> Result<Vec<u8>, CliError> {
     if a.voronoi {
+        let look = cobble_look(doc, a);
         return match format {
-            Format::Svg => crate::cobble::svg(doc, a.pen_width, a.boundary),
-            Format::Png => a.raster.render(&crate::cobble::svg(doc, a.pen_width, a.boundary)?),
+            Format::Svg => crate::cobble::svg(doc, &look),
+            Format::Png => a.raster.render(&crate::cobble::svg(doc, &look)?),
             _ => Err(CliError::arg(
                 "--voronoi",
                 "cobblestones are drawn as SVG or PNG; write .svg or .png, or drop --voronoi",
@@ -768,10 +795,16 @@ pub fn run(a: &FillArgs) -> Result<(), CliError> {
     }
     a.raster.check(format == Format::Png)?;
     a.colour.check(
-        matches!(format, Format::Svg | Format::Png) && a.relief.is_none() && !a.voronoi,
-        "write .svg or .png, without --relief or --voronoi",
+        matches!(format, Format::Svg | Format::Png) && a.relief.is_none(),
+        "write .svg or .png, without --relief",
         false,
     )?;
+    if a.voronoi && a.colour.palette.is_some() && a.style != output::svg::Style::Filled {
+        return Err(CliError::arg(
+            "--palette",
+            "cobblestone outlines are edges, each shared by two cells; add --style filled to colour the cells",
+        ));
+    }
     if a.relief.is_some() {
         if a.voronoi {
             return Err(CliError::arg(

@@ -338,3 +338,83 @@ fn line_colours_are_refused_where_nothing_shows_them() {
         assert_eq!(read(&d.join("keep.json")), b"precious", "{args:?} touched the file");
     }
 }
+
+/// Filled cobblestones (`--voronoi --style filled`) take their shapes' colours: every cell,
+/// those of the periodic copies that fill in what wraps around included, is found as the
+/// cell of the nearest centre (or copy) to a point inside it.
+#[test]
+fn cobblestone_cells_take_their_shapes_colour() {
+    let dir = tmp();
+    let d = dir.path();
+    let list = PALETTE.join(",");
+    for (region, periodic, by) in [("rect:120:120", true, "random"), ("circle:60", false, "size")] {
+        let mut args = vec![
+            "--count",
+            "300",
+            "--c",
+            "1.2",
+            "--n-offset",
+            "2",
+            "--seed",
+            "4",
+            "--region",
+            region,
+            "-q",
+        ];
+        if periodic {
+            args.push("--periodic");
+        }
+        let doc = fill_json(d, &args);
+        let colour = [
+            "--voronoi",
+            "--style",
+            "filled",
+            "--palette",
+            &list,
+            "--color-by",
+            by,
+            "--background",
+            "fefae0",
+        ];
+        let svg = fill_to(d, "v.svg", &[&args[..], &colour].concat());
+        let paths = painted(&svg, false);
+        assert_eq!(paths[0].colour, "#fefae0", "{region}: the background first");
+        let cells: Vec<&Painted> = paths[1..].iter().filter(|p| p.colour.starts_with('#')).collect();
+        let want = expected(&doc, by);
+        let centres: Vec<[f64; 2]> = shapes(&doc).iter().map(|s| pt(&s["center"])).collect();
+        let shifts = period_shifts(periodic, 120.0, 120.0);
+        let owner = |q: [f64; 2]| {
+            let dist = |c: &[f64; 2]| {
+                shifts
+                    .iter()
+                    .map(|(dx, dy)| (q[0] - c[0] - dx).hypot(q[1] - c[1] - dy))
+                    .fold(f64::INFINITY, f64::min)
+            };
+            (0..centres.len())
+                .min_by(|&a, &b| dist(&centres[a]).total_cmp(&dist(&centres[b])))
+                .unwrap_or(0)
+        };
+        let faults = |shift: usize| {
+            cells
+                .iter()
+                .filter(|p| {
+                    let k = owner([p.inside[0], 120.0 - p.inside[1]]);
+                    let i = PALETTE.iter().position(|c| *c == want[k]).unwrap_or(0);
+                    p.colour != PALETTE[(i + shift) % PALETTE.len()]
+                })
+                .count()
+        };
+        assert!(
+            cells.len() >= centres.len(),
+            "{region}: {} cells for {} shapes",
+            cells.len(),
+            centres.len()
+        );
+        assert_eq!(faults(0), 0, "{region} {by}: cells in the wrong colour");
+        assert_eq!(faults(1), cells.len(), "{region}: the check misses colours shifted by one");
+    }
+    // Outlines are shared edges: they cannot take a cell's colour.
+    let o = zf(d, &["fill", "--count", "50", "--voronoi", "--palette", "000,fff", "-o", "o.svg"]);
+    assert_eq!(o.code, 2);
+    assert!(names_flag(&o.stderr, "--palette"), "{}", o.stderr);
+}

@@ -49,7 +49,7 @@ fn reproduces(dir: &Path, args: &[&str], out: &str, command_of: fn(&str) -> Opti
     first == rerun(dir, &command, &again)
 }
 
-const RUNS: [&[&str]; 7] = [
+const RUNS: [&[&str]; 8] = [
     &["fill", "--count", "300", "--sampler", "reference", "--seed", "3"],
     &["fill", "--count", "200", "--scalar", "fixed", "--shape", "square"],
     &["fill", "--count", "200", "--shape", "mix:circle,triangle", "--mix-order", "random"],
@@ -86,6 +86,22 @@ const RUNS: [&[&str]; 7] = [
         "filled",
         "--palette",
         "264653,e9c46a,e76f51",
+        "--background",
+        "fefae0",
+    ],
+    &[
+        "fill",
+        "--count",
+        "200",
+        "--periodic",
+        "--voronoi",
+        "--style",
+        "filled",
+        "--boundary",
+        "--palette",
+        "264653,e9c46a",
+        "--color-by",
+        "cycle",
         "--background",
         "fefae0",
     ],

@@ -700,14 +700,18 @@ fn svg_options(doc: &FillDoc, a: &FillArgs) -> Result<output::svg::SvgOptions, C
             o.colour_layers = Some(p.0.clone());
         }
     } else if a.plot.layers == crate::plot::Layers::Colours {
-        return Err(CliError::arg(
-            "--layers",
-            "colours makes one layer per --palette colour: give --palette, or use size-bands:K",
-        ));
+        return Err(colours_need_palette());
     }
     o.flags.push_str(&a.colour.flags());
     o.background.clone_from(&a.colour.background);
     Ok(o)
+}
+
+fn colours_need_palette() -> CliError {
+    CliError::arg(
+        "--layers",
+        "colours makes one layer (one pen) per --palette colour: give --palette, or use size-bands:K",
+    )
 }
 
 /// Each shape's colour from `palette` by the `--color-by` rule.
@@ -757,7 +761,14 @@ pub fn render(doc: &FillDoc, format: Format, a: &FillArgs) -> Result<Vec<u8>, Cl
     }
     Ok(match format {
         Format::Svg => output::svg::render(doc, &svg_options(doc, a)?),
-        Format::Gcode => crate::plot::render_gcode(doc, &a.plot, a.quiet)?,
+        Format::Gcode => match (&a.colour.palette, a.plot.layers) {
+            (Some(p), crate::plot::Layers::Colours) => {
+                let colours = shape_colours(doc, a, &p.0);
+                crate::plot::render_gcode_pens(doc, &a.plot, Some((&colours, &p.0, a.colour.flags())), a.quiet)?
+            }
+            (None, crate::plot::Layers::Colours) => return Err(colours_need_palette()),
+            _ => crate::plot::render_gcode(doc, &a.plot, a.quiet)?,
+        },
         Format::Json => output::json::render(doc)?,
         Format::Csv => output::csv::render(doc),
         Format::Digest => output::digest::render(doc),
@@ -794,11 +805,16 @@ pub fn run(a: &FillArgs) -> Result<(), CliError> {
         return Err(crate::output::png::only_png("--relief"));
     }
     a.raster.check(format == Format::Png)?;
+    // A palette also picks the pens of a G-code plot with --layers colours.
+    let pens = format == Format::Gcode && a.plot.layers == crate::plot::Layers::Colours && a.colour.background.is_none();
     a.colour.check(
-        matches!(format, Format::Svg | Format::Png) && a.relief.is_none(),
-        "write .svg or .png, without --relief",
+        (matches!(format, Format::Svg | Format::Png) && a.relief.is_none()) || pens,
+        "write .svg or .png, without --relief (or G-code with --layers colours, without --background)",
         false,
     )?;
+    if a.plot.layers == crate::plot::Layers::Colours && a.colour.palette.is_none() {
+        return Err(colours_need_palette());
+    }
     if a.voronoi && a.colour.palette.is_some() && a.style != output::svg::Style::Filled {
         return Err(CliError::arg(
             "--palette",

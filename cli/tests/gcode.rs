@@ -119,6 +119,8 @@ struct Replay {
     bounds: [f64; 4],
     /// Every position reached with the tool on, arc extremes included.
     drawn: [f64; 4],
+    /// At each program pause (`M0`, `M1`: a pen change), the number of cutting segments so far.
+    pauses: Vec<usize>,
 }
 
 /// A plain decimal: `-?\d+(\.\d+)?` with exactly `decimals` decimals when given.
@@ -246,6 +248,12 @@ fn replay(text: &str, p: &Profile) -> Replay {
                     }
                 }
                 ('M', 5) | ('M', 2) | ('M', 30) => spindle = false,
+                ('M', 0) | ('M', 1) => {
+                    if tool_on(spindle, s_word, z, servo_s) {
+                        r.errors.push(format!("line {line}: a pause with the tool on"));
+                    }
+                    r.pauses.push(r.segments.len());
+                }
                 _ => {}
             }
         }
@@ -434,6 +442,14 @@ fn checkers_fail_on_broken_programs() {
     };
     let pen = "G90\nM3 S30\nG0 X10.000 Y10.000\nM3 S90\nG1 X20.000 Y10.000 F1000\nM3 S30\nG0 X0.000 Y0.000\nM2\n";
     assert!(replay(pen, &servo).errors.is_empty());
+    // A pen change (M0) is safe only with the pen up.
+    assert!(replay(&pen.replace("G0 X0.000 Y0.000", "G0 X0.000 Y0.000\nM0"), &servo)
+        .errors
+        .is_empty());
+    assert!(replay(&pen.replace("M3 S90\n", "M3 S90\nM0\n"), &servo)
+        .errors
+        .iter()
+        .any(|e| e.contains("a pause with the tool on")));
     assert!(replay(&pen.replace("M3 S30\nG0 X0.000", "G0 X0.000"), &servo)
         .errors
         .iter()
@@ -1098,4 +1114,65 @@ fn tile_gcode_replays_safely() {
     let o = zf(d, &["tile", "--machine", "grbl-laser", "-o", "m.svg"]);
     assert_eq!(o.code, 2);
     assert!(names_flag(&o.stderr, "--machine") && !d.join("m.svg").exists(), "{}", o.stderr);
+}
+
+/// `--layers colours`: the shapes of each palette colour drawn as one pen, in the palette's
+/// order, with a pause (pen up, parked) between pens; every stroke between two pauses lies on
+/// a circle of that pen's colour (worked out from the JSON by the README's random rule).
+#[test]
+fn colours_are_drawn_one_pen_after_another() {
+    let dir = tmp();
+    let d = dir.path();
+    let palette = ["#1d3557", "#e63946", "#2a9d8f"];
+    let base = ["--region", "rect:150:150", "--count", "300", "--seed", "11"];
+    let doc = fill_json(d, &base);
+    let seed = u(&doc["params"], "seed");
+    let circles: Vec<([f64; 2], f64, usize)> = shapes(&doc)
+        .iter()
+        .map(|s| {
+            let pen = (splitmix64(seed ^ splitmix64(u(s, "index"))) % 3) as usize;
+            (pt(&s["center"]), f(s, "radius"), pen)
+        })
+        .collect();
+    let list = palette.map(|c| c.trim_start_matches('#')).join(",");
+    let colour = ["--palette", &list, "--color-by", "random", "--layers", "colours"];
+    for machine in ["grbl-servo-pen", "z-lift-pen"] {
+        let (prof, _) = builtin_profile(d, machine);
+        let (text, _) = gcode_to(d, "pens.gcode", &[&base[..], &colour, &["--machine", machine]].concat());
+        let r = assert_safe(&text, &prof, machine);
+        assert_eq!(r.pauses.len(), 2, "{machine}: two pen changes for three pens");
+        for (k, c) in palette.iter().enumerate() {
+            assert!(text.contains(&format!("; pen {} of 3: {c}\n", k + 1)), "{machine}: pen {c} named");
+        }
+        // The pen each stroke belongs to, shifted by `shift` pens.
+        let faults = |shift: usize| {
+            let mut bad = 0;
+            for (i, s) in r.segments.iter().enumerate() {
+                let pen = (r.pauses.iter().filter(|&&p| p <= i).count() + shift) % 3;
+                let on = |q: [f64; 2], c: &([f64; 2], f64, usize)| ((q[0] - c.0[0]).hypot(q[1] - c.0[1]) - c.1).abs() < 1e-3;
+                if !circles.iter().any(|c| c.2 == pen && on(s[0], c) && on(s[1], c)) {
+                    bad += 1;
+                }
+            }
+            bad
+        };
+        assert_eq!(faults(0), 0, "{machine}: strokes drawn with another pen");
+        assert_eq!(faults(1), r.segments.len(), "{machine}: the check misses a pen shifted by one");
+        let per_pen: Vec<usize> = (0..3).map(|k| circles.iter().filter(|c| c.2 == k).count()).collect();
+        assert_eq!(r.pauses, [per_pen[0], per_pen[0] + per_pen[1]], "{machine}: one stroke per circle");
+    }
+    // Size bands are SVG layers; colours need a palette; a background is not drawn.
+    for (args, flag) in [
+        (&["--layers", "size-bands:2"][..], "--layers"),
+        (&["--layers", "colours"][..], "--layers"),
+        (
+            &["--layers", "colours", "--palette", "000,fff", "--background", "fff"][..],
+            "--background",
+        ),
+    ] {
+        let o = zf(d, &[&["fill", "--count", "20"][..], args, &["-o", "x.gcode"]].concat());
+        assert_eq!(o.code, 2, "{args:?}: {}", o.stderr);
+        assert!(names_flag(&o.stderr, flag), "{args:?}: {}", o.stderr);
+        assert!(!d.join("x.gcode").exists());
+    }
 }

@@ -180,6 +180,17 @@ fn the_gcode_header_command_writes_the_same_file() {
             "--chord-tolerance",
             "0.05",
         ],
+        &[
+            "fill",
+            "--count",
+            "200",
+            "--palette",
+            "1d3557,e63946",
+            "--color-by",
+            "cycle",
+            "--layers",
+            "colours",
+        ],
     ] {
         assert!(
             reproduces(dir.path(), args, "a.gcode", gcode_command),

@@ -187,6 +187,23 @@ impl Writer<'_> {
         ((a[0] - b[0]) as f64).hypot((a[1] - b[1]) as f64) / self.k
     }
 
+    /// Rapid to the profile's park position, if it has one and the head is elsewhere.
+    fn park(&mut self) {
+        if let Some(park) = self.m.park {
+            let q = [
+                ((park[0] * self.k).round() as i64).clamp(self.lo[0], self.hi[0]),
+                ((park[1] * self.k).round() as i64).clamp(self.lo[1], self.hi[1]),
+            ];
+            if self.pos != Some(q) {
+                let from = self.pos.unwrap_or([0, 0]);
+                self.fig.travel_mm += self.grid_mm(from, q);
+                let s = format!("G0 {}", self.xy(q));
+                self.line(&s);
+                self.pos = Some(q);
+            }
+        }
+    }
+
     fn tool(&mut self, on: bool) {
         if on == self.tool_on {
             return;
@@ -379,6 +396,18 @@ fn comment(out: &mut String, s: &str) {
 /// Writes `d` (bed frame, mm) for machine `m`. Refuses a drawing that does not lie inside the
 /// bed less the margin, and options outside the profile's ranges.
 pub fn write(d: &Drawing, m: &Machine, o: &GcodeOptions) -> Result<GcodeOutput, String> {
+    write_pens(std::slice::from_ref(&(String::new(), d.clone())), m, o)
+}
+
+/// [`write`] for a drawing in several pens, drawn one after the other, each named (its
+/// colour) in a comment: between two pens the tool goes off, the head parks (if the profile
+/// has a park) and the profile's `pen_change` block is written (`M0` by default: the machine
+/// waits while the operator swaps the pen). Pens with nothing to draw are left out.
+pub fn write_pens(pens: &[(String, Drawing)], m: &Machine, o: &GcodeOptions) -> Result<GcodeOutput, String> {
+    let all = Drawing {
+        paths: pens.iter().flat_map(|(_, d)| d.paths.iter().cloned()).collect(),
+    };
+    let d = &all;
     m.validate()?;
     check_options(m, o)?;
     let area = m.usable_area(o.margin);
@@ -392,7 +421,6 @@ pub fn write(d: &Drawing, m: &Machine, o: &GcodeOptions) -> Result<GcodeOutput, 
     if d.paths.iter().any(|p| !path_finite(p)) {
         return Err("the drawing has a non-finite coordinate".into());
     }
-    let paths = order(&d.paths, m.home_in_bed(), o.order);
     let dec = m.units.decimals();
     let k = m.units.per_mm() * 10f64.powi(dec as i32);
     let mb = m.machine_bounds_mm();
@@ -425,24 +453,28 @@ pub fn write(d: &Drawing, m: &Machine, o: &GcodeOptions) -> Result<GcodeOutput, 
     w.tool_on = true;
     w.tool(false);
     w.fig.tool_ons = 0;
-    for _ in 0..o.passes {
-        for p in &paths {
-            w.path(p);
+    let used: Vec<&(String, Drawing)> = pens.iter().filter(|(_, d)| !d.paths.is_empty()).collect();
+    for (i, (name, pen)) in used.iter().enumerate() {
+        if used.len() > 1 {
+            if i > 0 {
+                w.tool(false);
+                w.park();
+            }
+            let s = format!("; pen {} of {}: {name}", i + 1, used.len());
+            w.line(&s);
+            if i > 0 {
+                w.block(&m.pen_change);
+            }
+        }
+        let paths = order(&pen.paths, m.home_in_bed(), o.order);
+        for _ in 0..o.passes {
+            for p in &paths {
+                w.path(p);
+            }
         }
     }
     w.tool(false);
-    if let Some(park) = m.park {
-        let q = [
-            ((park[0] * k).round() as i64).clamp(lo[0], hi[0]),
-            ((park[1] * k).round() as i64).clamp(lo[1], hi[1]),
-        ];
-        if w.pos != Some(q) {
-            let from = w.pos.unwrap_or([0, 0]);
-            w.fig.travel_mm += w.grid_mm(from, q);
-            let s = format!("G0 {}", w.xy(q));
-            w.line(&s);
-        }
-    }
+    w.park();
     w.block(&m.end);
     let dwell = Machine::dwell_seconds(&m.tool_on) + Machine::dwell_seconds(&m.tool_off);
     let mut fig = w.fig;

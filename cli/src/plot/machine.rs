@@ -126,6 +126,10 @@ pub struct Machine {
     pub tool_on: String,
     /// Lines that lift the pen or turn the laser off.
     pub tool_off: String,
+    /// Lines written where one pen is swapped for the next (`--layers colours`), with the
+    /// tool off and the head parked: by default `M0`, a pause until the operator resumes.
+    #[serde(default = "default_pen_change")]
+    pub pen_change: String,
     /// Lines written once at the end.
     pub end: String,
     /// The bed.
@@ -135,6 +139,10 @@ pub struct Machine {
     /// Laser power range (lasers only).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub power: Option<Power>,
+}
+
+fn default_pen_change() -> String {
+    "M0\n".to_string()
 }
 
 /// Placeholders a block may hold.
@@ -223,6 +231,7 @@ impl Machine {
             ("start", &self.start),
             ("tool_on", &self.tool_on),
             ("tool_off", &self.tool_off),
+            ("pen_change", &self.pen_change),
             ("end", &self.end),
         ] {
             check_block(field, text, self.power.is_some())?;

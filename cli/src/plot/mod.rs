@@ -1039,10 +1039,10 @@ impl PlotArgs {
         if self.page.is_some() {
             return Err(CliError::arg("--page", "pages are for SVG; G-code uses the machine's bed"));
         }
-        if self.layers != Layers::None {
+        if let Layers::SizeBands(_) = self.layers {
             return Err(CliError::arg(
                 "--layers",
-                "layers are for SVG (one pen per layer); G-code draws one layer",
+                "size bands are SVG layers (one pen per layer); in G-code, --layers colours draws one pen after another",
             ));
         }
         Ok(())
@@ -1297,10 +1297,41 @@ impl PlotArgs {
 /// `--format gcode` of a fill: its drawing (outlines, hatching) placed on the bed by the
 /// region's box.
 pub fn render_gcode(doc: &FillDoc, a: &PlotArgs, quiet: bool) -> Result<Vec<u8>, CliError> {
-    let drawing = from_fill(doc, &a.build_options()?);
+    render_gcode_pens(doc, a, None, quiet)
+}
+
+/// [`render_gcode`], with `pens` (each shape's colour, the palette, and the colour flags for
+/// the header): the shapes of each palette colour drawn as one pen, in the palette's order.
+pub fn render_gcode_pens(
+    doc: &FillDoc,
+    a: &PlotArgs,
+    pens: Option<(&[crate::output::palette::Colour], &[crate::output::palette::Colour], String)>,
+    quiet: bool,
+) -> Result<Vec<u8>, CliError> {
+    let build = a.build_options()?;
     let (x0, y0, x1, y1) = doc.bbox();
-    let header = vec![format!("{}{}", crate::output::svg::command_line(doc), a.flags())];
-    drawing_gcode(&drawing, &Bounds { x0, y0, x1, y1 }, a, header, quiet)
+    let mut header = format!("{}{}", crate::output::svg::command_line(doc), a.flags());
+    let layers: Vec<(String, Drawing)> = match pens {
+        None => vec![(String::new(), from_fill(doc, &build))],
+        Some((colours, palette, flags)) => {
+            header.push_str(&flags);
+            palette
+                .iter()
+                .map(|c| {
+                    let mut part = doc.clone();
+                    part.shapes = doc
+                        .shapes
+                        .iter()
+                        .zip(colours)
+                        .filter(|(_, k)| *k == c)
+                        .map(|(s, _)| s.clone())
+                        .collect();
+                    (c.clone(), from_fill(&part, &build))
+                })
+                .collect()
+        }
+    };
+    pens_gcode(&layers, &Bounds { x0, y0, x1, y1 }, a, vec![header], quiet)
 }
 
 /// G-code of any drawing with the plotter flags of `a` (machine, feeds, power, passes, arcs,
@@ -1309,6 +1340,12 @@ pub fn render_gcode(doc: &FillDoc, a: &PlotArgs, quiet: bool) -> Result<Vec<u8>,
 /// drawing was made (command line, parameters, seed). The figures go to stderr unless
 /// `quiet`. This is the entry point for other modes (`line`, `territory`, ...).
 pub fn drawing_gcode(drawing: &Drawing, frame: &Bounds, a: &PlotArgs, header: Vec<String>, quiet: bool) -> Result<Vec<u8>, CliError> {
+    pens_gcode(&[(String::new(), drawing.clone())], frame, a, header, quiet)
+}
+
+/// [`drawing_gcode`] for a drawing in several named pens, drawn one after the other with a
+/// pen change between them (see [`gcode::write_pens`]), all placed on the bed as one.
+pub fn pens_gcode(pens: &[(String, Drawing)], frame: &Bounds, a: &PlotArgs, header: Vec<String>, quiet: bool) -> Result<Vec<u8>, CliError> {
     let m = a.machine()?;
     let mut opts = a.gcode_options(&m)?;
     let area = m.usable_area(opts.margin);
@@ -1321,7 +1358,7 @@ pub fn drawing_gcode(drawing: &Drawing, frame: &Bounds, a: &PlotArgs, header: Ve
             ),
         )
     })?;
-    let drawing = drawing.placed(&pl);
+    let pens: Vec<(String, Drawing)> = pens.iter().map(|(n, d)| (n.clone(), d.placed(&pl))).collect();
     opts.header = header;
     opts.header.push(format!(
         "plot: machine {} order {:?} passes {} hatch {} min-feature {} scale {} shift {} {}",
@@ -1337,7 +1374,7 @@ pub fn drawing_gcode(drawing: &Drawing, frame: &Bounds, a: &PlotArgs, header: Ve
         pl.dx,
         pl.dy
     ));
-    let out = gcode::write(&drawing, &m, &opts).map_err(|e| CliError::arg("--machine", e))?;
+    let out = gcode::write_pens(&pens, &m, &opts).map_err(|e| CliError::arg("--machine", e))?;
     if !quiet {
         eprintln!("{}", out.figures);
     }

@@ -399,7 +399,7 @@ pub fn write(d: &Drawing, m: &Machine, o: &GcodeOptions) -> Result<GcodeOutput, 
     write_pens(std::slice::from_ref(&(String::new(), d.clone())), m, o)
 }
 
-/// [`write`] for a drawing in several pens, drawn one after the other, each named (its
+/// [`write`](fn@write) for a drawing in several pens, drawn one after the other, each named (its
 /// colour) in a comment: between two pens the tool goes off, the head parks (if the profile
 /// has a park) and the profile's `pen_change` block is written (`M0` by default: the machine
 /// waits while the operator swaps the pen). Pens with nothing to draw are left out.

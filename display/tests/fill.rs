@@ -4,7 +4,8 @@
 //! ST7735 TFT's) and on the 128 x 64 monochrome frame, compared pixel by pixel with an
 //! independent judgement of each pixel centre against every placed shape and its periodic
 //! images. The comparison is shown to fail on a shape moved by one pixel and on a wrong
-//! colour.
+//! colour. A property test fills wild shapes (not a number, huge, inside out) without a
+//! panic.
 
 use embedded_graphics::framebuffer::{buffer_size, Framebuffer};
 use embedded_graphics::geometry::Point as Px;
@@ -190,5 +191,45 @@ fn the_monochrome_frame_is_filled_the_same_way() {
         let on = |i: i32, j: i32| (frame.pixel(Px::new(i, j)) == Some(BinaryColor::On)).then_some(0);
         let bad = faults(&region, &geos, (128, 64), [0.0, 0.0], |_| 0, on);
         assert!(bad.is_empty(), "{name}: {} pixels wrong, first {:?}", bad.len(), bad.first());
+    }
+}
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig {
+        cases: 256,
+        failure_persistence: None,
+        rng_seed: proptest::test_runner::RngSeed::Fixed(0xf111),
+        ..proptest::prelude::ProptestConfig::default()
+    })]
+
+    /// Any shape, however wild (huge, inside out, not a number, off the display), is filled
+    /// without a panic, on a colour and a monochrome display, in a rectangle and on a torus.
+    #[test]
+    fn any_shape_fills_without_a_panic(
+        kind in 0u8..3,
+        c in proptest::array::uniform2(proptest::prop_oneof![proptest::num::f64::ANY, -1e3f64..1e3]),
+        r in proptest::prop_oneof![proptest::num::f64::ANY, 0.0f64..500.0],
+        inner in proptest::prop_oneof![proptest::num::f64::ANY, 0.0f64..500.0],
+        vs in proptest::collection::vec(proptest::array::uniform2(proptest::prop_oneof![proptest::num::f64::ANY, -1e4f64..1e4]), 3..=32),
+        periodic in proptest::bool::ANY,
+    ) {
+        use zetafill::Point;
+        let p = |q: [f64; 2]| Point::new(q[0], q[1]);
+        let g = match kind {
+            0 => Geo::Circle { c: p(c), r },
+            1 => Geo::Ring { c: p(c), r, inner },
+            _ => {
+                let mut v = [Point::new(0.0, 0.0); zetafill::geom::MAX_VERTS];
+                for (slot, q) in v.iter_mut().zip(&vs) {
+                    *slot = p(*q);
+                }
+                Geo::Poly { v, n: vs.len(), convex: false }
+            }
+        };
+        let region = Region::Rect { width: 120.0, height: 80.0, periodic };
+        let mut tft = Tft::new();
+        View::new(&region, TFT_W as u32, TFT_H as u32).fill(&g, Rgb565::WHITE, &mut tft).unwrap_or_else(|e| match e {});
+        let mut frame = Frame::new();
+        View::new(&region, 128, 64).fill(&g, BinaryColor::On, &mut frame).unwrap_or_else(|e| match e {});
     }
 }

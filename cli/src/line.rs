@@ -410,6 +410,49 @@ pub struct LineSvgOptions {
     pub background: Option<crate::output::palette::Colour>,
     /// The colour flags, as a command that reproduces the drawing writes them.
     pub colour_flags: String,
+    /// `Some(palette)`: the segments in one Inkscape layer per palette colour, in its order
+    /// (`--layers colours`).
+    pub colour_layers: Option<Vec<crate::output::palette::Colour>>,
+}
+
+/// The segments' group, or one Inkscape layer per palette colour, each segment in the layer
+/// of its colour.
+struct Layered {
+    groups: Vec<Group>,
+    /// Each segment's layer.
+    of: Vec<usize>,
+}
+
+impl Layered {
+    fn new(base: Group, opt: &LineSvgOptions, n: usize) -> Layered {
+        match (&opt.colour_layers, &opt.colours) {
+            (Some(palette), Some(colours)) => Layered {
+                groups: palette
+                    .iter()
+                    .enumerate()
+                    .map(|(i, c)| {
+                        base.clone()
+                            .set("id", format!("layer{}", i + 1))
+                            .set("inkscape:groupmode", "layer")
+                            .set("inkscape:label", format!("{} {c}", i + 1))
+                    })
+                    .collect(),
+                of: colours.iter().map(|c| palette.iter().position(|p| p == c).unwrap_or(0)).collect(),
+            },
+            _ => Layered {
+                groups: vec![base],
+                of: vec![0; n],
+            },
+        }
+    }
+
+    /// Adds segment `k`'s element to its layer.
+    fn add(&mut self, k: usize, node: impl Into<Box<dyn svg::Node>>) {
+        let i = self.of.get(k).copied().unwrap_or(0);
+        if let Some(g) = self.groups.get_mut(i) {
+            *g = std::mem::take(g).add(node);
+        }
+    }
 }
 
 /// The pieces `[a, b]` of a segment inside `[0, L]`: itself, or, when it wraps past L in a
@@ -529,7 +572,7 @@ pub fn render_svg(doc: &LineDoc, opt: &LineSvgOptions) -> Vec<u8> {
         Render::Dashes => {
             height = (4.0 * opt.pen_width).max(2.0);
             let y = height / 2.0;
-            let mut g = stroke_group("segments", opt.pen_width);
+            let mut g = Layered::new(stroke_group("segments", opt.pen_width), opt, doc.shapes.len());
             for (k, s) in doc.shapes.iter().enumerate() {
                 for (a, b) in pieces(s, l, periodic) {
                     if b - a >= INVISIBLE {
@@ -538,15 +581,16 @@ pub fn render_svg(doc: &LineDoc, opt: &LineSvgOptions) -> Vec<u8> {
                             .set("y1", num(y, P))
                             .set("x2", num(b, P))
                             .set("y2", num(y, P));
-                        g = g.add(paint(line, opt, k, "stroke"));
+                        g.add(k, paint(line, opt, k, "stroke"));
                     }
                 }
             }
-            body.push(g);
+            body.extend(g.groups);
         }
         Render::Bars => {
             height = opt.bar_height;
-            let mut g = Group::new().set("id", "segments").set("fill", "black").set("stroke", "none");
+            let base = Group::new().set("id", "segments").set("fill", "black").set("stroke", "none");
+            let mut g = Layered::new(base, opt, doc.shapes.len());
             for (k, s) in doc.shapes.iter().enumerate() {
                 for (a, b) in pieces(s, l, periodic) {
                     if b - a >= INVISIBLE {
@@ -555,35 +599,36 @@ pub fn render_svg(doc: &LineDoc, opt: &LineSvgOptions) -> Vec<u8> {
                             .set("y", 0)
                             .set("width", num(b - a, P))
                             .set("height", num(opt.bar_height, P));
-                        g = g.add(paint(bar, opt, k, "fill"));
+                        g.add(k, paint(bar, opt, k, "fill"));
                     }
                 }
             }
-            body.push(g);
+            body.extend(g.groups);
         }
         Render::Circles => {
             height = d0;
-            let mut g = circle_group("segments", opt);
-            for (k, s) in doc.shapes.iter().enumerate() {
-                let r = s.length / 2.0;
-                if r < INVISIBLE {
-                    continue;
-                }
-                let mid = s.start + r;
-                g = g.add(paint(circle(mid, height / 2.0, r), opt, k, circle_paint));
-                if periodic && s.start + s.length > l {
-                    g = g.add(paint(circle(mid - l, height / 2.0, r), opt, k, circle_paint));
-                }
-            }
+            let mut base = circle_group("segments", opt);
             if periodic {
                 defs = defs.add(
                     ClipPath::new()
                         .set("id", "interval")
                         .add(Rectangle::new().set("width", num(l, P)).set("height", num(height, P))),
                 );
-                g = g.set("clip-path", "url(#interval)");
+                base = base.set("clip-path", "url(#interval)");
             }
-            body.push(g);
+            let mut g = Layered::new(base, opt, doc.shapes.len());
+            for (k, s) in doc.shapes.iter().enumerate() {
+                let r = s.length / 2.0;
+                if r < INVISIBLE {
+                    continue;
+                }
+                let mid = s.start + r;
+                g.add(k, paint(circle(mid, height / 2.0, r), opt, k, circle_paint));
+                if periodic && s.start + s.length > l {
+                    g.add(k, paint(circle(mid - l, height / 2.0, r), opt, k, circle_paint));
+                }
+            }
+            body.extend(g.groups);
         }
         Render::Zoom => {
             let row_h = d0;
@@ -656,7 +701,13 @@ pub fn render_svg(doc: &LineDoc, opt: &LineSvgOptions) -> Vec<u8> {
             p.n_offset,
             p.seed
         ))))
-        .add(Description::new().add(Text::new(format!("{}{}", command_line(doc), drawing_flags(opt)))));
+        .add(Description::new().add(Text::new(format!(
+            "{}{}{}",
+            command_line(doc),
+            drawing_flags(opt),
+            // The G-code's header has it among the plot flags.
+            if opt.colour_layers.is_some() { " --layers colours" } else { "" }
+        ))));
     if let Some(bg) = &opt.background {
         d = d.add(crate::output::palette::background(bg.as_str(), l, height));
     }
@@ -732,11 +783,26 @@ pub fn drawing(
     opt: &LineSvgOptions,
     build: &crate::plot::BuildOptions,
 ) -> Result<(crate::plot::Drawing, crate::plot::Bounds), CliError> {
+    drawing_of(doc, opt, build, &|_| true)
+}
+
+/// [`drawing`] of the segments `keep` accepts (by index), laid out as in the whole drawing.
+fn drawing_of(
+    doc: &LineDoc,
+    opt: &LineSvgOptions,
+    build: &crate::plot::BuildOptions,
+    keep: &dyn Fn(usize) -> bool,
+) -> Result<(crate::plot::Drawing, crate::plot::Bounds), CliError> {
     use crate::plot::{Bounds, Drawing, Path};
     let l = doc.region.length;
     let periodic = doc.region.periodic;
     let d0 = doc.shapes.first().map_or(l / 10.0, |s| s.length);
-    let kept = doc.shapes.iter().filter(|s| s.length >= build.min_feature);
+    let kept = doc
+        .shapes
+        .iter()
+        .enumerate()
+        .filter(|&(k, s)| keep(k) && s.length >= build.min_feature)
+        .map(|(_, s)| s);
     let outline = !build.no_outline;
     let mut paths = Vec::new();
     let mut hatch = |lines: Vec<[crate::plot::Pt; 2]>| paths.extend(lines.into_iter().map(|[a, b]| Path::polyline(vec![a, b], false)));
@@ -809,9 +875,21 @@ pub fn drawing(
 }
 
 fn render_gcode(doc: &LineDoc, opt: &LineSvgOptions, a: &LineArgs) -> Result<Vec<u8>, CliError> {
-    let (d, frame) = drawing(doc, opt, &a.plot.build_options()?)?;
+    let build = a.plot.build_options()?;
+    let (d, frame) = drawing(doc, opt, &build)?;
     let header = vec![format!("{}{}{}", command_line(doc), drawing_flags(opt), a.plot.flags())];
-    crate::plot::drawing_gcode(&d, &frame, &a.plot, header, a.quiet)
+    match (&opt.colour_layers, &opt.colours) {
+        // One pen per palette colour, each drawing its segments, placed as the whole.
+        (Some(palette), Some(colours)) => {
+            let mut pens = Vec::new();
+            for c in palette {
+                let (pen, _) = drawing_of(doc, opt, &build, &|k| colours.get(k) == Some(c))?;
+                pens.push((c.clone(), pen));
+            }
+            crate::plot::pens_gcode(&pens, &frame, &a.plot, header, a.quiet)
+        }
+        _ => crate::plot::drawing_gcode(&d, &frame, &a.plot, header, a.quiet),
+    }
 }
 
 /// Renders a document in a format.
@@ -831,6 +909,10 @@ pub fn render(doc: &LineDoc, format: Format, a: &LineArgs) -> Result<Vec<u8>, Cl
         }),
         background: a.colour.background.clone(),
         colour_flags: a.colour.flags(),
+        colour_layers: match (&a.colour.palette, a.plot.layers) {
+            (Some(p), crate::plot::Layers::Colours) => Some(p.0.clone()),
+            _ => None,
+        },
     };
     Ok(match format {
         Format::Svg => render_svg(doc, &opt),
@@ -855,14 +937,28 @@ pub fn render(doc: &LineDoc, format: Format, a: &LineArgs) -> Result<Vec<u8>, Cl
 fn check_plot(a: &LineArgs, format: Format) -> Result<(), CliError> {
     let p = &a.plot;
     p.build_options()?;
-    if p.page.is_some() || p.layers != crate::plot::Layers::None {
+    if p.page.is_some() || matches!(p.layers, crate::plot::Layers::SizeBands(_)) {
         return Err(CliError::arg(
             if p.page.is_some() { "--page" } else { "--layers" },
-            "is not available for line in any format: its SVG is the interval at full size, with no page or layers, and its G-code goes on the machine's bed (--fit, --center, --margin); drop it",
+            "is not available for line in any format: its SVG is the interval at full size, with no page or size layers, and its G-code goes on the machine's bed (--fit, --center, --margin); drop it (--layers colours splits a coloured drawing by pen)",
         ));
     }
+    if p.layers == crate::plot::Layers::Colours {
+        if a.colour.palette.is_none() {
+            return Err(CliError::arg(
+                "--layers",
+                "colours makes one layer (one pen) per --palette colour: give --palette",
+            ));
+        }
+        if a.render == Render::Zoom || !matches!(format, Format::Svg | Format::Gcode) {
+            return Err(CliError::arg(
+                "--layers",
+                "colours splits a plotter drawing by pen: write .svg or .gcode, with --render dashes, circles or bars",
+            ));
+        }
+    }
     if format != Format::Gcode {
-        return p.refuse_except(&[], |_| crate::plot::FOR_GCODE.to_string());
+        return p.refuse_except(&["--layers"], |_| crate::plot::FOR_GCODE.to_string());
     }
     p.check_gcode()?;
     match a.render {
@@ -889,8 +985,12 @@ pub fn run(a: &LineArgs) -> Result<(), CliError> {
     let format = Format::resolve(a.format, &a.output)?;
     a.raster.check(format == Format::Png)?;
     check_plot(a, format)?;
-    a.colour
-        .check(matches!(format, Format::Svg | Format::Png), "write .svg or .png", true)?;
+    let pens = format == Format::Gcode && a.plot.layers == crate::plot::Layers::Colours && a.colour.background.is_none();
+    a.colour.check(
+        matches!(format, Format::Svg | Format::Png) || pens,
+        "write .svg or .png (or G-code with --layers colours, without --background)",
+        true,
+    )?;
     let (doc, halt) = compute(a)?;
     let bytes = render(&doc, format, a)?;
     dest.write(&bytes)?;

@@ -1176,3 +1176,55 @@ fn colours_are_drawn_one_pen_after_another() {
         assert!(!d.join("x.gcode").exists());
     }
 }
+
+/// `line --layers colours`: each colour's bars drawn as one pen after a pause, every stroke on
+/// a bar of its pen's colour (the README's cycle rule: segment i takes colour i mod 2).
+#[test]
+fn line_colours_are_drawn_one_pen_after_another() {
+    let dir = tmp();
+    let d = dir.path();
+    let base = ["line", "--count", "150", "--seed", "6", "--length", "200"];
+    zf_ok(d, &[&base[..], &["-o", "l.json"]].concat());
+    let doc = parse_json(&read(&d.join("l.json")));
+    let segs: Vec<(f64, f64, usize)> = shapes(&doc)
+        .iter()
+        .map(|s| (f(s, "start"), f(s, "start") + f(s, "length"), u(s, "index") as usize % 2))
+        .collect();
+    let colour = [
+        "--render",
+        "bars",
+        "--palette",
+        "1d3557,e63946",
+        "--color-by",
+        "cycle",
+        "--layers",
+        "colours",
+    ];
+    let (prof, _) = builtin_profile(d, "grbl-servo-pen");
+    zf_ok(d, &[&base[..], &colour, &["-o", "l.gcode"]].concat());
+    let text = String::from_utf8_lossy(&read(&d.join("l.gcode"))).into_owned();
+    let r = assert_safe(&text, &prof, "line pens");
+    assert_eq!(r.pauses.len(), 1);
+    let faults = |shift: usize| {
+        r.segments
+            .iter()
+            .enumerate()
+            .filter(|(i, s)| {
+                let pen = (r.pauses.iter().filter(|&&p| p <= *i).count() + shift) % 2;
+                let within = |x: f64, seg: &(f64, f64, usize)| x >= seg.0 - 1e-3 && x <= seg.1 + 1e-3;
+                !segs.iter().any(|g| g.2 == pen && within(s[0][0], g) && within(s[1][0], g))
+            })
+            .count()
+    };
+    assert_eq!(faults(0), 0, "strokes drawn with another pen");
+    assert_eq!(faults(1), r.segments.len(), "the check misses a pen shifted by one");
+    // Zoom rows are no plotter drawing; colours need a palette.
+    for args in [
+        &["--render", "zoom", "--palette", "000,fff", "--layers", "colours"][..],
+        &["--layers", "colours"][..],
+    ] {
+        let o = zf(d, &[&base[..], args, &["-o", "x.svg"]].concat());
+        assert_eq!(o.code, 2, "{args:?}");
+        assert!(names_flag(&o.stderr, "--layers"), "{}", o.stderr);
+    }
+}

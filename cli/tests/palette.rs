@@ -418,3 +418,43 @@ fn cobblestone_cells_take_their_shapes_colour() {
     assert_eq!(o.code, 2);
     assert!(names_flag(&o.stderr, "--palette"), "{}", o.stderr);
 }
+
+/// `line --layers colours`: the segments in one Inkscape layer per palette colour, in its
+/// order: read back in document order, the colours never go back to an earlier pen.
+#[test]
+fn line_layers_hold_one_colour_each() {
+    let dir = tmp();
+    let d = dir.path();
+    let list = PALETTE.join(",");
+    let args = [
+        "line",
+        "--count",
+        "200",
+        "--render",
+        "circles",
+        "--palette",
+        &list,
+        "--color-by",
+        "random",
+        "--layers",
+        "colours",
+    ];
+    zf_ok(d, &[&args[..], &["-o", "l.svg"]].concat());
+    let svg = read(&d.join("l.svg"));
+    let text = String::from_utf8_lossy(&svg).into_owned();
+    for (k, c) in PALETTE.iter().enumerate() {
+        assert!(text.contains(&format!("inkscape:label=\"{} {c}\"", k + 1)), "layer {c}");
+    }
+    let pens: Vec<usize> = painted(&svg, true)
+        .iter()
+        .map(|p| {
+            PALETTE
+                .iter()
+                .position(|c| *c == p.colour)
+                .unwrap_or_else(|| panic!("colour {}", p.colour))
+        })
+        .collect();
+    assert!(pens.windows(2).all(|w| w[0] <= w[1]), "a pen's shapes outside its layer");
+    assert_eq!(pens.iter().copied().max(), Some(PALETTE.len() - 1), "every pen used");
+    assert!(pens.len() >= 190, "{} circles", pens.len());
+}

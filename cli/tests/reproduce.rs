@@ -214,6 +214,14 @@ fn line_territory_and_tile_files_carry_their_commands() {
             "line --count 200 --periodic --render dashes --palette 264653,e76f51 --color-by cycle --background fefae0",
             svg,
         ),
+        (
+            "line --count 200 --render bars --palette 264653,e76f51 --color-by random --layers colours",
+            svg,
+        ),
+        (
+            "line --count 200 --render bars --palette 264653,e76f51 --color-by random --layers colours",
+            gcode,
+        ),
         ("territory --sites 3 --points 1500 --render filled --boundary --pen-width 0.4", svg),
         ("tile --tries 3000 --style filled --layout mosaic --rows 2", svg),
         ("tile --tries 3000 --render voronoi --pen-width 0.2", svg),

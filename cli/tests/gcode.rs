@@ -1228,3 +1228,47 @@ fn line_colours_are_drawn_one_pen_after_another() {
         assert!(names_flag(&o.stderr, "--layers"), "{}", o.stderr);
     }
 }
+
+/// `tile --layers colours` as G-code: one pen per colour with a pen change between them, each
+/// pen named, safe on the servo plotter.
+#[test]
+fn tile_colours_are_drawn_one_pen_after_another() {
+    let dir = tmp();
+    let d = dir.path();
+    let (prof, _) = builtin_profile(d, "grbl-servo-pen");
+    let args = [
+        "tile",
+        "--radius",
+        "8",
+        "--spacing",
+        "2",
+        "--tries",
+        "3000",
+        "--layout",
+        "planet",
+        "--rows",
+        "2",
+        "--fit",
+        "--palette",
+        "1d3557,e63946,2a9d8f",
+        "--color-by",
+        "cycle",
+        "--layers",
+        "colours",
+        "--machine",
+        "grbl-servo-pen",
+        "-o",
+        "t.gcode",
+    ];
+    zf_ok(d, &args);
+    let text = String::from_utf8_lossy(&read(&d.join("t.gcode"))).into_owned();
+    let r = assert_safe(&text, &prof, "tile pens");
+    assert_eq!(r.pauses.len(), 2, "three pens, two changes");
+    for (k, c) in ["#1d3557", "#e63946", "#2a9d8f"].iter().enumerate() {
+        assert!(text.contains(&format!("; pen {} of 3: {c}\n", k + 1)), "pen {c} named");
+    }
+    assert!(
+        r.pauses[0] > 0 && r.pauses[1] > r.pauses[0] && r.segments.len() > r.pauses[1],
+        "every pen draws"
+    );
+}

@@ -440,21 +440,6 @@ fn line_layers_hold_one_colour_each() {
         "colours",
     ];
     zf_ok(d, &[&args[..], &["-o", "l.svg"]].concat());
-    let svg = read(&d.join("l.svg"));
-    let text = String::from_utf8_lossy(&svg).into_owned();
-    for (k, c) in PALETTE.iter().enumerate() {
-        assert!(text.contains(&format!("inkscape:label=\"{} {c}\"", k + 1)), "layer {c}");
-    }
-    let pens: Vec<usize> = painted(&svg, true)
-        .iter()
-        .map(|p| {
-            PALETTE
-                .iter()
-                .position(|c| *c == p.colour)
-                .unwrap_or_else(|| panic!("colour {}", p.colour))
-        })
-        .collect();
-    assert!(pens.windows(2).all(|w| w[0] <= w[1]), "a pen's shapes outside its layer");
-    assert_eq!(pens.iter().copied().max(), Some(PALETTE.len() - 1), "every pen used");
+    let pens = assert_pens_in_layers(&read(&d.join("l.svg")), &PALETTE);
     assert!(pens.len() >= 190, "{} circles", pens.len());
 }

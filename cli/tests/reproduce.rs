@@ -232,6 +232,14 @@ fn line_territory_and_tile_files_carry_their_commands() {
         ("line --count 200 --render bars --hatch 0.5 --machine grbl-laser", gcode),
         ("territory --sites 3 --points 1500 --render cells --order greedy", gcode),
         ("tile --tries 3000 --layout mosaic --fit --passes 2 --machine grbl-laser", gcode),
+        (
+            "tile --tries 3000 --layout planet --rows 2 --fit --palette 1d3557,e63946 --layers colours",
+            gcode,
+        ),
+        (
+            "tile --tries 3000 --layout mosaic --palette 1d3557,e63946 --color-by random --layers colours",
+            svg,
+        ),
     ] {
         assert!(
             reproduces(dir.path(), &words(c), out, command_of),

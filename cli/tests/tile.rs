@@ -937,3 +937,49 @@ fn size_bands_follow_the_drawn_size() {
         assert!(paths.iter().any(|p| p.colour == c), "{c} unused");
     }
 }
+
+/// `--layers colours`: a coloured tile's pieces in one Inkscape layer per palette colour, in
+/// its order (read back in document order, the colours never go back to an earlier pen), and
+/// refused without a palette or as size bands.
+#[test]
+fn tile_layers_hold_one_colour_each() {
+    let dir = tmp();
+    let d = dir.path();
+    let list = PALETTE.join(",");
+    let args = [
+        "tile",
+        "--radius",
+        "8",
+        "--spacing",
+        "2",
+        "--tries",
+        "3000",
+        "--layout",
+        "mosaic",
+        "--rows",
+        "3",
+    ];
+    zf_ok(
+        d,
+        &[
+            &args[..],
+            &["--palette", &list, "--color-by", "random", "--layers", "colours", "-o", "l.svg"],
+        ]
+        .concat(),
+    );
+    let pens = assert_pens_in_layers(&read(&d.join("l.svg")), &PALETTE);
+    // The same pieces as without layers, only regrouped.
+    zf_ok(
+        d,
+        &[&args[..], &["--palette", &list, "--color-by", "random", "-o", "m.svg"]].concat(),
+    );
+    assert_eq!(painted(&read(&d.join("m.svg")), true).len(), pens.len());
+    for (extra, flag) in [
+        (&["--layers", "colours"][..], "--layers"),
+        (&["--layers", "size-bands:2"][..], "--layers"),
+    ] {
+        let o = zf(d, &[&args[..], extra, &["-o", "x.svg"]].concat());
+        assert_eq!(o.code, 2, "{extra:?}");
+        assert!(names_flag(&o.stderr, flag), "{}", o.stderr);
+    }
+}

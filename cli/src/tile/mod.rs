@@ -42,12 +42,11 @@ impl TileFormat {
     }
 }
 
-/// Arguments of `zetafill tile`. The tile draws its own outlines: pages, size layers and
-/// hatching are refused, and left out of the help.
+/// Arguments of `zetafill tile`. The tile draws its own outlines: pages and hatching are
+/// refused, and left out of the help; of the layers, only `--layers colours`.
 #[derive(Debug, Args)]
 #[command(
     mut_arg("page", |a| a.hide(true)),
-    mut_arg("layers", |a| a.hide(true)),
     mut_arg("hatch", |a| a.hide(true)),
     mut_arg("hatch_only", |a| a.hide(true)),
     mut_arg("cross_hatch", |a| a.hide(true)),
@@ -124,35 +123,85 @@ fn check_plot(a: &TileArgs, format: TileFormat) -> Result<(), CliError> {
     use crate::plot::{FOR_GCODE, GCODE_FLAGS};
     let p = &a.plot;
     if format == TileFormat::Gcode {
-        let allowed: Vec<&str> = GCODE_FLAGS.iter().copied().chain(["--fit", "--center", "--margin"]).collect();
+        let allowed: Vec<&str> = GCODE_FLAGS
+            .iter()
+            .copied()
+            .chain(["--fit", "--center", "--margin", "--layers"])
+            .collect();
         p.refuse_except(&allowed, |f| {
             format!("is not available for tile: {f} is for fills (the tile draws its own outlines, on the machine's bed)")
         })?;
-        p.check_gcode()
+        p.check_gcode()?;
     } else {
-        p.refuse_except(&[], |_| FOR_GCODE.to_string())
+        p.refuse_except(&["--layers"], |_| FOR_GCODE.to_string())?;
     }
+    match p.layers {
+        crate::plot::Layers::None => Ok(()),
+        crate::plot::Layers::SizeBands(_) => Err(CliError::arg(
+            "--layers",
+            "size bands are for fills; a coloured tile splits by pen with --layers colours",
+        )),
+        crate::plot::Layers::Colours if a.colour.palette.is_none() => Err(CliError::arg(
+            "--layers",
+            "colours makes one layer (one pen) per --palette colour: give --palette",
+        )),
+        crate::plot::Layers::Colours if !matches!(format, TileFormat::Svg | TileFormat::Gcode) => Err(CliError::arg(
+            "--layers",
+            "colours splits a plotter drawing by pen: write .svg or .gcode",
+        )),
+        crate::plot::Layers::Colours => Ok(()),
+    }
+}
+
+/// Each laid-out piece's colour from the palette: a copy of piece `j mod n` (`tags`), at its
+/// copy's scale (`scales`). Ids are the tile's discs, so every image and copy of a disc takes
+/// the same colour (but for size).
+fn piece_colours(a: &TileArgs, tags: &[render::Tag], scales: &[f64]) -> Option<Vec<crate::output::palette::Colour>> {
+    let p = a.colour.palette.as_ref()?;
+    let items: Vec<(u64, f64)> = scales
+        .iter()
+        .enumerate()
+        .map(|(j, s)| {
+            let t = tags.get(j % tags.len().max(1));
+            t.map_or((0, 0.0), |t| (t.disc as u64, t.r * s))
+        })
+        .collect();
+    Some(crate::output::palette::assign_items(&p.0, a.colour.by(), a.seed, &items, |_| 0))
 }
 
 /// The drawing as G-code: every piece as a path (circles as arcs where the machine allows),
 /// the sheet placed on the machine's bed.
-fn gcode(pieces: &[Piece], sheet: Sheet, a: &TileArgs, header: String) -> Result<Vec<u8>, CliError> {
-    use crate::plot::{drawing_gcode, Bounds, Drawing, Path as PlotPath};
-    let paths = pieces
-        .iter()
-        .map(|p| match p {
-            Piece::Circle { c, r } => PlotPath::circle(*c, *r),
-            Piece::Open(l) => PlotPath::polyline(l.clone(), false),
-            Piece::Closed(l) => PlotPath::polyline(l.clone(), true),
-        })
-        .collect();
+/// With `pens` (the palette and each piece's colour), one pen per colour, in the palette's
+/// order, with a pen change between them.
+fn gcode(pieces: &[Piece], sheet: Sheet, a: &TileArgs, header: String, pens: Option<(&[String], &[String])>) -> Result<Vec<u8>, CliError> {
+    use crate::plot::{pens_gcode, Bounds, Drawing, Path as PlotPath};
+    let path = |p: &Piece| match p {
+        Piece::Circle { c, r } => PlotPath::circle(*c, *r),
+        Piece::Open(l) => PlotPath::polyline(l.clone(), false),
+        Piece::Closed(l) => PlotPath::polyline(l.clone(), true),
+    };
+    let layers: Vec<(String, Drawing)> = match pens {
+        None => vec![(
+            String::new(),
+            Drawing {
+                paths: pieces.iter().map(path).collect(),
+            },
+        )],
+        Some((palette, colours)) => palette
+            .iter()
+            .map(|c| {
+                let paths = pieces.iter().zip(colours).filter(|(_, k)| *k == c).map(|(p, _)| path(p)).collect();
+                (c.clone(), Drawing { paths })
+            })
+            .collect(),
+    };
     let frame = Bounds {
         x0: 0.0,
         y0: 0.0,
         x1: sheet.width,
         y1: sheet.height,
     };
-    drawing_gcode(&Drawing { paths }, &frame, &a.plot, vec![header], a.quiet)
+    pens_gcode(&layers, &frame, &a.plot, vec![header], a.quiet)
 }
 
 /// One disc in the JSON output.
@@ -404,6 +453,8 @@ pub struct Look<'a> {
     pub colours: Option<&'a [crate::output::palette::Colour]>,
     /// A colour behind the drawing.
     pub background: Option<&'a str>,
+    /// `Some(palette)`: one Inkscape layer per palette colour, each piece in its colour's.
+    pub layers: Option<&'a [crate::output::palette::Colour]>,
 }
 
 /// The drawing as SVG (mm, y up in the tile's frame, so flipped on the page).
@@ -425,6 +476,19 @@ pub fn svg(pieces: &[Piece], sheet: Sheet, look: &Look<'_>, title: &str, desc: &
         Style::Filled => g.set("fill", "black").set("stroke", "none"),
     };
     let paint = if style == Style::Filled { "fill" } else { "stroke" };
+    // One layer, or one per palette colour.
+    let mut groups: Vec<Group> = match look.layers {
+        Some(palette) => palette
+            .iter()
+            .enumerate()
+            .map(|(i, c)| {
+                g.clone()
+                    .set("id", format!("layer{}", i + 1))
+                    .set("inkscape:label", format!("{} {c}", i + 1))
+            })
+            .collect(),
+        None => vec![g],
+    };
     for (j, piece) in pieces.iter().enumerate() {
         let node: Option<svg::node::element::Element> = match piece {
             Piece::Circle { c, r } => Some(
@@ -439,10 +503,17 @@ pub fn svg(pieces: &[Piece], sheet: Sheet, look: &Look<'_>, title: &str, desc: &
             _ => None,
         };
         if let Some(mut n) = node {
-            if let Some(c) = look.colours.and_then(|cs| cs.get(j)) {
+            let colour = look.colours.and_then(|cs| cs.get(j));
+            if let Some(c) = colour {
                 n.assign(paint, c.as_str());
             }
-            g = g.add(n);
+            let layer = match (look.layers, colour) {
+                (Some(palette), Some(c)) => palette.iter().position(|p| p == c).unwrap_or(0),
+                _ => 0,
+            };
+            if let Some(g) = groups.get_mut(layer) {
+                *g = std::mem::take(g).add(n);
+            }
         }
     }
     let mut d = Document::new()
@@ -460,9 +531,11 @@ pub fn svg(pieces: &[Piece], sheet: Sheet, look: &Look<'_>, title: &str, desc: &
             .set("width", num(sheet.width, P))
             .set("height", num(sheet.height, P));
         d = d.add(Definitions::new().add(ClipPath::new().set("id", "sheet").add(rect)));
-        g = g.set("clip-path", "url(#sheet)");
+        groups = groups.into_iter().map(|g| g.set("clip-path", "url(#sheet)")).collect();
     }
-    let d = d.add(g);
+    for g in groups {
+        d = d.add(g);
+    }
     let mut s = d.to_string();
     s.push('\n');
     s.into_bytes()
@@ -471,7 +544,12 @@ pub fn svg(pieces: &[Piece], sheet: Sheet, look: &Look<'_>, title: &str, desc: &
 /// Refuses colour flags the output cannot show.
 fn check_colours(a: &TileArgs, format: TileFormat) -> Result<(), CliError> {
     let picture = matches!(format, TileFormat::Svg | TileFormat::Png) && a.relief.is_none();
-    a.colour.check(picture, "write .svg or .png, without --relief", true)?;
+    let pens = format == TileFormat::Gcode && a.plot.layers == crate::plot::Layers::Colours && a.colour.background.is_none();
+    a.colour.check(
+        picture || pens,
+        "write .svg or .png, without --relief (or G-code with --layers colours, without --background)",
+        true,
+    )?;
     if a.colour.palette.is_some() && a.render == Render::Voronoi && a.style == Style::Outline {
         return Err(CliError::arg(
             "--palette",
@@ -529,7 +607,15 @@ pub fn output(a: &TileArgs) -> Result<(Tile, Vec<u8>), CliError> {
             v.push(b'\n');
             v
         }
-        TileFormat::Gcode => gcode(&arr.lay_out(&pieces, w, h, false), arr.sheet(w, h), a, command_line(a, &arr))?,
+        TileFormat::Gcode => {
+            let (laid, scales) = arr.lay_out_scaled(&pieces, w, h, false);
+            let colours = piece_colours(a, &tags, &scales);
+            let pens = match (&a.colour.palette, &colours) {
+                (Some(p), Some(cs)) if a.plot.layers == crate::plot::Layers::Colours => Some((&p.0[..], &cs[..])),
+                _ => None,
+            };
+            gcode(&laid, arr.sheet(w, h), a, command_line(a, &arr), pens)?
+        }
         TileFormat::Svg | TileFormat::Png => {
             let title = format!(
                 "zetafill: fractal tile, {} discs ({} doppelgangers), seed {}, {} {}",
@@ -549,25 +635,17 @@ pub fn output(a: &TileArgs) -> Result<(Tile, Vec<u8>), CliError> {
                 (&pieces, &tags)
             };
             let (laid, scales) = arr.lay_out_scaled(drawn, w, h, whole);
-            let colours = a.colour.palette.as_ref().map(|p| {
-                // A copy of piece j mod n, at its copy's scale: ids are the tile's discs, so
-                // every image and copy of a disc takes the same colour (but for size).
-                let items: Vec<(u64, f64)> = scales
-                    .iter()
-                    .enumerate()
-                    .map(|(j, s)| {
-                        let t = drawn_tags.get(j % drawn_tags.len().max(1));
-                        t.map_or((0, 0.0), |t| (t.disc as u64, t.r * s))
-                    })
-                    .collect();
-                crate::output::palette::assign_items(&p.0, a.colour.by(), a.seed, &items, |_| 0)
-            });
+            let colours = piece_colours(a, drawn_tags, &scales);
             let look = Look {
                 style: a.style,
                 pen_width: a.pen_width,
                 clip: whole,
                 colours: colours.as_deref(),
                 background: a.colour.background.as_deref(),
+                layers: match (&a.colour.palette, a.plot.layers) {
+                    (Some(p), crate::plot::Layers::Colours) => Some(&p.0[..]),
+                    _ => None,
+                },
             };
             let svg = svg(&laid, arr.sheet(w, h), &look, &title, &command_line(a, &arr));
             if format == TileFormat::Png {

@@ -746,3 +746,25 @@ pub fn painted(bytes: &[u8], stroke: bool) -> Vec<Painted> {
     walk(tree.root(), stroke, &mut out);
     out
 }
+
+/// For a drawing written with `--layers colours` and `palette`: checks that every colour has
+/// its labelled layer and that, read back in document order, the paths' strokes never go
+/// back to an earlier pen and use every pen. The pen (palette index) of each path.
+pub fn assert_pens_in_layers(svg: &[u8], palette: &[&str]) -> Vec<usize> {
+    let text = String::from_utf8_lossy(svg).into_owned();
+    for (k, c) in palette.iter().enumerate() {
+        assert!(text.contains(&format!("inkscape:label=\"{} {c}\"", k + 1)), "no layer for {c}");
+    }
+    let pens: Vec<usize> = painted(svg, true)
+        .iter()
+        .map(|p| {
+            palette
+                .iter()
+                .position(|c| *c == p.colour)
+                .unwrap_or_else(|| panic!("colour {}", p.colour))
+        })
+        .collect();
+    assert!(pens.windows(2).all(|w| w[0] <= w[1]), "a pen's shapes outside its layer");
+    assert_eq!(pens.iter().copied().max(), Some(palette.len() - 1), "a pen unused");
+    pens
+}

@@ -427,17 +427,8 @@ impl Layered {
     fn new(base: Group, opt: &LineSvgOptions, n: usize) -> Layered {
         match (&opt.colour_layers, &opt.colours) {
             (Some(palette), Some(colours)) => Layered {
-                groups: palette
-                    .iter()
-                    .enumerate()
-                    .map(|(i, c)| {
-                        base.clone()
-                            .set("id", format!("layer{}", i + 1))
-                            .set("inkscape:groupmode", "layer")
-                            .set("inkscape:label", format!("{} {c}", i + 1))
-                    })
-                    .collect(),
-                of: colours.iter().map(|c| palette.iter().position(|p| p == c).unwrap_or(0)).collect(),
+                groups: crate::output::palette::colour_layers(&base, palette),
+                of: colours.iter().map(|c| crate::output::palette::layer_of(palette, Some(c))).collect(),
             },
             _ => Layered {
                 groups: vec![base],

@@ -1236,30 +1236,9 @@ fn tile_colours_are_drawn_one_pen_after_another() {
     let dir = tmp();
     let d = dir.path();
     let (prof, _) = builtin_profile(d, "grbl-servo-pen");
-    let args = [
-        "tile",
-        "--radius",
-        "8",
-        "--spacing",
-        "2",
-        "--tries",
-        "3000",
-        "--layout",
-        "planet",
-        "--rows",
-        "2",
-        "--fit",
-        "--palette",
-        "1d3557,e63946,2a9d8f",
-        "--color-by",
-        "cycle",
-        "--layers",
-        "colours",
-        "--machine",
-        "grbl-servo-pen",
-        "-o",
-        "t.gcode",
-    ];
+    let args = words(
+        "tile --radius 8 --spacing 2 --tries 3000 --layout planet --rows 2 --fit --palette 1d3557,e63946,2a9d8f --color-by cycle --layers colours --machine grbl-servo-pen -o t.gcode",
+    );
     zf_ok(d, &args);
     let text = String::from_utf8_lossy(&read(&d.join("t.gcode"))).into_owned();
     let r = assert_safe(&text, &prof, "tile pens");

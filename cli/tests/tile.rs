@@ -879,21 +879,7 @@ fn size_bands_follow_the_drawn_size() {
     let dir = tmp();
     let d = dir.path();
     let list = PALETTE.join(",");
-    let args = [
-        "tile",
-        "--radius",
-        "8",
-        "--spacing",
-        "2",
-        "--tries",
-        "3000",
-        "--layout",
-        "mosaic",
-        "--rows",
-        "3",
-        "--style",
-        "filled",
-    ];
+    let args = words("tile --radius 8 --spacing 2 --tries 3000 --layout mosaic --rows 3 --style filled");
     zf_ok(d, &[&args[..], &["--palette", &list, "-o", "m.svg"]].concat());
     let paths = painted(&read(&d.join("m.svg")), false);
     // Every piece is a whole circle: its radius is half its box.
@@ -946,19 +932,7 @@ fn tile_layers_hold_one_colour_each() {
     let dir = tmp();
     let d = dir.path();
     let list = PALETTE.join(",");
-    let args = [
-        "tile",
-        "--radius",
-        "8",
-        "--spacing",
-        "2",
-        "--tries",
-        "3000",
-        "--layout",
-        "mosaic",
-        "--rows",
-        "3",
-    ];
+    let args = words("tile --radius 8 --spacing 2 --tries 3000 --layout mosaic --rows 3");
     zf_ok(
         d,
         &[

@@ -409,15 +409,8 @@ pub fn render(doc: &FillDoc, opt: &SvgOptions) -> Vec<u8> {
     };
     let (bands, mut groups): (Vec<usize>, Vec<Group>) = match (&opt.colour_layers, opt.layers) {
         (Some(palette), _) => {
-            let of = |k: usize| {
-                let c = opt.colours.as_ref().and_then(|cs| cs.get(k));
-                c.and_then(|c| palette.iter().position(|p| p == c)).unwrap_or(0)
-            };
-            let groups = palette
-                .iter()
-                .enumerate()
-                .map(|(i, c)| layer(i, format!("{} {c}", i + 1)))
-                .collect();
+            let of = |k: usize| crate::output::palette::layer_of(palette, opt.colours.as_ref().and_then(|cs| cs.get(k)));
+            let groups = crate::output::palette::colour_layers(&style(Group::new()), palette);
             ((0..doc.shapes.len()).map(of).collect(), groups)
         }
         (None, Some(k)) => {

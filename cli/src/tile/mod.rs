@@ -478,15 +478,7 @@ pub fn svg(pieces: &[Piece], sheet: Sheet, look: &Look<'_>, title: &str, desc: &
     let paint = if style == Style::Filled { "fill" } else { "stroke" };
     // One layer, or one per palette colour.
     let mut groups: Vec<Group> = match look.layers {
-        Some(palette) => palette
-            .iter()
-            .enumerate()
-            .map(|(i, c)| {
-                g.clone()
-                    .set("id", format!("layer{}", i + 1))
-                    .set("inkscape:label", format!("{} {c}", i + 1))
-            })
-            .collect(),
+        Some(palette) => crate::output::palette::colour_layers(&g, palette),
         None => vec![g],
     };
     for (j, piece) in pieces.iter().enumerate() {
@@ -507,10 +499,7 @@ pub fn svg(pieces: &[Piece], sheet: Sheet, look: &Look<'_>, title: &str, desc: &
             if let Some(c) = colour {
                 n.assign(paint, c.as_str());
             }
-            let layer = match (look.layers, colour) {
-                (Some(palette), Some(c)) => palette.iter().position(|p| p == c).unwrap_or(0),
-                _ => 0,
-            };
+            let layer = look.layers.map_or(0, |palette| crate::output::palette::layer_of(palette, colour));
             if let Some(g) = groups.get_mut(layer) {
                 *g = std::mem::take(g).add(n);
             }

@@ -768,3 +768,8 @@ pub fn assert_pens_in_layers(svg: &[u8], palette: &[&str]) -> Vec<usize> {
     assert_eq!(pens.iter().copied().max(), Some(palette.len() - 1), "a pen unused");
     pens
 }
+
+/// A command line written as one string, split at spaces (no argument holds one).
+pub fn words(line: &str) -> Vec<&str> {
+    line.split_whitespace().collect()
+}

@@ -131,6 +131,7 @@ pub fn scan(a: &HaltingArgs) -> Result<Vec<PointDoc>, CliError> {
                         count: a.count,
                         max_trials: a.max_trials,
                         seed,
+                        estimate: false,
                     },
                 )
             })

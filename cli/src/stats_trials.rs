@@ -3,6 +3,10 @@
 //! large-n part (the paper finds it close to c). Also the one 2D run helper that
 //! `stats halting` shares.
 //!
+//! With `--sampler fast` the trials are not counted but estimated: the cell sampler places the
+//! shapes and says, without bias, how many trials the paper's sampler would have needed
+//! (`CellSampler::paper_trials`), so curves to a million shapes take seconds, not hours.
+//!
 //! Runs are reproducible: run `r` (0-based) of the `k`-th value of `--c` uses the seed
 //! `seed + k * runs + r` (wrapping), and every run is independent of the others, so they are
 //! spread over the cores with rayon and collected in order.
@@ -15,7 +19,7 @@ use rayon::prelude::*;
 use std::fmt::Write as _;
 use std::path::PathBuf;
 use zetafill::engine::StepError;
-use zetafill::{index_words, Engine, Params, Placed, Region, ShapeKind, Stop, StopReason, Storage};
+use zetafill::{cells_for, index_words, CellSampler, Engine, Params, Placed, Region, ShapeKind, Stop, StopReason, Storage};
 
 /// Rotation of non-circular shapes in the statistics runs.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -24,6 +28,16 @@ pub enum Rotate {
     None,
     /// A uniformly random angle per trial.
     Random,
+}
+
+/// Where the trials of `stats trials` come from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum TrialsFrom {
+    /// The paper's sampler is run and its trials counted.
+    Reference,
+    /// The cell sampler places the shapes and estimates the paper's trials (unbiased, far
+    /// faster at large counts).
+    Fast,
 }
 
 /// `circle | square | rect:ASPECT`: the shapes of the paper's Figures 5 and 6.
@@ -85,18 +99,21 @@ pub struct RunSpec {
     pub max_trials: u64,
     /// Seed.
     pub seed: u64,
+    /// Estimate the paper's trials with the cell sampler instead of running the paper's.
+    pub estimate: bool,
 }
 
 /// What one 2D run did.
 #[derive(Debug, Clone)]
 pub struct RunResult {
-    /// Trials of each placement, in order.
-    pub trials: Vec<u64>,
+    /// Trials of each placement, in order (estimated ones are fractional).
+    pub trials: Vec<f64>,
     /// The placement at which the run halted (trial limit reached, or the shape cannot fit
     /// the region at all), if it did.
     pub halted_at: Option<u64>,
-    /// Trials spent on the placement that halted (0 if none).
-    pub halted_trials: u64,
+    /// Trials spent on the placement that halted (0 if none; estimated, the paper's sampler
+    /// would have made the trial limit).
+    pub halted_trials: f64,
 }
 
 /// Words of the coverage bitmap per run (256 KiB): it only makes rejections cheaper.
@@ -129,12 +146,28 @@ pub fn run_2d(r: &RunSpec) -> Result<RunResult, CliError> {
         count: Some(r.count),
         ..Stop::default()
     };
-    let reason = engine.run(&mut rng, &stop, |p| trials.push(p.trials));
+    let reason = if r.estimate {
+        let mut pool = vec![[0u64; 4]; cells_for(cap)];
+        let mut cells = CellSampler::new(&mut pool).map_err(|_| CliError::Io("internal: no cells".into()))?;
+        cells.estimate_paper_trials();
+        // Stepped one by one: each placement's estimate is read from the sampler.
+        loop {
+            if trials.len() as u64 >= r.count {
+                break StopReason::Count;
+            }
+            match engine.step_fast(&mut cells, &mut rng) {
+                Ok(_) => trials.push(cells.last_paper_trials()),
+                Err(e) => break StopReason::Step(e),
+            }
+        }
+    } else {
+        engine.run(&mut rng, &stop, |p| trials.push(p.trials as f64))
+    };
     let (halted_at, halted_trials) = match reason {
-        StopReason::Step(StepError::Halted { index, trials: t }) => (Some(index), t),
-        StopReason::Step(StepError::CannotFit { index }) => (Some(index), 0),
+        StopReason::Step(StepError::Halted { index, trials: t }) => (Some(index), if r.estimate { r.max_trials as f64 } else { t as f64 }),
+        StopReason::Step(StepError::CannotFit { index }) => (Some(index), 0.0),
         StopReason::Step(StepError::Capacity { .. }) => return Err(CliError::Io("internal: storage full".into())),
-        _ => (None, 0),
+        _ => (None, 0.0),
     };
     Ok(RunResult {
         trials,
@@ -167,6 +200,11 @@ pub struct TrialsArgs {
     /// Shapes per run.
     #[arg(long, default_value_t = 10_000, value_parser = clap::value_parser!(u64).range(10..=10_000_000))]
     pub count: u64,
+    /// reference: run the paper's sampler and count its trials; fast: place with the cell
+    /// sampler and estimate the paper's trials (unbiased; seconds where the paper's sampler
+    /// takes hours).
+    #[arg(long, value_enum, default_value = "reference")]
+    pub sampler: TrialsFrom,
     /// Runs per value of c (seeds seed + k * runs + r).
     #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u64).range(1..=100))]
     pub runs: u64,
@@ -202,8 +240,9 @@ pub struct SeriesDoc {
     pub seed: u64,
     /// Shapes placed.
     pub placed: u64,
-    /// Trials in all (including a halted placement's).
-    pub trials: u64,
+    /// Trials in all (including a halted placement's): a count, or with `--sampler fast` an
+    /// estimate.
+    pub trials: serde_json::Number,
     /// Fitted exponent of cumulative trials against n over the fit range.
     pub exponent: Option<f64>,
     /// The placement at which the run halted, if it did.
@@ -248,6 +287,7 @@ pub fn run(a: &TrialsArgs) -> Result<(), CliError> {
                         count: a.count,
                         max_trials: a.max_trials,
                         seed,
+                        estimate: a.sampler == TrialsFrom::Fast,
                     };
                     (k, r, spec)
                 })
@@ -259,15 +299,17 @@ pub fn run(a: &TrialsArgs) -> Result<(), CliError> {
     let mut csv = String::from("c,run,seed,n,trials,cumulative_trials\n");
     for ((_, r, spec), res) in jobs.iter().zip(results) {
         let res = res?;
-        let mut total = 0u64;
+        let mut total = 0f64;
         let mut cum = Vec::with_capacity(res.trials.len());
         let placed = res.trials.len() as u64;
-        for (i, t) in res.trials.iter().enumerate() {
-            total = total.saturating_add(*t);
-            cum.push(((i + 1) as f64, total as f64));
-            let _ = writeln!(csv, "{},{},{},{},{},{}", spec.c, r, spec.seed, i + 1, t, total);
+        // Counted trials are whole numbers, written as such; estimates to three decimals.
+        let num = |v: f64| if spec.estimate { format!("{v:.3}") } else { format!("{v}") };
+        for (i, &t) in res.trials.iter().enumerate() {
+            total += t;
+            cum.push(((i + 1) as f64, total));
+            let _ = writeln!(csv, "{},{},{},{},{},{}", spec.c, r, spec.seed, i + 1, num(t), num(total));
         }
-        total = total.saturating_add(res.halted_trials);
+        total += res.halted_trials;
         let f = fit(&cum, from as f64);
         let label = format!("c = {}{}", spec.c, if a.runs > 1 { format!(", run {r}") } else { String::new() });
         curves.push(TrialsSeries {
@@ -280,7 +322,11 @@ pub fn run(a: &TrialsArgs) -> Result<(), CliError> {
             run: *r,
             seed: spec.seed,
             placed,
-            trials: total,
+            trials: if spec.estimate {
+                serde_json::Number::from_f64(total).unwrap_or_else(|| 0.into())
+            } else {
+                (total as u64).into()
+            },
             exponent: f.map(|x| x.0),
             halted_at: res.halted_at,
         });
@@ -301,7 +347,7 @@ pub fn run(a: &TrialsArgs) -> Result<(), CliError> {
         let v = serde_json::json!({
             "exponent": f.and_then(|d| d.exponent),
             "placed": f.map(|d| d.placed),
-            "trials": f.map(|d| d.trials),
+            "trials": f.map(|d| d.trials.clone()),
             "c": f.map(|d| d.c),
             "fit_from": from,
             "series": docs,

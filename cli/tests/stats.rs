@@ -114,6 +114,54 @@ fn trials_fits_an_exponent_near_c_and_writes_csv_and_svg() {
     assert_eq!(std::fs::read(d.path().join("u.svg")).unwrap_or_default(), svg);
 }
 
+/// `--sampler fast`: the paper's trials estimated by the cell sampler. The CSV holds each
+/// placement's estimate and their running sum; the curve's exponent is near c as for counted
+/// trials; and over the same seeds the mean estimate lands near the mean count (the core's
+/// test holds the estimate to the paper's counts at a stated significance; this one checks
+/// the command's plumbing, and fails if it counted the cell sampler's own trials instead).
+#[test]
+fn trials_estimated_by_the_cell_sampler_match_the_counted_ones() {
+    let d = tmp();
+    // 40 runs of 1,000 circles a side: the means' standard errors are about 1%.
+    let runs = |sampler: &'static str| {
+        let args = format!("stats trials --c 1.3 --count 1000 --runs 40 --sampler {sampler} --json");
+        let v = ok_json(d.path(), &args.split(' ').collect::<Vec<_>>());
+        let s = v["series"].as_array().cloned().unwrap_or_default();
+        assert_eq!(s.len(), 40);
+        s.iter().map(|r| f(&r["trials"])).sum::<f64>() / 40.0
+    };
+    let (e, c) = (runs("fast"), runs("reference"));
+    assert!((e / c - 1.0).abs() < 0.05, "mean estimate {e} against mean count {c}");
+    // One run of 3,000: the exponent, and the CSV of fractional estimates whose running sum
+    // ends at the JSON's total.
+    let one = |out: &str| {
+        let args = format!("stats trials --c 1.3 --count 3000 --sampler fast --json -o {out}");
+        ok_json(d.path(), &args.split(' ').collect::<Vec<_>>())
+    };
+    let est = one("e.csv");
+    let k = f(&est["exponent"]);
+    assert!((k - 1.3).abs() < 0.15, "estimated exponent {k} is not near c = 1.3");
+    let csv = std::fs::read_to_string(d.path().join("e.csv")).unwrap_or_default();
+    let mut sum = 0.0;
+    let mut fractional = 0;
+    for row in csv.lines().skip(1) {
+        let c: Vec<f64> = row.split(',').filter_map(|x| x.parse().ok()).collect();
+        assert_eq!(c.len(), 6, "row {row}");
+        sum += c[4];
+        assert!((c[5] - sum).abs() <= 1e-3 * sum.max(1.0), "running sum {} against {sum}", c[5]);
+        fractional += usize::from(c[4].fract() != 0.0);
+    }
+    assert!(fractional > 2900, "only {fractional} of 3000 estimates are fractional");
+    assert!(
+        (f(&est["trials"]) - sum).abs() <= 1e-3 * sum,
+        "JSON total {} against {sum}",
+        est["trials"]
+    );
+    // The same call again gives the same bytes.
+    one("e2.csv");
+    assert_eq!(std::fs::read(d.path().join("e2.csv")).unwrap_or_default(), csv.into_bytes());
+}
+
 /// Section 3: with N = 1, squares 0 and 1 cannot both fit above c = 1.5224, so every run halts
 /// (at placement 1, once the trial limit is reached); far below it, none do.
 #[test]

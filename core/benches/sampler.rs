@@ -1,8 +1,9 @@
 //! Sampler benchmark: the cell sampler against the paper's sampler on circles in a 200 x 200
 //! square, seed 1: c = 1.3 with N = 1, and c = 1.4 with N = 2 (with N = 1 the first circle
-//! leaves room for the second only when it lands near a corner). For each c and n it prints the time, the trials per placement,
-//! and the memory per placed shape (shape record, index words and, for the cell sampler, its
-//! cells at their peak). Run with `cargo bench -p zetafill --bench sampler`; flags:
+//! leaves room for the second only when it lands near a corner). For each c and n it prints the
+//! time, the trials per placement, the memory per placed shape (shape record, index words and,
+//! for the cell sampler, its cells at their peak), and for the cell sampler its estimate of the
+//! paper's trials per placement (`CellSampler::paper_trials`, on in the timed runs). Run with `cargo bench -p zetafill --bench sampler`; flags:
 //! `--quick` (n up to 10^4), `--max N` (largest n, default 10^6), `--c C` (one exponent),
 //! `--no-reference-above N` (skip the reference sampler above n = N; by default above 10^6
 //! for c = 1.3 and 10^5 for c = 1.4, where its trials per placement reach the tens of
@@ -26,6 +27,8 @@ struct Row {
     trials: u64,
     bytes_per_shape: f64,
     cells_per_shape: f64,
+    /// The cell sampler's estimate of the paper's trials per placement.
+    paper_estimate: Option<f64>,
 }
 
 #[derive(Clone, Copy, PartialEq)]
@@ -62,12 +65,13 @@ fn run(c: f64, n_offset: f64, n: u64, sampler: Sampler) -> Row {
     let t = Instant::now();
     let mut e = Engine::<f64>::new(params, region, storage).expect("valid parameters");
     let mut rng = zetafill::rng_from_seed(1);
-    let (reason, peak) = if fast {
+    let (reason, peak, paper) = if fast {
         let mut cells = CellSampler::new(&mut pool).expect("cells");
+        cells.estimate_paper_trials();
         let reason = e.run_fast(&mut cells, &mut rng, &stop, |_| {});
-        (reason, cells.stats().peak)
+        (reason, cells.stats().peak, Some(cells.paper_trials()))
     } else {
-        (e.run(&mut rng, &stop, |_| {}), 0)
+        (e.run(&mut rng, &stop, |_| {}), 0, None)
     };
     let secs = t.elapsed().as_secs_f64();
     if reason != StopReason::Count {
@@ -82,6 +86,7 @@ fn run(c: f64, n_offset: f64, n: u64, sampler: Sampler) -> Row {
         trials: s.trials,
         bytes_per_shape: core + cells * std::mem::size_of::<CellWords>() as f64,
         cells_per_shape: cells,
+        paper_estimate: paper.map(|t| t / s.placed.max(1) as f64),
     }
 }
 
@@ -103,8 +108,8 @@ fn main() {
     let no_ref_above: Option<u64> = arg("--no-reference-above");
     let no_bitmap_above: Option<u64> = arg("--no-bitmap-above");
     let cs: Vec<f64> = arg("--c").map_or(vec![1.3, 1.4], |c| vec![c]);
-    println!("| c | N | n | sampler | time (s) | trials/placement | placements/s | cells/shape | bytes/shape |");
-    println!("|---:|---:|---:|---|---:|---:|---:|---:|---:|");
+    println!("| c | N | n | sampler | time (s) | trials/placement | paper's, estimated | placements/s | cells/shape | bytes/shape |");
+    println!("|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|");
     for &c in &cs {
         let n_offset = if c > 1.35 { 2.0 } else { 1.0 };
         let ref_max = no_ref_above.unwrap_or(if c > 1.35 { 100_000 } else { 1_000_000 });
@@ -130,20 +135,24 @@ fn main() {
             ] {
                 let Some(r) = r else { continue };
                 println!(
-                    "| {c} | {n_offset} | {} | {name} | {:.3} | {:.1} | {:.0} | {:.1} | {:.0} |",
+                    "| {c} | {n_offset} | {} | {name} | {:.3} | {:.1} | {} | {:.0} | {:.1} | {:.0} |",
                     r.placed,
                     r.secs,
                     r.trials as f64 / r.placed as f64,
+                    r.paper_estimate.map_or(String::new(), |t| format!("{t:.1}")),
                     r.placed as f64 / r.secs,
                     r.cells_per_shape,
                     r.bytes_per_shape
                 );
             }
-            if let Some(r) = &reference {
-                println!("|  |  |  | speed-up | {:.1}x |  |  |  |  |", r.secs / fast.secs);
-            }
             if let Some(r) = &bare {
-                println!("|  |  |  | speed-up over paper + hash | {:.1}x |  |  |  |  |", r.secs / fast.secs);
+                println!(
+                    "|  |  |  | speed-up over paper + hash | {:.1}x |  |  |  |  |  |",
+                    r.secs / fast.secs
+                );
+            }
+            if let Some(r) = &reference {
+                println!("|  |  |  | speed-up over reference | {:.1}x |  |  |  |  |  |", r.secs / fast.secs);
             }
             n *= 10;
         }

@@ -941,7 +941,7 @@ impl<'a, S: Scalar> Engine<'a, S> {
             cells.init(S::from_f64(x0), S::from_f64(y0), w, h, &FieldOf(self));
         }
         cells.wake(need, self.len);
-        cells.flush();
+        cells.begin_step();
         Some(need)
     }
 
@@ -952,7 +952,11 @@ impl<'a, S: Scalar> Engine<'a, S> {
     pub fn step_fast<R: RngCore + ?Sized>(&mut self, cells: &mut CellSampler<'_, S>, rng: &mut R) -> Result<Placement<S>, StepError> {
         let nx = self.next_shape()?;
         let Some(need) = self.prepare_cells(&nx, cells) else {
-            return self.step_reference(&nx, rng);
+            let placed = self.step_reference(&nx, rng);
+            if let Ok(p) = &placed {
+                cells.end_step_paper(p.trials);
+            }
+            return placed;
         };
         let mut trials = 0u64;
         loop {
@@ -985,6 +989,7 @@ impl<'a, S: Scalar> Engine<'a, S> {
             match self.try_at(&nx, c, angle, trials, Some(&known)) {
                 Ok(placed) => {
                     cells.learn(slot, nx.index as u32, need, &FieldOf(self));
+                    cells.end_step(x1 - x0, y1 - y0);
                     return Ok(placed);
                 }
                 Err(Some(j)) if known.contains(&j) => cells.note_reject(slot, true),

@@ -330,6 +330,15 @@ pub struct CellSampler<'c, S> {
     ahead: [(usize, Cell<S>); AHEAD],
     ahead_len: usize,
     ahead_pos: usize,
+    /// The total weight the current batch was drawn from (0: no batch in this step yet).
+    batch_weight: u64,
+    /// This step's finished batches: the sum of draws used over the weight drawn from.
+    step_inv: f64,
+    /// Whether the paper's trials are estimated (see [`CellSampler::estimate_paper_trials`]).
+    estimating: bool,
+    /// See [`CellSampler::paper_trials`] and [`CellSampler::last_paper_trials`].
+    paper: f64,
+    last_paper: f64,
     ready: bool,
     stats: CellStats,
 }
@@ -360,6 +369,11 @@ impl<'c, S: Scalar> CellSampler<'c, S> {
             ahead: [(usize::MAX, Cell::default()); AHEAD],
             ahead_len: 0,
             ahead_pos: 0,
+            batch_weight: 0,
+            step_inv: 0.0,
+            estimating: false,
+            paper: 0.0,
+            last_paper: 0.0,
             ready: false,
             stats: CellStats::default(),
         })
@@ -709,11 +723,78 @@ impl<'c, S: Scalar> CellSampler<'c, S> {
         }
     }
 
-    /// Forgets the cells drawn ahead: called when a step begins, after [`CellSampler::wake`]
-    /// may have added cells.
-    pub(crate) fn flush(&mut self) {
+    /// Forgets the cells drawn ahead.
+    fn flush(&mut self) {
         self.ahead_len = 0;
         self.ahead_pos = 0;
+    }
+
+    /// Begins a step, after [`CellSampler::wake`] may have added cells: forgets the cells
+    /// drawn ahead and the step's draws.
+    pub(crate) fn begin_step(&mut self) {
+        self.flush();
+        self.batch_weight = 0;
+        self.step_inv = 0.0;
+    }
+
+    /// Ends a step whose shape was placed; `w` by `h` is the box the paper's sampler draws
+    /// its centres from. Adds `w h / |U|` for each of the step's trials, `|U|` being the live
+    /// area its cell was drawn from (see [`CellSampler::paper_trials`]).
+    pub(crate) fn end_step(&mut self, w: S, h: S) {
+        if !self.estimating {
+            return;
+        }
+        let range = w.to_f64() * h.to_f64();
+        let mut inv = self.step_inv;
+        if self.batch_weight > 0 {
+            inv += self.ahead_pos as f64 / self.batch_weight as f64;
+        }
+        let g = self.lg(0);
+        // A weight unit is a cell of the finest level: a 4^23th of a level-0 cell.
+        let unit = g.w.to_f64() * g.h.to_f64() / (1u64 << Self::shift(0)) as f64;
+        let est = if unit > 0.0 { range * inv / unit } else { 0.0 };
+        self.last_paper = est;
+        self.paper += est;
+    }
+
+    /// Ends a step placed without cells (the shape has no clearance condition), with the
+    /// trials of the paper's sampler that placed it.
+    pub(crate) fn end_step_paper(&mut self, trials: u64) {
+        if !self.estimating {
+            return;
+        }
+        self.last_paper = trials as f64;
+        self.paper += self.last_paper;
+    }
+
+    /// Estimates, from now on, the trials the paper's sampler would have needed (see
+    /// [`CellSampler::paper_trials`]). Off by default: it costs a floating-point division per
+    /// eight trials, which a board without an FPU feels.
+    pub fn estimate_paper_trials(&mut self) {
+        self.estimating = true;
+    }
+
+    /// An unbiased estimate of the trials the paper's sampler would have needed for the
+    /// placements made since [`CellSampler::estimate_paper_trials`]: the sum, over every
+    /// trial, of `|R| / |U|`, where `R` is the box the paper's sampler draws centres from and
+    /// `U` the union of live cells the trial's cell was drawn from.
+    ///
+    /// Why: with `V` the valid centres, a trial drawn from `U` is accepted with probability
+    /// `|V| / |U|` whatever came before it in the step, so the sum of those probabilities over
+    /// a step's trials has expectation 1 (the step ends at its one acceptance: a martingale
+    /// stopped at an integrable time). Multiplied by `|R| / |V|`, the sum of `|R| / |U|` has
+    /// expectation `|R| / |V|`, which is the expected number of trials of the paper's sampler
+    /// from the same fill (its trials are geometric with success `|V| / |R|`). As the two
+    /// samplers' fills have the same distribution, the estimate's expectation over a whole
+    /// run is the paper's expected trials over a run (without its trial limit; a placement
+    /// the limit would halt is not estimated).
+    pub fn paper_trials(&self) -> f64 {
+        self.paper
+    }
+
+    /// [`CellSampler::paper_trials`] of the last placement alone.
+    pub fn last_paper_trials(&self) -> f64 {
+        self.last_paper
     }
 
     /// The live cell that weight `r` (below the total weight) falls in.
@@ -740,8 +821,12 @@ impl<'c, S: Scalar> CellSampler<'c, S> {
     /// was drawn is tested without bookkeeping (see [`CellSampler::judge`]).
     pub(crate) fn draw<R: RngCore + ?Sized>(&mut self, rng: &mut R) -> Option<Drawn<S>> {
         if self.ahead_pos >= self.ahead_len {
+            if self.estimating && self.batch_weight > 0 {
+                self.step_inv += self.ahead_pos as f64 / self.batch_weight as f64;
+            }
             self.flush();
             let total = self.weight;
+            self.batch_weight = total;
             if total == 0 {
                 return None;
             }

@@ -262,6 +262,102 @@ fn ks_test_separates_distributions_and_accepts_equal_ones() {
     assert!(ks(&a, &shifted).1 < 1e-4, "a shifted distribution accepted: {:?}", ks(&a, &shifted));
 }
 
+/// The trials of one fill of `COUNT` shapes by the reference sampler, or (`fast`) the cell
+/// sampler's estimate of them ([`CellSampler::paper_trials`]).
+fn paper_trials(kind: ShapeKind, periodic: bool, fast: bool, seed: u64) -> f64 {
+    let cap = COUNT as usize;
+    let mut buffers = Buffers::<f64>::new(cap);
+    let mut cov = vec![0u64; 1 << 10];
+    let storage = buffers.storage(&mut cov);
+    let mut e = Engine::<f64>::new(params(kind), region(periodic), storage).expect("valid parameters");
+    let mut rng = rng_from_seed(seed);
+    let stop = Stop {
+        count: Some(COUNT),
+        ..Stop::default()
+    };
+    let mut pool = vec![[0u64; 4]; cells_for(200)];
+    let mut cells = CellSampler::new(&mut pool).expect("cells");
+    cells.estimate_paper_trials();
+    let mut trials = 0u64;
+    let reason = if fast {
+        e.run_fast(&mut cells, &mut rng, &stop, |_| {})
+    } else {
+        e.run(&mut rng, &stop, |p| trials += p.trials)
+    };
+    assert_eq!(reason, StopReason::Count, "{kind:?} periodic {periodic} seed {seed}");
+    if fast {
+        cells.paper_trials()
+    } else {
+        trials as f64
+    }
+}
+
+/// Welch's two-sample test of equal means: the statistic and its two-sided p-value (normal
+/// approximation, right for samples of hundreds).
+fn welch(a: &[f64], b: &[f64]) -> (f64, f64) {
+    let moments = |v: &[f64]| {
+        let n = v.len() as f64;
+        let mean = v.iter().sum::<f64>() / n;
+        (mean, v.iter().map(|x| (x - mean) * (x - mean)).sum::<f64>() / (n - 1.0) / n)
+    };
+    let ((ma, va), (mb, vb)) = (moments(a), moments(b));
+    let t = (ma - mb) / (va + vb).sqrt();
+    (t, libm::erfc(t.abs() / core::f64::consts::SQRT_2))
+}
+
+/// Significance of the whole family of mean comparisons below (Bonferroni over the cases).
+const TRIALS_ALPHA: f64 = 0.01;
+const TRIALS_RUNS: u64 = 400;
+
+/// (label, p) of comparing the mean trials of the reference's fills with the mean estimate of
+/// the cell sampler's, each estimate multiplied by `scale` (1 but for the biased input).
+fn compare_trials(kind: ShapeKind, periodic: bool, scale: f64) -> (String, f64) {
+    let reference: Vec<f64> = (1..=TRIALS_RUNS).map(|s| paper_trials(kind, periodic, false, s)).collect();
+    let fast: Vec<f64> = (1_000_001..=1_000_000 + TRIALS_RUNS)
+        .map(|s| scale * paper_trials(kind, periodic, true, s))
+        .collect();
+    let mean = |v: &[f64]| v.iter().sum::<f64>() / v.len() as f64;
+    let (t, p) = welch(&reference, &fast);
+    let label = format!(
+        "{kind:?} periodic {periodic}: reference {:.1} trials a fill, estimate {:.1} (t = {t:.2})",
+        mean(&reference),
+        mean(&fast)
+    );
+    (label, p)
+}
+
+fn trial_cases() -> [(ShapeKind, bool); 3] {
+    [
+        (ShapeKind::Circle, false),
+        (ShapeKind::Square, true),
+        (ShapeKind::Ring { inner: 0.5 }, false),
+    ]
+}
+
+#[test]
+fn the_cell_sampler_estimates_the_papers_trials() {
+    let alpha = TRIALS_ALPHA / trial_cases().len() as f64;
+    let failures: Vec<String> = trial_cases()
+        .iter()
+        .map(|&(kind, periodic)| compare_trials(kind, periodic, 1.0))
+        .inspect(|(label, p)| eprintln!("{label}: p = {p:.3}"))
+        .filter(|(_, p)| *p < alpha)
+        .map(|(label, p)| format!("{label}: p = {p:.2e} < {alpha:.1e}"))
+        .collect();
+    assert!(
+        failures.is_empty(),
+        "the estimate misses the paper's trials:\n{}",
+        failures.join("\n")
+    );
+}
+
+#[test]
+fn an_estimate_ten_percent_high_fails_the_same_test() {
+    let alpha = TRIALS_ALPHA / trial_cases().len() as f64;
+    let (label, p) = compare_trials(ShapeKind::Circle, false, 1.1);
+    assert!(p < alpha, "the biased estimate passed: {label}, p = {p:.2e}");
+}
+
 #[test]
 fn fast_fills_are_deterministic_and_prefix_stable() {
     for (kind, periodic) in cases() {

@@ -2,7 +2,8 @@
 //! and every drawn shape's paint is compared with the colour its rule gives, worked out here
 //! from the JSON of the same run (size bands of equal width in log(area), SplitMix64 of the
 //! seed and index, or the index in turn); the PNG preview shows the colours; bad colours and
-//! colours where no picture is drawn are refused.
+//! colours where no picture is drawn are refused. Territories take colours by territory (in
+//! turn or at random) or by the size of their cells.
 
 mod common;
 
@@ -442,4 +443,84 @@ fn line_layers_hold_one_colour_each() {
     zf_ok(d, &[&args[..], &["-o", "l.svg"]].concat());
     let pens = assert_pens_in_layers(&read(&d.join("l.svg")), &PALETTE);
     assert!(pens.len() >= 190, "{} circles", pens.len());
+}
+
+/// A territory run's sites' territories, from its JSON.
+fn territories(dir: &std::path::Path, args: &str) -> (u64, Vec<u64>) {
+    zf_ok(dir, &words(&format!("{args} -o t.json")));
+    let doc = parse_json(&read(&dir.join("t.json")));
+    let sites = doc["sites"].as_array().cloned().unwrap_or_default();
+    (u(&doc["params"], "seed"), sites.iter().map(|s| u(s, "territory")).collect())
+}
+
+#[test]
+fn territory_cells_and_shapes_take_their_territorys_colour() {
+    let dir = tmp();
+    let d = dir.path();
+    let palette = PALETTE.map(|c| c.trim_start_matches('#')).join(",");
+    let base = "territory --sites 6 --points 900 --seed 4 --render filled";
+    let (seed, terr) = territories(d, base);
+    for by in ["cycle", "random"] {
+        zf_ok(
+            d,
+            &words(&format!("{base} --palette {palette} --color-by {by} --background 000 -o t.svg")),
+        );
+        let svg = read(&d.join("t.svg"));
+        let paths = painted(&svg, false);
+        assert_eq!(
+            paths.first().map(|p| p.colour.as_str()),
+            Some("#000000"),
+            "{by}: no background first"
+        );
+        let want: Vec<&str> = terr.iter().map(|&t| PALETTE[pick(by, seed, t, 1.0, (1.0, 1.0))]).collect();
+        if let Err(e) = check(&paths[1..], &want) {
+            panic!("--color-by {by}: {e}");
+        }
+        if by == "cycle" {
+            // Cycle is the default for territories: the same picture without the flag.
+            zf_ok(d, &words(&format!("{base} --palette {palette} --background 000 -o u.svg")));
+            assert_eq!(read(&d.join("u.svg")), svg, "cycle is not the default");
+        }
+    }
+    // By size: the larger of two cells never takes a later colour (cells within 1% of each
+    // other may fall either side of a band's edge).
+    zf_ok(d, &words(&format!("{base} --palette {palette} --color-by size -o s.svg")));
+    let cells = painted(&read(&d.join("s.svg")), false);
+    assert_eq!(cells.len(), terr.len());
+    let band = |p: &Painted| PALETTE.iter().position(|c| *c == p.colour).unwrap_or(usize::MAX);
+    for a in &cells {
+        for b in cells.iter().filter(|b| b.area * 1.01 < a.area) {
+            assert!(band(a) <= band(b), "a cell of {} mm² after one of {} mm²", a.area, b.area);
+        }
+    }
+    let used: std::collections::BTreeSet<usize> = cells.iter().map(band).collect();
+    assert!(used.contains(&0) && used.contains(&(PALETTE.len() - 1)), "bands used: {used:?}");
+    // A fill's own shapes, each in its site's territory colour.
+    zf_ok(d, &words("fill --count 300 --seed 2 -o f.json"));
+    let from = "territory --sites-from f.json --sites 3 --seed 5 --render shapes";
+    let (seed, terr) = territories(d, from);
+    zf_ok(d, &words(&format!("{from} --palette {palette} --color-by random -o f.svg")));
+    let want: Vec<&str> = terr.iter().map(|&t| PALETTE[pick("random", seed, t, 1.0, (1.0, 1.0))]).collect();
+    if let Err(e) = check(&painted(&read(&d.join("f.svg")), false), &want) {
+        panic!("shapes: {e}");
+    }
+}
+
+#[test]
+fn territory_colours_are_refused_where_nothing_shows_them() {
+    let dir = tmp();
+    let d = dir.path();
+    let cases = [
+        ("territory --render boundaries --palette 000 -o k.svg", "--palette"),
+        ("territory --render filled --palette 000 -o k.json", "--palette"),
+        ("territory --render cells --background fff -o k.svg", "--background"),
+        ("territory --render filled --palette 000 --color 0.5,0.5,0.5 -o k.svg", "--palette"),
+        ("territory --render filled --palette 000 --color-by kind -o k.svg", "--color-by"),
+    ];
+    for (args, flag) in cases {
+        let o = zf(d, &words(args));
+        assert_eq!(o.code, 2, "{args}: exit {}", o.code);
+        assert!(names_flag(&o.stderr, flag), "{args}: {}", o.stderr);
+        assert!(listing(d).is_empty(), "{args} wrote {:?}", listing(d));
+    }
 }

@@ -223,6 +223,10 @@ fn line_territory_and_tile_files_carry_their_commands() {
             gcode,
         ),
         ("territory --sites 3 --points 1500 --render filled --boundary --pen-width 0.4", svg),
+        (
+            "territory --sites 4 --points 1500 --render filled --palette 264653,e76f51,e9c46a --background fefae0",
+            svg,
+        ),
         ("tile --tries 3000 --style filled --layout mosaic --rows 2", svg),
         ("tile --tries 3000 --render voronoi --pen-width 0.2", svg),
         (

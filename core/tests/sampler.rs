@@ -352,6 +352,34 @@ fn the_cell_sampler_estimates_the_papers_trials() {
 }
 
 #[test]
+fn estimating_the_papers_trials_changes_no_placement() {
+    let run = |estimate: bool| {
+        let mut buffers = Buffers::<f64>::new(300);
+        let storage = buffers.storage(&mut []);
+        let mut e = Engine::<f64>::new(params(ShapeKind::Circle), region(true), storage).expect("valid");
+        let mut pool = vec![[0u64; 4]; cells_for(300)];
+        let mut cells = CellSampler::new(&mut pool).expect("cells");
+        if estimate {
+            cells.estimate_paper_trials();
+        }
+        let stop = Stop {
+            count: Some(300),
+            ..Stop::default()
+        };
+        let mut trials = Vec::new();
+        e.run_fast(&mut cells, &mut rng_from_seed(5), &stop, |p| trials.push(p.trials));
+        let (paper, last) = (cells.paper_trials(), cells.last_paper_trials());
+        (e.placed().to_vec(), trials, paper, last)
+    };
+    let (with, without) = (run(true), run(false));
+    assert_eq!(with.0, without.0, "the placements differ");
+    assert_eq!(with.1, without.1, "the trials differ");
+    assert_eq!((without.2, without.3), (0.0, 0.0), "an estimate made while off");
+    // Each placement's estimate is positive, so the total exceeds the last one.
+    assert!(with.2 > with.3 && with.3 > 0.0, "estimates {} and {}", with.2, with.3);
+}
+
+#[test]
 fn an_estimate_ten_percent_high_fails_the_same_test() {
     let alpha = TRIALS_ALPHA / trial_cases().len() as f64;
     let (label, p) = compare_trials(ShapeKind::Circle, false, 1.1);

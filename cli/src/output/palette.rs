@@ -163,7 +163,8 @@ pub struct ColourArgs {
     /// commas; their fill, or their stroke with --style outline.
     #[arg(long, value_parser = palette)]
     pub palette: Option<Palette>,
-    /// SVG/PNG: how shapes take the palette's colours (default size).
+    /// SVG/PNG: how shapes take the palette's colours (default size; territory: cycle, by
+    /// territory).
     #[arg(long = "color-by", value_enum, requires = "palette")]
     pub color_by: Option<ColorBy>,
     /// SVG/PNG: a background colour (hex rrggbb or rgb) behind the drawing.
@@ -203,16 +204,26 @@ impl ColourArgs {
         Ok(())
     }
 
-    /// The rule that gives out the colours.
+    /// The rule that gives out the colours (`size` unless given).
     pub fn by(&self) -> ColorBy {
-        self.color_by.unwrap_or(ColorBy::Size)
+        self.by_or(ColorBy::Size)
+    }
+
+    /// The rule that gives out the colours, `default` unless given.
+    pub fn by_or(&self, default: ColorBy) -> ColorBy {
+        self.color_by.unwrap_or(default)
     }
 
     /// The flags as a command that reproduces the picture writes them.
     pub fn flags(&self) -> String {
+        self.flags_or(ColorBy::Size)
+    }
+
+    /// [`ColourArgs::flags`] where `--color-by` defaults to `default`.
+    pub fn flags_or(&self, default: ColorBy) -> String {
         let mut s = String::new();
         if let Some(p) = &self.palette {
-            s.push_str(&format!(" --palette {} --color-by {}", p.arg(), self.by().name()));
+            s.push_str(&format!(" --palette {} --color-by {}", p.arg(), self.by_or(default).name()));
         }
         if let Some(bg) = &self.background {
             s.push_str(&format!(" --background {}", bg.trim_start_matches('#')));

@@ -292,6 +292,18 @@ fn cross_param(a: Pt, d: Pt, p: Pt, q: Pt) -> Option<f64> {
     (t > 0.0 && t < 1.0 && (0.0..=1.0).contains(&u)).then_some(t)
 }
 
+/// The signed area of a polygon (positive when counter-clockwise).
+pub fn area(poly: &[Pt]) -> f64 {
+    let n = poly.len();
+    (0..n)
+        .map(|i| {
+            let (a, b) = (poly[i], poly[(i + 1) % n]);
+            a[0] * b[1] - b[0] * a[1]
+        })
+        .sum::<f64>()
+        / 2.0
+}
+
 /// Squared distance.
 pub fn dist2(a: Pt, b: Pt) -> f64 {
     let (dx, dy) = (a[0] - b[0], a[1] - b[1]);

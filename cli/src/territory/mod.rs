@@ -123,6 +123,10 @@ pub struct TerritoryArgs {
     /// No progress bar (and no G-code figures on stderr).
     #[arg(short, long)]
     pub quiet: bool,
+    /// Palette colours instead of the --color rules (filled cells or shapes; default
+    /// --color-by cycle: territory k takes colour k).
+    #[command(flatten)]
+    pub colours: crate::output::palette::ColourArgs,
     /// Plotter and laser output (G-code): machine, feeds, passes, order, --fit/--center.
     #[command(flatten)]
     pub plot: crate::plot::PlotArgs,
@@ -157,6 +161,20 @@ fn check_plot(a: &TerritoryArgs, format: TerritoryFormat) -> Result<(), CliError
         ));
     } else {
         p.refuse_except(&[], |_| crate::plot::FOR_GCODE.to_string())?;
+    }
+    Ok(())
+}
+
+/// How territories take a palette's colours unless `--color-by` says: in turn.
+const COLOUR_BY: crate::output::palette::ColorBy = crate::output::palette::ColorBy::Cycle;
+
+/// Refuses colour flags where nothing shows them or where they clash with `--color`.
+fn check_colours(a: &TerritoryArgs, format: TerritoryFormat) -> Result<(), CliError> {
+    let shown = matches!(format, TerritoryFormat::Svg | TerritoryFormat::Png) && matches!(a.render, Render::Filled | Render::Shapes);
+    a.colours
+        .check(shown, "use --render filled or shapes with an .svg or .png output", true)?;
+    if a.colours.palette.is_some() && !a.colors.is_empty() {
+        return Err(CliError::arg("--palette", "replaces the --color rules; give one or the other"));
     }
     Ok(())
 }
@@ -449,6 +467,7 @@ fn command_line(a: &TerritoryArgs, k: usize, points: usize, region: &str) -> Str
         }
     }
     s.push_str(&format!(" --render {}", a.render.name()));
+    s.push_str(&a.colours.flags_or(COLOUR_BY));
     if a.pen_width != 0.3 {
         s.push_str(&format!(" --pen-width {}", a.pen_width));
     }
@@ -724,12 +743,13 @@ pub fn compute(a: &TerritoryArgs) -> Result<Outcome, CliError> {
 pub fn render_bytes(o: &Outcome, a: &TerritoryArgs, format: TerritoryFormat) -> Result<Vec<u8>, CliError> {
     let desc = command_line(a, o.doc.seeds, o.doc.params.points, &o.doc.region.arg());
     let svg = || {
-        let colours: Vec<[f64; 3]> = o.doc.sites.iter().map(|s| s.color).collect();
+        let colours = site_colours(o, a);
         let style = Style {
             render: a.render,
             pen_width: a.pen_width,
             thin_width: a.thin_width,
             outline: a.boundary,
+            background: a.colours.background.as_deref(),
         };
         let title = format!(
             "zetafill territory: {} sites, {} territories, seed {}",
@@ -751,6 +771,28 @@ pub fn render_bytes(o: &Outcome, a: &TerritoryArgs, format: TerritoryFormat) -> 
     })
 }
 
+/// Each site's colour as `#rrggbb`: its HSB colour, or with `--palette` the palette's by
+/// `--color-by`: `cycle` and `random` by territory, `size` by the area of what is drawn for
+/// the site (its cell, or with `--render shapes` its shape).
+fn site_colours(o: &Outcome, a: &TerritoryArgs) -> Vec<String> {
+    let Some(p) = &a.colours.palette else {
+        return o.doc.sites.iter().map(|s| colour::hex(s.color)).collect();
+    };
+    let areas: Vec<f64> = if a.render == Render::Shapes {
+        o.shapes.iter().map(FillShape::area).collect()
+    } else {
+        render::cells(&o.model, &o.clip).iter().map(|c| geom::area(c).abs()).collect()
+    };
+    let items: Vec<(u64, f64)> = o
+        .doc
+        .sites
+        .iter()
+        .zip(areas.iter().chain(std::iter::repeat(&0.0)))
+        .map(|(s, &area)| (u64::from(s.territory), area))
+        .collect();
+    crate::output::palette::assign_items(&p.0, a.colours.by_or(COLOUR_BY), a.seed, &items, |_| 0)
+}
+
 /// `zetafill territory`.
 pub fn run(a: &TerritoryArgs) -> Result<(), CliError> {
     let dest = Dest::parse(&a.output);
@@ -765,6 +807,7 @@ pub fn run(a: &TerritoryArgs) -> Result<(), CliError> {
     let format = TerritoryFormat::resolve(a.format, &a.output)?;
     a.raster.check(format == TerritoryFormat::Png)?;
     check_plot(a, format)?;
+    check_colours(a, format)?;
     let o = compute(a)?;
     let bytes = render_bytes(&o, a, format)?;
     dest.write(&bytes)

@@ -9,7 +9,6 @@
 //! Like the fill's SVG: y is flipped about the region's top (no transform), four decimals,
 //! the parameters in `<title>` and `<desc>`, no timestamp (same run, same bytes).
 
-use super::colour::hex;
 use super::geom::{self, Clip, Dual, Pt};
 use super::model::Model;
 use crate::output::num;
@@ -67,9 +66,20 @@ pub enum FillShape {
     Poly(Vec<Pt>),
 }
 
+impl FillShape {
+    /// The area it covers.
+    pub fn area(&self) -> f64 {
+        match self {
+            FillShape::Circle { r, .. } => std::f64::consts::PI * r * r,
+            FillShape::Ring { r, inner, .. } => std::f64::consts::PI * (r * r - inner * inner),
+            FillShape::Poly(vs) => geom::area(vs).abs(),
+        }
+    }
+}
+
 /// Drawing options.
 #[derive(Debug, Clone, Copy)]
-pub struct Style {
+pub struct Style<'a> {
     /// What to draw.
     pub render: Render,
     /// Stroke of boundaries (mm).
@@ -78,6 +88,8 @@ pub struct Style {
     pub thin_width: f64,
     /// Also draw the region's outline.
     pub outline: bool,
+    /// A background colour behind filled cells or shapes.
+    pub background: Option<&'a str>,
 }
 
 /// The indices of the Voronoi edges between sites of different territories.
@@ -191,11 +203,15 @@ pub fn document(clip: &Clip, title: &str, desc: &str) -> Document {
         .add(Description::new().add(Text::new(desc)))
 }
 
-/// Renders the pattern. `colours` holds each site's HSB colour; `shapes` the fill's shapes
-/// (for [`Render::Shapes`]).
-pub fn svg(model: &Model, clip: &Clip, colours: &[[f64; 3]], shapes: &[FillShape], style: &Style, title: &str, desc: &str) -> Vec<u8> {
+/// Renders the pattern. `colours` holds each site's colour (`#rrggbb`); `shapes` the fill's
+/// shapes (for [`Render::Shapes`]).
+pub fn svg(model: &Model, clip: &Clip, colours: &[String], shapes: &[FillShape], style: &Style, title: &str, desc: &str) -> Vec<u8> {
     let f = Frame::of(clip);
     let mut doc = document(clip, title, desc);
+    if let Some(bg) = style.background {
+        let (x0, y0, x1, y1) = clip.bbox();
+        doc = doc.add(crate::output::palette::background(bg, x1 - x0, y1 - y0));
+    }
     let clipped = !clip.is_rect();
     if clipped {
         let cp = ClipPath::new()
@@ -236,7 +252,7 @@ pub fn svg(model: &Model, clip: &Clip, colours: &[[f64; 3]], shapes: &[FillShape
                     continue;
                 }
                 let pts: Vec<String> = cell.iter().map(|&p| f.pt(p)).collect();
-                let col = hex(*c);
+                let col = c.clone();
                 // A hairline of the cell's own colour closes anti-aliasing seams.
                 g = g.add(
                     Polygon::new()
@@ -250,7 +266,7 @@ pub fn svg(model: &Model, clip: &Clip, colours: &[[f64; 3]], shapes: &[FillShape
         Render::Shapes => {
             let mut g = Group::new().set("id", "shapes").set("stroke", "none");
             for (sh, c) in shapes.iter().zip(colours) {
-                let col = hex(*c);
+                let col = c.clone();
                 g = match sh {
                     FillShape::Circle { c, r } => g.add(Path::new().set("d", circle_d(&f, *c, *r)).set("fill", col)),
                     FillShape::Ring { c, r, inner } => g.add(

@@ -1,4 +1,4 @@
-//! Reference outputs: every `examples/gallery/NAME.args` (a `fill`, `line` or `tile` command) run in
+//! Reference outputs: every `examples/gallery/NAME.args` (a `fill`, `line`, `tile` or `territory` command) run in
 //! process must write exactly the committed picture. Set `ZETAFILL_REGENERATE=1` to rewrite the pictures after an intended
 //! change (and look at them before committing).
 
@@ -27,6 +27,10 @@ fn render(args_file: &Path) -> (PathBuf, Vec<u8>) {
         .command;
     if let zetafill_cli::Command::Tile(t) = command {
         let (_, bytes) = zetafill_cli::tile::output(&t).unwrap_or_else(|e| panic!("{}: {e}", args_file.display()));
+        return (gallery().join(&t.output), bytes);
+    }
+    if let zetafill_cli::Command::Territory(t) = command {
+        let bytes = zetafill_cli::territory::output(&t).unwrap_or_else(|e| panic!("{}: {e}", args_file.display()));
         return (gallery().join(&t.output), bytes);
     }
     if let zetafill_cli::Command::Line(l) = command {

@@ -804,11 +804,16 @@ pub fn run(a: &TerritoryArgs) -> Result<(), CliError> {
         inputs.push(p.as_path());
     }
     dest.check("--output", &inputs)?;
+    let bytes = output(a)?;
+    dest.write(&bytes)
+}
+
+/// The bytes `zetafill territory` writes: the flags checked, the pattern grown and rendered.
+pub fn output(a: &TerritoryArgs) -> Result<Vec<u8>, CliError> {
     let format = TerritoryFormat::resolve(a.format, &a.output)?;
     a.raster.check(format == TerritoryFormat::Png)?;
     check_plot(a, format)?;
     check_colours(a, format)?;
     let o = compute(a)?;
-    let bytes = render_bytes(&o, a, format)?;
-    dest.write(&bytes)
+    render_bytes(&o, a, format)
 }

@@ -445,12 +445,73 @@ fn line_layers_hold_one_colour_each() {
     assert!(pens.len() >= 190, "{} circles", pens.len());
 }
 
-/// A territory run's sites' territories, from its JSON.
-fn territories(dir: &std::path::Path, args: &str) -> (u64, Vec<u64>) {
+/// A territory run's seed and sites (point, territory), from its JSON.
+fn territory_sites(dir: &std::path::Path, args: &str) -> (u64, Vec<([f64; 2], u64)>) {
     zf_ok(dir, &words(&format!("{args} -o t.json")));
     let doc = parse_json(&read(&dir.join("t.json")));
     let sites = doc["sites"].as_array().cloned().unwrap_or_default();
-    (u(&doc["params"], "seed"), sites.iter().map(|s| u(s, "territory")).collect())
+    let list = sites.iter().map(|s| (pt(&s["point"]), u(s, "territory"))).collect();
+    (u(&doc["params"], "seed"), list)
+}
+
+/// The pixels of a 400 x 400 PNG of the 200 x 200 mm region: the colour at a point in mm.
+fn png_sampler(png: &[u8]) -> impl Fn([f64; 2]) -> String {
+    let mut reader = png::Decoder::new(png).read_info().unwrap_or_else(|e| panic!("{e}"));
+    let mut buf = vec![0u8; reader.output_buffer_size()];
+    let frame = reader.next_frame(&mut buf).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!((frame.width, frame.height), (400, 400));
+    move |p: [f64; 2]| {
+        let (i, j) = ((p[0] * 2.0) as usize, ((200.0 - p[1]) * 2.0) as usize);
+        let at = 4 * (j * 400 + i);
+        format!("#{:02x}{:02x}{:02x}", buf[at], buf[at + 1], buf[at + 2])
+    }
+}
+
+fn dist(a: [f64; 2], b: [f64; 2]) -> f64 {
+    (a[0] - b[0]).hypot(a[1] - b[1])
+}
+
+/// The sites whose pixel lies well inside their cell: a millimetre from the nearest
+/// bisector and from the region's edge.
+fn clear_sites(sites: &[([f64; 2], u64)]) -> Vec<usize> {
+    (0..sites.len())
+        .filter(|&i| {
+            let p = sites[i].0;
+            let near = sites
+                .iter()
+                .enumerate()
+                .filter(|&(j, _)| j != i)
+                .map(|(_, s)| dist(s.0, p))
+                .fold(f64::MAX, f64::min);
+            near / 2.0 > 1.0 && p.iter().all(|&v| (1.0..199.0).contains(&v))
+        })
+        .collect()
+}
+
+/// The area of site `i`'s Voronoi cell in the 200 x 200 square, by brute force: the square
+/// cut by the bisector with every other site.
+fn cell_area(sites: &[([f64; 2], u64)], i: usize) -> f64 {
+    let s = sites[i].0;
+    let mut poly = vec![[0.0, 0.0], [200.0, 0.0], [200.0, 200.0], [0.0, 200.0]];
+    for o in sites.iter().enumerate().filter(|&(j, _)| j != i).map(|(_, o)| o.0) {
+        // Keep the side nearer s: (x - m) . (o - s) <= 0.
+        let m = [(s[0] + o[0]) / 2.0, (s[1] + o[1]) / 2.0];
+        let side = |p: [f64; 2]| (p[0] - m[0]) * (o[0] - s[0]) + (p[1] - m[1]) * (o[1] - s[1]);
+        let mut out = Vec::new();
+        for k in 0..poly.len() {
+            let (a, b) = (poly[k], poly[(k + 1) % poly.len()]);
+            let (fa, fb) = (side(a), side(b));
+            if fa <= 0.0 {
+                out.push(a);
+            }
+            if (fa < 0.0) != (fb < 0.0) && fa != fb {
+                let t = fa / (fa - fb);
+                out.push([a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])]);
+            }
+        }
+        poly = out;
+    }
+    shoelace(&poly)
 }
 
 #[test]
@@ -459,12 +520,19 @@ fn territory_cells_and_shapes_take_their_territorys_colour() {
     let d = dir.path();
     let palette = PALETTE.map(|c| c.trim_start_matches('#')).join(",");
     let base = "territory --sites 6 --points 900 --seed 4 --render filled";
-    let (seed, terr) = territories(d, base);
+    let (seed, sites) = territory_sites(d, base);
+    let clear = clear_sites(&sites);
+    assert!(clear.len() > 600, "only {} sites to look at", clear.len());
     for by in ["cycle", "random"] {
-        zf_ok(
-            d,
-            &words(&format!("{base} --palette {palette} --color-by {by} --background 000 -o t.svg")),
-        );
+        let args = format!("{base} --palette {palette} --color-by {by} --background 000");
+        zf_ok(d, &words(&format!("{args} --pixels 400 -o t.png")));
+        let at = png_sampler(&read(&d.join("t.png")));
+        for &i in &clear {
+            let want = PALETTE[pick(by, seed, sites[i].1, 1.0, (1.0, 1.0))];
+            assert_eq!(at(sites[i].0), want, "--color-by {by}: site {i} of territory {}", sites[i].1);
+        }
+        // The SVG: the background, then one path per colour used.
+        zf_ok(d, &words(&format!("{args} -o t.svg")));
         let svg = read(&d.join("t.svg"));
         let paths = painted(&svg, false);
         assert_eq!(
@@ -472,35 +540,40 @@ fn territory_cells_and_shapes_take_their_territorys_colour() {
             Some("#000000"),
             "{by}: no background first"
         );
-        let want: Vec<&str> = terr.iter().map(|&t| PALETTE[pick(by, seed, t, 1.0, (1.0, 1.0))]).collect();
-        if let Err(e) = check(&paths[1..], &want) {
-            panic!("--color-by {by}: {e}");
-        }
+        let colours: std::collections::BTreeSet<&str> = paths[1..].iter().map(|p| p.colour.as_str()).collect();
+        assert_eq!(colours.len(), paths.len() - 1, "{by}: a colour drawn twice");
+        assert!(colours.iter().all(|c| PALETTE.contains(c)), "{by}: {colours:?}");
         if by == "cycle" {
             // Cycle is the default for territories: the same picture without the flag.
             zf_ok(d, &words(&format!("{base} --palette {palette} --background 000 -o u.svg")));
             assert_eq!(read(&d.join("u.svg")), svg, "cycle is not the default");
         }
     }
-    // By size: the larger of two cells never takes a later colour (cells within 1% of each
+    // By size: of two cells, the larger never takes a later colour (cells within 1% of each
     // other may fall either side of a band's edge).
-    zf_ok(d, &words(&format!("{base} --palette {palette} --color-by size -o s.svg")));
-    let cells = painted(&read(&d.join("s.svg")), false);
-    assert_eq!(cells.len(), terr.len());
-    let band = |p: &Painted| PALETTE.iter().position(|c| *c == p.colour).unwrap_or(usize::MAX);
+    zf_ok(
+        d,
+        &words(&format!("{base} --palette {palette} --color-by size --pixels 400 -o s.png")),
+    );
+    let at = png_sampler(&read(&d.join("s.png")));
+    let band = |i: usize| PALETTE.iter().position(|c| *c == at(sites[i].0)).unwrap_or(usize::MAX);
+    let cells: Vec<(f64, usize)> = clear.iter().map(|&i| (cell_area(&sites, i), band(i))).collect();
     for a in &cells {
-        for b in cells.iter().filter(|b| b.area * 1.01 < a.area) {
-            assert!(band(a) <= band(b), "a cell of {} mm² after one of {} mm²", a.area, b.area);
+        for b in cells.iter().filter(|b| b.0 * 1.01 < a.0) {
+            assert!(a.1 <= b.1, "a cell of {} mm² after one of {} mm²", a.0, b.0);
         }
     }
-    let used: std::collections::BTreeSet<usize> = cells.iter().map(band).collect();
-    assert!(used.contains(&0) && used.contains(&(PALETTE.len() - 1)), "bands used: {used:?}");
+    let used: std::collections::BTreeSet<usize> = cells.iter().map(|c| c.1).collect();
+    assert!(used.contains(&0) && used.len() >= 2, "bands used: {used:?}");
     // A fill's own shapes, each in its site's territory colour.
     zf_ok(d, &words("fill --count 300 --seed 2 -o f.json"));
     let from = "territory --sites-from f.json --sites 3 --seed 5 --render shapes";
-    let (seed, terr) = territories(d, from);
+    let (seed, sites) = territory_sites(d, from);
     zf_ok(d, &words(&format!("{from} --palette {palette} --color-by random -o f.svg")));
-    let want: Vec<&str> = terr.iter().map(|&t| PALETTE[pick("random", seed, t, 1.0, (1.0, 1.0))]).collect();
+    let want: Vec<&str> = sites
+        .iter()
+        .map(|&(_, t)| PALETTE[pick("random", seed, t, 1.0, (1.0, 1.0))])
+        .collect();
     if let Err(e) = check(&painted(&read(&d.join("f.svg")), false), &want) {
         panic!("shapes: {e}");
     }
@@ -523,4 +596,38 @@ fn territory_colours_are_refused_where_nothing_shows_them() {
         assert!(names_flag(&o.stderr, flag), "{args}: {}", o.stderr);
         assert!(listing(d).is_empty(), "{args} wrote {:?}", listing(d));
     }
+}
+
+/// A territory in flat palette colours shows no seams: rendered, the pixel on the edge
+/// between two cells of one territory is that territory's colour exactly, not mixed with the
+/// background (each colour is drawn as one path, so anti-aliasing leaves no gap between its
+/// cells).
+#[test]
+fn flat_territories_have_no_seams_between_their_cells() {
+    let dir = tmp();
+    let d = dir.path();
+    let base = "territory --sites 4 --points 600 --seed 7 --render filled";
+    let (_, sites) = territory_sites(d, base);
+    let palette = ["#ff0000", "#00ff00", "#0000ff", "#ffff00"];
+    zf_ok(
+        d,
+        &words(&format!("{base} --palette f00,0f0,00f,ff0 --background 000 --pixels 400 -o t.png")),
+    );
+    let at = png_sampler(&read(&d.join("t.png")));
+    let mut edges = 0;
+    for (i, &(a, ta)) in sites.iter().enumerate() {
+        for &(b, tb) in &sites[i + 1..] {
+            let m = [(a[0] + b[0]) / 2.0, (a[1] + b[1]) / 2.0];
+            let r = dist(a, m);
+            // On the edge of the two cells, a millimetre from any other cell and the border.
+            let clear =
+                sites.iter().all(|&(c, _)| c == a || c == b || dist(c, m) > r + 1.0) && m.iter().all(|&v| (1.0..199.0).contains(&v));
+            if ta != tb || !clear {
+                continue;
+            }
+            edges += 1;
+            assert_eq!(at(m), palette[ta as usize % 4], "a seam between the cells at {a:?} and {b:?}");
+        }
+    }
+    assert!(edges > 100, "only {edges} edges checked");
 }

@@ -750,6 +750,7 @@ pub fn render_bytes(o: &Outcome, a: &TerritoryArgs, format: TerritoryFormat) -> 
             thin_width: a.thin_width,
             outline: a.boundary,
             background: a.colours.background.as_deref(),
+            flat: a.colours.palette.is_some(),
         };
         let title = format!(
             "zetafill territory: {} sites, {} territories, seed {}",

@@ -3,7 +3,8 @@
 //!   polylines (every edge drawn once) and clipped exactly to the region: the plotter's
 //!   product;
 //! - `cells`: every other Voronoi edge as thin lines in their own layer, plus the boundaries;
-//! - `filled`: each site's Voronoi cell filled with its colour;
+//! - `filled`: each site's Voronoi cell filled with its colour (with a palette, the cells of
+//!   one colour as one path, seamless);
 //! - `shapes` (sites from a fill): the fill's own shapes filled with their site's colour.
 //!
 //! Like the fill's SVG: y is flipped about the region's top (no transform), four decimals,
@@ -90,6 +91,9 @@ pub struct Style<'a> {
     pub outline: bool,
     /// A background colour behind filled cells or shapes.
     pub background: Option<&'a str>,
+    /// Flat colours (a palette): the cells of each colour are drawn as one path, so that
+    /// anti-aliasing leaves no seam between them.
+    pub flat: bool,
 }
 
 /// The indices of the Voronoi edges between sites of different territories.
@@ -247,7 +251,22 @@ pub fn svg(model: &Model, clip: &Clip, colours: &[String], shapes: &[FillShape],
             if clipped {
                 g = g.set("clip-path", "url(#region)");
             }
-            for (cell, c) in cells(model, clip).iter().zip(colours) {
+            let cells = cells(model, clip);
+            if style.flat {
+                // One path per colour, its cells as subpaths, in order of first use.
+                let mut order: Vec<(&String, Vec<String>)> = Vec::new();
+                for (cell, c) in cells.iter().zip(colours).filter(|(cell, _)| cell.len() >= 3) {
+                    let ring = ring_d(&f, cell);
+                    match order.iter_mut().find(|(k, _)| *k == c) {
+                        Some((_, rings)) => rings.push(ring),
+                        None => order.push((c, vec![ring])),
+                    }
+                }
+                for (c, rings) in order {
+                    g = g.add(Path::new().set("d", rings.join(" ")).set("fill", c.clone()).set("stroke", "none"));
+                }
+            }
+            for (cell, c) in cells.iter().zip(colours).filter(|_| !style.flat) {
                 if cell.len() < 3 {
                     continue;
                 }

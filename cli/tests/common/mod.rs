@@ -701,8 +701,6 @@ pub struct Painted {
     pub inside: [f64; 2],
     /// Its fill (or stroke) colour as `#rrggbb`.
     pub colour: String,
-    /// The area of the polygon through its points, in mm² (for a path of straight lines).
-    pub area: f64,
 }
 
 /// The paths of an SVG in document order, with their fill or stroke colour.
@@ -729,10 +727,6 @@ pub fn painted(bytes: &[u8], stroke: bool) -> Vec<Painted> {
                     let data = p.data();
                     let curved = data.verbs().iter().any(|v| matches!(v, PathVerb::Quad | PathVerb::Cubic));
                     let mut pts = data.points().to_vec();
-                    let mut page = pts.clone();
-                    p.abs_transform().map_points(&mut page);
-                    let ring: Vec<[f64; 2]> = page.iter().map(|q| [f64::from(q.x) * MM, f64::from(q.y) * MM]).collect();
-                    let area = shoelace(&ring);
                     let inside = if curved || pts.is_empty() {
                         centre
                     } else {
@@ -741,12 +735,7 @@ pub fn painted(bytes: &[u8], stroke: bool) -> Vec<Painted> {
                         let (sx, sy) = pts.iter().fold((0.0, 0.0), |(x, y), q| (x + f64::from(q.x), y + f64::from(q.y)));
                         [sx / n * MM, sy / n * MM]
                     };
-                    out.push(Painted {
-                        centre,
-                        inside,
-                        colour,
-                        area,
-                    });
+                    out.push(Painted { centre, inside, colour });
                 }
                 _ => {}
             }

@@ -774,7 +774,7 @@ pub fn render_bytes(o: &Outcome, a: &TerritoryArgs, format: TerritoryFormat) -> 
 
 /// Each site's colour as `#rrggbb`: its HSB colour, or with `--palette` the palette's by
 /// `--color-by`: `cycle` and `random` by territory, `size` by the area of what is drawn for
-/// the site (its cell, or with `--render shapes` its shape).
+/// the site (its cell within the region's box, or with `--render shapes` its shape).
 fn site_colours(o: &Outcome, a: &TerritoryArgs) -> Vec<String> {
     let Some(p) = &a.colours.palette else {
         return o.doc.sites.iter().map(|s| colour::hex(s.color)).collect();

@@ -284,19 +284,8 @@ fn line_segments_take_the_colour_of_their_rule() {
         }
         zf_ok(d, &[&args[..], &["-o", "l.json"]].concat());
         let doc = parse_json(&read(&d.join("l.json")));
-        let colour = [
-            "--render",
-            render,
-            "--style",
-            style,
-            "--palette",
-            &list,
-            "--color-by",
-            by,
-            "--background",
-            "fefae0",
-        ];
-        zf_ok(d, &[&args[..], &colour, &["-o", "l.svg"]].concat());
+        let colour = format!("--render {render} --style {style} --palette {list} --color-by {by} --background fefae0");
+        zf_ok(d, &[&args[..], &words(&colour), &["-o", "l.svg"]].concat());
         let svg = read(&d.join("l.svg"));
         assert_eq!(painted(&svg, false)[0].colour, "#fefae0", "{render}: the background comes first");
         let stroke = render == "dashes" || style == "outline" && render == "circles";
@@ -366,18 +355,8 @@ fn cobblestone_cells_take_their_shapes_colour() {
             args.push("--periodic");
         }
         let doc = fill_json(d, &args);
-        let colour = [
-            "--voronoi",
-            "--style",
-            "filled",
-            "--palette",
-            &list,
-            "--color-by",
-            by,
-            "--background",
-            "fefae0",
-        ];
-        let svg = fill_to(d, "v.svg", &[&args[..], &colour].concat());
+        let colour = format!("--voronoi --style filled --palette {list} --color-by {by} --background fefae0");
+        let svg = fill_to(d, "v.svg", &[&args[..], &words(&colour)].concat());
         let paths = painted(&svg, false);
         assert_eq!(paths[0].colour, "#fefae0", "{region}: the background first");
         let cells: Vec<&Painted> = paths[1..].iter().filter(|p| p.colour.starts_with('#')).collect();

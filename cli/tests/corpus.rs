@@ -1,0 +1,181 @@
+//! The output corpus: the SHA-256 of what each of a fixed list of commands writes, pinned.
+//!
+//! The list covers every subcommand, every output format, every built-in machine profile and
+//! a profile file, every shape and region kind, both samplers and both scalars, the colour,
+//! layer, page, hatch and relief flags, and one halted run. The commands run in order in one
+//! folder, so later ones read what earlier ones wrote (a fill's JSON for `--sites-from` and
+//! `stats dimension`, a profile written by `machines show`). What is hashed is the `-o` file,
+//! or standard output for commands that print.
+//!
+//! Any changed byte fails the test. That is the point: the internals may be rebuilt freely, the
+//! files may not change. To re-mint after a change that is meant to alter outputs (say which
+//! and why in the commit), run
+//! `cargo test -p zetafill-cli --release --test corpus -- --nocapture` and copy the printed
+//! table into `CORPUS`.
+
+mod common;
+
+use common::{tmp, zf};
+use sha2::{Digest, Sha256};
+use std::path::Path;
+
+/// A palette used by several entries.
+const P5: &str = "264653,2a9d8f,e9c46a,f4a261,e76f51";
+
+/// (command, expected exit code, SHA-256 of its output). `{P5}` stands for the palette above.
+const CORPUS: &[(&str, i32, &str)] = &[
+    // fill: shapes, regions, stop conditions, formats
+    ("fill --count 300 -o circles.svg", 0, "916098ed8cb69dae94a65ba5a21f97a9868e2075d482e84e0de1fb7d7ae56af0"),
+    ("fill --c 1.25 --count 400 -o fill.json", 0, "0dd6e3a7a838f57462046f045f037e315914768364eecdf8eb451afc27b924ca"),
+    ("fill --shape square --count 300 --seed 2 -o squares.json", 0, "7b916c009e162d7a77aecb1afc0ed816f4aada8e92da73b24a6e8f48215473cc"),
+    ("fill --shape rect:2.5 --rotate none --region rect:200:120 --c 1.2 --n-offset 3 --count 300 --seed 3 -o rects.csv", 0, "496d44644c1db6d97786396b02cb16a993c7a6b3d48ad3e6190decf87de8d671"),
+    ("fill --shape triangle --count 200 --seed 4 --style filled -o triangles.svg", 0, "3bf3e7c5aeb2dcbd57e144627c5d281bfae445c120f201405e43c01fc9e1e45a"),
+    ("fill --shape polygon:6 --region circle:80 --count 200 -o hexagons.json", 0, "a323e1cdc87b02830eba9851d5ceb81c835e8dcdff7db63e52f3eefcdc81ad9e"),
+    ("fill --shape star:5:0.45 --c 1.2 --n-offset 3 --count 200 --seed 2 -o stars.svg", 0, "2cfba64f14896ced80bc900e7265f3cbe749594fda39443fe777bd45d38be0a8"),
+    ("fill --shape ring:0.5 --region annulus:90:30 --c 1.25 --n-offset 5 --count 200 -o rings.json", 0, "35c1b51e3b4a93d4fe98dffb5e273d641c21f073988a34765e8b0d26b90f96f2"),
+    ("fill --shape blob:0.2 --c 1.25 --n-offset 2 --count 200 -o blobs.svg", 0, "43d1284cb1737d1848e7ccbb145f80925460904632834535075fdef8b737b247"),
+    ("fill --shape mix:circle,square,triangle --mix-order random --count 300 --color-by kind --palette 264653,2a9d8f,e9c46a --style filled -o mix.svg", 0, "f709baf4669a964ff122d537a191556f7fdfa2ef613b5f151b6247976e65cbea"),
+    ("fill --shape mix:square,ring:0.4 --count 200 -o mix.json", 0, "16bc938520d18c48beb7e47df2203494ab91a0123dbf1c526a475feb126312d5"),
+    ("fill --region polygon:0,0,90,0,90,90,0,90/30,30,60,30,60,60 --c 1.25 --n-offset 3 --count 200 --gap 0.5 -o holed.json", 0, "a8edb52bdf8a5d4fbd4843867abe151ebe0abe57c851dacafb5b4a86449c4027"),
+    ("fill --region svg:outline.svg --c 1.25 --n-offset 3 --count 200 -o svg-region.svg", 0, "9f6902274e2624a5920eadfc1cc7c12d8c4e38e7f3149eee8989729f913cd160"),
+    ("fill --shape square --periodic --region rect:150:150 --c 1.25 --n-offset 2 --count 300 -o periodic.svg", 0, "def2fce0e94e9b7e3bd1921632074d1fed142eea4b2530e2cdf921f5332a7183"),
+    ("fill --periodic --count 300 --machine grbl-laser -o periodic.gcode", 0, "3b9f224949805172b58e57af33bdf5569ca946271c0fb7ec94505266a801becf"),
+    ("fill --sampler reference --count 300 -o reference.json", 0, "7f30b4114aa80d3b13b40f10d29b33c87fc2ae7d659b08a66af54efff7ef9989"),
+    ("fill --scalar fixed --shape square --count 300 --format digest -o fixed.txt", 0, "90b9563094b60b0456d2989cabfb523b374b934edd8c49d4a1113799f91e66f9"),
+    ("fill --dimension 1.6 --fill 0.5 -o dimension.csv", 0, "9a7332eec57d983ac52be74bcb749bc3e7078061720586e2b7fd3cc35c3a9f8f"),
+    ("fill --min-size 3 --shape polygon:5 --rotate none -o min-size.json", 0, "101f59886c5027c938998e315796ff7adf11c6b770cd5232e55e09a7e432c8bd"),
+    ("fill --gap 1 --shape square --rotate none --c 1.25 --n-offset 2 --count 200 --boundary -o gap.svg", 0, "a1b8b0ec375df8ec9a97f85114616da8713d3d2852a881d2c95f462be6d8ac99"),
+    ("fill --c 1.45 --count 300 --max-trials 300 -o halted.json", 3, "e84ac5fe26d1a22d569fddd87238a9273b4f63735d3e34c608e7f1986d879c3f"),
+    // fill: pictures and colour
+    ("fill --count 300 --style filled --palette {P5} --background fefae0 --pixels 200 -o palette.png", 0, "049c12b4ba1cbdbb3a4db5b92e7ad0d264f2d00cee72b37db830a20043d6d26c"),
+    ("fill --count 200 --boundary --pen-width 0.5 --region circle:60 --dpi 48 -o circle.png", 0, "93b702e55ae64ff8bc9cff86e44080643080130036ba5463adeeb15401cb4dc9"),
+    ("fill --count 300 --periodic --relief dome --pixels 160 -o relief-dome.png", 0, "c6040762241cca99399e1e9b6e49ec49473821913311610bc1e87b736568685b"),
+    ("fill --shape star:5:0.45 --c 1.2 --n-offset 3 --count 200 --relief cone --pixels 160 -o relief-cone.png", 0, "07f072ad0c7df5643eeb1984f02eec01750c18a7d2f929561a0b870211e248b8"),
+    ("fill --shape ring:0.5 --n-offset 2 --count 200 --relief flat --pixels 120 -o relief-flat.png", 0, "9e74d049b1511638d98c01e22288529e75533b95bbaabea9bc3de3697ab7f541"),
+    ("fill --count 300 --voronoi -o cobbles.svg", 0, "3db00747ece133707e3413aa49f89ccc6610c3499e9e298cff2662e04691d3d6"),
+    ("fill --count 300 --c 1.2 --n-offset 2 --periodic --region rect:120:120 --voronoi --style filled --palette {P5} --color-by random --background fefae0 --pixels 200 -o glass.png", 0, "9854d42406a202784ba75f35f7d71467ae0a9ca4c4e530c126ac5fc45a88e10f"),
+    // fill: plotters and lasers
+    ("fill --count 300 --region rect:180:180 --page a4 --center --layers size-bands:3 -o bands.svg", 0, "6420acf9745f28fe19ec616522ef57f20121e4a56586129ca8b04c0e2f772b09"),
+    ("fill --count 300 --page a3-landscape --fit --palette 1d3557,e63946 --color-by random --layers colours -o pens.svg", 0, "6946344b44f62da108534e396427664b3c4d71077cf9337172f7cba5f7d107e7"),
+    ("fill --count 300 --palette 1d3557,e63946 --color-by cycle --layers colours --machine grbl-servo-pen -o pens.gcode", 0, "212eadb4b1de26d40776dc0348f9d6f1987ecf622eabec5611a4f2a04c9fef22"),
+    ("fill --count 300 --machine z-lift-pen --order greedy --no-arcs -o z-lift.nc", 0, "680cb23a141977ec810f5013dcf93e2425eae6decb22158efe225159fde08038"),
+    ("fill --count 300 --machine grbl-laser --power 600 --passes 2 --order none -o cut.nc", 0, "82b7b11f5eae318c0413681e3415f9ae649a29cabb69413b3eafce76712ada9c"),
+    ("fill --count 200 --machine grbl-laser --feed 1500 --travel-feed 4000 --arcs --chord-tolerance 0.05 -o feeds.gcode", 0, "4b24cf9f2f7e79f8ec0b185cfff8b72d65b31fed3522c24cfffccc84d35ad641"),
+    ("fill --shape ring:0.5 --n-offset 2 --count 150 --machine grbl-laser --hatch 0.3:45 --hatch-only -o engrave.gcode", 0, "f14e47e22a308fc3a8e2bd39acad7e7d2835b440265678cca8a86b15aa7a9748"),
+    ("fill --region rect:500:300 --count 200 --fit --margin 10 -o big.gcode", 0, "b006699f70ed50add2a0dee0f1c537fc581a767248dd8a9b7677802c07b0433d"),
+    ("fill --count 300 --hatch 0.5:30 --cross-hatch --min-feature 0.6 --page a4 --fit -o hatched.svg", 0, "6b2b6138a05acfc10b254ce493a69e70101945fa2d2f684bdb9327b7f72de94e"),
+    ("machines show grbl-laser", 0, "dcf9a4049517731c67d26649b17a20977b6b715fd4306b1938b459504f69aaed"),
+    ("fill --count 200 --machine laser.toml -o profile.gcode", 0, "6254a15611e605bf5b99f1724df01de88856bf593c1cb557a8e538277fd7c89a"),
+    // line
+    ("line --count 300 -o line.svg", 0, "a881160f1beb750d3d62e6881415a7abbbd31310ac9e75f3e0b08df3c359a185"),
+    ("line --render dashes --periodic --count 300 --boundary -o dashes.svg", 0, "ce891951f5d3a93879a66ee2bdb37b8d3509042831849d31eefdb25a5de78dea"),
+    ("line --render bars --bar-height 40 --count 300 --palette {P5} --background fefae0 --pixels 300 -o bars.png", 0, "6b6488e7017b2f2d5ff09c57f0ad5ac2879933df6651b5bb18055b1c9b53fc09"),
+    ("line --c 1.4 --count 3000 --periodic --render zoom -o zoom.svg", 0, "ac84c66d39b851a47687de18a947145425146134efe880d613c6325db67e9b14"),
+    ("line --count 300 --style filled --palette 1d3557,e63946 --color-by cycle -o line-filled.svg", 0, "f07af0ee599f6c3fa3e782fd053ed7a445eb40b149de3f98ec94b91b98f052ea"),
+    ("line --count 300 -o line.json", 0, "21e2fcebf315751db65d1e499c81fc554d6388f39b934b77ee5e425dc445f1da"),
+    ("line --dimension 0.7 --fill 0.6 --gap 0.1 -o line.csv", 0, "e0a1c30ec022dc97647d73dea32c70d102b43a11e2e863e2d8476cd3bc3cb975"),
+    ("line --count 300 --format digest -o line.txt", 0, "9f02f235903b94f99c8b52d4f5793f7ce4433df3ee2ae75e1236ac7de36b076b"),
+    ("line --count 300 --render bars --machine grbl-laser --hatch 0.5 -o bars.gcode", 0, "67a38da278638fa8ff0b6cc027172bcad24b321516caed8dd0a373458030a41f"),
+    ("line --count 300 --palette 1d3557,e63946 --color-by cycle --render bars --layers colours --machine grbl-servo-pen -o line-pens.gcode", 0, "08c29e02176e22d1a7f883cc357ff90bf456fa709385ab8d0f78120fd9b19391"),
+    // territory
+    ("territory --sites 3 --points 1500 --seed 3 -o boundaries.svg", 0, "e816a5e00ff7f3debfb5cff681b9c0bfe51cc4a6c4cf1304238b109e1d9bf8ee"),
+    ("territory --sites 3 --points 1500 --seed 3 --render cells --boundary -o cells.svg", 0, "2cfd410b9fe687701fd6ec880ce194043c9dda4884f523f53048f9daf7aa44c6"),
+    ("territory --sites 3 --points 1500 --seed 3 --render filled --pixels 200 -o territory.png", 0, "05d8a5aeabd9fe94cf6baf0e826a7c0e884ed6f79aca060103eaf49e3f98e4f1"),
+    ("territory --sites 3 --points 1500 --seed 3 --machine grbl-servo-pen -o territory.gcode", 0, "8e1572e9793bf5443a9666e9181ff9b2ec0c42821a7cf8ef8d4a62351461f1ce"),
+    ("territory --sites 4 --points 1500 --uniform --region circle:80 -o territory.json", 0, "aad7e3fbcf439c0cdba8ec4c29e96d9eb5873b43ccdb1da76f8ad2fc92292f8e"),
+    ("territory --sites-from fill.json --sites 4 --render shapes -o coloured.svg", 0, "7b11f8c34065b5b4bd3f86bafbce4cd54b3d4a6353c340bf50ccfa56732f277e"),
+    ("territory --site 50,50 --site 150,150 --points 800 --color 0.1,0.8,0.9:0.01,0,-0.02 --render filled -o hsb.svg", 0, "4878d956f746e63f5ad98be36f5229892d814b4f9bd7645b28ebd075f32bf8c9"),
+    ("territory --sites 6 --points 1500 --render filled --palette {P5} --color-by size --background fdf6e3 --pixels 200 -o territory-palette.png", 0, "e4689a01f011d434132f3b1afd6ffb076bfd5bc3be959bf6b26fdae4cfa6be1b"),
+    // tile
+    ("tile -q -o tile.svg", 0, "08577790c47bc8a8c92055c571cbc8ccecae2b598d89049fa7eaf8a0b69dc4fa"),
+    ("tile -q --layout mosaic --rows 3 -o mosaic.svg", 0, "6d83a8e788ff7a987f3facefef49e4031693d31772f1cdc1d5522b0c640f41ae"),
+    ("tile -q --layout planet --rows 3 --tries 3000 --style filled --pixels 200 -o planet.png", 0, "e5f1e038abceed8ef87cf20cfa92e815bf21d99487c1e19cc9311fd50b87e66c"),
+    ("tile -q --render voronoi --tries 3000 --style filled -o tile-cobbles.svg", 0, "3f9587ebeb85ff6e83a81052f5569a8c2e51dea62f0cfb1d41946c0bed00c108"),
+    ("tile -q --tries 3000 -o tile.json", 0, "944afa512f8bfad169d8e54d3ea894995e88afca75042856bc281cfd63cd4b5c"),
+    ("tile -q --tries 3000 --machine z-lift-pen -o tile.gcode", 0, "a73e179b0637ff0d5faa5d383a0323a2a93eebba185c66f61b60f872ff7d6676"),
+    ("tile -q --tries 3000 --render voronoi --relief cone --pixels 160 -o tile-relief.png", 0, "a95a71b26e8bca4c25e14b0d5dbbeee14e3069755dc3438b2cc11dd864690134"),
+    ("tile -q --tries 3000 --palette 1d3557,e63946 --color-by random --layers colours -o tile-pens.svg", 0, "5ca2d76a9fd8c87c5dea835df5bf6f95eefb91775f50dea23bf0dfe231d49580"),
+    // stats and machines
+    ("stats zeta --c 1.3 --n-offset 1", 0, "2f1c2422e62b57f6bd209e33494dd7709cb1fd4711db092819ca41c8adeeae80"),
+    ("stats zeta --c 1.3 --n-offset 2.5 --json", 0, "d7fd23fb0c8fec6795f4423eab1c8e21fe1a8d04589041a445ffdb1b569d1c2d"),
+    ("stats gasket --c 1.3 --n-offset 1 --n 100 --json", 0, "eef2b379173ec8c164dbfe48dcbe2b5bf8298ebb5c714a08158c24b57347c89e"),
+    ("stats trials --c 1.2,1.3 --count 500 --runs 2 -o trials.svg", 0, "0f47080b0bf25a642e77ca9056fb1cb8375bc9270af762bb4139b5b0f51bc78e"),
+    ("stats trials --c 1.3 --count 500 --runs 2 --sampler fast -o trials.csv", 0, "7999b58fc2fa039e184003b1a02955ddd617a8a02bc76bb36cc23913f9f3996c"),
+    ("stats trials --c 1.3 --count 300 --json", 0, "265e7a7f14d74433f278b3b6641c705402c5728f9dd52b25659fe83ad6cad6c2"),
+    ("stats halting --c-from 1.3 --c-to 1.5 --c-step 0.1 --runs 4 --count 20 --max-trials 20000 --threads 1 -q -o halting.csv", 0, "71532945aad294ed38622e0cf3dd69c0beedfa9f07b8807aad6ac50ff3bdc4b8"),
+    ("stats halting --c-from 1.3 --c-to 1.5 --c-step 0.1 --runs 4 --count 20 --max-trials 20000 --threads 1 -q -o halting.svg", 0, "1aecbc85189b293261b4fae1cb3ddd392d25be54668345642ebb2475ce885431"),
+    ("stats dimension fill.json --json", 0, "5f0b59a68682b3f83b92cae51eaf8638518a7f028f7d1a889036885787338b7d"),
+    ("machines list", 0, "56adf9a6fae628a7b9f5154cb1adcd1de54e34f8bc9505cd50a01ed5519dc39c"),
+];
+
+/// An SVG outline for `--region svg:`: a rounded square with a hole.
+const OUTLINE: &str = r#"<svg xmlns="http://www.w3.org/2000/svg" width="120mm" height="100mm" viewBox="0 0 120 100">
+<path d="M 10 0 H 110 Q 120 0 120 10 V 90 Q 120 100 110 100 H 10 Q 0 100 0 90 V 10 Q 0 0 10 0 Z M 40 30 H 80 V 70 H 40 Z"/>
+</svg>
+"#;
+
+/// The command's words (`{P5}` expanded).
+fn words(command: &str) -> Vec<String> {
+    command.replace("{P5}", P5).split_whitespace().map(String::from).collect()
+}
+
+/// Runs one command in `dir`: its exit code and the SHA-256 (hex) of what it wrote.
+fn run(dir: &Path, command: &str) -> (i32, String, String) {
+    let args = words(command);
+    let refs: Vec<&str> = args.iter().map(String::as_str).collect();
+    let out = zf(dir, &refs);
+    let target = args.iter().position(|a| a == "-o").and_then(|i| args.get(i + 1));
+    let bytes = match target {
+        Some(path) if path != "-" => std::fs::read(dir.join(path)).unwrap_or_default(),
+        _ => out.stdout.clone(),
+    };
+    if command.starts_with("machines show") {
+        // Kept for the entry that reads a profile file.
+        std::fs::write(dir.join("laser.toml"), &out.stdout).unwrap_or_else(|e| panic!("laser.toml: {e}"));
+    }
+    let hex: String = Sha256::digest(&bytes).iter().map(|b| format!("{b:02x}")).collect();
+    (out.code, hex, out.stderr)
+}
+
+/// Runs the whole corpus in a fresh folder; the entries that differ from the table.
+fn mismatches(corpus: &[(&str, i32, &str)]) -> Vec<String> {
+    let dir = tmp();
+    std::fs::write(dir.path().join("outline.svg"), OUTLINE).unwrap_or_else(|e| panic!("outline.svg: {e}"));
+    let mut bad = Vec::new();
+    for &(command, code, sha) in corpus {
+        let (got_code, got, stderr) = run(dir.path(), command);
+        println!("    (\"{command}\", {got_code}, \"{got}\"),");
+        if got_code != code || got != sha {
+            bad.push(format!(
+                "{command}: exit {got_code} (want {code}), sha256 {got} (want {sha}) {stderr}"
+            ));
+        }
+    }
+    bad
+}
+
+#[test]
+fn corpus_outputs_are_unchanged() {
+    assert!(CORPUS.len() >= 40, "the corpus holds at least 40 commands");
+    let bad = mismatches(CORPUS);
+    assert!(
+        bad.is_empty(),
+        "{} of {} outputs changed:\n{}",
+        bad.len(),
+        CORPUS.len(),
+        bad.join("\n")
+    );
+}
+
+#[test]
+fn corpus_check_fails_on_a_changed_output() {
+    // The control first: an unchanged command matches its pinned digest...
+    let (command, code, sha) = CORPUS[0];
+    assert!(mismatches(&[(command, code, sha)]).is_empty(), "the control matches");
+    // ...and the same command with one parameter changed does not.
+    let changed = command.replace("--count 300", "--count 301");
+    assert_ne!(changed, command);
+    assert_eq!(mismatches(&[(&changed, code, sha)]).len(), 1, "a changed output is reported");
+    // A wrong exit code is reported too.
+    assert_eq!(mismatches(&[(command, 3, sha)]).len(), 1, "a changed exit code is reported");
+}

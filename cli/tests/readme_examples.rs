@@ -96,7 +96,11 @@ fn run_all(examples: &[Vec<String>], dir: &Path, gallery: &[(Vec<String>, PathBu
             .output()
             .map_err(|e| format!("{shown}: {e}"))?;
         if !out.status.success() {
-            return Err(format!("{shown}: exit {:?}\n{}", out.status.code(), String::from_utf8_lossy(&out.stderr)));
+            return Err(format!(
+                "{shown}: exit {:?}\n{}",
+                out.status.code(),
+                String::from_utf8_lossy(&out.stderr)
+            ));
         }
         let Some(o) = output_of(args) else {
             if out.stdout.is_empty() {
@@ -155,12 +159,17 @@ fn every_documented_example_runs_as_written() {
         }
     }
     assert!(failures.is_empty(), "{}", failures.join("\n"));
-    assert!(total >= MINIMUM.iter().map(|&(_, n)| n).sum::<usize>(), "{total} example commands in all");
+    assert!(
+        total >= MINIMUM.iter().map(|&(_, n)| n).sum::<usize>(),
+        "{total} example commands in all"
+    );
 
     let readme = std::fs::read_to_string(root().join("README.md")).expect("README.md");
     let main_job = examples(&readme);
     assert!(
-        main_job.iter().any(|a| a.first().is_some_and(|c| c == "fill") && output_of(a) == Some("fill.svg")),
+        main_job
+            .iter()
+            .any(|a| a.first().is_some_and(|c| c == "fill") && output_of(a) == Some("fill.svg")),
         "the main job is in the README"
     );
 }
@@ -178,9 +187,7 @@ fn the_checker_reports_a_failing_example() {
 
     // A picture that is not what its command makes: the zoom of the 1D fill with seed 1, whose
     // third and fourth rows fall inside one segment, against the committed seed-4 picture.
-    let stale = examples(
-        "    zetafill line --c 1.4 --count 30000 --periodic --seed 1 --render zoom --pixels 600 -o docs/line-zoom.png\n",
-    );
+    let stale = examples("    zetafill line --c 1.4 --count 30000 --periodic --seed 1 --render zoom --pixels 600 -o docs/line-zoom.png\n");
     let e = run_all(&stale, dir.path(), &gallery).expect_err("a stale picture is reported");
     assert!(e.contains("differs from the committed"), "{e}");
 

@@ -8,10 +8,11 @@
 //! Prints one Markdown table (the README quotes it). Timing is the median of 3 runs.
 
 use std::time::Instant;
-use zetafill_cli::plot::order::{order, PointIndex};
-use zetafill_cli::plot::{from_fill, hatch::Hatch, BuildOptions, Drawing, OrderArg, Path, Pt};
+use zetafill_cli::model::{from_fill, BuildOptions, Drawing, OrderArg, Path, Pt};
+use zetafill_cli::output::hatch::Hatch;
+use zetafill_cli::output::order::{order, PointIndex};
 
-fn fill(args: &[&str]) -> zetafill_cli::doc::FillDoc {
+fn fill(args: &[&str]) -> zetafill_cli::model::doc::FillDoc {
     let mut v = vec!["zetafill", "fill", "-q", "-o", "x.json"];
     v.extend_from_slice(args);
     let cli = match <zetafill_cli::Cli as clap::Parser>::try_parse_from(&v) {
@@ -21,7 +22,7 @@ fn fill(args: &[&str]) -> zetafill_cli::doc::FillDoc {
     let zetafill_cli::Command::Fill(a) = cli.command else {
         panic!("not fill")
     };
-    match zetafill_cli::fill::compute(&a) {
+    match zetafill_cli::cmd::fill::compute(&a) {
         Ok((doc, _)) => doc,
         Err(e) => panic!("{e}"),
     }

@@ -11,8 +11,8 @@
 //! many mm that is, and give the command that reproduces the file). Each pixel is the mean of
 //! a 4 x 4 grid of samples, so outlines are smooth.
 
-use crate::doc::{FillDoc, ShapeDoc};
 use crate::error::CliError;
+use crate::model::doc::{FillDoc, ShapeDoc};
 use rayon::prelude::*;
 use zetafill::geom::{edges, point_in_poly, seg_dist2};
 use zetafill::Point;

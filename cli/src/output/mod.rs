@@ -1,9 +1,13 @@
-//! Output formats: one file per format, each turning a [`crate::doc::FillDoc`] into bytes.
+//! Output formats: one file per format, each turning a [`crate::model::doc::FillDoc`] into bytes.
 
 pub mod csv;
 pub mod digest;
+pub mod gcode;
+pub mod hatch;
 pub mod height;
 pub mod json;
+pub mod machine;
+pub mod order;
 pub mod palette;
 pub mod png;
 pub mod svg;

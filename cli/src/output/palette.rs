@@ -1,7 +1,7 @@
 //! Colour for screens and prints: a palette of hex colours given to the shapes by size band,
 //! at random (fixed by the seed) or in turn, and a background colour.
 
-use crate::doc::FillDoc;
+use crate::model::doc::FillDoc;
 use zetafill::shape::mix64;
 
 /// A colour as `#rrggbb` (lower case).

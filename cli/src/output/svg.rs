@@ -11,7 +11,7 @@
 //! behind the drawing. Without them the output is exactly the region-sized drawing above
 //! (the gallery pins it byte for byte).
 
-use crate::doc::{FillDoc, RegionDoc, ShapeDoc};
+use crate::model::doc::{FillDoc, RegionDoc, ShapeDoc};
 use crate::output::num;
 use svg::node::element::{Circle, ClipPath, Definitions, Description, Group, Path, Polygon, Rectangle, Title};
 use svg::node::Text;
@@ -40,7 +40,7 @@ pub struct SvgOptions {
     /// `Some(K)`: the shapes in K Inkscape layers by size, largest first (`--layers`).
     pub layers: Option<u32>,
     /// Hatching, outlines left out (`--hatch-only`), shapes narrower than the pen left out.
-    pub build: crate::plot::BuildOptions,
+    pub build: crate::model::BuildOptions,
     /// The drawing flags given (page, layers, hatching, style, ...), written after the fill's
     /// command line in `<desc>` so that it reproduces the file.
     pub flags: String,
@@ -118,8 +118,8 @@ fn ring_d(f: &Frame, pts: &[[f64; 2]]) -> String {
 }
 
 /// Path data of plot paths (polylines and arcs, region frame) on the page.
-fn plot_d(paths: &[crate::plot::Path], f: &Frame) -> String {
-    use crate::plot::Path as P2;
+fn plot_d(paths: &[crate::model::Path], f: &Frame) -> String {
+    use crate::model::Path as P2;
     let mut parts = Vec::new();
     for p in paths {
         match p {
@@ -163,14 +163,14 @@ fn clipped_node(
     f: &Frame,
     min_feature: f64,
 ) -> Option<Option<svg::node::element::Element>> {
-    use crate::plot::{clip_path, Bounds, Path as P2};
+    use crate::model::{clip_path, Bounds, Path as P2};
     let tile = Bounds {
         x0: 0.0,
         y0: 0.0,
         x1: w,
         y1: h,
     };
-    let b = crate::plot::shape_bounds(sh);
+    let b = crate::model::shape_bounds(sh);
     if (Bounds {
         x0: b.x0 + dx,
         y0: b.y0 + dy,
@@ -217,7 +217,7 @@ fn hatch_node(
     tile: Option<(f64, f64)>,
     f: &Frame,
 ) -> Option<svg::node::element::Element> {
-    use crate::plot::{clip_path, Bounds, Path as P2};
+    use crate::model::{clip_path, Bounds, Path as P2};
     let h = opt.build.hatch?;
     let lines = h
         .shape(sh, off, opt.build.min_feature)
@@ -348,7 +348,7 @@ pub fn size_bands(doc: &FillDoc, k: u32) -> (Vec<usize>, Vec<Option<(f64, f64)>>
     let bands = crate::output::palette::log_bands(&areas, k);
     let mut widths: Vec<Option<(f64, f64)>> = vec![None; k];
     for (s, &b) in doc.shapes.iter().zip(&bands) {
-        let w = crate::plot::shape_width(s);
+        let w = crate::model::shape_width(s);
         if let Some(slot) = widths.get_mut(b) {
             *slot = Some(match *slot {
                 Some((hi, lo)) => (hi.max(w), lo.min(w)),
@@ -438,7 +438,7 @@ pub fn render(doc: &FillDoc, opt: &SvgOptions) -> Vec<u8> {
     let min_feature = opt.build.min_feature;
     let paint = if opt.style == Style::Filled { "fill" } else { "stroke" };
     for (k, (sh, &band)) in doc.shapes.iter().zip(&bands).enumerate() {
-        if min_feature > 0.0 && crate::plot::shape_width(sh) < min_feature {
+        if min_feature > 0.0 && crate::model::shape_width(sh) < min_feature {
             continue;
         }
         let colour = opt.colours.as_ref().and_then(|c| c.get(k));

@@ -33,7 +33,7 @@
 //! bucket floor(t - boost B) (each class in its own maintained order); then x, y inside the
 //! bucket; a rejected draw starts again from u.
 
-use super::geom::{p2, Clip, Pt};
+use crate::geometry::voronoi::{p2, Clip, Pt};
 use spade::handles::FixedVertexHandle;
 use spade::{DelaunayTriangulation, HierarchyHintGenerator, Point2, Triangulation};
 use std::collections::VecDeque;
@@ -332,7 +332,7 @@ impl Model {
                 };
                 visited += 1;
                 nbuf.clear();
-                nbuf.extend(super::geom::neighbours(&self.tri, v));
+                nbuf.extend(crate::geometry::voronoi::neighbours(&self.tri, v));
                 for &w in &nbuf {
                     if self.territory[w] != l {
                         continue;
@@ -378,7 +378,7 @@ impl Model {
                 while let Some(v) = groups[g].queue.pop_front() {
                     visited += 1;
                     nbuf.clear();
-                    nbuf.extend(super::geom::neighbours(&self.tri, v));
+                    nbuf.extend(crate::geometry::voronoi::neighbours(&self.tri, v));
                     for &w in &nbuf {
                         if self.territory[w] == l && self.mark[w] != epoch {
                             self.mark[w] = epoch;

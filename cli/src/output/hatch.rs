@@ -5,8 +5,8 @@
 //! `p · n = k · SPACING` (n the lines' normal), so neighbouring shapes hatch in register.
 //! Deterministic; never panics.
 
-use super::Pt;
-use crate::doc::ShapeDoc;
+use crate::model::doc::ShapeDoc;
+use crate::model::Pt;
 
 /// A hatch pattern.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -32,7 +32,7 @@
 //! the edges crossing the top repeat with period W/2 exactly, see
 //! [`seam_gaps`](super::render::seam_gaps)).
 
-use crate::territory::geom::Pt;
+use crate::geometry::voronoi::Pt;
 
 /// The parameters of a tile.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]

@@ -10,8 +10,8 @@
 //! Like the fill's SVG: y is flipped about the region's top (no transform), four decimals,
 //! the parameters in `<title>` and `<desc>`, no timestamp (same run, same bytes).
 
-use super::geom::{self, Clip, Dual, Pt};
 use super::model::Model;
+use crate::geometry::voronoi::{self as geom, Clip, Dual, Pt};
 use crate::output::num;
 use svg::node::element::{ClipPath, Definitions, Description, Group, Path, Polygon, Title};
 use svg::node::Text;

@@ -11,8 +11,8 @@
 
 use super::chart::{self, HaltingSeries};
 use super::trials::{rect_2d, run_2d, shape_2d, shape_label, Rotate, RunSpec};
+use crate::args::spec;
 use crate::error::CliError;
-use crate::spec;
 use clap::Args;
 use rayon::prelude::*;
 use std::fmt::Write as _;

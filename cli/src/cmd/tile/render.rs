@@ -9,7 +9,7 @@
 
 use super::model::{images, Image, Tile};
 use crate::error::CliError;
-use crate::territory::geom::{self, Clip, Pt};
+use crate::geometry::voronoi::{self as geom, Clip, Pt};
 use spade::{DelaunayTriangulation, Triangulation};
 use std::f64::consts::{PI, TAU};
 
@@ -276,9 +276,9 @@ fn inset_cell(tile: &Tile, tri: &Tri, sites: &[Image], v: usize) -> Vec<Pt> {
 /// The stones of the tile's height map: every disc of the plane that reaches the tile, or
 /// every inset cell of a centre whose cell can, whole (the map's edge cuts them, so a stone
 /// crossing an edge goes on in the copy beyond it).
-pub fn stones(tile: &Tile, render: Render) -> Result<Vec<crate::doc::ShapeDoc>, CliError> {
+pub fn stones(tile: &Tile, render: Render) -> Result<Vec<crate::model::doc::ShapeDoc>, CliError> {
     let (w, h) = (tile.spec.width, tile.spec.height);
-    let stone = |index: usize, c: Pt, radius: Option<f64>, vertices: Option<Vec<Pt>>| crate::doc::ShapeDoc {
+    let stone = |index: usize, c: Pt, radius: Option<f64>, vertices: Option<Vec<Pt>>| crate::model::doc::ShapeDoc {
         index: index as u64,
         kind: if radius.is_some() { "circle" } else { "polygon" },
         center: c,

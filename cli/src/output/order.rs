@@ -16,7 +16,7 @@
 //!
 //! Deterministic: no hashing, no clock, ties broken by position.
 
-use super::{polar, Path, Pt};
+use crate::model::{polar, Path, Pt};
 use std::collections::VecDeque;
 use std::f64::consts::TAU;
 
@@ -697,8 +697,8 @@ fn polish(paths: &[Path], seq: &mut [(usize, Entry)], home: Pt) {
 
 /// The order to draw in: `none` keeps the paths as they are, `greedy` and `improved` as
 /// described in the module docs. Returns the paths re-ordered, rotated and reversed.
-pub fn order(paths: &[Path], home: Pt, mode: super::OrderArg) -> Vec<Path> {
-    use super::OrderArg;
+pub fn order(paths: &[Path], home: Pt, mode: crate::model::OrderArg) -> Vec<Path> {
+    use crate::model::OrderArg;
     let seq: Vec<(usize, Entry)> = match mode {
         OrderArg::None => return paths.to_vec(),
         OrderArg::Greedy => greedy(paths, home),
@@ -724,8 +724,8 @@ pub fn natural_travel(paths: &[Path], home: Pt) -> f64 {
 
 #[cfg(test)]
 mod tests {
-    use super::super::{Drawing, OrderArg};
     use super::*;
+    use crate::model::{Drawing, OrderArg};
 
     /// A deterministic scatter of circles and segments.
     fn scene(n: usize) -> Vec<Path> {

@@ -2,7 +2,7 @@
 //! prints one as TOML, ready to copy, edit and pass back with `--machine FILE.toml`.
 
 use crate::error::CliError;
-use crate::plot::machine::Machine;
+use crate::output::machine::Machine;
 use clap::{Args, Subcommand};
 
 /// Arguments of `zetafill machines`.

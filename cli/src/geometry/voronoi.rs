@@ -5,7 +5,7 @@
 //!
 //! Deterministic: every loop runs in index order; no hash-map iteration decides an output.
 
-use crate::doc::RegionDoc;
+use crate::model::doc::RegionDoc;
 use spade::handles::{FixedVertexHandle, VertexHandle};
 use spade::{HasPosition, Point2, Triangulation};
 
@@ -269,8 +269,8 @@ impl Clip {
 
 impl Clip {
     /// The region's outline as plotter paths: closed polylines, or full circles.
-    pub fn outline_paths(&self) -> Vec<crate::plot::Path> {
-        use crate::plot::Path;
+    pub fn outline_paths(&self) -> Vec<crate::model::Path> {
+        use crate::model::Path;
         match self {
             Clip::Circle { c, r } => vec![Path::circle(*c, *r)],
             Clip::Annulus { c, ro, ri } => vec![Path::circle(*c, *ro), Path::circle(*c, *ri)],

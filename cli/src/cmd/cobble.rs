@@ -4,10 +4,10 @@
 //! centres and their 8 periodic copies and clipped to the tile, so the cells tile seamlessly:
 //! an edge leaving the tile on one side comes back at the same place on the other.
 
-use crate::doc::FillDoc;
+use crate::cmd::territory::render::{document, polyline_d, region_d, stroke_layer, Frame};
 use crate::error::CliError;
-use crate::territory::geom::{self, Clip, Dual, Pt};
-use crate::territory::render::{document, polyline_d, region_d, stroke_layer, Frame};
+use crate::geometry::voronoi::{self as geom, Clip, Dual, Pt};
+use crate::model::doc::FillDoc;
 use spade::{DelaunayTriangulation, Point2, Triangulation};
 use svg::node::element::{ClipPath, Definitions, Group, Path as SvgPath, Polygon};
 

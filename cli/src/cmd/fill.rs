@@ -1,12 +1,12 @@
 //! `zetafill fill`: the 2D fractal fill.
 
-use crate::doc::{FillDoc, ParamsDoc, RegionDoc, ShapeDoc, StatsDoc};
+use crate::args::spec::{self, RegionSpec};
+use crate::cmd::stopping::{self, Unit};
 use crate::error::CliError;
+use crate::io::write::Dest;
+use crate::model::doc::{FillDoc, ParamsDoc, RegionDoc, ShapeDoc, StatsDoc};
 use crate::output::svg::Style;
 use crate::output::{self, Format};
-use crate::spec::{self, RegionSpec};
-use crate::stopping::{self, Unit};
-use crate::write::Dest;
 use clap::{Args, ValueEnum};
 use std::path::PathBuf;
 use zetafill::engine::{ParamError, StepError};
@@ -163,7 +163,7 @@ pub struct FillArgs {
     pub quiet: bool,
     /// Plotter and laser output: G-code machine, path order, hatch, pages, layers.
     #[command(flatten)]
-    pub plot: crate::plot::PlotArgs,
+    pub plot: crate::model::PlotArgs,
 }
 
 impl FillArgs {
@@ -288,7 +288,7 @@ impl RegionData {
     pub fn load(spec: &RegionSpec) -> Result<Self, CliError> {
         let spec = match spec {
             RegionSpec::Svg(path) => {
-                let (points, ends) = crate::svgin::read_outline(path)?;
+                let (points, ends) = crate::io::svgin::read_outline(path)?;
                 outers_first(&points, &ends)
             }
             RegionSpec::Polygon { points, ends } => outers_first(points, ends),
@@ -696,10 +696,10 @@ fn svg_options(doc: &FillDoc, a: &FillArgs) -> Result<output::svg::SvgOptions, C
     let mut o = a.plot.svg_options(doc, a.style, a.pen_width, a.boundary)?;
     if let Some(p) = &a.colour.palette {
         o.colours = Some(shape_colours(doc, a, &p.0));
-        if a.plot.layers == crate::plot::Layers::Colours {
+        if a.plot.layers == crate::model::Layers::Colours {
             o.colour_layers = Some(p.0.clone());
         }
-    } else if a.plot.layers == crate::plot::Layers::Colours {
+    } else if a.plot.layers == crate::model::Layers::Colours {
         return Err(colours_need_palette());
     }
     o.flags.push_str(&a.colour.flags());
@@ -726,7 +726,7 @@ fn shape_colours(doc: &FillDoc, a: &FillArgs, palette: &[output::palette::Colour
 }
 
 /// How `--voronoi` draws the cobblestones: edges, or cells filled in their shapes' colours.
-fn cobble_look(doc: &FillDoc, a: &FillArgs) -> crate::cobble::Look {
+fn cobble_look(doc: &FillDoc, a: &FillArgs) -> crate::cmd::cobble::Look {
     let filled = a.style == output::svg::Style::Filled;
     let mut flags = format!(" --pen-width {}", output::num(a.pen_width, 4));
     if filled {
@@ -736,7 +736,7 @@ fn cobble_look(doc: &FillDoc, a: &FillArgs) -> crate::cobble::Look {
         flags.push_str(" --boundary");
     }
     flags.push_str(&a.colour.flags());
-    crate::cobble::Look {
+    crate::cmd::cobble::Look {
         filled,
         pen_width: a.pen_width,
         outline: a.boundary,
@@ -751,8 +751,8 @@ pub fn render(doc: &FillDoc, format: Format, a: &FillArgs) -> Result<Vec<u8>, Cl
     if a.voronoi {
         let look = cobble_look(doc, a);
         return match format {
-            Format::Svg => crate::cobble::svg(doc, &look),
-            Format::Png => a.raster.render(&crate::cobble::svg(doc, &look)?),
+            Format::Svg => crate::cmd::cobble::svg(doc, &look),
+            Format::Png => a.raster.render(&crate::cmd::cobble::svg(doc, &look)?),
             _ => Err(CliError::arg(
                 "--voronoi",
                 "cobblestones are drawn as SVG or PNG; write .svg or .png, or drop --voronoi",
@@ -762,12 +762,12 @@ pub fn render(doc: &FillDoc, format: Format, a: &FillArgs) -> Result<Vec<u8>, Cl
     Ok(match format {
         Format::Svg => output::svg::render(doc, &svg_options(doc, a)?),
         Format::Gcode => match (&a.colour.palette, a.plot.layers) {
-            (Some(p), crate::plot::Layers::Colours) => {
+            (Some(p), crate::model::Layers::Colours) => {
                 let colours = shape_colours(doc, a, &p.0);
-                crate::plot::render_gcode_pens(doc, &a.plot, Some((&colours, &p.0, a.colour.flags())), a.quiet)?
+                crate::model::render_gcode_pens(doc, &a.plot, Some((&colours, &p.0, a.colour.flags())), a.quiet)?
             }
-            (None, crate::plot::Layers::Colours) => return Err(colours_need_palette()),
-            _ => crate::plot::render_gcode(doc, &a.plot, a.quiet)?,
+            (None, crate::model::Layers::Colours) => return Err(colours_need_palette()),
+            _ => crate::model::render_gcode(doc, &a.plot, a.quiet)?,
         },
         Format::Json => output::json::render(doc)?,
         Format::Csv => output::csv::render(doc),
@@ -806,13 +806,13 @@ pub fn run(a: &FillArgs) -> Result<(), CliError> {
     }
     a.raster.check(format == Format::Png)?;
     // A palette also picks the pens of a G-code plot with --layers colours.
-    let pens = format == Format::Gcode && a.plot.layers == crate::plot::Layers::Colours && a.colour.background.is_none();
+    let pens = format == Format::Gcode && a.plot.layers == crate::model::Layers::Colours && a.colour.background.is_none();
     a.colour.check(
         (matches!(format, Format::Svg | Format::Png) && a.relief.is_none()) || pens,
         "write .svg or .png, without --relief (or G-code with --layers colours, without --background)",
         false,
     )?;
-    if a.plot.layers == crate::plot::Layers::Colours && a.colour.palette.is_none() {
+    if a.plot.layers == crate::model::Layers::Colours && a.colour.palette.is_none() {
         return Err(colours_need_palette());
     }
     if a.voronoi && a.colour.palette.is_some() && a.style != output::svg::Style::Filled {

@@ -3,8 +3,8 @@
 //! colour x' = c^k + D d^k with the paper's rules to bring x' back into the unit cube: the hue
 //! wraps (eq. 11), saturation and brightness are clamped (eqs. 12, 13).
 
-use super::geom::neighbours;
 use super::model::Tri;
+use crate::geometry::voronoi::neighbours;
 use std::collections::VecDeque;
 use zetafill::rng::uniform;
 use zetafill::ZetaRng;

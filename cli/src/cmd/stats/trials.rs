@@ -12,8 +12,8 @@
 //! spread over the cores with rayon and collected in order.
 
 use super::chart::{self, TrialsSeries};
+use crate::args::spec;
 use crate::error::CliError;
-use crate::spec;
 use clap::{Args, ValueEnum};
 use rayon::prelude::*;
 use std::fmt::Write as _;

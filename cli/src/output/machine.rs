@@ -7,7 +7,7 @@
 //! The bed frame has (0, 0) at the bed's front-left corner, x right, y away from the user;
 //! `origin` says where the machine's (0, 0) is and which way its y points.
 
-use super::{Bounds, Pt};
+use crate::model::{Bounds, Pt};
 use serde::{Deserialize, Serialize};
 
 /// The built-in profiles: name and TOML text.

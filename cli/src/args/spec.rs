@@ -221,7 +221,7 @@ pub enum RegionSpec {
         /// Exclusive end of each ring.
         ends: Vec<usize>,
     },
-    /// `svg:FILE`, read later by [`crate::svgin`].
+    /// `svg:FILE`, read later by [`crate::io::svgin`].
     Svg(std::path::PathBuf),
 }
 

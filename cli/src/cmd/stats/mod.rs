@@ -1,18 +1,14 @@
 //! `zetafill stats`: the numbers behind the fills. Every subcommand takes `--json` and then
 //! prints one JSON object on stdout.
 
-#[path = "stats_chart.rs"]
 pub mod chart;
-#[path = "stats_dimension.rs"]
 pub mod dimension;
-#[path = "stats_halting.rs"]
 pub mod halting;
-#[path = "stats_trials.rs"]
 pub mod trials;
 
+use crate::args::spec;
 use crate::error::CliError;
-use crate::spec;
-use crate::write::Dest;
+use crate::io::write::Dest;
 use clap::{Args, Subcommand};
 use std::path::PathBuf;
 

@@ -2,12 +2,12 @@
 //! interval of length `L` (seed 001, Figure 3), run by the core's [`zetafill::LineEngine`], and
 //! its outputs: SVG (dashes, circles, bars or zoom rows), PNG, JSON, CSV and the digest.
 
+use crate::args::spec;
+use crate::cmd::stopping::{self, Unit};
 use crate::error::CliError;
+use crate::io::write::Dest;
 use crate::output::svg::Style;
 use crate::output::{num, Format};
-use crate::spec;
-use crate::stopping::{self, Unit};
-use crate::write::Dest;
 use clap::{Args, ValueEnum};
 use serde::Serialize;
 use std::fmt::Write as _;
@@ -128,7 +128,7 @@ pub struct LineArgs {
     pub quiet: bool,
     /// Plotter and laser flags (G-code output).
     #[command(flatten)]
-    pub plot: crate::plot::PlotArgs,
+    pub plot: crate::model::PlotArgs,
 }
 
 /// The fractal dimension D in 1D: 0 < D < 1 (so that c = 1/D > 1).
@@ -772,8 +772,8 @@ pub fn render_digest(doc: &LineDoc) -> Vec<u8> {
 pub fn drawing(
     doc: &LineDoc,
     opt: &LineSvgOptions,
-    build: &crate::plot::BuildOptions,
-) -> Result<(crate::plot::Drawing, crate::plot::Bounds), CliError> {
+    build: &crate::model::BuildOptions,
+) -> Result<(crate::model::Drawing, crate::model::Bounds), CliError> {
     drawing_of(doc, opt, build, &|_| true)
 }
 
@@ -781,10 +781,10 @@ pub fn drawing(
 fn drawing_of(
     doc: &LineDoc,
     opt: &LineSvgOptions,
-    build: &crate::plot::BuildOptions,
+    build: &crate::model::BuildOptions,
     keep: &dyn Fn(usize) -> bool,
-) -> Result<(crate::plot::Drawing, crate::plot::Bounds), CliError> {
-    use crate::plot::{Bounds, Drawing, Path};
+) -> Result<(crate::model::Drawing, crate::model::Bounds), CliError> {
+    use crate::model::{Bounds, Drawing, Path};
     let l = doc.region.length;
     let periodic = doc.region.periodic;
     let d0 = doc.shapes.first().map_or(l / 10.0, |s| s.length);
@@ -796,7 +796,7 @@ fn drawing_of(
         .map(|(_, s)| s);
     let outline = !build.no_outline;
     let mut paths = Vec::new();
-    let mut hatch = |lines: Vec<[crate::plot::Pt; 2]>| paths.extend(lines.into_iter().map(|[a, b]| Path::polyline(vec![a, b], false)));
+    let mut hatch = |lines: Vec<[crate::model::Pt; 2]>| paths.extend(lines.into_iter().map(|[a, b]| Path::polyline(vec![a, b], false)));
     let mut outlines = Vec::new();
     let height = match opt.render {
         Render::Dashes => {
@@ -877,9 +877,9 @@ fn render_gcode(doc: &LineDoc, opt: &LineSvgOptions, a: &LineArgs) -> Result<Vec
                 let (pen, _) = drawing_of(doc, opt, &build, &|k| colours.get(k) == Some(c))?;
                 pens.push((c.clone(), pen));
             }
-            crate::plot::pens_gcode(&pens, &frame, &a.plot, header, a.quiet)
+            crate::model::pens_gcode(&pens, &frame, &a.plot, header, a.quiet)
         }
-        _ => crate::plot::drawing_gcode(&d, &frame, &a.plot, header, a.quiet),
+        _ => crate::model::drawing_gcode(&d, &frame, &a.plot, header, a.quiet),
     }
 }
 
@@ -901,7 +901,7 @@ pub fn render(doc: &LineDoc, format: Format, a: &LineArgs) -> Result<Vec<u8>, Cl
         background: a.colour.background.clone(),
         colour_flags: a.colour.flags(),
         colour_layers: match (&a.colour.palette, a.plot.layers) {
-            (Some(p), crate::plot::Layers::Colours) => Some(p.0.clone()),
+            (Some(p), crate::model::Layers::Colours) => Some(p.0.clone()),
             _ => None,
         },
     };
@@ -928,13 +928,13 @@ pub fn render(doc: &LineDoc, format: Format, a: &LineArgs) -> Result<Vec<u8>, Cl
 fn check_plot(a: &LineArgs, format: Format) -> Result<(), CliError> {
     let p = &a.plot;
     p.build_options()?;
-    if p.page.is_some() || matches!(p.layers, crate::plot::Layers::SizeBands(_)) {
+    if p.page.is_some() || matches!(p.layers, crate::model::Layers::SizeBands(_)) {
         return Err(CliError::arg(
             if p.page.is_some() { "--page" } else { "--layers" },
             "is not available for line in any format: its SVG is the interval at full size, with no page or size layers, and its G-code goes on the machine's bed (--fit, --center, --margin); drop it (--layers colours splits a coloured drawing by pen)",
         ));
     }
-    if p.layers == crate::plot::Layers::Colours {
+    if p.layers == crate::model::Layers::Colours {
         if a.colour.palette.is_none() {
             return Err(CliError::arg(
                 "--layers",
@@ -949,7 +949,7 @@ fn check_plot(a: &LineArgs, format: Format) -> Result<(), CliError> {
         }
     }
     if format != Format::Gcode {
-        return p.refuse_except(&["--layers"], |_| crate::plot::FOR_GCODE.to_string());
+        return p.refuse_except(&["--layers"], |_| crate::model::FOR_GCODE.to_string());
     }
     p.check_gcode()?;
     match a.render {
@@ -976,7 +976,7 @@ pub fn run(a: &LineArgs) -> Result<(), CliError> {
     let format = Format::resolve(a.format, &a.output)?;
     a.raster.check(format == Format::Png)?;
     check_plot(a, format)?;
-    let pens = format == Format::Gcode && a.plot.layers == crate::plot::Layers::Colours && a.colour.background.is_none();
+    let pens = format == Format::Gcode && a.plot.layers == crate::model::Layers::Colours && a.colour.background.is_none();
     a.colour.check(
         matches!(format, Format::Svg | Format::Png) || pens,
         "write .svg or .png (or G-code with --layers colours, without --background)",

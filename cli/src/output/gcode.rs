@@ -15,9 +15,9 @@
 //!   by hand): never exponent notation, NaN or `-0`;
 //! - the same input gives the same bytes (no clock, no hashing, no environment).
 
-use super::machine::{Machine, Travel, Units};
-use super::order::order;
-use super::{arc_extremes, Bounds, Drawing, OrderArg, Path, Pt};
+use crate::model::{arc_extremes, Bounds, Drawing, OrderArg, Path, Pt};
+use crate::output::machine::{Machine, Travel, Units};
+use crate::output::order::order;
 use std::f64::consts::TAU;
 use std::fmt::{self, Write as _};
 
@@ -291,15 +291,17 @@ impl Writer<'_> {
         let step = 2.0 * (1.0 - tol / r).clamp(-1.0, 1.0).acos();
         let min_n = if sweep.abs() >= TAU { 8 } else { 1 };
         let n = ((sweep.abs() / step.max(1e-9)).ceil() as usize).clamp(min_n, 100_000);
-        let pts: Vec<Pt> = (0..=n).map(|i| super::polar(c, r, start + sweep * i as f64 / n as f64)).collect();
+        let pts: Vec<Pt> = (0..=n)
+            .map(|i| crate::model::polar(c, r, start + sweep * i as f64 / n as f64))
+            .collect();
         self.polyline(&pts, false);
     }
 
     /// An arc as G2/G3 when the rounded arc is well defined and inside the bed, else chords.
     fn arc(&mut self, c: Pt, r: f64, start: f64, sweep: f64) {
         let full = sweep.abs() >= TAU;
-        let s = super::polar(c, r, start);
-        let e = if full { s } else { super::polar(c, r, start + sweep) };
+        let s = crate::model::polar(c, r, start);
+        let e = if full { s } else { crate::model::polar(c, r, start + sweep) };
         let (qs, qe, qc) = (self.q(s), self.q(e), self.q_raw(c));
         let (sy, _, _) = self.m.bed_to_machine();
         // Direction on the machine: a mirrored y turns the arc the other way.

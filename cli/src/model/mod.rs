@@ -1,4 +1,4 @@
-//! Plotter and laser output: one plain data model of what a pen or beam draws, built from a
+//! The drawing model: the fill's document ([`doc`]), and one plain data model of what a pen or beam draws, built from a
 //! fill, and everything that turns it into machine-ready output.
 //!
 //! # Layers
@@ -6,12 +6,12 @@
 //! - [`Drawing`] (this file): paths in mm, in the *bed frame* (x right, y up, (0, 0) at the
 //!   bed's front-left corner). A [`Path`] is an open or closed polyline, or a circular arc (a
 //!   full circle when its sweep is ±2π). [`from_fill`] builds one from a
-//!   [`crate::doc::FillDoc`]: circles as full circles, rings as two circles, polygons
+//!   [`crate::model::doc::FillDoc`]: circles as full circles, rings as two circles, polygons
 //!   as closed polylines (their tested vertices); in a periodic fill every image that shows
 //!   in the tile is clipped exactly to the tile rectangle (circles into arcs, polygons into
 //!   open polylines). [`Placement`] scales and moves a drawing onto a bed or a page.
 //! - [`hatch`]: hatch lines clipped exactly to each shape (rings only in the annulus).
-//! - [`order`]: pen-up travel reduction (nearest neighbour through a k-d tree, then 2-opt).
+//! - [`order`](crate::output::order): pen-up travel reduction (nearest neighbour through a k-d tree, then 2-opt).
 //! - [`machine`]: machine profiles as TOML data; the built-ins are embedded.
 //! - [`gcode`]: the writer, with its safety invariants.
 //!
@@ -20,7 +20,8 @@
 //! Any mode that produces lines can write G-code the same way `zetafill fill` does:
 //!
 //! ```no_run
-//! use zetafill_cli::plot::{gcode, machine::Machine, Drawing, Path};
+//! use zetafill_cli::model::{Drawing, Path};
+//! use zetafill_cli::output::{gcode, machine::Machine};
 //! let drawing = Drawing { paths: vec![Path::polyline(vec![[10.0, 10.0], [50.0, 10.0]], false)] };
 //! let machine = Machine::builtin("grbl-servo-pen").expect("built-in");
 //! let opts = gcode::GcodeOptions::new(&machine);
@@ -40,14 +41,12 @@
 //!
 //! Everything is deterministic: the same drawing and options give the same bytes.
 
-pub mod gcode;
-pub mod hatch;
-pub mod machine;
-pub mod order;
+pub mod doc;
 
-use crate::doc::{FillDoc, RegionDoc, ShapeDoc};
 use crate::error::CliError;
+use crate::model::doc::{FillDoc, RegionDoc, ShapeDoc};
 use crate::output::svg::{Style, SvgOptions};
+use crate::output::{gcode, hatch, machine};
 use clap::{Args, ValueEnum};
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
 

@@ -35,10 +35,10 @@ pub struct DimensionArgs {
     /// A JSON file written by `zetafill fill` or `zetafill line`.
     pub input: PathBuf,
     /// Largest box size in mm for the fit (default: see the module docs).
-    #[arg(long = "max-box", value_parser = crate::spec::positive, allow_negative_numbers = true)]
+    #[arg(long = "max-box", value_parser = crate::args::spec::positive, allow_negative_numbers = true)]
     pub max_box: Option<f64>,
     /// Smallest box size in mm for the fit (default: twice the smallest shape's size).
-    #[arg(long = "min-box", value_parser = crate::spec::positive, allow_negative_numbers = true)]
+    #[arg(long = "min-box", value_parser = crate::args::spec::positive, allow_negative_numbers = true)]
     pub min_box: Option<f64>,
     /// Print one JSON object: {"box_counting": ..., "exact": ..., ...}.
     #[arg(long)]

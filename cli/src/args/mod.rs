@@ -1,6 +1,7 @@
 //! The command line as clap parses it: the top-level parser and its subcommands, and the
 //! parsers of flag values ([`spec`]).
 
+pub mod plot;
 pub mod spec;
 
 use crate::cmd::{fill, line, machines, stats, territory, tile};

@@ -163,7 +163,7 @@ pub struct FillArgs {
     pub quiet: bool,
     /// Plotter and laser output: G-code machine, path order, hatch, pages, layers.
     #[command(flatten)]
-    pub plot: crate::model::PlotArgs,
+    pub plot: crate::args::plot::PlotArgs,
 }
 
 impl FillArgs {
@@ -696,10 +696,10 @@ fn svg_options(doc: &FillDoc, a: &FillArgs) -> Result<output::svg::SvgOptions, C
     let mut o = a.plot.svg_options(doc, a.style, a.pen_width, a.boundary)?;
     if let Some(p) = &a.colour.palette {
         o.colours = Some(shape_colours(doc, a, &p.0));
-        if a.plot.layers == crate::model::Layers::Colours {
+        if a.plot.layers == crate::args::plot::Layers::Colours {
             o.colour_layers = Some(p.0.clone());
         }
-    } else if a.plot.layers == crate::model::Layers::Colours {
+    } else if a.plot.layers == crate::args::plot::Layers::Colours {
         return Err(colours_need_palette());
     }
     o.flags.push_str(&a.colour.flags());
@@ -762,12 +762,12 @@ pub fn render(doc: &FillDoc, format: Format, a: &FillArgs) -> Result<Vec<u8>, Cl
     Ok(match format {
         Format::Svg => output::svg::render(doc, &svg_options(doc, a)?),
         Format::Gcode => match (&a.colour.palette, a.plot.layers) {
-            (Some(p), crate::model::Layers::Colours) => {
+            (Some(p), crate::args::plot::Layers::Colours) => {
                 let colours = shape_colours(doc, a, &p.0);
-                crate::model::render_gcode_pens(doc, &a.plot, Some((&colours, &p.0, a.colour.flags())), a.quiet)?
+                crate::cmd::plot::render_gcode_pens(doc, &a.plot, Some((&colours, &p.0, a.colour.flags())), a.quiet)?
             }
-            (None, crate::model::Layers::Colours) => return Err(colours_need_palette()),
-            _ => crate::model::render_gcode(doc, &a.plot, a.quiet)?,
+            (None, crate::args::plot::Layers::Colours) => return Err(colours_need_palette()),
+            _ => crate::cmd::plot::render_gcode(doc, &a.plot, a.quiet)?,
         },
         Format::Json => output::json::render(doc)?,
         Format::Csv => output::csv::render(doc),
@@ -806,13 +806,13 @@ pub fn run(a: &FillArgs) -> Result<(), CliError> {
     }
     a.raster.check(format == Format::Png)?;
     // A palette also picks the pens of a G-code plot with --layers colours.
-    let pens = format == Format::Gcode && a.plot.layers == crate::model::Layers::Colours && a.colour.background.is_none();
+    let pens = format == Format::Gcode && a.plot.layers == crate::args::plot::Layers::Colours && a.colour.background.is_none();
     a.colour.check(
         (matches!(format, Format::Svg | Format::Png) && a.relief.is_none()) || pens,
         "write .svg or .png, without --relief (or G-code with --layers colours, without --background)",
         false,
     )?;
-    if a.plot.layers == crate::model::Layers::Colours && a.colour.palette.is_none() {
+    if a.plot.layers == crate::args::plot::Layers::Colours && a.colour.palette.is_none() {
         return Err(colours_need_palette());
     }
     if a.voronoi && a.colour.palette.is_some() && a.style != output::svg::Style::Filled {

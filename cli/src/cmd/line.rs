@@ -128,7 +128,7 @@ pub struct LineArgs {
     pub quiet: bool,
     /// Plotter and laser flags (G-code output).
     #[command(flatten)]
-    pub plot: crate::model::PlotArgs,
+    pub plot: crate::args::plot::PlotArgs,
 }
 
 /// The fractal dimension D in 1D: 0 < D < 1 (so that c = 1/D > 1).
@@ -772,7 +772,7 @@ pub fn render_digest(doc: &LineDoc) -> Vec<u8> {
 pub fn drawing(
     doc: &LineDoc,
     opt: &LineSvgOptions,
-    build: &crate::model::BuildOptions,
+    build: &crate::output::drawing::BuildOptions,
 ) -> Result<(crate::model::Drawing, crate::model::Bounds), CliError> {
     drawing_of(doc, opt, build, &|_| true)
 }
@@ -781,7 +781,7 @@ pub fn drawing(
 fn drawing_of(
     doc: &LineDoc,
     opt: &LineSvgOptions,
-    build: &crate::model::BuildOptions,
+    build: &crate::output::drawing::BuildOptions,
     keep: &dyn Fn(usize) -> bool,
 ) -> Result<(crate::model::Drawing, crate::model::Bounds), CliError> {
     use crate::model::{Bounds, Drawing, Path};
@@ -877,9 +877,9 @@ fn render_gcode(doc: &LineDoc, opt: &LineSvgOptions, a: &LineArgs) -> Result<Vec
                 let (pen, _) = drawing_of(doc, opt, &build, &|k| colours.get(k) == Some(c))?;
                 pens.push((c.clone(), pen));
             }
-            crate::model::pens_gcode(&pens, &frame, &a.plot, header, a.quiet)
+            crate::cmd::plot::pens_gcode(&pens, &frame, &a.plot, header, a.quiet)
         }
-        _ => crate::model::drawing_gcode(&d, &frame, &a.plot, header, a.quiet),
+        _ => crate::cmd::plot::drawing_gcode(&d, &frame, &a.plot, header, a.quiet),
     }
 }
 
@@ -901,7 +901,7 @@ pub fn render(doc: &LineDoc, format: Format, a: &LineArgs) -> Result<Vec<u8>, Cl
         background: a.colour.background.clone(),
         colour_flags: a.colour.flags(),
         colour_layers: match (&a.colour.palette, a.plot.layers) {
-            (Some(p), crate::model::Layers::Colours) => Some(p.0.clone()),
+            (Some(p), crate::args::plot::Layers::Colours) => Some(p.0.clone()),
             _ => None,
         },
     };
@@ -928,13 +928,13 @@ pub fn render(doc: &LineDoc, format: Format, a: &LineArgs) -> Result<Vec<u8>, Cl
 fn check_plot(a: &LineArgs, format: Format) -> Result<(), CliError> {
     let p = &a.plot;
     p.build_options()?;
-    if p.page.is_some() || matches!(p.layers, crate::model::Layers::SizeBands(_)) {
+    if p.page.is_some() || matches!(p.layers, crate::args::plot::Layers::SizeBands(_)) {
         return Err(CliError::arg(
             if p.page.is_some() { "--page" } else { "--layers" },
             "is not available for line in any format: its SVG is the interval at full size, with no page or size layers, and its G-code goes on the machine's bed (--fit, --center, --margin); drop it (--layers colours splits a coloured drawing by pen)",
         ));
     }
-    if p.layers == crate::model::Layers::Colours {
+    if p.layers == crate::args::plot::Layers::Colours {
         if a.colour.palette.is_none() {
             return Err(CliError::arg(
                 "--layers",
@@ -949,7 +949,7 @@ fn check_plot(a: &LineArgs, format: Format) -> Result<(), CliError> {
         }
     }
     if format != Format::Gcode {
-        return p.refuse_except(&["--layers"], |_| crate::model::FOR_GCODE.to_string());
+        return p.refuse_except(&["--layers"], |_| crate::args::plot::FOR_GCODE.to_string());
     }
     p.check_gcode()?;
     match a.render {
@@ -976,7 +976,7 @@ pub fn run(a: &LineArgs) -> Result<(), CliError> {
     let format = Format::resolve(a.format, &a.output)?;
     a.raster.check(format == Format::Png)?;
     check_plot(a, format)?;
-    let pens = format == Format::Gcode && a.plot.layers == crate::model::Layers::Colours && a.colour.background.is_none();
+    let pens = format == Format::Gcode && a.plot.layers == crate::args::plot::Layers::Colours && a.colour.background.is_none();
     a.colour.check(
         matches!(format, Format::Svg | Format::Png) || pens,
         "write .svg or .png (or G-code with --layers colours, without --background)",

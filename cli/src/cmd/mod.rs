@@ -5,6 +5,7 @@ pub mod cobble;
 pub mod fill;
 pub mod line;
 pub mod machines;
+pub mod plot;
 pub mod stats;
 pub mod stopping;
 pub mod territory;

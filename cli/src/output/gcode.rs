@@ -15,9 +15,10 @@
 //!   by hand): never exponent notation, NaN or `-0`;
 //! - the same input gives the same bytes (no clock, no hashing, no environment).
 
-use crate::model::{arc_extremes, Bounds, Drawing, OrderArg, Path, Pt};
+use crate::model::{arc_extremes, Bounds, Drawing, Path, Pt};
 use crate::output::machine::{Machine, Travel, Units};
 use crate::output::order::order;
+use crate::output::order::PathOrder;
 use std::f64::consts::TAU;
 use std::fmt::{self, Write as _};
 
@@ -37,7 +38,7 @@ pub struct GcodeOptions {
     /// Largest distance between an arc and the chords that replace it (mm).
     pub chord_tolerance: f64,
     /// Path order.
-    pub order: OrderArg,
+    pub order: PathOrder,
     /// Margin kept free on every side of the bed (mm).
     pub margin: f64,
     /// Comment lines for the header (parameters, seed, command line).
@@ -54,7 +55,7 @@ impl GcodeOptions {
             passes: 1,
             arcs: m.arcs,
             chord_tolerance: 0.01,
-            order: OrderArg::Improved,
+            order: PathOrder::Improved,
             margin: 0.0,
             header: Vec::new(),
         }

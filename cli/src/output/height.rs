@@ -179,11 +179,12 @@ pub fn render_shapes(
         let stone = Stone::new(shape);
         top = top.max(relief.height(stone.rho, stone.rho));
         let shifts = if periodic {
-            super::svg::images(shape, w, h)
+            crate::model::shape_images(shape, w, h)
         } else {
             vec![(0.0, 0.0)]
         };
-        let (bx0, by0, bx1, by1) = super::svg::bounds(shape);
+        let b = crate::model::shape_bounds(shape);
+        let (bx0, by0, bx1, by1) = (b.x0, b.y0, b.x1, b.y1);
         let k = stones.len();
         for (dx, dy) in shifts {
             if let (Some(cols), Some(rows)) = (

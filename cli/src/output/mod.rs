@@ -2,6 +2,7 @@
 
 pub mod csv;
 pub mod digest;
+pub mod drawing;
 pub mod gcode;
 pub mod hatch;
 pub mod height;

@@ -695,14 +695,24 @@ fn polish(paths: &[Path], seq: &mut [(usize, Entry)], home: Pt) {
     }
 }
 
+/// How paths are ordered before they are written.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum PathOrder {
+    /// Placement order, as the shapes were placed.
+    None,
+    /// Greedy nearest neighbour (with reversal and closed-path start choice).
+    Greedy,
+    /// Greedy, then 2-opt improvement.
+    Improved,
+}
+
 /// The order to draw in: `none` keeps the paths as they are, `greedy` and `improved` as
 /// described in the module docs. Returns the paths re-ordered, rotated and reversed.
-pub fn order(paths: &[Path], home: Pt, mode: crate::model::OrderArg) -> Vec<Path> {
-    use crate::model::OrderArg;
+pub fn order(paths: &[Path], home: Pt, mode: PathOrder) -> Vec<Path> {
     let seq: Vec<(usize, Entry)> = match mode {
-        OrderArg::None => return paths.to_vec(),
-        OrderArg::Greedy => greedy(paths, home),
-        OrderArg::Improved => {
+        PathOrder::None => return paths.to_vec(),
+        PathOrder::Greedy => greedy(paths, home),
+        PathOrder::Improved => {
             let g = greedy(paths, home);
             let mut better = two_opt(paths, &g, home);
             polish(paths, &mut better, home);
@@ -725,7 +735,7 @@ pub fn natural_travel(paths: &[Path], home: Pt) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::model::{Drawing, OrderArg};
+    use crate::model::Drawing;
 
     /// A deterministic scatter of circles and segments.
     fn scene(n: usize) -> Vec<Path> {
@@ -791,7 +801,7 @@ mod tests {
     fn orders_are_permutations_of_the_same_strokes() {
         let paths = scene(900);
         let before = Drawing { paths: paths.clone() }.pen_down_length();
-        for mode in [OrderArg::None, OrderArg::Greedy, OrderArg::Improved] {
+        for mode in [PathOrder::None, PathOrder::Greedy, PathOrder::Improved] {
             let out = order(&paths, [0.0, 0.0], mode);
             assert_eq!(out.len(), paths.len());
             let after = Drawing { paths: out.clone() }.pen_down_length();
@@ -817,16 +827,16 @@ mod tests {
             }
             .travel_from(home)
         };
-        let (none, greedy, improved) = (t(OrderArg::None), t(OrderArg::Greedy), t(OrderArg::Improved));
+        let (none, greedy, improved) = (t(PathOrder::None), t(PathOrder::Greedy), t(PathOrder::Improved));
         assert!(greedy < none / 5.0, "greedy {greedy} vs none {none}");
         assert!(improved < greedy * 0.97, "improved {improved} vs greedy {greedy}");
-        assert_eq!(order(&paths, home, OrderArg::Improved), order(&paths, home, OrderArg::Improved));
+        assert_eq!(order(&paths, home, PathOrder::Improved), order(&paths, home, PathOrder::Improved));
     }
 
     #[test]
     fn circle_is_entered_at_its_nearest_point() {
         let paths = vec![Path::circle([10.0, 0.0], 2.0)];
-        let out = order(&paths, [0.0, 0.0], OrderArg::Greedy);
+        let out = order(&paths, [0.0, 0.0], PathOrder::Greedy);
         let s = out[0].start_point();
         assert!((s[0] - 8.0).abs() < 1e-12 && s[1].abs() < 1e-12, "{s:?}");
     }

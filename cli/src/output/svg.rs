@@ -40,7 +40,7 @@ pub struct SvgOptions {
     /// `Some(K)`: the shapes in K Inkscape layers by size, largest first (`--layers`).
     pub layers: Option<u32>,
     /// Hatching, outlines left out (`--hatch-only`), shapes narrower than the pen left out.
-    pub build: crate::model::BuildOptions,
+    pub build: crate::output::drawing::BuildOptions,
     /// The drawing flags given (page, layers, hatching, style, ...), written after the fill's
     /// command line in `<desc>` so that it reproduces the file.
     pub flags: String,
@@ -280,35 +280,6 @@ fn region_node(doc: &FillDoc, f: &Frame) -> Path {
     Path::new().set("id", "boundary").set("d", d).set("fill-rule", "evenodd")
 }
 
-/// The (dx, dy) images of a shape that can show inside a periodic region.
-pub(crate) fn images(sh: &ShapeDoc, w: f64, h: f64) -> Vec<(f64, f64)> {
-    let (x0, y0, x1, y1) = bounds(sh);
-    // Every period shift that brings the shape's box into the tile (usually 0 or ±1).
-    let shifts = |lo: f64, hi: f64, p: f64| -> Vec<f64> {
-        let k0 = (-hi / p).floor() as i64;
-        let k1 = ((p - lo) / p).ceil() as i64;
-        let mut ks: Vec<i64> = (k0..=k1).collect();
-        // The shape itself first, then its images nearest first.
-        ks.sort_by_key(|k| (k.abs(), -k));
-        ks.into_iter()
-            .map(|k| k as f64 * p)
-            .filter(|&d| hi + d > 0.0 && lo + d < p)
-            .collect()
-    };
-    let (xs, ys) = (shifts(x0, x1, w), shifts(y0, y1, h));
-    ys.iter().flat_map(|&dy| xs.iter().map(move |&dx| (dx, dy))).collect()
-}
-
-pub(crate) fn bounds(sh: &ShapeDoc) -> (f64, f64, f64, f64) {
-    if let Some(r) = sh.radius {
-        return (sh.center[0] - r, sh.center[1] - r, sh.center[0] + r, sh.center[1] + r);
-    }
-    let vs = sh.vertices.as_deref().unwrap_or(&[]);
-    vs.iter().fold((f64::MAX, f64::MAX, f64::MIN, f64::MIN), |b, v| {
-        (b.0.min(v[0]), b.1.min(v[1]), b.2.max(v[0]), b.3.max(v[1]))
-    })
-}
-
 /// The `zetafill fill` command line that reproduces the document.
 pub fn command_line(doc: &FillDoc) -> String {
     let p = &doc.params;
@@ -442,7 +413,11 @@ pub fn render(doc: &FillDoc, opt: &SvgOptions) -> Vec<u8> {
             continue;
         }
         let colour = opt.colours.as_ref().and_then(|c| c.get(k));
-        let offs = if periodic { images(sh, w, h) } else { vec![(0.0, 0.0)] };
+        let offs = if periodic {
+            crate::model::shape_images(sh, w, h)
+        } else {
+            vec![(0.0, 0.0)]
+        };
         for (dx, dy) in offs {
             let outline = if opt.build.no_outline {
                 None

@@ -129,7 +129,7 @@ pub struct TerritoryArgs {
     pub colours: crate::output::palette::ColourArgs,
     /// Plotter and laser output (G-code): machine, feeds, passes, order, --fit/--center.
     #[command(flatten)]
-    pub plot: crate::model::PlotArgs,
+    pub plot: crate::args::plot::PlotArgs,
 }
 
 /// Refuses the plot flags that have no meaning for territories, before any work.
@@ -142,7 +142,7 @@ fn check_plot(a: &TerritoryArgs, format: TerritoryFormat) -> Result<(), CliError
     if p.min_feature > 0.0 {
         return not_here("--min-feature", "every boundary edge is drawn");
     }
-    if p.layers != crate::model::Layers::None {
+    if p.layers != crate::args::plot::Layers::None {
         return not_here("--layers", "the SVG has its own layers (cells, boundaries, outline)");
     }
     if p.page.is_some() {
@@ -160,7 +160,7 @@ fn check_plot(a: &TerritoryArgs, format: TerritoryFormat) -> Result<(), CliError
             "places the drawing on a machine's bed: it is for G-code output",
         ));
     } else {
-        p.refuse_except(&[], |_| crate::model::FOR_GCODE.to_string())?;
+        p.refuse_except(&[], |_| crate::args::plot::FOR_GCODE.to_string())?;
     }
     Ok(())
 }
@@ -182,7 +182,8 @@ fn check_colours(a: &TerritoryArgs, format: TerritoryFormat) -> Result<(), CliEr
 /// The drawing as G-code: boundary polylines (and with `cells` every other Voronoi edge),
 /// placed on the machine's bed, written by the plot back end with its safety invariants.
 fn gcode(o: &Outcome, a: &TerritoryArgs, desc: String) -> Result<Vec<u8>, CliError> {
-    use crate::model::{drawing_gcode, Bounds, Drawing, Path as PlotPath};
+    use crate::cmd::plot::drawing_gcode;
+    use crate::model::{Bounds, Drawing, Path as PlotPath};
     let mut lines = Vec::new();
     if a.render == Render::Cells {
         let dual = geom::Dual::of(&o.model.tri, o.clip.bbox());

@@ -115,12 +115,12 @@ pub struct TileArgs {
     pub quiet: bool,
     /// Plotter and laser output (G-code): machine, feeds, passes, order, --fit/--center.
     #[command(flatten)]
-    pub plot: crate::model::PlotArgs,
+    pub plot: crate::args::plot::PlotArgs,
 }
 
 /// Refuses the plot flags that the output does not read, before any work.
 fn check_plot(a: &TileArgs, format: TileFormat) -> Result<(), CliError> {
-    use crate::model::{FOR_GCODE, GCODE_FLAGS};
+    use crate::args::plot::{FOR_GCODE, GCODE_FLAGS};
     let p = &a.plot;
     if format == TileFormat::Gcode {
         let allowed: Vec<&str> = GCODE_FLAGS
@@ -136,20 +136,20 @@ fn check_plot(a: &TileArgs, format: TileFormat) -> Result<(), CliError> {
         p.refuse_except(&["--layers"], |_| FOR_GCODE.to_string())?;
     }
     match p.layers {
-        crate::model::Layers::None => Ok(()),
-        crate::model::Layers::SizeBands(_) => Err(CliError::arg(
+        crate::args::plot::Layers::None => Ok(()),
+        crate::args::plot::Layers::SizeBands(_) => Err(CliError::arg(
             "--layers",
             "size bands are for fills; a coloured tile splits by pen with --layers colours",
         )),
-        crate::model::Layers::Colours if a.colour.palette.is_none() => Err(CliError::arg(
+        crate::args::plot::Layers::Colours if a.colour.palette.is_none() => Err(CliError::arg(
             "--layers",
             "colours makes one layer (one pen) per --palette colour: give --palette",
         )),
-        crate::model::Layers::Colours if !matches!(format, TileFormat::Svg | TileFormat::Gcode) => Err(CliError::arg(
+        crate::args::plot::Layers::Colours if !matches!(format, TileFormat::Svg | TileFormat::Gcode) => Err(CliError::arg(
             "--layers",
             "colours splits a plotter drawing by pen: write .svg or .gcode",
         )),
-        crate::model::Layers::Colours => Ok(()),
+        crate::args::plot::Layers::Colours => Ok(()),
     }
 }
 
@@ -174,7 +174,8 @@ fn piece_colours(a: &TileArgs, tags: &[render::Tag], scales: &[f64]) -> Option<V
 /// With `pens` (the palette and each piece's colour), one pen per colour, in the palette's
 /// order, with a pen change between them.
 fn gcode(pieces: &[Piece], sheet: Sheet, a: &TileArgs, header: String, pens: Option<(&[String], &[String])>) -> Result<Vec<u8>, CliError> {
-    use crate::model::{pens_gcode, Bounds, Drawing, Path as PlotPath};
+    use crate::cmd::plot::pens_gcode;
+    use crate::model::{Bounds, Drawing, Path as PlotPath};
     let path = |p: &Piece| match p {
         Piece::Circle { c, r } => PlotPath::circle(*c, *r),
         Piece::Open(l) => PlotPath::polyline(l.clone(), false),
@@ -533,7 +534,7 @@ pub fn svg(pieces: &[Piece], sheet: Sheet, look: &Look<'_>, title: &str, desc: &
 /// Refuses colour flags the output cannot show.
 fn check_colours(a: &TileArgs, format: TileFormat) -> Result<(), CliError> {
     let picture = matches!(format, TileFormat::Svg | TileFormat::Png) && a.relief.is_none();
-    let pens = format == TileFormat::Gcode && a.plot.layers == crate::model::Layers::Colours && a.colour.background.is_none();
+    let pens = format == TileFormat::Gcode && a.plot.layers == crate::args::plot::Layers::Colours && a.colour.background.is_none();
     a.colour.check(
         picture || pens,
         "write .svg or .png, without --relief (or G-code with --layers colours, without --background)",
@@ -600,7 +601,7 @@ pub fn output(a: &TileArgs) -> Result<(Tile, Vec<u8>), CliError> {
             let (laid, scales) = arr.lay_out_scaled(&pieces, w, h, false);
             let colours = piece_colours(a, &tags, &scales);
             let pens = match (&a.colour.palette, &colours) {
-                (Some(p), Some(cs)) if a.plot.layers == crate::model::Layers::Colours => Some((&p.0[..], &cs[..])),
+                (Some(p), Some(cs)) if a.plot.layers == crate::args::plot::Layers::Colours => Some((&p.0[..], &cs[..])),
                 _ => None,
             };
             gcode(&laid, arr.sheet(w, h), a, command_line(a, &arr), pens)?
@@ -632,7 +633,7 @@ pub fn output(a: &TileArgs) -> Result<(Tile, Vec<u8>), CliError> {
                 colours: colours.as_deref(),
                 background: a.colour.background.as_deref(),
                 layers: match (&a.colour.palette, a.plot.layers) {
-                    (Some(p), crate::model::Layers::Colours) => Some(&p.0[..]),
+                    (Some(p), crate::args::plot::Layers::Colours) => Some(&p.0[..]),
                     _ => None,
                 },
             };

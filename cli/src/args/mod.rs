@@ -7,7 +7,8 @@ pub mod spec;
 use crate::cmd::{fill, line, machines, stats, territory, tile};
 use clap::{Parser, Subcommand};
 
-/// Random fractal space filling (Shier & Bourke's statistical geometry).
+/// Random fractal space filling (Shier and Bourke's statistical geometry): fills, 1D fills,
+/// territories and fractal tiles as SVG, G-code, PNG, height maps, JSON and CSV.
 #[derive(Debug, Parser)]
 #[command(name = "zetafill", version, about, long_about = None)]
 pub struct Cli {
@@ -27,8 +28,8 @@ pub enum Command {
     Line(line::LineArgs),
     /// Sugihara's Voronoi territory competing: boundaries, cells or coloured cells.
     Territory(territory::TerritoryArgs),
-    /// The scale-periodic fractal tile (seed 002): a texture that meets half- and
-    /// double-scale copies of itself; drawn alone, as a mosaic or as a planet of rings.
+    /// The scale-periodic fractal tile of the "Fractal Tiles" post: a texture that meets
+    /// half- and double-scale copies of itself; drawn alone, as a mosaic or as a planet of rings.
     Tile(tile::TileArgs),
     /// Numbers behind the fills: zeta, gasket width, trials, halting, dimension.
     #[command(subcommand)]

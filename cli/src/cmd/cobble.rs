@@ -1,4 +1,4 @@
-//! Voronoi "cobblestones" of a fill (seed 002, the fractal-tile post): the Voronoi cells of
+//! Voronoi "cobblestones" of a fill (as in the "Fractal Tiles" post): the Voronoi cells of
 //! the shapes' centres, clipped exactly to the region, as plottable polylines (every edge drawn
 //! once, edges merged into long lines). With a periodic region the diagram is built from the
 //! centres and their 8 periodic copies and clipped to the tile, so the cells tile seamlessly:

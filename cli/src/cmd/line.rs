@@ -1,5 +1,5 @@
 //! `zetafill line`: the 1D fill, segments of length `L_i = L / (zeta(c, N) (i + N)^c)` in an
-//! interval of length `L` (seed 001, Figure 3), run by the core's [`zetafill::LineEngine`], and
+//! interval of length `L` (Shier and Bourke, *An Algorithm for Random Fractal Filling of Space*, Figure 3), run by the core's [`zetafill::LineEngine`], and
 //! its outputs: SVG (dashes, circles, bars or zoom rows), PNG, JSON, CSV and the digest.
 
 use crate::args::spec;

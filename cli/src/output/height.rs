@@ -1,5 +1,5 @@
-//! Height maps: a fill as 2.5-dimensional surface roughness (Bourke, seed 000: the algorithm
-//! "for procedurally generating ... 2 dimensional textures and 2.5 dimensional texture
+//! Height maps: a fill as 2.5-dimensional surface roughness (P. Bourke, *A space filling
+//! algorithm for generating procedural geometry and texture*: the algorithm "for procedurally generating ... 2 dimensional textures and 2.5 dimensional texture
 //! roughness"). Every shape is a raised stone on a floor of zero (the gasket, and everything
 //! outside the region); its height at a point grows with the point's depth inside it (the
 //! distance to its outline), and its top is as high as the stone's own half-width, so the

@@ -1,6 +1,7 @@
-//! `zetafill territory`: Sugihara's Voronoi territory competing (seed 004): k seeds, then
-//! points one by one joining the territory of their nearest site ([`model`]), territories kept
-//! connected, density control near the boundaries, colours by graph distance from the seed
+//! `zetafill territory`: Sugihara's Voronoi territory competing (K. Sugihara, *Artistic
+//! Pattern Generation by a Model of Territory Competing*): k seeds, then points one by one
+//! joining the territory of their nearest site ([`model`]), territories kept connected,
+//! density control near the boundaries, colours by graph distance from the seed
 //! ([`colour`]), drawn as boundary polylines, cells, filled cells or a fill's own shapes
 //! ([`render`]). Sites may come from a fill's JSON (`--sites-from`).
 

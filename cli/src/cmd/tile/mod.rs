@@ -1,4 +1,4 @@
-//! `zetafill tile`: the scale-periodic fractal tile of seed 002 ("Fractal Tiles"): a texture of
+//! `zetafill tile`: the scale-periodic fractal tile of the "Fractal Tiles" post: a texture of
 //! discs (or Voronoi cobblestones of their centres) that matches itself left and right, two
 //! half-scale copies of itself along its top and a double-scale copy along its bottom. Drawn
 //! alone, as a mosaic of rows of copies, or as a planet of rings ([`render`]); the discs
@@ -310,7 +310,7 @@ pub const MAX_PIECES: u64 = 2_000_000;
 /// Tile runs of at least this many tries show a progress bar on a terminal.
 const LONG_RUN: u64 = 2_000_000;
 
-/// The band of twins Voronoi cobblestones start from (seed 002 uses the top quarter).
+/// The band of twins Voronoi cobblestones start from (the "Fractal Tiles" post uses the top quarter).
 const VORONOI_BAND: f64 = 0.25;
 
 /// How far apart (relative to the tile's size) the matching ends of copies may be.

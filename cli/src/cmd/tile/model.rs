@@ -1,4 +1,4 @@
-//! The scale-periodic tile of seed 002 ("Fractal Tiles"): discs in a W x H tile that matches
+//! The scale-periodic tile of the "Fractal Tiles" post: discs in a W x H tile that matches
 //! itself left and right, two half-scale copies of itself along its top, and (as one of the
 //! halves) a double-scale copy along its bottom.
 //!
@@ -8,13 +8,13 @@
 //! 1 (half scale) sits on top of row 0, and row 0 on top of row -1 (double scale), each tile
 //! of row -1 carrying two of row 0. The rows pile up towards the line `y = 2H`.
 //!
-//! Disc size and spacing vary with y by a factor of two over the tile (seed 002): a disc
+//! Disc size and spacing vary with y by a factor of two over the tile (as in the post): a disc
 //! centred at height y has radius `R f(y)`, and two discs keep a gap of `S f(ym)` (ym the
 //! mean height of their centres), with `f(y) = 1 - y / 2H`. That f is the one that makes the
 //! plane self-similar: the half-scale map `y -> H + y/2` halves it, `f(H + y/2) = f(y) / 2`,
 //! so every row is the same texture at its own scale, and an exponential law would not be.
 //!
-//! ## Placement (seed 002)
+//! ## Placement (the post's)
 //! A try picks a uniform point of the tile, takes the radius of its height, and keeps the disc
 //! when it clears every disc already placed *in every copy of the tile that can reach it*: the
 //! neighbours left and right in row 0, the half-scale copies above, and the double-scale copy
@@ -23,7 +23,7 @@
 //! limited to a quarter of the tile), so those copies are all of them, and no two discs
 //! overlap anywhere in the plane. The loop stops after a given number of tries.
 //!
-//! ## Doppelgangers (seed 002)
+//! ## Doppelgangers (the post's)
 //! The tile's bottom edge must meet the top edge of the double-scale copy on both its halves,
 //! so what crosses the tile's top edge must repeat with period W/2 along it. A disc that
 //! crosses the top edge gets a twin shifted by W/2; both must fit, and both are added. For
@@ -271,7 +271,7 @@ fn pair_clear(spec: &TileSpec, maps: &[Map], a: (Pt, f64), b: (Pt, f64)) -> bool
     })
 }
 
-/// Grows a tile: seed 002's loop with the copies and doppelgangers described above.
+/// Grows a tile: the post's loop with the copies and doppelgangers described above.
 /// Deterministic: the same spec gives the same discs.
 pub fn grow(spec: &TileSpec) -> Tile {
     grow_with(spec, |_| {})

@@ -1,5 +1,5 @@
 //! Drawings of a tile: the tile's own picture (what a texture holds), and two layouts built from
-//! copies of that picture (seed 002): the `mosaic`, rows of tiles each half the size of the row
+//! copies of that picture (the "Fractal Tiles" post): the `mosaic`, rows of tiles each half the size of the row
 //! below, and the `planet`, rings of tiles each holding twice as many as the ring inside it.
 //!
 //! The picture is made of [`Piece`]s in the tile's frame: whole circles, open polylines (arcs

@@ -36,14 +36,14 @@ fn render(args_file: &Path) -> (PathBuf, Vec<u8>) {
     if let zetafill_cli::Command::Line(l) = command {
         let (doc, halt) = zetafill_cli::cmd::line::compute(&l).unwrap_or_else(|e| panic!("{}: {e}", args_file.display()));
         assert!(halt.is_none(), "{} halted", args_file.display());
-        let format = zetafill_cli::output::Format::resolve(l.format, &l.output).unwrap_or(zetafill_cli::output::Format::Svg);
+        let format = zetafill_cli::args::format::Format::resolve(l.format, &l.output).unwrap_or(zetafill_cli::args::format::Format::Svg);
         let bytes = zetafill_cli::cmd::line::render(&doc, format, &l).unwrap_or_else(|e| panic!("{}: {e}", args_file.display()));
         return (gallery().join(&l.output), bytes);
     }
     let a = parse_fill(&args);
     let (doc, halt) = zetafill_cli::cmd::fill::compute(&a).unwrap_or_else(|e| panic!("{}: {e}", args_file.display()));
     assert!(halt.is_none(), "{} halted", args_file.display());
-    let format = zetafill_cli::output::Format::resolve(a.format, &a.output).unwrap_or(zetafill_cli::output::Format::Svg);
+    let format = zetafill_cli::args::format::Format::resolve(a.format, &a.output).unwrap_or(zetafill_cli::args::format::Format::Svg);
     let bytes = zetafill_cli::cmd::fill::render(&doc, format, &a).unwrap_or_default();
     (gallery().join(&a.output), bytes)
 }

@@ -1,8 +1,12 @@
 //! The command line as clap parses it: the top-level parser and its subcommands, and the
 //! parsers of flag values ([`spec`]).
 
+pub mod colour;
+pub mod format;
 pub mod plot;
+pub mod raster;
 pub mod spec;
+pub mod style;
 
 use crate::cmd::{fill, line, machines, stats, territory, tile};
 use clap::{Parser, Subcommand};

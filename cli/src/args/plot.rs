@@ -430,8 +430,8 @@ impl PlotArgs {
 
     /// Checks every flag that can be checked before the fill runs, for `format`: each plot
     /// flag given must be one that `format` reads.
-    pub fn check(&self, format: crate::output::Format) -> Result<(), CliError> {
-        use crate::output::Format;
+    pub fn check(&self, format: crate::args::format::Format) -> Result<(), CliError> {
+        use crate::args::format::Format;
         self.build_options()?;
         match format {
             Format::Gcode => self.check_gcode()?,
@@ -470,7 +470,7 @@ impl PlotArgs {
             build: self.build_options()?,
             flags: format!(
                 " --style {}{}{}{}",
-                clap::ValueEnum::to_possible_value(&style).map_or_else(String::new, |v| v.get_name().to_string()),
+                style.name(),
                 if pen_width == 0.3 {
                     String::new()
                 } else {

@@ -1,12 +1,13 @@
 //! `zetafill fill`: the 2D fractal fill.
 
+use crate::args::format::Format;
 use crate::args::spec::{self, RegionSpec};
+use crate::args::style::StyleArg;
 use crate::cmd::stopping::{self, Unit};
 use crate::error::CliError;
 use crate::io::write::Dest;
 use crate::model::doc::{FillDoc, ParamsDoc, RegionDoc, ShapeDoc, StatsDoc};
-use crate::output::svg::Style;
-use crate::output::{self, Format};
+use crate::output;
 use clap::{Args, ValueEnum};
 use std::path::PathBuf;
 use zetafill::engine::{ParamError, StepError};
@@ -137,7 +138,7 @@ pub struct FillArgs {
     pub format: Option<Format>,
     /// SVG: outline (plotters) or filled.
     #[arg(long, value_enum, default_value = "outline")]
-    pub style: Style,
+    pub style: StyleArg,
     /// SVG: stroke width in mm.
     #[arg(long = "pen-width", default_value_t = 0.3, value_parser = spec::positive)]
     pub pen_width: f64,
@@ -146,14 +147,14 @@ pub struct FillArgs {
     pub boundary: bool,
     /// PNG size.
     #[command(flatten)]
-    pub raster: crate::output::png::Raster,
+    pub raster: crate::args::raster::RasterArgs,
     /// PNG: write a 16-bit height map (each shape a raised stone of this profile) instead
     /// of a picture.
     #[arg(long, value_enum)]
-    pub relief: Option<output::height::Relief>,
+    pub relief: Option<crate::args::raster::ReliefArg>,
     /// Colours (SVG/PNG).
     #[command(flatten)]
-    pub colour: output::palette::ColourArgs,
+    pub colour: crate::args::colour::ColourArgs,
     /// SVG/PNG: draw the Voronoi cells of the shapes' centres ("cobblestones") instead of the
     /// shapes; with --periodic the cells tile seamlessly.
     #[arg(long)]
@@ -693,7 +694,7 @@ fn mix_order(m: MixArg) -> MixOrder {
 
 /// The SVG options of the drawing flags, colours included.
 fn svg_options(doc: &FillDoc, a: &FillArgs) -> Result<output::svg::SvgOptions, CliError> {
-    let mut o = a.plot.svg_options(doc, a.style, a.pen_width, a.boundary)?;
+    let mut o = a.plot.svg_options(doc, a.style.into(), a.pen_width, a.boundary)?;
     if let Some(p) = &a.colour.palette {
         o.colours = Some(shape_colours(doc, a, &p.0));
         if a.plot.layers == crate::args::plot::Layers::Colours {
@@ -727,7 +728,7 @@ fn shape_colours(doc: &FillDoc, a: &FillArgs, palette: &[output::palette::Colour
 
 /// How `--voronoi` draws the cobblestones: edges, or cells filled in their shapes' colours.
 fn cobble_look(doc: &FillDoc, a: &FillArgs) -> crate::cmd::cobble::Look {
-    let filled = a.style == output::svg::Style::Filled;
+    let filled = a.style == StyleArg::Filled;
     let mut flags = format!(" --pen-width {}", output::num(a.pen_width, 4));
     if filled {
         flags.push_str(" --style filled");
@@ -752,7 +753,7 @@ pub fn render(doc: &FillDoc, format: Format, a: &FillArgs) -> Result<Vec<u8>, Cl
         let look = cobble_look(doc, a);
         return match format {
             Format::Svg => crate::cmd::cobble::svg(doc, &look),
-            Format::Png => a.raster.render(&crate::cmd::cobble::svg(doc, &look)?),
+            Format::Png => a.raster.raster().render(&crate::cmd::cobble::svg(doc, &look)?),
             _ => Err(CliError::arg(
                 "--voronoi",
                 "cobblestones are drawn as SVG or PNG; write .svg or .png, or drop --voronoi",
@@ -774,12 +775,18 @@ pub fn render(doc: &FillDoc, format: Format, a: &FillArgs) -> Result<Vec<u8>, Cl
         Format::Digest => output::digest::render(doc),
         Format::Png => match a.relief {
             Some(relief) => {
-                let command = format!("{} --relief {}{}", output::svg::command_line(doc), relief.name(), a.raster.flag());
-                output::height::render(doc, relief, output::height::grid(doc.extent(), &a.raster)?, &command)?
+                let relief: output::height::Relief = relief.into();
+                let command = format!(
+                    "{} --relief {}{}",
+                    output::svg::command_line(doc),
+                    relief.name(),
+                    a.raster.raster().flag()
+                );
+                output::height::render(doc, relief, output::height::grid(doc.extent(), &a.raster.raster())?, &command)?
             }
             None => {
                 let svg = output::svg::render(doc, &svg_options(doc, a)?);
-                a.raster.render(&svg)?
+                a.raster.raster().render(&svg)?
             }
         },
     })
@@ -815,7 +822,7 @@ pub fn run(a: &FillArgs) -> Result<(), CliError> {
     if a.plot.layers == crate::args::plot::Layers::Colours && a.colour.palette.is_none() {
         return Err(colours_need_palette());
     }
-    if a.voronoi && a.colour.palette.is_some() && a.style != output::svg::Style::Filled {
+    if a.voronoi && a.colour.palette.is_some() && a.style != StyleArg::Filled {
         return Err(CliError::arg(
             "--palette",
             "cobblestone outlines are edges, each shared by two cells; add --style filled to colour the cells",
@@ -833,7 +840,7 @@ pub fn run(a: &FillArgs) -> Result<(), CliError> {
         })?;
     }
     a.plot.check(format)?;
-    if a.plot.hatch.is_some() && a.style == output::svg::Style::Filled && matches!(format, Format::Svg | Format::Png) {
+    if a.plot.hatch.is_some() && a.style == StyleArg::Filled && matches!(format, Format::Svg | Format::Png) {
         return Err(CliError::arg(
             "--hatch",
             "draws lines, which filled shapes would hide: use --style outline",

@@ -2,12 +2,14 @@
 //! interval of length `L` (Shier and Bourke, *An Algorithm for Random Fractal Filling of Space*, Figure 3), run by the core's [`zetafill::LineEngine`], and
 //! its outputs: SVG (dashes, circles, bars or zoom rows), PNG, JSON, CSV and the digest.
 
+use crate::args::format::Format;
 use crate::args::spec;
+use crate::args::style::StyleArg;
 use crate::cmd::stopping::{self, Unit};
 use crate::error::CliError;
 use crate::io::write::Dest;
+use crate::output::num;
 use crate::output::svg::Style;
-use crate::output::{num, Format};
 use clap::{Args, ValueEnum};
 use serde::Serialize;
 use std::fmt::Write as _;
@@ -98,7 +100,7 @@ pub struct LineArgs {
     pub render: Render,
     /// SVG: circles as outlines (plotters) or filled (dashes are strokes, bars always filled).
     #[arg(long, value_enum, default_value = "outline")]
-    pub style: Style,
+    pub style: StyleArg,
     /// SVG: stroke width in mm (dashes and outlines).
     #[arg(long = "pen-width", default_value_t = 0.3, value_parser = spec::positive, allow_negative_numbers = true)]
     pub pen_width: f64,
@@ -119,10 +121,10 @@ pub struct LineArgs {
     pub boundary: bool,
     /// Colours (SVG/PNG).
     #[command(flatten)]
-    pub colour: crate::output::palette::ColourArgs,
+    pub colour: crate::args::colour::ColourArgs,
     /// PNG size.
     #[command(flatten)]
-    pub raster: crate::output::png::Raster,
+    pub raster: crate::args::raster::RasterArgs,
     /// No progress bar.
     #[arg(short, long)]
     pub quiet: bool,
@@ -461,11 +463,7 @@ fn pieces(s: &SegmentDoc, l: f64, periodic: bool) -> Vec<(f64, f64)> {
 /// [`command_line`], the command that reproduces a drawing.
 fn drawing_flags(opt: &LineSvgOptions) -> String {
     let name = |v: Option<clap::builder::PossibleValue>| v.map(|v| v.get_name().to_string()).unwrap_or_default();
-    let mut s = format!(
-        " --render {} --style {}",
-        name(opt.render.to_possible_value()),
-        name(opt.style.to_possible_value())
-    );
+    let mut s = format!(" --render {} --style {}", name(opt.render.to_possible_value()), opt.style.name());
     if opt.pen_width != 0.3 {
         let _ = write!(s, " --pen-width {}", opt.pen_width);
     }
@@ -887,7 +885,7 @@ fn render_gcode(doc: &LineDoc, opt: &LineSvgOptions, a: &LineArgs) -> Result<Vec
 pub fn render(doc: &LineDoc, format: Format, a: &LineArgs) -> Result<Vec<u8>, CliError> {
     let opt = LineSvgOptions {
         render: a.render,
-        style: a.style,
+        style: a.style.into(),
         pen_width: a.pen_width,
         bar_height: a.bar_height,
         zoom_rows: a.zoom_rows,
@@ -910,7 +908,7 @@ pub fn render(doc: &LineDoc, format: Format, a: &LineArgs) -> Result<Vec<u8>, Cl
         Format::Json => render_json(doc)?,
         Format::Csv => render_csv(doc),
         Format::Digest => render_digest(doc),
-        Format::Png => a.raster.render(&render_svg(doc, &opt))?,
+        Format::Png => a.raster.raster().render(&render_svg(doc, &opt))?,
         Format::Gcode => render_gcode(doc, &opt, a)?,
         #[allow(unreachable_patterns)]
         f => {

@@ -29,7 +29,7 @@ pub const MAX_PIXELS: u64 = 64_000_000;
 /// The profile of a stone: its height at a point `d` inside its outline, for a stone whose
 /// deepest point lies `rho` inside (dome: `sqrt(s (2 rho - s))` with `s = min(d, rho)`; cone:
 /// `min(d, rho)`; flat: `rho`).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Relief {
     /// A round top: a circle becomes a hemisphere.
     Dome,

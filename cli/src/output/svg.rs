@@ -18,12 +18,22 @@ use svg::node::Text;
 use svg::{Document, Node};
 
 /// How shapes are painted.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Style {
     /// Stroke-only outlines (pen plotters, laser cutting).
     Outline,
     /// Filled shapes without stroke (screens, prints).
     Filled,
+}
+
+impl Style {
+    /// The name on the command line.
+    pub fn name(self) -> &'static str {
+        match self {
+            Style::Outline => "outline",
+            Style::Filled => "filled",
+        }
+    }
 }
 
 /// SVG options.

@@ -45,7 +45,7 @@ impl TerritoryFormat {
     fn resolve(given: Option<TerritoryFormat>, path: &Path) -> Result<TerritoryFormat, CliError> {
         use TerritoryFormat::*;
         let known = [("svg", Svg), ("png", Png), ("json", Json), ("gcode", Gcode), ("nc", Gcode)];
-        crate::output::format_for(given, path, Svg, &known)
+        crate::args::format::format_for(given, path, Svg, &known)
     }
 }
 
@@ -120,14 +120,14 @@ pub struct TerritoryArgs {
     pub boundary: bool,
     /// PNG size.
     #[command(flatten)]
-    pub raster: crate::output::png::Raster,
+    pub raster: crate::args::raster::RasterArgs,
     /// No progress bar (and no G-code figures on stderr).
     #[arg(short, long)]
     pub quiet: bool,
     /// Palette colours instead of the --color rules (filled cells or shapes; default
     /// --color-by cycle: territory k takes colour k).
     #[command(flatten)]
-    pub colours: crate::output::palette::ColourArgs,
+    pub colours: crate::args::colour::ColourArgs,
     /// Plotter and laser output (G-code): machine, feeds, passes, order, --fit/--center.
     #[command(flatten)]
     pub plot: crate::args::plot::PlotArgs,
@@ -765,7 +765,7 @@ pub fn render_bytes(o: &Outcome, a: &TerritoryArgs, format: TerritoryFormat) -> 
     Ok(match format {
         TerritoryFormat::Gcode => gcode(o, a, desc.clone())?,
         TerritoryFormat::Svg => svg(),
-        TerritoryFormat::Png => a.raster.render(&svg())?,
+        TerritoryFormat::Png => a.raster.raster().render(&svg())?,
         TerritoryFormat::Json => {
             let mut v = serde_json::to_vec(&o.doc).map_err(|e| CliError::Io(format!("cannot encode JSON: {e}")))?;
             v.push(b'\n');

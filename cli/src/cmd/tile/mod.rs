@@ -38,7 +38,7 @@ impl TileFormat {
     fn resolve(given: Option<TileFormat>, path: &Path) -> Result<TileFormat, CliError> {
         use TileFormat::*;
         let known = [("svg", Svg), ("png", Png), ("json", Json), ("gcode", Gcode), ("nc", Gcode)];
-        crate::output::format_for(given, path, Svg, &known)
+        crate::args::format::format_for(given, path, Svg, &known)
     }
 }
 
@@ -102,14 +102,14 @@ pub struct TileArgs {
     pub pen_width: f64,
     /// Colours (SVG/PNG).
     #[command(flatten)]
-    pub colour: crate::output::palette::ColourArgs,
+    pub colour: crate::args::colour::ColourArgs,
     /// PNG size.
     #[command(flatten)]
-    pub raster: crate::output::png::Raster,
+    pub raster: crate::args::raster::RasterArgs,
     /// PNG: write a 16-bit height map of the tile (each disc or cobblestone a raised stone of
     /// this profile) instead of a picture.
     #[arg(long, value_enum)]
-    pub relief: Option<crate::output::height::Relief>,
+    pub relief: Option<crate::args::raster::ReliefArg>,
     /// No figures on stderr.
     #[arg(short, long)]
     pub quiet: bool,
@@ -585,8 +585,9 @@ pub fn output(a: &TileArgs) -> Result<(Tile, Vec<u8>), CliError> {
         ));
     }
     if let (TileFormat::Png, Some(relief)) = (format, a.relief) {
-        let command = format!("{} --relief {}{}", command_line(a, &arr), relief.name(), a.raster.flag());
-        let size = crate::output::height::grid((w, h), &a.raster)?;
+        let relief: crate::output::height::Relief = relief.into();
+        let command = format!("{} --relief {}{}", command_line(a, &arr), relief.name(), a.raster.raster().flag());
+        let size = crate::output::height::grid((w, h), &a.raster.raster())?;
         let stones = render::stones(&tile, a.render)?;
         let bytes = crate::output::height::render_shapes(&stones, (0.0, 0.0, w, h), false, relief, size, &command)?;
         return Ok((tile, bytes));
@@ -639,7 +640,7 @@ pub fn output(a: &TileArgs) -> Result<(Tile, Vec<u8>), CliError> {
             };
             let svg = svg(&laid, arr.sheet(w, h), &look, &title, &command_line(a, &arr));
             if format == TileFormat::Png {
-                a.raster.render(&svg)?
+                a.raster.raster().render(&svg)?
             } else {
                 svg
             }

@@ -135,7 +135,7 @@ pub fn scene_args(s: &Scene) -> Vec<String> {
 }
 
 /// Parses `zetafill fill` arguments (program name first) into the CLI's argument struct.
-pub fn parse_fill(args: &[String]) -> zetafill_cli::cmd::fill::FillArgs {
+pub fn parse_fill(args: &[String]) -> zetafill_cli::args::fill::FillArgs {
     use clap::Parser;
     match zetafill_cli::Cli::try_parse_from(args) {
         Ok(zetafill_cli::Cli {

@@ -2,13 +2,14 @@
 //! parsers of flag values ([`spec`]).
 
 pub mod colour;
+pub mod fill;
 pub mod format;
 pub mod plot;
 pub mod raster;
 pub mod spec;
 pub mod style;
 
-use crate::cmd::{fill, line, machines, stats, territory, tile};
+use crate::cmd::{line, machines, stats, territory, tile};
 use clap::{Parser, Subcommand};
 
 /// Random fractal space filling (Shier and Bourke's statistical geometry): fills, 1D fills,

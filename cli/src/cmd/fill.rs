@@ -1,22 +1,21 @@
 //! `zetafill fill`: the 2D fractal fill.
 
+pub mod limits;
+pub mod region;
+
+use crate::args::fill::{FillArgs, MixArg, Rotate, Sampler, ScalarArg, DEFAULT_MAX_TRIALS, MAX_SHAPES};
 use crate::args::format::Format;
 use crate::args::spec::{self, RegionSpec};
 use crate::args::style::StyleArg;
 use crate::cmd::stopping::{self, Unit};
 use crate::error::CliError;
 use crate::io::write::Dest;
-use crate::model::doc::{FillDoc, ParamsDoc, RegionDoc, ShapeDoc, StatsDoc};
+use crate::model::doc::{FillDoc, ParamsDoc, ShapeDoc, StatsDoc};
 use crate::output;
-use clap::{Args, ValueEnum};
-use std::path::PathBuf;
+use limits::check_known_limit;
+use region::RegionData;
 use zetafill::engine::{ParamError, StepError};
-use zetafill::{
-    index_words, CellSampler, Engine, Geo, MixOrder, Params, Placed, PolygonRegion, Region, ShapeKind, Stop, StopReason, Storage,
-};
-
-/// Largest number of shapes one run may hold (52 bytes each in the core).
-pub const MAX_SHAPES: u64 = 20_000_000;
+use zetafill::{index_words, CellSampler, Engine, Geo, MixOrder, Params, Placed, Region, ShapeKind, Stop, StopReason, Storage};
 
 /// What a 2D run places.
 const SHAPES: Unit = Unit {
@@ -26,146 +25,6 @@ const SHAPES: Unit = Unit {
 
 /// Words of the coverage bitmap (2 MiB): a 4096 x 4096 grid.
 const COVERAGE_WORDS: usize = 1 << 18;
-
-/// Rotation of non-circular shapes.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum Rotate {
-    /// Axis-aligned.
-    None,
-    /// A uniformly random angle per trial.
-    Random,
-}
-
-/// How the shapes of a mix are taken.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum MixArg {
-    /// In turn: placement i gets shape i mod count (the paper's Figure 7).
-    Cycle,
-    /// A random choice per placement (fixed by the seed).
-    Random,
-}
-
-/// The candidate sampler.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum Sampler {
-    /// Candidates only where the next shape could fit (cells with clearance bounds): the same
-    /// distribution of placements as `reference`, far fewer trials.
-    Fast,
-    /// The paper's: uniform candidates over the region, retried until one fits.
-    Reference,
-}
-
-impl MixArg {
-    /// The name written to JSON and on the command line.
-    pub fn name(self) -> &'static str {
-        match self {
-            MixArg::Cycle => "cycle",
-            MixArg::Random => "random",
-        }
-    }
-}
-
-impl Sampler {
-    /// The name written to JSON.
-    pub fn name(self) -> &'static str {
-        match self {
-            Sampler::Fast => "fast",
-            Sampler::Reference => "reference",
-        }
-    }
-}
-
-/// Arguments of `zetafill fill`.
-#[derive(Debug, Args)]
-pub struct FillArgs {
-    /// circle | square | rect:ASPECT | triangle | polygon:SIDES | star:POINTS:INNER_RATIO |
-    /// ring:INNER_RATIO | blob:DELTA | mix:SHAPE,SHAPE,...
-    #[arg(long, default_value = "circle", value_parser = spec::shape)]
-    pub shape: spec::ShapeArg,
-    /// Mixes: take the shapes in turn (cycle) or at random per placement.
-    #[arg(long = "mix-order", value_enum, default_value = "cycle")]
-    pub mix_order: MixArg,
-    /// Rotation: none or random (default: random for non-circles).
-    #[arg(long, value_enum)]
-    pub rotate: Option<Rotate>,
-    /// rect:W:H | circle:R | annulus:R_OUTER:R_INNER | polygon:X1,Y1,X2,Y2,...[/X1,Y1,...] (rings,
-    /// even-odd) | svg:FILE (mm).
-    #[arg(long, default_value = "rect:200:200", value_parser = spec::region)]
-    pub region: RegionSpec,
-    /// Periodic (toroidal) boundary: the fill tiles seamlessly (rect regions only).
-    #[arg(long)]
-    pub periodic: bool,
-    /// Power-law exponent c > 1 (default 1.3).
-    #[arg(long, value_parser = spec::exponent, conflicts_with = "dimension", allow_negative_numbers = true)]
-    pub c: Option<f64>,
-    /// Fractal dimension D in (0, 2) instead of c (c = 2/D).
-    #[arg(long, value_parser = spec::dimension, allow_negative_numbers = true)]
-    pub dimension: Option<f64>,
-    /// The paper's N > 0: larger N makes the first shapes smaller.
-    #[arg(long = "n-offset", default_value_t = 1.0, value_parser = spec::positive, allow_negative_numbers = true)]
-    pub n_offset: f64,
-    /// Stop after K shapes (default 2000 when no stop condition is given).
-    #[arg(long, value_parser = clap::value_parser!(u64).range(1..=MAX_SHAPES))]
-    pub count: Option<u64>,
-    /// Stop once this fraction of the region is filled, 0 < F < 1.
-    #[arg(long, value_parser = spec::fraction, allow_negative_numbers = true)]
-    pub fill: Option<f64>,
-    /// Stop before the first shape narrower than MM.
-    #[arg(long = "min-size", value_parser = spec::positive, allow_negative_numbers = true)]
-    pub min_size: Option<f64>,
-    /// Minimum clearance between shapes and to the boundary, in mm.
-    #[arg(long, default_value_t = 0.0, value_parser = spec::non_negative, allow_negative_numbers = true)]
-    pub gap: f64,
-    /// Trial limit per placement; reaching it halts the fill (exit 3).
-    #[arg(long = "max-trials", default_value_t = DEFAULT_MAX_TRIALS, value_parser = clap::value_parser!(u64).range(1..))]
-    pub max_trials: u64,
-    /// RNG seed.
-    #[arg(long, default_value_t = 1)]
-    pub seed: u64,
-    /// Candidate sampler: fast (cells where the next shape could fit) or reference (the
-    /// paper's uniform search); both give the same distribution of placements.
-    #[arg(long, value_enum, default_value = "fast")]
-    pub sampler: Sampler,
-    /// Number type of the engine: f64 or fixed (32.32 fixed point).
-    #[arg(long, value_enum, default_value = "f64")]
-    pub scalar: ScalarArg,
-    /// Output path; the format comes from the extension (.svg .png .json .csv .gcode/.nc);
-    /// '-' is stdout.
-    #[arg(short = 'o', long)]
-    pub output: PathBuf,
-    /// Output format (overrides the extension).
-    #[arg(long, value_enum)]
-    pub format: Option<Format>,
-    /// SVG: outline (plotters) or filled.
-    #[arg(long, value_enum, default_value = "outline")]
-    pub style: StyleArg,
-    /// SVG: stroke width in mm.
-    #[arg(long = "pen-width", default_value_t = 0.3, value_parser = spec::positive)]
-    pub pen_width: f64,
-    /// SVG: also draw the region's outline.
-    #[arg(long)]
-    pub boundary: bool,
-    /// PNG size.
-    #[command(flatten)]
-    pub raster: crate::args::raster::RasterArgs,
-    /// PNG: write a 16-bit height map (each shape a raised stone of this profile) instead
-    /// of a picture.
-    #[arg(long, value_enum)]
-    pub relief: Option<crate::args::raster::ReliefArg>,
-    /// Colours (SVG/PNG).
-    #[command(flatten)]
-    pub colour: crate::args::colour::ColourArgs,
-    /// SVG/PNG: draw the Voronoi cells of the shapes' centres ("cobblestones") instead of the
-    /// shapes; with --periodic the cells tile seamlessly.
-    #[arg(long)]
-    pub voronoi: bool,
-    /// No progress bar.
-    #[arg(short, long)]
-    pub quiet: bool,
-    /// Plotter and laser output: G-code machine, path order, hatch, pages, layers.
-    #[command(flatten)]
-    pub plot: crate::args::plot::PlotArgs,
-}
 
 impl FillArgs {
     /// The exponent c, from `--c`, `--dimension` or the default 1.3.
@@ -214,9 +73,6 @@ fn capacity(params: &Params, area: f64, stop: &Stop) -> Result<u64, CliError> {
     };
     stopping::capacity(c, n, stop, SHAPES, width)
 }
-
-/// The default of `--max-trials`.
-pub const DEFAULT_MAX_TRIALS: u64 = 10_000_000;
 
 /// Advice for a halt at placement `index` (at least 1: a halt at the first placement is
 /// [`first_shape_error`]).
@@ -275,241 +131,6 @@ fn shape_doc(kind: &ShapeKind, geo: &Geo<f64>, p: &Placed<f64>, index: u64, area
         area,
         trials,
         vertices,
-    }
-}
-
-/// A region resolved from its flag: owns the outline vertices the core borrows.
-#[derive(Debug, Clone)]
-pub struct RegionData {
-    spec: RegionSpec,
-}
-
-impl RegionData {
-    /// Resolves `--region` (reading an SVG outline from its file).
-    pub fn load(spec: &RegionSpec) -> Result<Self, CliError> {
-        let spec = match spec {
-            RegionSpec::Svg(path) => {
-                let (points, ends) = crate::io::svgin::read_outline(path)?;
-                outers_first(&points, &ends)
-            }
-            RegionSpec::Polygon { points, ends } => outers_first(points, ends),
-            other => other.clone(),
-        };
-        Ok(RegionData { spec })
-    }
-
-    /// The core region (validating polygons).
-    pub fn region(&self, periodic: bool) -> Result<Region<'_>, CliError> {
-        if periodic && !matches!(self.spec, RegionSpec::Rect { .. }) {
-            return Err(CliError::arg(
-                "--periodic",
-                "only rect:W:H regions can be periodic; remove --periodic or use a rect region",
-            ));
-        }
-        Ok(match &self.spec {
-            RegionSpec::Rect { width, height } => Region::Rect {
-                width: *width,
-                height: *height,
-                periodic,
-            },
-            RegionSpec::Circle { radius } => Region::Circle { radius: *radius },
-            RegionSpec::Annulus { outer, inner } => Region::Annulus {
-                outer: *outer,
-                inner: *inner,
-            },
-            RegionSpec::Polygon { points, ends } => Region::Polygon(
-                PolygonRegion::new(points, ends).map_err(|e| CliError::arg("--region", format!("{e}; give a simple outline")))?,
-            ),
-            RegionSpec::Svg(_) => return Err(CliError::Io("internal: SVG region not loaded".into())),
-        })
-    }
-
-    /// The region as written in JSON.
-    pub fn doc(&self, region: &Region<'_>) -> RegionDoc {
-        match *region {
-            Region::Rect { width, height, periodic } => RegionDoc::Rect { width, height, periodic },
-            Region::Circle { radius } => RegionDoc::Circle {
-                center: [radius, radius],
-                radius,
-            },
-            Region::Annulus { outer, inner } => RegionDoc::Annulus {
-                center: [outer, outer],
-                radius_outer: outer,
-                radius_inner: inner,
-            },
-            Region::Polygon(p) => {
-                let rings: Vec<&[zetafill::Point<f64>]> = p.rings().collect();
-                let as_vec = |r: &[zetafill::Point<f64>]| r.iter().map(|q| [q.x, q.y]).collect::<Vec<_>>();
-                let (mut vertices, mut holes, mut outers) = (Vec::new(), Vec::new(), Vec::new());
-                for (r, hole) in rings.iter().zip(holes_of(&rings)) {
-                    if hole {
-                        holes.push(as_vec(r));
-                    } else if vertices.is_empty() {
-                        vertices = as_vec(r);
-                    } else {
-                        outers.push(as_vec(r));
-                    }
-                }
-                RegionDoc::Polygon { vertices, holes, outers }
-            }
-        }
-    }
-}
-
-/// Whether each ring is a hole: inside an odd number of the others (the even-odd rule), judged
-/// by its first vertex.
-fn holes_of(rings: &[&[zetafill::Point<f64>]]) -> Vec<bool> {
-    (0..rings.len())
-        .map(|i| {
-            let probe = rings.get(i).and_then(|r| r.first()).copied().unwrap_or_default();
-            let depth = rings
-                .iter()
-                .enumerate()
-                .filter(|(j, o)| *j != i && zetafill::geom::point_in_poly(probe, o))
-                .count();
-            depth % 2 == 1
-        })
-        .collect()
-}
-
-/// The rings reordered as the JSON lists them (the outer outlines, then the holes, each in
-/// their own order), so that the `--region polygon:` written from the JSON gives the core the
-/// same rings in the same order, and so the same bits.
-fn outers_first(points: &[zetafill::Point<f64>], ends: &[usize]) -> RegionSpec {
-    let starts = std::iter::once(0).chain(ends.iter().copied());
-    let rings: Vec<&[zetafill::Point<f64>]> = starts.zip(ends).filter_map(|(a, &b)| points.get(a..b)).collect();
-    let holes = holes_of(&rings);
-    let (mut out, mut out_ends) = (Vec::with_capacity(points.len()), Vec::with_capacity(ends.len()));
-    for want_hole in [false, true] {
-        for (r, _) in rings.iter().zip(&holes).filter(|(_, h)| **h == want_hole) {
-            out.extend_from_slice(r);
-            out_ends.push(out.len());
-        }
-    }
-    RegionSpec::Polygon {
-        points: out,
-        ends: out_ends,
-    }
-}
-
-/// For shapes whose first two placements have a known geometric limit (unrotated squares,
-/// rectangles, circles and rings in an inclusive rectangle), whether shapes 0 and 1 can both
-/// be placed: side by side, one above the other, or in opposite corners.
-fn first_two_fit(kind: &ShapeKind, a0: f64, a1: f64, w: f64, h: f64, gap: f64) -> bool {
-    let (w, h) = (w - 2.0 * gap, h - 2.0 * gap);
-    match kind {
-        ShapeKind::Square | ShapeKind::Rect { .. } => {
-            let (s0, s1) = (kind.scale_for_area(a0), kind.scale_for_area(a1));
-            let aspect = if let ShapeKind::Rect { aspect } = kind { *aspect } else { 1.0 };
-            let (w0, h0, w1, h1) = (2.0 * aspect * s0, 2.0 * s0, 2.0 * aspect * s1, 2.0 * s1);
-            w0 <= w && h0 <= h && (w0 + w1 + gap < w || h0 + h1 + gap < h)
-        }
-        ShapeKind::Circle | ShapeKind::Ring { .. } => {
-            let (r0, r1) = (kind.scale_for_area(a0), kind.scale_for_area(a1));
-            let (dx, dy) = ((w - r0 - r1).max(0.0), (h - r0 - r1).max(0.0));
-            2.0 * r0 <= w.min(h) && dx * dx + dy * dy > (r0 + r1 + gap) * (r0 + r1 + gap)
-        }
-        _ => true,
-    }
-}
-
-/// Refuses parameters whose first two shapes certainly cannot both fit, naming the largest c
-/// that works for this shape, N and region.
-fn check_known_limit(params: &Params, region: &Region<'_>) -> Result<(), CliError> {
-    let (
-        Region::Rect {
-            width,
-            height,
-            periodic: false,
-        },
-        [kind],
-    ) = (region, params.shape.kinds())
-    else {
-        return Ok(());
-    };
-    if params.rotate && kind.rotates() {
-        return Ok(());
-    }
-    let fits = |c: f64| {
-        let Ok(z) = zetafill::zeta::zeta(c, params.n_offset) else {
-            return false;
-        };
-        let a = |i: f64| width * height / (z * zetafill::scalar::powf(i + params.n_offset, c));
-        first_two_fit(kind, a(0.0), a(1.0), *width, *height, params.gap)
-    };
-    if fits(params.c) {
-        return Ok(());
-    }
-    // However small the shapes (N large), the gap alone may leave no room for two.
-    let room = |gap: f64| first_two_fit(kind, 0.0, 0.0, *width, *height, gap);
-    if !room(params.gap) {
-        let ok = bisect(0.0, params.gap, room);
-        return Err(CliError::arg(
-            "--gap",
-            format!(
-                "{} mm leaves no room for two {}s in this {} x {} mm region, whatever --c and --n-offset; lower it below {:.4} mm or enlarge --region",
-                params.gap,
-                spec::kind_name(kind),
-                width,
-                height,
-                ok
-            ),
-        ));
-    }
-    let lo = 1.0 + 1e-9;
-    if !fits(lo) {
-        return Err(CliError::arg(
-            "--n-offset",
-            format!(
-                "the first two {}s cannot both fit this region for any c; raise --n-offset{} or enlarge --region",
-                spec::kind_name(kind),
-                if params.gap > 0.0 { ", lower --gap" } else { "" }
-            ),
-        ));
-    }
-    let lo = bisect(lo, params.c, fits);
-    Err(CliError::arg(
-        "--c",
-        format!(
-            "with N = {} the first two {}s cannot both fit in this region when c > {:.4} (the paper's hard limit, section 3); lower --c or raise --n-offset",
-            params.n_offset,
-            spec::kind_name(kind),
-            lo
-        ),
-    ))
-}
-
-/// Where `works` turns false between `ok` (where it holds) and `bad` (where it does not):
-/// the last value found to work after 60 halvings.
-fn bisect(mut ok: f64, mut bad: f64, works: impl Fn(f64) -> bool) -> f64 {
-    for _ in 0..60 {
-        let mid = 0.5 * (ok + bad);
-        if works(mid) {
-            ok = mid;
-        } else {
-            bad = mid;
-        }
-    }
-    ok
-}
-
-/// The number type the engine computes in.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum ScalarArg {
-    /// IEEE double precision through libm (the default).
-    F64,
-    /// 32.32 fixed point, as on a microcontroller without an FPU (different shapes, equally
-    /// deterministic; `--format digest` then matches the firmware's fixed-point runs).
-    Fixed,
-}
-
-impl ScalarArg {
-    /// The name in JSON.
-    pub fn name(self) -> &'static str {
-        match self {
-            ScalarArg::F64 => "f64",
-            ScalarArg::Fixed => "fixed",
-        }
     }
 }
 
@@ -850,28 +471,4 @@ pub fn run(a: &FillArgs) -> Result<(), CliError> {
     let bytes = render(&doc, format, a)?;
     dest.write(&bytes)?;
     stopping::outcome(halt, SHAPES, halt_advice)
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn outlines_come_before_holes() {
-        // A hole, the outline around it, and an island beside them.
-        let Ok(RegionSpec::Polygon { points, ends }) = spec::region("polygon:4,4,6,4,6,6/0,0,10,0,10,10,0,10/20,0,30,0,30,9") else {
-            panic!("rings refused");
-        };
-        let RegionSpec::Polygon { points: p, ends: e } = outers_first(&points, &ends) else {
-            panic!("not a polygon");
-        };
-        assert_eq!(e, [4, 7, 10]);
-        let xs: Vec<f64> = p.iter().map(|q| q.x).collect();
-        assert_eq!(xs, [0.0, 10.0, 10.0, 0.0, 20.0, 30.0, 30.0, 4.0, 6.0, 6.0]);
-        // Already in order: unchanged.
-        let RegionSpec::Polygon { points: again, ends: e2 } = outers_first(&p, &e) else {
-            panic!("not a polygon");
-        };
-        assert_eq!((again, e2), (p, e));
-    }
 }

@@ -11,7 +11,7 @@ pub mod model;
 pub mod render;
 
 use crate::args::spec::{self, RegionSpec};
-use crate::cmd::fill::RegionData;
+use crate::cmd::fill::region::RegionData;
 use crate::error::CliError;
 use crate::io::write::Dest;
 use crate::model::doc::RegionDoc;

@@ -9,14 +9,14 @@ use std::time::Instant;
 use zetafill_cli::output::height::{grid, render, Relief};
 use zetafill_cli::output::png::Raster;
 
-fn fill(args: &[&str]) -> zetafill_cli::doc::FillDoc {
+fn fill(args: &[&str]) -> zetafill_cli::model::doc::FillDoc {
     let mut v = vec!["zetafill", "fill", "-q", "-o", "x.json"];
     v.extend_from_slice(args);
     let cli = <zetafill_cli::Cli as clap::Parser>::try_parse_from(&v).unwrap_or_else(|e| panic!("{e}"));
     let zetafill_cli::Command::Fill(a) = cli.command else {
         panic!("not fill")
     };
-    zetafill_cli::fill::compute(&a).unwrap_or_else(|e| panic!("{e}")).0
+    zetafill_cli::cmd::fill::compute(&a).unwrap_or_else(|e| panic!("{e}")).0
 }
 
 fn main() {

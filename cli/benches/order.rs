@@ -8,10 +8,13 @@
 //! Prints one Markdown table (the README quotes it). Timing is the median of 3 runs.
 
 use std::time::Instant;
-use zetafill_cli::plot::order::{order, PointIndex};
-use zetafill_cli::plot::{from_fill, hatch::Hatch, BuildOptions, Drawing, OrderArg, Path, Pt};
+use zetafill_cli::model::{Drawing, Path, Pt};
+use zetafill_cli::output::drawing::{from_fill, BuildOptions};
+use zetafill_cli::output::hatch::Hatch;
+use zetafill_cli::output::order::PathOrder;
+use zetafill_cli::output::order::{order, PointIndex};
 
-fn fill(args: &[&str]) -> zetafill_cli::doc::FillDoc {
+fn fill(args: &[&str]) -> zetafill_cli::model::doc::FillDoc {
     let mut v = vec!["zetafill", "fill", "-q", "-o", "x.json"];
     v.extend_from_slice(args);
     let cli = match <zetafill_cli::Cli as clap::Parser>::try_parse_from(&v) {
@@ -21,7 +24,7 @@ fn fill(args: &[&str]) -> zetafill_cli::doc::FillDoc {
     let zetafill_cli::Command::Fill(a) = cli.command else {
         panic!("not fill")
     };
-    match zetafill_cli::fill::compute(&a) {
+    match zetafill_cli::cmd::fill::compute(&a) {
         Ok((doc, _)) => doc,
         Err(e) => panic!("{e}"),
     }
@@ -157,8 +160,8 @@ fn main() {
         let none = Drawing { paths: d.paths.clone() }.travel_from(home);
         let ends: Vec<[Pt; 2]> = d.paths.iter().map(vpype_ends).collect();
         let vpype = linesort_travel(&linemerge(&ends, 0.05), home);
-        let (g, tg) = median_time(|| order(&d.paths, home, OrderArg::Greedy));
-        let (im, ti) = median_time(|| order(&d.paths, home, OrderArg::Improved));
+        let (g, tg) = median_time(|| order(&d.paths, home, PathOrder::Greedy));
+        let (im, ti) = median_time(|| order(&d.paths, home, PathOrder::Improved));
         let greedy = Drawing { paths: g }.travel_from(home);
         let improved = Drawing { paths: im }.travel_from(home);
         println!(

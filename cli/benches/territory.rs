@@ -6,9 +6,9 @@
 //! asserts nothing about time.
 
 use std::time::Instant;
-use zetafill_cli::territory::geom::Clip;
-use zetafill_cli::territory::model::{Growth, Model};
-use zetafill_cli::territory::render;
+use zetafill_cli::cmd::territory::model::{Growth, Model};
+use zetafill_cli::cmd::territory::render;
+use zetafill_cli::geometry::voronoi::Clip;
 
 fn main() {
     let clip = Clip::Rect {

@@ -7,9 +7,10 @@
 use clap::Parser;
 use std::path::Path;
 use std::process::Command;
-use zetafill_cli::doc::FillDoc;
-use zetafill_cli::territory::geom::Pt;
-use zetafill_cli::{cobble, fill, Cli};
+use zetafill_cli::cmd::{cobble, fill};
+use zetafill_cli::geometry::voronoi::Pt;
+use zetafill_cli::model::doc::FillDoc;
+use zetafill_cli::Cli;
 
 fn fill_doc(args: &[&str]) -> FillDoc {
     let mut a = vec!["zetafill", "fill"];
@@ -154,7 +155,7 @@ fn periodic_cobblestones_tile_seamlessly() {
         .all(|p| (0.0..=100.0).contains(&p[0]) && (0.0..=80.0).contains(&p[1])));
     // The same centres without their periodic copies do not tile: the checker sees it.
     let mut flat = doc.clone();
-    flat.region = zetafill_cli::doc::RegionDoc::Rect {
+    flat.region = zetafill_cli::model::doc::RegionDoc::Rect {
         width: 100.0,
         height: 80.0,
         periodic: false,

@@ -12,9 +12,9 @@ use serde_json::Value;
 use spade::{DelaunayTriangulation, Point2, Triangulation};
 use std::path::Path;
 use std::process::Command;
-use zetafill_cli::territory::geom::{Clip, Pt};
-use zetafill_cli::territory::model::{Growth, Model};
-use zetafill_cli::territory::{colour, render};
+use zetafill_cli::cmd::territory::model::{Growth, Model};
+use zetafill_cli::cmd::territory::{colour, render};
+use zetafill_cli::geometry::voronoi::{Clip, Pt};
 
 struct Out {
     code: i32,

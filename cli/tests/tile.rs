@@ -604,7 +604,7 @@ proptest::proptest! {
         let Ok(zetafill_cli::Cli { command: zetafill_cli::Command::Tile(a) }) = zetafill_cli::Cli::try_parse_from(&args) else {
             panic!("{args:?} does not parse")
         };
-        match zetafill_cli::tile::output(&a) {
+        match zetafill_cli::cmd::tile::output(&a) {
             Err(e) => proptest::prop_assert_eq!(e.exit_code(), 2, "{:?}: {}", args, e),
             Ok((_, bytes)) => {
                 let doc = parse_json(&bytes);

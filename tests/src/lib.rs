@@ -106,7 +106,7 @@ pub fn run_scene(s: &Scene, coverage_words: usize) -> (u64, u64, Vec<Placed<f64>
 
 /// The `zetafill fill` arguments of a scene (without output).
 pub fn scene_args(s: &Scene) -> Vec<String> {
-    let shape = zetafill_cli::spec::shape_name(&s.shape);
+    let shape = zetafill_cli::args::spec::shape_name(&s.shape);
     let mut v: Vec<String> = vec![
         "zetafill".into(),
         "fill".into(),
@@ -135,7 +135,7 @@ pub fn scene_args(s: &Scene) -> Vec<String> {
 }
 
 /// Parses `zetafill fill` arguments (program name first) into the CLI's argument struct.
-pub fn parse_fill(args: &[String]) -> zetafill_cli::fill::FillArgs {
+pub fn parse_fill(args: &[String]) -> zetafill_cli::args::fill::FillArgs {
     use clap::Parser;
     match zetafill_cli::Cli::try_parse_from(args) {
         Ok(zetafill_cli::Cli {

@@ -26,25 +26,25 @@ fn render(args_file: &Path) -> (PathBuf, Vec<u8>) {
         .unwrap_or_else(|e| panic!("{}: {e}", args_file.display()))
         .command;
     if let zetafill_cli::Command::Tile(t) = command {
-        let (_, bytes) = zetafill_cli::tile::output(&t).unwrap_or_else(|e| panic!("{}: {e}", args_file.display()));
+        let (_, bytes) = zetafill_cli::cmd::tile::output(&t).unwrap_or_else(|e| panic!("{}: {e}", args_file.display()));
         return (gallery().join(&t.output), bytes);
     }
     if let zetafill_cli::Command::Territory(t) = command {
-        let bytes = zetafill_cli::territory::output(&t).unwrap_or_else(|e| panic!("{}: {e}", args_file.display()));
+        let bytes = zetafill_cli::cmd::territory::output(&t).unwrap_or_else(|e| panic!("{}: {e}", args_file.display()));
         return (gallery().join(&t.output), bytes);
     }
     if let zetafill_cli::Command::Line(l) = command {
-        let (doc, halt) = zetafill_cli::line::compute(&l).unwrap_or_else(|e| panic!("{}: {e}", args_file.display()));
+        let (doc, halt) = zetafill_cli::cmd::line::compute(&l).unwrap_or_else(|e| panic!("{}: {e}", args_file.display()));
         assert!(halt.is_none(), "{} halted", args_file.display());
-        let format = zetafill_cli::output::Format::resolve(l.format, &l.output).unwrap_or(zetafill_cli::output::Format::Svg);
-        let bytes = zetafill_cli::line::render(&doc, format, &l).unwrap_or_else(|e| panic!("{}: {e}", args_file.display()));
+        let format = zetafill_cli::args::format::Format::resolve(l.format, &l.output).unwrap_or(zetafill_cli::args::format::Format::Svg);
+        let bytes = zetafill_cli::cmd::line::render(&doc, format, &l).unwrap_or_else(|e| panic!("{}: {e}", args_file.display()));
         return (gallery().join(&l.output), bytes);
     }
     let a = parse_fill(&args);
-    let (doc, halt) = zetafill_cli::fill::compute(&a).unwrap_or_else(|e| panic!("{}: {e}", args_file.display()));
+    let (doc, halt) = zetafill_cli::cmd::fill::compute(&a).unwrap_or_else(|e| panic!("{}: {e}", args_file.display()));
     assert!(halt.is_none(), "{} halted", args_file.display());
-    let format = zetafill_cli::output::Format::resolve(a.format, &a.output).unwrap_or(zetafill_cli::output::Format::Svg);
-    let bytes = zetafill_cli::fill::render(&doc, format, &a).unwrap_or_default();
+    let format = zetafill_cli::args::format::Format::resolve(a.format, &a.output).unwrap_or(zetafill_cli::args::format::Format::Svg);
+    let bytes = zetafill_cli::cmd::fill::render(&doc, format, &a).unwrap_or_default();
     (gallery().join(&a.output), bytes)
 }
 

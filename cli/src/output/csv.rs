@@ -1,7 +1,7 @@
 //! CSV output: one row per shape, a header first. Columns: index, kind, x, y, radius, angle,
 //! area, trials (radius empty for polygons, angle empty for circles). Full f64 precision.
 
-use crate::doc::FillDoc;
+use crate::model::doc::FillDoc;
 use std::fmt::Write as _;
 
 /// Renders a fill as CSV.

@@ -1,7 +1,7 @@
 //! Digest output: one line `COUNT HEX16`, the FNV-1a 64 digest of every placed shape's
 //! centre, area and angle bits (see `zetafill::digest`), the same value the firmware prints.
 
-use crate::doc::FillDoc;
+use crate::model::doc::FillDoc;
 use zetafill::digest::{add_shape, Fnv1a};
 
 /// The digest line of a fill.

@@ -1,5 +1,5 @@
-//! Height maps: a fill as 2.5-dimensional surface roughness (Bourke, seed 000: the algorithm
-//! "for procedurally generating ... 2 dimensional textures and 2.5 dimensional texture
+//! Height maps: a fill as 2.5-dimensional surface roughness (P. Bourke, *A space filling
+//! algorithm for generating procedural geometry and texture*: the algorithm "for procedurally generating ... 2 dimensional textures and 2.5 dimensional texture
 //! roughness"). Every shape is a raised stone on a floor of zero (the gasket, and everything
 //! outside the region); its height at a point grows with the point's depth inside it (the
 //! distance to its outline), and its top is as high as the stone's own half-width, so the
@@ -11,8 +11,8 @@
 //! many mm that is, and give the command that reproduces the file). Each pixel is the mean of
 //! a 4 x 4 grid of samples, so outlines are smooth.
 
-use crate::doc::{FillDoc, ShapeDoc};
 use crate::error::CliError;
+use crate::model::doc::{FillDoc, ShapeDoc};
 use rayon::prelude::*;
 use zetafill::geom::{edges, point_in_poly, seg_dist2};
 use zetafill::Point;
@@ -29,7 +29,7 @@ pub const MAX_PIXELS: u64 = 64_000_000;
 /// The profile of a stone: its height at a point `d` inside its outline, for a stone whose
 /// deepest point lies `rho` inside (dome: `sqrt(s (2 rho - s))` with `s = min(d, rho)`; cone:
 /// `min(d, rho)`; flat: `rho`).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Relief {
     /// A round top: a circle becomes a hemisphere.
     Dome,
@@ -179,11 +179,12 @@ pub fn render_shapes(
         let stone = Stone::new(shape);
         top = top.max(relief.height(stone.rho, stone.rho));
         let shifts = if periodic {
-            super::svg::images(shape, w, h)
+            crate::model::shape_images(shape, w, h)
         } else {
             vec![(0.0, 0.0)]
         };
-        let (bx0, by0, bx1, by1) = super::svg::bounds(shape);
+        let b = crate::model::shape_bounds(shape);
+        let (bx0, by0, bx1, by1) = (b.x0, b.y0, b.x1, b.y1);
         let k = stones.len();
         for (dx, dy) in shifts {
             if let (Some(cols), Some(rows)) = (

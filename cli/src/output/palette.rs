@@ -1,14 +1,14 @@
 //! Colour for screens and prints: a palette of hex colours given to the shapes by size band,
 //! at random (fixed by the seed) or in turn, and a background colour.
 
-use crate::doc::FillDoc;
+use crate::model::doc::FillDoc;
 use zetafill::shape::mix64;
 
 /// A colour as `#rrggbb` (lower case).
 pub type Colour = String;
 
 /// How shapes take their colours from a palette.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum ColorBy {
     /// By size: K bands of equal width in log(area) for K colours, the largest shapes taking
     /// the first (the bands of `--layers size-bands:K`).
@@ -154,82 +154,6 @@ pub fn assign_items(colours: &[Colour], by: ColorBy, seed: u64, items: &[(u64, f
 pub fn assign(doc: &FillDoc, colours: &[Colour], by: ColorBy, entry: impl Fn(u64) -> usize) -> Vec<Colour> {
     let items: Vec<(u64, f64)> = doc.shapes.iter().map(|s| (s.index, s.area)).collect();
     assign_items(colours, by, doc.params.seed, &items, entry)
-}
-
-/// `--palette`, `--color-by` and `--background`: colours for the shapes of a picture.
-#[derive(Debug, Clone, Default, clap::Args)]
-pub struct ColourArgs {
-    /// SVG/PNG: colours for the shapes, hex rrggbb (or rgb, '#' optional) separated by
-    /// commas; their fill, or their stroke with --style outline.
-    #[arg(long, value_parser = palette)]
-    pub palette: Option<Palette>,
-    /// SVG/PNG: how shapes take the palette's colours (default size; territory: cycle, by
-    /// territory).
-    #[arg(long = "color-by", value_enum, requires = "palette")]
-    pub color_by: Option<ColorBy>,
-    /// SVG/PNG: a background colour (hex rrggbb or rgb) behind the drawing.
-    #[arg(long, value_parser = colour)]
-    pub background: Option<Colour>,
-}
-
-impl ColourArgs {
-    /// The first colour flag given, if any.
-    pub fn given(&self) -> Option<&'static str> {
-        if self.palette.is_some() {
-            Some("--palette")
-        } else {
-            self.background.as_ref().map(|_| "--background")
-        }
-    }
-
-    /// Refuses colour flags where they would show nothing: unless `shown` (the output is a
-    /// picture that shows them; `what` says what to change), and `--color-by kind` when the
-    /// picture has `one_kind` of shape.
-    pub fn check(&self, shown: bool, what: &str, one_kind: bool) -> Result<(), crate::error::CliError> {
-        let Some(flag) = self.given() else {
-            return Ok(());
-        };
-        if !shown {
-            return Err(crate::error::CliError::arg(
-                flag,
-                format!("colours the shapes of an SVG or PNG picture: {what}, or drop it"),
-            ));
-        }
-        if one_kind && self.color_by == Some(ColorBy::Kind) {
-            return Err(crate::error::CliError::arg(
-                "--color-by",
-                "there is one kind of shape here; use size, random or cycle",
-            ));
-        }
-        Ok(())
-    }
-
-    /// The rule that gives out the colours (`size` unless given).
-    pub fn by(&self) -> ColorBy {
-        self.by_or(ColorBy::Size)
-    }
-
-    /// The rule that gives out the colours, `default` unless given.
-    pub fn by_or(&self, default: ColorBy) -> ColorBy {
-        self.color_by.unwrap_or(default)
-    }
-
-    /// The flags as a command that reproduces the picture writes them.
-    pub fn flags(&self) -> String {
-        self.flags_or(ColorBy::Size)
-    }
-
-    /// [`ColourArgs::flags`] where `--color-by` defaults to `default`.
-    pub fn flags_or(&self, default: ColorBy) -> String {
-        let mut s = String::new();
-        if let Some(p) = &self.palette {
-            s.push_str(&format!(" --palette {} --color-by {}", p.arg(), self.by_or(default).name()));
-        }
-        if let Some(bg) = &self.background {
-            s.push_str(&format!(" --background {}", bg.trim_start_matches('#')));
-        }
-        s
-    }
 }
 
 #[cfg(test)]

@@ -10,13 +10,11 @@ pub fn only_png(flag: &str) -> CliError {
 }
 
 /// The size of a PNG: pixels per inch, or the longer side in pixels.
-#[derive(Debug, Clone, clap::Args)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Raster {
-    /// PNG: resolution in pixels per inch.
-    #[arg(long, default_value_t = 96.0, value_parser = crate::spec::positive, allow_negative_numbers = true)]
+    /// Resolution in pixels per inch.
     pub dpi: f64,
-    /// PNG: the image's longer side in pixels (instead of --dpi).
-    #[arg(long, conflicts_with = "dpi", value_parser = clap::value_parser!(u32).range(1..=100_000))]
+    /// The image's longer side in pixels (instead of `dpi`).
     pub pixels: Option<u32>,
 }
 
@@ -24,14 +22,6 @@ impl Raster {
     /// Renders SVG bytes to PNG at this size.
     pub fn render(&self, svg: &[u8]) -> Result<Vec<u8>, CliError> {
         render(svg, self.dpi, self.pixels)
-    }
-
-    /// Refuses `--pixels` when the output is not a PNG.
-    pub fn check(&self, png: bool) -> Result<(), CliError> {
-        match self.pixels {
-            Some(_) if !png => Err(only_png("--pixels")),
-            _ => Ok(()),
-        }
     }
 
     /// The flag as written on a command line.

@@ -11,19 +11,29 @@
 //! behind the drawing. Without them the output is exactly the region-sized drawing above
 //! (the gallery pins it byte for byte).
 
-use crate::doc::{FillDoc, RegionDoc, ShapeDoc};
+use crate::model::doc::{FillDoc, RegionDoc, ShapeDoc};
 use crate::output::num;
 use svg::node::element::{Circle, ClipPath, Definitions, Description, Group, Path, Polygon, Rectangle, Title};
 use svg::node::Text;
 use svg::{Document, Node};
 
 /// How shapes are painted.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Style {
     /// Stroke-only outlines (pen plotters, laser cutting).
     Outline,
     /// Filled shapes without stroke (screens, prints).
     Filled,
+}
+
+impl Style {
+    /// The name on the command line.
+    pub fn name(self) -> &'static str {
+        match self {
+            Style::Outline => "outline",
+            Style::Filled => "filled",
+        }
+    }
 }
 
 /// SVG options.
@@ -40,7 +50,7 @@ pub struct SvgOptions {
     /// `Some(K)`: the shapes in K Inkscape layers by size, largest first (`--layers`).
     pub layers: Option<u32>,
     /// Hatching, outlines left out (`--hatch-only`), shapes narrower than the pen left out.
-    pub build: crate::plot::BuildOptions,
+    pub build: crate::output::drawing::BuildOptions,
     /// The drawing flags given (page, layers, hatching, style, ...), written after the fill's
     /// command line in `<desc>` so that it reproduces the file.
     pub flags: String,
@@ -118,8 +128,8 @@ fn ring_d(f: &Frame, pts: &[[f64; 2]]) -> String {
 }
 
 /// Path data of plot paths (polylines and arcs, region frame) on the page.
-fn plot_d(paths: &[crate::plot::Path], f: &Frame) -> String {
-    use crate::plot::Path as P2;
+fn plot_d(paths: &[crate::model::Path], f: &Frame) -> String {
+    use crate::model::Path as P2;
     let mut parts = Vec::new();
     for p in paths {
         match p {
@@ -163,14 +173,14 @@ fn clipped_node(
     f: &Frame,
     min_feature: f64,
 ) -> Option<Option<svg::node::element::Element>> {
-    use crate::plot::{clip_path, Bounds, Path as P2};
+    use crate::model::{clip_path, Bounds, Path as P2};
     let tile = Bounds {
         x0: 0.0,
         y0: 0.0,
         x1: w,
         y1: h,
     };
-    let b = crate::plot::shape_bounds(sh);
+    let b = crate::model::shape_bounds(sh);
     if (Bounds {
         x0: b.x0 + dx,
         y0: b.y0 + dy,
@@ -217,7 +227,7 @@ fn hatch_node(
     tile: Option<(f64, f64)>,
     f: &Frame,
 ) -> Option<svg::node::element::Element> {
-    use crate::plot::{clip_path, Bounds, Path as P2};
+    use crate::model::{clip_path, Bounds, Path as P2};
     let h = opt.build.hatch?;
     let lines = h
         .shape(sh, off, opt.build.min_feature)
@@ -280,35 +290,6 @@ fn region_node(doc: &FillDoc, f: &Frame) -> Path {
     Path::new().set("id", "boundary").set("d", d).set("fill-rule", "evenodd")
 }
 
-/// The (dx, dy) images of a shape that can show inside a periodic region.
-pub(crate) fn images(sh: &ShapeDoc, w: f64, h: f64) -> Vec<(f64, f64)> {
-    let (x0, y0, x1, y1) = bounds(sh);
-    // Every period shift that brings the shape's box into the tile (usually 0 or ±1).
-    let shifts = |lo: f64, hi: f64, p: f64| -> Vec<f64> {
-        let k0 = (-hi / p).floor() as i64;
-        let k1 = ((p - lo) / p).ceil() as i64;
-        let mut ks: Vec<i64> = (k0..=k1).collect();
-        // The shape itself first, then its images nearest first.
-        ks.sort_by_key(|k| (k.abs(), -k));
-        ks.into_iter()
-            .map(|k| k as f64 * p)
-            .filter(|&d| hi + d > 0.0 && lo + d < p)
-            .collect()
-    };
-    let (xs, ys) = (shifts(x0, x1, w), shifts(y0, y1, h));
-    ys.iter().flat_map(|&dy| xs.iter().map(move |&dx| (dx, dy))).collect()
-}
-
-pub(crate) fn bounds(sh: &ShapeDoc) -> (f64, f64, f64, f64) {
-    if let Some(r) = sh.radius {
-        return (sh.center[0] - r, sh.center[1] - r, sh.center[0] + r, sh.center[1] + r);
-    }
-    let vs = sh.vertices.as_deref().unwrap_or(&[]);
-    vs.iter().fold((f64::MAX, f64::MAX, f64::MIN, f64::MIN), |b, v| {
-        (b.0.min(v[0]), b.1.min(v[1]), b.2.max(v[0]), b.3.max(v[1]))
-    })
-}
-
 /// The `zetafill fill` command line that reproduces the document.
 pub fn command_line(doc: &FillDoc) -> String {
     let p = &doc.params;
@@ -348,7 +329,7 @@ pub fn size_bands(doc: &FillDoc, k: u32) -> (Vec<usize>, Vec<Option<(f64, f64)>>
     let bands = crate::output::palette::log_bands(&areas, k);
     let mut widths: Vec<Option<(f64, f64)>> = vec![None; k];
     for (s, &b) in doc.shapes.iter().zip(&bands) {
-        let w = crate::plot::shape_width(s);
+        let w = crate::model::shape_width(s);
         if let Some(slot) = widths.get_mut(b) {
             *slot = Some(match *slot {
                 Some((hi, lo)) => (hi.max(w), lo.min(w)),
@@ -438,11 +419,15 @@ pub fn render(doc: &FillDoc, opt: &SvgOptions) -> Vec<u8> {
     let min_feature = opt.build.min_feature;
     let paint = if opt.style == Style::Filled { "fill" } else { "stroke" };
     for (k, (sh, &band)) in doc.shapes.iter().zip(&bands).enumerate() {
-        if min_feature > 0.0 && crate::plot::shape_width(sh) < min_feature {
+        if min_feature > 0.0 && crate::model::shape_width(sh) < min_feature {
             continue;
         }
         let colour = opt.colours.as_ref().and_then(|c| c.get(k));
-        let offs = if periodic { images(sh, w, h) } else { vec![(0.0, 0.0)] };
+        let offs = if periodic {
+            crate::model::shape_images(sh, w, h)
+        } else {
+            vec![(0.0, 0.0)]
+        };
         for (dx, dy) in offs {
             let outline = if opt.build.no_outline {
                 None

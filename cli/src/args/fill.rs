@@ -1,0 +1,177 @@
+//! The flags of `zetafill fill`: the shape, region, power law, stops, sampler and output, with
+//! the plotter, colour and raster groups flattened in.
+
+use crate::args::colour::ColourArgs;
+use crate::args::format::Format;
+use crate::args::plot::PlotArgs;
+use crate::args::raster::{RasterArgs, ReliefArg};
+use crate::args::spec::{self, RegionSpec};
+use crate::args::style::StyleArg;
+use clap::{Args, ValueEnum};
+use std::path::PathBuf;
+
+/// Largest number of shapes one run may hold (52 bytes each in the core).
+pub const MAX_SHAPES: u64 = 20_000_000;
+
+/// The default of `--max-trials`.
+pub const DEFAULT_MAX_TRIALS: u64 = 10_000_000;
+
+/// Rotation of non-circular shapes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum Rotate {
+    /// Axis-aligned.
+    None,
+    /// A uniformly random angle per trial.
+    Random,
+}
+
+/// How the shapes of a mix are taken.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum MixArg {
+    /// In turn: placement i gets shape i mod count (the paper's Figure 7).
+    Cycle,
+    /// A random choice per placement (fixed by the seed).
+    Random,
+}
+
+/// The candidate sampler.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum Sampler {
+    /// Candidates only where the next shape could fit (cells with clearance bounds): the same
+    /// distribution of placements as `reference`, far fewer trials.
+    Fast,
+    /// The paper's: uniform candidates over the region, retried until one fits.
+    Reference,
+}
+
+impl MixArg {
+    /// The name written to JSON and on the command line.
+    pub fn name(self) -> &'static str {
+        match self {
+            MixArg::Cycle => "cycle",
+            MixArg::Random => "random",
+        }
+    }
+}
+
+impl Sampler {
+    /// The name written to JSON.
+    pub fn name(self) -> &'static str {
+        match self {
+            Sampler::Fast => "fast",
+            Sampler::Reference => "reference",
+        }
+    }
+}
+
+/// The number type the engine computes in.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum ScalarArg {
+    /// IEEE double precision through libm (the default).
+    F64,
+    /// 32.32 fixed point, as on a microcontroller without an FPU (different shapes, equally
+    /// deterministic; `--format digest` then matches the firmware's fixed-point runs).
+    Fixed,
+}
+
+impl ScalarArg {
+    /// The name in JSON.
+    pub fn name(self) -> &'static str {
+        match self {
+            ScalarArg::F64 => "f64",
+            ScalarArg::Fixed => "fixed",
+        }
+    }
+}
+
+/// Arguments of `zetafill fill`.
+#[derive(Debug, Args)]
+pub struct FillArgs {
+    /// circle | square | rect:ASPECT | triangle | polygon:SIDES | star:POINTS:INNER_RATIO |
+    /// ring:INNER_RATIO | blob:DELTA | mix:SHAPE,SHAPE,...
+    #[arg(long, default_value = "circle", value_parser = spec::shape)]
+    pub shape: spec::ShapeArg,
+    /// Mixes: take the shapes in turn (cycle) or at random per placement.
+    #[arg(long = "mix-order", value_enum, default_value = "cycle")]
+    pub mix_order: MixArg,
+    /// Rotation: none or random (default: random for non-circles).
+    #[arg(long, value_enum)]
+    pub rotate: Option<Rotate>,
+    /// rect:W:H | circle:R | annulus:R_OUTER:R_INNER | polygon:X1,Y1,X2,Y2,...[/X1,Y1,...] (rings,
+    /// even-odd) | svg:FILE (mm).
+    #[arg(long, default_value = "rect:200:200", value_parser = spec::region)]
+    pub region: RegionSpec,
+    /// Periodic (toroidal) boundary: the fill tiles seamlessly (rect regions only).
+    #[arg(long)]
+    pub periodic: bool,
+    /// Power-law exponent c > 1 (default 1.3).
+    #[arg(long, value_parser = spec::exponent, conflicts_with = "dimension", allow_negative_numbers = true)]
+    pub c: Option<f64>,
+    /// Fractal dimension D in (0, 2) instead of c (c = 2/D).
+    #[arg(long, value_parser = spec::dimension, allow_negative_numbers = true)]
+    pub dimension: Option<f64>,
+    /// The paper's N > 0: larger N makes the first shapes smaller.
+    #[arg(long = "n-offset", default_value_t = 1.0, value_parser = spec::positive, allow_negative_numbers = true)]
+    pub n_offset: f64,
+    /// Stop after K shapes (default 2000 when no stop condition is given).
+    #[arg(long, value_parser = clap::value_parser!(u64).range(1..=MAX_SHAPES))]
+    pub count: Option<u64>,
+    /// Stop once this fraction of the region is filled, 0 < F < 1.
+    #[arg(long, value_parser = spec::fraction, allow_negative_numbers = true)]
+    pub fill: Option<f64>,
+    /// Stop before the first shape narrower than MM.
+    #[arg(long = "min-size", value_parser = spec::positive, allow_negative_numbers = true)]
+    pub min_size: Option<f64>,
+    /// Minimum clearance between shapes and to the boundary, in mm.
+    #[arg(long, default_value_t = 0.0, value_parser = spec::non_negative, allow_negative_numbers = true)]
+    pub gap: f64,
+    /// Trial limit per placement; reaching it halts the fill (exit 3).
+    #[arg(long = "max-trials", default_value_t = DEFAULT_MAX_TRIALS, value_parser = clap::value_parser!(u64).range(1..))]
+    pub max_trials: u64,
+    /// RNG seed.
+    #[arg(long, default_value_t = 1)]
+    pub seed: u64,
+    /// Candidate sampler: fast (cells where the next shape could fit) or reference (the
+    /// paper's uniform search); both give the same distribution of placements.
+    #[arg(long, value_enum, default_value = "fast")]
+    pub sampler: Sampler,
+    /// Number type of the engine: f64 or fixed (32.32 fixed point).
+    #[arg(long, value_enum, default_value = "f64")]
+    pub scalar: ScalarArg,
+    /// Output path; the format comes from the extension (.svg .png .json .csv .gcode/.nc);
+    /// '-' is stdout.
+    #[arg(short = 'o', long)]
+    pub output: PathBuf,
+    /// Output format (overrides the extension).
+    #[arg(long, value_enum)]
+    pub format: Option<Format>,
+    /// SVG: outline (plotters) or filled.
+    #[arg(long, value_enum, default_value = "outline")]
+    pub style: StyleArg,
+    /// SVG: stroke width in mm.
+    #[arg(long = "pen-width", default_value_t = 0.3, value_parser = spec::positive)]
+    pub pen_width: f64,
+    /// SVG: also draw the region's outline.
+    #[arg(long)]
+    pub boundary: bool,
+    /// PNG size.
+    #[command(flatten)]
+    pub raster: RasterArgs,
+    /// PNG: write a 16-bit height map (each shape a raised stone of this profile) instead
+    /// of a picture.
+    #[arg(long, value_enum)]
+    pub relief: Option<ReliefArg>,
+    /// Colours (SVG/PNG).
+    #[command(flatten)]
+    pub colour: ColourArgs,
+    /// SVG/PNG: draw the Voronoi cells of the shapes' centres ("cobblestones") instead of the
+    /// shapes; with --periodic the cells tile seamlessly.
+    #[arg(long)]
+    pub voronoi: bool,
+    /// No progress bar.
+    #[arg(short, long)]
+    pub quiet: bool,
+    /// Plotter and laser output: G-code machine, path order, hatch, pages, layers.
+    #[command(flatten)]
+    pub plot: PlotArgs,
+}

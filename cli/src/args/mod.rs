@@ -1,0 +1,44 @@
+//! The command line as clap parses it: the top-level parser and its subcommands, and the
+//! parsers of flag values ([`spec`]).
+
+pub mod colour;
+pub mod fill;
+pub mod format;
+pub mod plot;
+pub mod raster;
+pub mod spec;
+pub mod style;
+
+use crate::cmd::{line, machines, stats, territory, tile};
+use clap::{Parser, Subcommand};
+
+/// Random fractal space filling (Shier and Bourke's statistical geometry): fills, 1D fills,
+/// territories and fractal tiles as SVG, G-code, PNG, height maps, JSON and CSV.
+#[derive(Debug, Parser)]
+#[command(name = "zetafill", version, about, long_about = None)]
+pub struct Cli {
+    /// What to do.
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+/// The subcommands.
+// Parsed once per run: the size of the largest variant does not matter.
+#[allow(clippy::large_enum_variant)]
+#[derive(Debug, Subcommand)]
+pub enum Command {
+    /// Fill a 2D region with shapes whose areas follow a power law.
+    Fill(fill::FillArgs),
+    /// Fill an interval with segments whose lengths follow a power law (1D).
+    Line(line::LineArgs),
+    /// Sugihara's Voronoi territory competing: boundaries, cells or coloured cells.
+    Territory(territory::TerritoryArgs),
+    /// The scale-periodic fractal tile of the "Fractal Tiles" post: a texture that meets
+    /// half- and double-scale copies of itself; drawn alone, as a mosaic or as a planet of rings.
+    Tile(tile::TileArgs),
+    /// Numbers behind the fills: zeta, gasket width, trials, halting, dimension.
+    #[command(subcommand)]
+    Stats(stats::StatsCommand),
+    /// Machine profiles for G-code: list the built-ins, or show one as TOML.
+    Machines(machines::MachinesArgs),
+}

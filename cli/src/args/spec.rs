@@ -1,0 +1,352 @@
+//! Parsers for the values of `--shape` and `--region` and the number checks every flag shares.
+//! Each returns a message that says what is wrong and what to write instead; clap adds the
+//! flag's name and exits with code 2.
+
+use zetafill::{MixOrder, Point, ShapeKind, ShapeList, MAX_MIX};
+
+/// A number that must be finite.
+pub fn finite(s: &str) -> Result<f64, String> {
+    let v: f64 = s.trim().parse().map_err(|_| format!("'{s}' is not a number"))?;
+    if v.is_finite() {
+        Ok(v)
+    } else {
+        Err(format!("'{s}' is not a finite number"))
+    }
+}
+
+/// A finite number > 0.
+pub fn positive(s: &str) -> Result<f64, String> {
+    let v = finite(s)?;
+    if v > 0.0 {
+        Ok(v)
+    } else {
+        Err(format!("must be greater than 0 (got {s})"))
+    }
+}
+
+/// A finite number >= 0.
+pub fn non_negative(s: &str) -> Result<f64, String> {
+    let v = finite(s)?;
+    if v >= 0.0 {
+        Ok(v)
+    } else {
+        Err(format!("must be 0 or more (got {s})"))
+    }
+}
+
+/// The exponent c: finite, > 1.
+pub fn exponent(s: &str) -> Result<f64, String> {
+    let v = finite(s)?;
+    if v > 1.0 {
+        Ok(v)
+    } else {
+        Err(format!("c must be greater than 1 (got {s}); typical values are 1.1 to 1.5"))
+    }
+}
+
+/// The fractal dimension D in 2D: 0 < D < 2 (so that c = 2/D > 1).
+pub fn dimension(s: &str) -> Result<f64, String> {
+    let v = finite(s)?;
+    if v > 0.0 && v < 2.0 {
+        Ok(v)
+    } else {
+        Err(format!("the dimension must be between 0 and 2, exclusive (got {s}); c = 2/D"))
+    }
+}
+
+/// A fill fraction in (0, 1).
+pub fn fraction(s: &str) -> Result<f64, String> {
+    let v = finite(s)?;
+    if v > 0.0 && v < 1.0 {
+        Ok(v)
+    } else {
+        Err(format!("the fill fraction must be between 0 and 1, exclusive (got {s})"))
+    }
+}
+
+/// A ratio in (0, 1).
+fn ratio(what: &str, s: &str) -> Result<f64, String> {
+    let v = finite(s).map_err(|e| format!("{what}: {e}"))?;
+    if v > 0.0 && v < 1.0 {
+        Ok(v)
+    } else {
+        Err(format!("{what} must be between 0 and 1, exclusive (got {s})"))
+    }
+}
+
+/// A count in a range.
+fn count(what: &str, s: &str, lo: u8, hi: u8) -> Result<u8, String> {
+    match s.trim().parse::<u8>() {
+        Ok(v) if (lo..=hi).contains(&v) => Ok(v),
+        _ => Err(format!("{what} must be a whole number from {lo} to {hi} (got {s})")),
+    }
+}
+
+const SHAPES: &str =
+    "circle, square, rect:ASPECT, triangle, polygon:SIDES, star:POINTS:INNER_RATIO, ring:INNER_RATIO, blob:DELTA or mix:SHAPE,SHAPE,...";
+
+/// One shape: `circle | square | rect:ASPECT | triangle | polygon:SIDES |
+/// star:POINTS:INNER_RATIO | ring:INNER_RATIO | blob:DELTA`.
+pub fn one_shape(s: &str) -> Result<ShapeKind, String> {
+    let mut parts = s.split(':');
+    let name = parts.next().unwrap_or("");
+    let rest: Vec<&str> = parts.collect();
+    let k = match (name, rest.as_slice()) {
+        ("circle", []) => ShapeKind::Circle,
+        ("square", []) => ShapeKind::Square,
+        ("triangle", []) => ShapeKind::Triangle,
+        ("rect", [a]) => {
+            let aspect = positive(a).map_err(|e| format!("rect:ASPECT: the aspect ratio {e}"))?;
+            ShapeKind::Rect { aspect }
+        }
+        ("polygon", [n]) => ShapeKind::Polygon {
+            sides: count("polygon:SIDES: SIDES", n, 3, 32)?,
+        },
+        ("star", [p, r]) => ShapeKind::Star {
+            points: count("star:POINTS:INNER_RATIO: POINTS", p, 2, 16)?,
+            inner: ratio("star:POINTS:INNER_RATIO: INNER_RATIO", r)?,
+        },
+        ("ring", [r]) => ShapeKind::Ring {
+            inner: ratio("ring:INNER_RATIO: INNER_RATIO", r)?,
+        },
+        ("blob", [d]) => {
+            let delta = finite(d).map_err(|e| format!("blob:DELTA: {e}"))?;
+            if !(0.0..1.0 / 3.0).contains(&delta) {
+                return Err(format!(
+                    "blob:DELTA: DELTA must be at least 0 and below 1/3 so that r(θ) stays positive (got {d})"
+                ));
+            }
+            ShapeKind::Blob { delta }
+        }
+        ("rect", _) => return Err("write rect:ASPECT, for example rect:2 (width twice the height)".into()),
+        ("polygon", _) => return Err("write polygon:SIDES, for example polygon:6".into()),
+        ("star", _) => return Err("write star:POINTS:INNER_RATIO, for example star:5:0.4".into()),
+        ("ring", _) => return Err("write ring:INNER_RATIO, for example ring:0.6".into()),
+        ("blob", _) => return Err("write blob:DELTA, for example blob:0.15".into()),
+        _ => return Err(format!("unknown shape '{s}'; use {SHAPES}")),
+    };
+    Ok(k)
+}
+
+/// `--shape`: one shape, or `mix:SHAPE,SHAPE,...` (up to 8).
+pub fn shape(s: &str) -> Result<ShapeArg, String> {
+    if let Some(list) = s.strip_prefix("mix:") {
+        let kinds = list.split(',').map(one_shape).collect::<Result<Vec<_>, _>>()?;
+        if kinds.is_empty() || kinds.len() > MAX_MIX {
+            return Err(format!("mix: needs 1 to {MAX_MIX} shapes separated by commas"));
+        }
+        return Ok(ShapeArg(kinds));
+    }
+    Ok(ShapeArg(vec![one_shape(s)?]))
+}
+
+/// The parsed `--shape`: one kind, or the kinds of a mix.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ShapeArg(pub Vec<ShapeKind>);
+
+impl ShapeArg {
+    /// The core's shape list.
+    pub fn list(&self, order: MixOrder, salt: u64) -> ShapeList {
+        ShapeList::mix(&self.0, order, salt).unwrap_or_else(|| ShapeKind::Circle.into())
+    }
+
+    /// Whether any kind rotates.
+    pub fn rotates(&self) -> bool {
+        self.0.iter().any(ShapeKind::rotates)
+    }
+
+    /// The text form, as on the command line.
+    pub fn name(&self) -> String {
+        match self.0.as_slice() {
+            [one] => shape_name(one),
+            many => format!("mix:{}", many.iter().map(shape_name).collect::<Vec<_>>().join(",")),
+        }
+    }
+}
+
+/// The name of a shape as written in JSON and on the command line.
+pub fn shape_name(k: &ShapeKind) -> String {
+    match k {
+        ShapeKind::Circle => "circle".into(),
+        ShapeKind::Square => "square".into(),
+        ShapeKind::Rect { aspect } => format!("rect:{aspect}"),
+        ShapeKind::Triangle => "triangle".into(),
+        ShapeKind::Polygon { sides } => format!("polygon:{sides}"),
+        ShapeKind::Star { points, inner } => format!("star:{points}:{inner}"),
+        ShapeKind::Ring { inner } => format!("ring:{inner}"),
+        ShapeKind::Blob { delta } => format!("blob:{delta}"),
+    }
+}
+
+/// The kind name of a shape in JSON (`"kind"`).
+pub fn kind_name(k: &ShapeKind) -> &'static str {
+    match k {
+        ShapeKind::Circle => "circle",
+        ShapeKind::Square => "square",
+        ShapeKind::Rect { .. } => "rect",
+        ShapeKind::Triangle => "triangle",
+        ShapeKind::Polygon { .. } => "polygon",
+        ShapeKind::Star { .. } => "star",
+        ShapeKind::Ring { .. } => "ring",
+        ShapeKind::Blob { .. } => "blob",
+    }
+}
+
+/// The region kinds accepted by `--region` (periodicity comes from `--periodic`).
+#[derive(Debug, Clone, PartialEq)]
+pub enum RegionSpec {
+    /// `rect:W:H`.
+    Rect {
+        /// Width in mm.
+        width: f64,
+        /// Height in mm.
+        height: f64,
+    },
+    /// `circle:R`: the disc centred at (R, R).
+    Circle {
+        /// Radius in mm.
+        radius: f64,
+    },
+    /// `annulus:R_OUTER:R_INNER`, centred at (R_OUTER, R_OUTER).
+    Annulus {
+        /// Outer radius.
+        outer: f64,
+        /// Inner radius.
+        inner: f64,
+    },
+    /// `polygon:X1,Y1,X2,Y2,...` or the outlines of `svg:FILE`: rings of vertices.
+    Polygon {
+        /// Vertices, ring after ring.
+        points: Vec<Point<f64>>,
+        /// Exclusive end of each ring.
+        ends: Vec<usize>,
+    },
+    /// `svg:FILE`, read later by [`crate::io::svgin`].
+    Svg(std::path::PathBuf),
+}
+
+/// `polygon:X1,Y1,X2,Y2,...[/X1,Y1,...]...`: one ring of vertices, or several separated by
+/// `/`, filled by the even-odd rule (a ring inside another is a hole).
+fn polygon(list: &str) -> Result<RegionSpec, String> {
+    const FORM: &str = "polygon:X1,Y1,X2,Y2,...[/X1,Y1,...]";
+    let several = list.contains('/');
+    let mut points = Vec::new();
+    let mut ends = Vec::new();
+    for (k, ring) in list.split('/').enumerate() {
+        let which = if several { format!(" (ring {})", k + 1) } else { String::new() };
+        let nums = ring
+            .split(',')
+            .map(finite)
+            .collect::<Result<Vec<f64>, _>>()
+            .map_err(|e| format!("{FORM}{which}: {e}"))?;
+        if nums.len() % 2 != 0 {
+            return Err(format!("{FORM}{which}: give an even count of numbers (x,y pairs)"));
+        }
+        if nums.len() < 6 {
+            return Err(format!("{FORM}{which}: a ring needs at least 3 vertices"));
+        }
+        points.extend(nums.chunks(2).map(|c| Point::new(c[0], c.get(1).copied().unwrap_or(0.0))));
+        ends.push(points.len());
+    }
+    Ok(RegionSpec::Polygon { points, ends })
+}
+
+/// `rect:W:H | circle:R | annulus:R_OUTER:R_INNER | polygon:X1,Y1,...[/...] | svg:FILE` (mm).
+pub fn region(s: &str) -> Result<RegionSpec, String> {
+    if let Some(file) = s.strip_prefix("svg:") {
+        return Ok(RegionSpec::Svg(file.into()));
+    }
+    if let Some(list) = s.strip_prefix("polygon:") {
+        return polygon(list);
+    }
+    let parts: Vec<&str> = s.split(':').collect();
+    match parts.as_slice() {
+        ["rect", w, h] => {
+            let width = positive(w).map_err(|e| format!("rect:W:H: the width {e}"))?;
+            let height = positive(h).map_err(|e| format!("rect:W:H: the height {e}"))?;
+            Ok(RegionSpec::Rect { width, height })
+        }
+        ["rect", ..] => Err("write rect:W:H with sizes in mm, for example rect:200:150".into()),
+        ["circle", r] => Ok(RegionSpec::Circle {
+            radius: positive(r).map_err(|e| format!("circle:R: the radius {e}"))?,
+        }),
+        ["circle", ..] => Err("write circle:R with the radius in mm, for example circle:100".into()),
+        ["annulus", ro, ri] => {
+            let outer = positive(ro).map_err(|e| format!("annulus:R_OUTER:R_INNER: R_OUTER {e}"))?;
+            let inner = positive(ri).map_err(|e| format!("annulus:R_OUTER:R_INNER: R_INNER {e}"))?;
+            if inner >= outer {
+                return Err(format!(
+                    "annulus:R_OUTER:R_INNER: R_INNER ({ri}) must be smaller than R_OUTER ({ro})"
+                ));
+            }
+            Ok(RegionSpec::Annulus { outer, inner })
+        }
+        ["annulus", ..] => Err("write annulus:R_OUTER:R_INNER in mm, for example annulus:100:40".into()),
+        _ => Err(format!(
+            "unknown region '{s}'; use rect:W:H, circle:R, annulus:R_OUTER:R_INNER, polygon:X1,Y1,X2,Y2,... or svg:FILE (sizes in mm)"
+        )),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn shapes_parse_and_name_round_trip() {
+        for s in [
+            "circle",
+            "square",
+            "rect:2",
+            "rect:0.5",
+            "triangle",
+            "polygon:6",
+            "star:5:0.4",
+            "ring:0.6",
+            "blob:0.2",
+            "mix:circle,square",
+        ] {
+            let k = shape(s).map(|k| k.name()).unwrap_or_default();
+            assert_eq!(k, s);
+        }
+        assert!(shape("ring:1").is_err());
+        assert!(shape("blob:0.34").is_err());
+        assert!(shape("star:1:0.5").is_err());
+        assert!(shape("polygon:2").is_err());
+        assert!(shape("mix:circle,hexagon").is_err());
+        assert!(shape("hexagon").is_err());
+        assert!(shape("rect").is_err());
+        assert!(shape("rect:0").is_err());
+        assert!(shape("rect:nan").is_err());
+    }
+
+    #[test]
+    fn numbers_reject_non_finite_and_out_of_range() {
+        assert!(exponent("1").is_err());
+        assert!(exponent("inf").is_err());
+        assert!(exponent("NaN").is_err());
+        assert!(fraction("1").is_err());
+        assert!(fraction("0").is_err());
+        assert!(positive("-2").is_err());
+        assert!(region("rect:10:-1").is_err());
+        assert!(region("rect:10").is_err());
+        assert!(dimension("2").is_err());
+        assert!(region("annulus:10:10").is_err());
+        assert!(region("polygon:0,0,1,1").is_err());
+        assert!(region("polygon:0,0,1,1,2").is_err());
+        assert!(region("polygon:0,0,9,0,9,9/1,1,2").is_err());
+        assert!(region("polygon:0,0,9,0,9,9/").is_err());
+        assert!(region("circle:0").is_err());
+    }
+
+    #[test]
+    fn polygon_rings_are_split_at_slashes() {
+        let Ok(RegionSpec::Polygon { points, ends }) = region("polygon:0,0,9,0,9,9,0,9/2,2,4,2,4,4") else {
+            panic!("two rings refused");
+        };
+        assert_eq!(ends, [4, 7]);
+        assert_eq!((points[4].x, points[6].y), (2.0, 4.0));
+        let e = region("polygon:0,0,9,0,9,9/1,1,2,2").err().unwrap_or_default();
+        assert!(e.contains("(ring 2): a ring needs at least 3 vertices"), "{e}");
+    }
+}

@@ -1,0 +1,993 @@
+//! `zetafill line`: the 1D fill, segments of length `L_i = L / (zeta(c, N) (i + N)^c)` in an
+//! interval of length `L` (Shier and Bourke, *An Algorithm for Random Fractal Filling of Space*, Figure 3), run by the core's [`zetafill::LineEngine`], and
+//! its outputs: SVG (dashes, circles, bars or zoom rows), PNG, JSON, CSV and the digest.
+
+use crate::args::format::Format;
+use crate::args::spec;
+use crate::args::style::StyleArg;
+use crate::cmd::stopping::{self, Unit};
+use crate::error::CliError;
+use crate::io::write::Dest;
+use crate::output::num;
+use crate::output::svg::Style;
+use clap::{Args, ValueEnum};
+use serde::Serialize;
+use std::fmt::Write as _;
+use std::path::PathBuf;
+use svg::node::element::{ClipPath, Definitions, Description, Group, Line, Rectangle, Title};
+use svg::node::Text;
+use svg::Document;
+use zetafill::engine::{ParamError, StepError};
+use zetafill::{line_index_words, Interval, LineEngine, LineParams, LineStorage, Segment, Stop, StopReason};
+
+/// Largest number of segments one run may hold (28 bytes each in the core).
+pub const MAX_SEGMENTS: u64 = 10_000_000;
+
+/// What a 1D run places.
+const SEGMENTS: Unit = Unit {
+    plural: "segments",
+    max: MAX_SEGMENTS,
+};
+
+/// How segments are drawn in SVG and PNG.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum Render {
+    /// Each segment a stroke along one line: one pen-down per segment.
+    Dashes,
+    /// Each segment a circle of diameter L_i centred on the line (the paper's Figure 3).
+    Circles,
+    /// Each segment a filled bar `--bar-height` tall (for engraving).
+    Bars,
+    /// Rows of circles, each zooming into the central `--zoom-fraction` of the row above.
+    Zoom,
+}
+
+/// Arguments of `zetafill line`. Only its G-code reads the plotter flags, and it has no pages
+/// or layers: their help says so, and `--page` and `--layers` are left out of it.
+#[derive(Debug, Args)]
+#[command(
+    mut_arg("page", |a| a.hide(true)),
+    mut_arg("layers", |a| a.hide(true)),
+    mut_arg("fit", |a| a.help("G-code: scale the drawing to fill the bed less --margin, centred")),
+    mut_arg("center", |a| a.help("G-code: centre the drawing on the bed")),
+    mut_arg("margin", |a| a.help("G-code: keep-out border of the bed in mm [default: 0]")),
+    mut_arg("hatch", |a| a.help("G-code: hatch bars and circles, SPACING[:ANGLE] in mm and degrees (default angle 45)")),
+    mut_arg("min_feature", |a| a.help("G-code: leave out segments shorter than MM (the pen's or beam's width)")),
+)]
+pub struct LineArgs {
+    /// Length L of the interval in mm.
+    #[arg(long, default_value_t = 200.0, value_parser = spec::positive, allow_negative_numbers = true)]
+    pub length: f64,
+    /// Periodic boundary: the interval is a circle, a segment running past L continues at 0.
+    #[arg(long)]
+    pub periodic: bool,
+    /// Power-law exponent c > 1 (default 1.4; about 2.7 is the 1D maximum with N = 1).
+    #[arg(long, value_parser = spec::exponent, conflicts_with = "dimension", allow_negative_numbers = true)]
+    pub c: Option<f64>,
+    /// Fractal dimension D in (0, 1) instead of c (c = 1/D).
+    #[arg(long, value_parser = dimension_1d, allow_negative_numbers = true)]
+    pub dimension: Option<f64>,
+    /// The paper's N > 0: larger N makes the first segments shorter.
+    #[arg(long = "n-offset", default_value_t = 1.0, value_parser = spec::positive, allow_negative_numbers = true)]
+    pub n_offset: f64,
+    /// Stop after K segments (default 2000 when no stop condition is given).
+    #[arg(long, value_parser = clap::value_parser!(u64).range(1..=MAX_SEGMENTS))]
+    pub count: Option<u64>,
+    /// Stop once this fraction of the interval is filled, 0 < F < 1.
+    #[arg(long, value_parser = spec::fraction, allow_negative_numbers = true)]
+    pub fill: Option<f64>,
+    /// Stop before the first segment shorter than MM.
+    #[arg(long = "min-size", value_parser = spec::positive, allow_negative_numbers = true)]
+    pub min_size: Option<f64>,
+    /// Minimum clearance between segments and to the ends, in mm.
+    #[arg(long, default_value_t = 0.0, value_parser = spec::non_negative, allow_negative_numbers = true)]
+    pub gap: f64,
+    /// Trial limit per placement; reaching it halts the fill (exit 3).
+    #[arg(long = "max-trials", default_value_t = 10_000_000, value_parser = clap::value_parser!(u64).range(1..))]
+    pub max_trials: u64,
+    /// RNG seed.
+    #[arg(long, default_value_t = 1)]
+    pub seed: u64,
+    /// Output path; the format comes from the extension (.svg .png .json .csv .gcode/.nc);
+    /// '-' is stdout.
+    #[arg(short = 'o', long)]
+    pub output: PathBuf,
+    /// Output format (overrides the extension).
+    #[arg(long, value_enum)]
+    pub format: Option<Format>,
+    /// SVG: how segments are drawn.
+    #[arg(long, value_enum, default_value = "circles")]
+    pub render: Render,
+    /// SVG: circles as outlines (plotters) or filled (dashes are strokes, bars always filled).
+    #[arg(long, value_enum, default_value = "outline")]
+    pub style: StyleArg,
+    /// SVG: stroke width in mm (dashes and outlines).
+    #[arg(long = "pen-width", default_value_t = 0.3, value_parser = spec::positive, allow_negative_numbers = true)]
+    pub pen_width: f64,
+    /// SVG `bars`: bar height in mm.
+    #[arg(long = "bar-height", default_value_t = 10.0, value_parser = spec::positive, allow_negative_numbers = true)]
+    pub bar_height: f64,
+    /// SVG `zoom`: number of rows (the first shows the whole interval).
+    #[arg(long = "zoom-rows", default_value_t = 4, value_parser = clap::value_parser!(u32).range(1..=12))]
+    pub zoom_rows: u32,
+    /// SVG `zoom`: each row shows this central fraction of the row above (Figure 3: 0.05).
+    #[arg(long = "zoom-fraction", default_value_t = 0.05, value_parser = spec::fraction, allow_negative_numbers = true)]
+    pub zoom_fraction: f64,
+    /// SVG `zoom`: the point (mm from the left end) the rows zoom into (default: the middle).
+    #[arg(long = "zoom-center", value_parser = spec::non_negative, allow_negative_numbers = true)]
+    pub zoom_center: Option<f64>,
+    /// SVG: also mark the ends of the interval.
+    #[arg(long)]
+    pub boundary: bool,
+    /// Colours (SVG/PNG).
+    #[command(flatten)]
+    pub colour: crate::args::colour::ColourArgs,
+    /// PNG size.
+    #[command(flatten)]
+    pub raster: crate::args::raster::RasterArgs,
+    /// No progress bar.
+    #[arg(short, long)]
+    pub quiet: bool,
+    /// Plotter and laser flags (G-code output).
+    #[command(flatten)]
+    pub plot: crate::args::plot::PlotArgs,
+}
+
+/// The fractal dimension D in 1D: 0 < D < 1 (so that c = 1/D > 1).
+pub fn dimension_1d(s: &str) -> Result<f64, String> {
+    let v = spec::finite(s)?;
+    if v > 0.0 && v < 1.0 {
+        Ok(v)
+    } else {
+        Err(format!(
+            "the dimension of a 1D fill must be between 0 and 1, exclusive (got {s}); c = 1/D"
+        ))
+    }
+}
+
+impl LineArgs {
+    /// The exponent c, from `--c`, `--dimension` or the default 1.4.
+    pub fn c(&self) -> f64 {
+        match (self.c, self.dimension) {
+            (Some(c), _) => c,
+            (None, Some(d)) => LineParams::c_from_dimension(d),
+            (None, None) => 1.4,
+        }
+    }
+
+    fn stop(&self) -> Stop {
+        stopping::stop(self.count, self.fill, self.min_size)
+    }
+}
+
+/// A finished (or halted) 1D fill: DESIGN section 3's JSON with `"mode": "line"`.
+#[derive(Debug, Clone, Serialize)]
+pub struct LineDoc {
+    /// Format version (1).
+    pub version: u32,
+    /// `"line"`.
+    pub mode: &'static str,
+    /// Everything needed to reproduce the run.
+    pub params: LineParamsDoc,
+    /// `{ "kind": "interval", "length": L, "periodic": bool }`.
+    pub region: IntervalDoc,
+    /// zeta(c, N).
+    pub zeta: f64,
+    /// Segments in placement order.
+    pub shapes: Vec<SegmentDoc>,
+    /// Run statistics.
+    pub stats: LineStatsDoc,
+}
+
+/// Run statistics of a 1D fill.
+#[derive(Debug, Clone, Serialize)]
+pub struct LineStatsDoc {
+    /// Segments placed.
+    pub placed: u64,
+    /// Trials in all.
+    pub trials: u64,
+    /// Placed length over L.
+    pub fill_fraction: f64,
+    /// Whether the run halted at the trial limit.
+    pub halted: bool,
+    /// Why the run stopped: `count`, `fill`, `min-size` or `halted`.
+    pub stop: &'static str,
+}
+
+/// The parameters of a 1D run.
+#[derive(Debug, Clone, Serialize)]
+pub struct LineParamsDoc {
+    /// Exponent c.
+    pub c: f64,
+    /// The paper's N.
+    pub n_offset: f64,
+    /// RNG seed.
+    pub seed: u64,
+    /// Clearance in mm.
+    pub gap: f64,
+    /// Stop after this many segments.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub count: Option<u64>,
+    /// Stop at this fill fraction.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub fill: Option<f64>,
+    /// Stop before the first segment shorter than this (mm).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub min_size: Option<f64>,
+    /// Trial limit per placement.
+    pub max_trials: u64,
+    /// The fractal dimension D = 1/c.
+    pub dimension: f64,
+}
+
+/// The interval.
+#[derive(Debug, Clone, Serialize)]
+pub struct IntervalDoc {
+    /// `"interval"`.
+    pub kind: &'static str,
+    /// Length L (mm).
+    pub length: f64,
+    /// Periodic boundary.
+    pub periodic: bool,
+}
+
+/// One placed segment `[start, start + length]`.
+#[derive(Debug, Clone, Serialize)]
+pub struct SegmentDoc {
+    /// Placement index.
+    pub index: u64,
+    /// `"segment"`.
+    pub kind: &'static str,
+    /// Left end (mm), in `[0, L)` when periodic (the segment may run past L and wrap).
+    pub start: f64,
+    /// Length L_i (mm).
+    pub length: f64,
+    /// Trials this placement took.
+    pub trials: u64,
+}
+
+/// Names the flag behind a core parameter error.
+fn param_error(e: ParamError) -> CliError {
+    let flag = match e {
+        ParamError::Exponent => "--c",
+        ParamError::Offset | ParamError::Zeta => "--n-offset",
+        ParamError::Region => "--length",
+        ParamError::Gap => "--gap",
+        ParamError::MaxTrials => "--max-trials",
+        _ => "--count",
+    };
+    CliError::arg(flag, e)
+}
+
+/// How many segment slots the stop conditions can need (see [`stopping::capacity`]).
+fn capacity(c: f64, n: f64, length: f64, stop: &Stop) -> Result<u64, CliError> {
+    let zeta = zetafill::zeta::zeta(c, n).map_err(|e| CliError::arg("--n-offset", e))?;
+    let len = |k: u64| length / (zeta * zetafill::scalar::powf(k as f64 + n, c));
+    stopping::capacity(c, n, stop, SEGMENTS, len)
+}
+
+/// Runs the fill and returns the document (and the halt, if any). Nothing is written.
+pub fn compute(a: &LineArgs) -> Result<(LineDoc, Option<StepError>), CliError> {
+    let params = LineParams {
+        c: a.c(),
+        n_offset: a.n_offset,
+        gap: a.gap,
+        max_trials: a.max_trials,
+    };
+    let interval = Interval {
+        length: a.length,
+        periodic: a.periodic,
+    };
+    if 2.0 * a.gap >= a.length {
+        return Err(CliError::arg(
+            "--gap",
+            format!(
+                "{} mm leaves no room in a {} mm interval; it must be under half the length",
+                a.gap, a.length
+            ),
+        ));
+    }
+    let stop = a.stop();
+    let cap = capacity(params.c, params.n_offset, a.length, &stop)? as usize;
+    let mut segs = vec![Segment::<f64>::default(); cap];
+    let mut index = vec![0u32; line_index_words(cap)];
+    let mut engine = LineEngine::<f64>::new(
+        params,
+        interval,
+        LineStorage {
+            segments: &mut segs,
+            index: &mut index,
+        },
+    )
+    .map_err(param_error)?;
+    let mut rng = zetafill::rng_from_seed(a.seed);
+    let bar = stopping::progress_bar(a.quiet, stop.count, SEGMENTS);
+    let mut trials = Vec::with_capacity(cap);
+    let reason = engine.run(&mut rng, &stop, |p| {
+        trials.push(p.trials);
+        if let Some(b) = &bar {
+            b.inc(1);
+        }
+    });
+    if let Some(b) = &bar {
+        b.finish_and_clear();
+    }
+    let (stop_name, halt) = match reason {
+        StopReason::Count => ("count", None),
+        StopReason::Fill => ("fill", None),
+        StopReason::MinSize => ("min-size", None),
+        StopReason::Step(StepError::CannotFit { index: 0 }) => {
+            return Err(CliError::arg(
+                if a.gap > 0.0 { "--gap" } else { "--c" },
+                format!(
+                    "the first segment ({:.4} mm) with a gap of {} mm does not fit the {} mm interval; lower --c, raise --n-offset or lower --gap",
+                    engine.length_of(0),
+                    a.gap,
+                    a.length
+                ),
+            ));
+        }
+        StopReason::Step(e @ (StepError::Halted { .. } | StepError::CannotFit { .. })) => ("halted", Some(e)),
+        #[allow(unreachable_patterns)]
+        r => return Err(CliError::Io(format!("internal: the fill stopped unexpectedly ({r:?})"))),
+    };
+    let shapes = engine
+        .placed()
+        .iter()
+        .enumerate()
+        .map(|(i, s)| SegmentDoc {
+            index: i as u64,
+            kind: "segment",
+            start: s.start,
+            length: s.length,
+            trials: trials.get(i).copied().unwrap_or(0),
+        })
+        .collect();
+    let st = engine.stats();
+    let doc = LineDoc {
+        version: 1,
+        mode: "line",
+        params: LineParamsDoc {
+            c: params.c,
+            n_offset: params.n_offset,
+            seed: a.seed,
+            gap: params.gap,
+            count: stop.count,
+            fill: stop.fill,
+            min_size: stop.min_size,
+            max_trials: params.max_trials,
+            dimension: 1.0 / params.c,
+        },
+        region: IntervalDoc {
+            kind: "interval",
+            length: a.length,
+            periodic: a.periodic,
+        },
+        zeta: engine.zeta(),
+        shapes,
+        stats: LineStatsDoc {
+            placed: st.placed,
+            trials: st.trials,
+            fill_fraction: st.fill_fraction,
+            halted: halt.is_some(),
+            stop: stop_name,
+        },
+    };
+    Ok((doc, halt))
+}
+
+// ---------------------------------------------------------------------------------------------
+// Outputs
+// ---------------------------------------------------------------------------------------------
+
+/// Decimals of SVG numbers (0.1 µm).
+const P: usize = 4;
+
+/// Drawn sizes below this (mm) round to zero at four decimals and are left out of the SVG.
+const INVISIBLE: f64 = 0.5e-4;
+
+/// SVG options of the 1D renders.
+#[derive(Debug, Clone)]
+pub struct LineSvgOptions {
+    /// How segments are drawn.
+    pub render: Render,
+    /// Outline or filled circles.
+    pub style: Style,
+    /// Stroke width (mm).
+    pub pen_width: f64,
+    /// Bar height (mm).
+    pub bar_height: f64,
+    /// Zoom rows.
+    pub zoom_rows: u32,
+    /// Zoom fraction per row.
+    pub zoom_fraction: f64,
+    /// The point the rows zoom into (mm).
+    pub zoom_center: f64,
+    /// Mark the interval's ends.
+    pub boundary: bool,
+    /// Each segment's colour (its stroke, or its fill for bars and filled circles); black
+    /// without.
+    pub colours: Option<Vec<crate::output::palette::Colour>>,
+    /// A colour behind the drawing.
+    pub background: Option<crate::output::palette::Colour>,
+    /// The colour flags, as a command that reproduces the drawing writes them.
+    pub colour_flags: String,
+    /// `Some(palette)`: the segments in one Inkscape layer per palette colour, in its order
+    /// (`--layers colours`).
+    pub colour_layers: Option<Vec<crate::output::palette::Colour>>,
+}
+
+/// The segments' group, or one Inkscape layer per palette colour, each segment in the layer
+/// of its colour.
+struct Layered {
+    groups: Vec<Group>,
+    /// Each segment's layer.
+    of: Vec<usize>,
+}
+
+impl Layered {
+    fn new(base: Group, opt: &LineSvgOptions, n: usize) -> Layered {
+        match (&opt.colour_layers, &opt.colours) {
+            (Some(palette), Some(colours)) => Layered {
+                groups: crate::output::palette::colour_layers(&base, palette),
+                of: colours.iter().map(|c| crate::output::palette::layer_of(palette, Some(c))).collect(),
+            },
+            _ => Layered {
+                groups: vec![base],
+                of: vec![0; n],
+            },
+        }
+    }
+
+    /// Adds segment `k`'s element to its layer.
+    fn add(&mut self, k: usize, node: impl Into<Box<dyn svg::Node>>) {
+        let i = self.of.get(k).copied().unwrap_or(0);
+        if let Some(g) = self.groups.get_mut(i) {
+            *g = std::mem::take(g).add(node);
+        }
+    }
+}
+
+/// The pieces `[a, b]` of a segment inside `[0, L]`: itself, or, when it wraps past L in a
+/// periodic interval, its two parts.
+fn pieces(s: &SegmentDoc, l: f64, periodic: bool) -> Vec<(f64, f64)> {
+    let end = s.start + s.length;
+    if periodic && end > l {
+        vec![(s.start, l), (0.0, end - l)]
+    } else {
+        vec![(s.start, end)]
+    }
+}
+
+/// The drawing flags of `opt` as command-line text (each with a leading space): with
+/// [`command_line`], the command that reproduces a drawing.
+fn drawing_flags(opt: &LineSvgOptions) -> String {
+    let name = |v: Option<clap::builder::PossibleValue>| v.map(|v| v.get_name().to_string()).unwrap_or_default();
+    let mut s = format!(" --render {} --style {}", name(opt.render.to_possible_value()), opt.style.name());
+    if opt.pen_width != 0.3 {
+        let _ = write!(s, " --pen-width {}", opt.pen_width);
+    }
+    match opt.render {
+        Render::Bars => {
+            let _ = write!(s, " --bar-height {}", opt.bar_height);
+        }
+        Render::Zoom => {
+            let _ = write!(
+                s,
+                " --zoom-rows {} --zoom-fraction {} --zoom-center {}",
+                opt.zoom_rows, opt.zoom_fraction, opt.zoom_center
+            );
+        }
+        _ => {}
+    }
+    if opt.boundary {
+        s.push_str(" --boundary");
+    }
+    s.push_str(&opt.colour_flags);
+    s
+}
+
+/// The `zetafill line` command line that reproduces the document.
+pub fn command_line(doc: &LineDoc) -> String {
+    let p = &doc.params;
+    let mut s = format!(
+        "zetafill line --length {}{} --c {} --n-offset {} --gap {} --max-trials {} --seed {}",
+        doc.region.length,
+        if doc.region.periodic { " --periodic" } else { "" },
+        p.c,
+        p.n_offset,
+        p.gap,
+        p.max_trials,
+        p.seed
+    );
+    if let Some(k) = p.count {
+        let _ = write!(s, " --count {k}");
+    }
+    if let Some(f) = p.fill {
+        let _ = write!(s, " --fill {f}");
+    }
+    if let Some(m) = p.min_size {
+        let _ = write!(s, " --min-size {m}");
+    }
+    s
+}
+
+fn stroke_group(id: &str, pen: f64) -> Group {
+    Group::new()
+        .set("id", id)
+        .set("fill", "none")
+        .set("stroke", "black")
+        .set("stroke-width", num(pen, P))
+        .set("stroke-linecap", "butt")
+}
+
+fn circle_group(id: &str, opt: &LineSvgOptions) -> Group {
+    let g = Group::new().set("id", id);
+    match opt.style {
+        Style::Outline => g
+            .set("fill", "none")
+            .set("stroke", "black")
+            .set("stroke-width", num(opt.pen_width, P)),
+        Style::Filled => g.set("fill", "black").set("stroke", "none"),
+    }
+}
+
+fn circle(cx: f64, cy: f64, r: f64) -> svg::node::element::Circle {
+    svg::node::element::Circle::new()
+        .set("cx", num(cx, P))
+        .set("cy", num(cy, P))
+        .set("r", num(r, P))
+}
+
+/// `node` in segment `k`'s colour, if the drawing has colours: its `attr` (`fill` or
+/// `stroke`).
+fn paint<N: svg::Node>(mut node: N, opt: &LineSvgOptions, k: usize, attr: &str) -> N {
+    if let Some(c) = opt.colours.as_ref().and_then(|cs| cs.get(k)) {
+        node.assign(attr, c.as_str());
+    }
+    node
+}
+
+/// Renders a 1D fill as SVG (mm units; the line runs left to right at x = 0 ... L).
+pub fn render_svg(doc: &LineDoc, opt: &LineSvgOptions) -> Vec<u8> {
+    let circle_paint = if opt.style == Style::Filled { "fill" } else { "stroke" };
+    let l = doc.region.length;
+    let periodic = doc.region.periodic;
+    let d0 = doc.shapes.first().map_or(l / 10.0, |s| s.length);
+    let mut defs = Definitions::new();
+    let mut body: Vec<Group> = Vec::new();
+    let height;
+    match opt.render {
+        Render::Dashes => {
+            height = (4.0 * opt.pen_width).max(2.0);
+            let y = height / 2.0;
+            let mut g = Layered::new(stroke_group("segments", opt.pen_width), opt, doc.shapes.len());
+            for (k, s) in doc.shapes.iter().enumerate() {
+                for (a, b) in pieces(s, l, periodic) {
+                    if b - a >= INVISIBLE {
+                        let line = Line::new()
+                            .set("x1", num(a, P))
+                            .set("y1", num(y, P))
+                            .set("x2", num(b, P))
+                            .set("y2", num(y, P));
+                        g.add(k, paint(line, opt, k, "stroke"));
+                    }
+                }
+            }
+            body.extend(g.groups);
+        }
+        Render::Bars => {
+            height = opt.bar_height;
+            let base = Group::new().set("id", "segments").set("fill", "black").set("stroke", "none");
+            let mut g = Layered::new(base, opt, doc.shapes.len());
+            for (k, s) in doc.shapes.iter().enumerate() {
+                for (a, b) in pieces(s, l, periodic) {
+                    if b - a >= INVISIBLE {
+                        let bar = Rectangle::new()
+                            .set("x", num(a, P))
+                            .set("y", 0)
+                            .set("width", num(b - a, P))
+                            .set("height", num(opt.bar_height, P));
+                        g.add(k, paint(bar, opt, k, "fill"));
+                    }
+                }
+            }
+            body.extend(g.groups);
+        }
+        Render::Circles => {
+            height = d0;
+            let mut base = circle_group("segments", opt);
+            if periodic {
+                defs = defs.add(
+                    ClipPath::new()
+                        .set("id", "interval")
+                        .add(Rectangle::new().set("width", num(l, P)).set("height", num(height, P))),
+                );
+                base = base.set("clip-path", "url(#interval)");
+            }
+            let mut g = Layered::new(base, opt, doc.shapes.len());
+            for (k, s) in doc.shapes.iter().enumerate() {
+                let r = s.length / 2.0;
+                if r < INVISIBLE {
+                    continue;
+                }
+                let mid = s.start + r;
+                g.add(k, paint(circle(mid, height / 2.0, r), opt, k, circle_paint));
+                if periodic && s.start + s.length > l {
+                    g.add(k, paint(circle(mid - l, height / 2.0, r), opt, k, circle_paint));
+                }
+            }
+            body.extend(g.groups);
+        }
+        Render::Zoom => {
+            let row_h = d0;
+            let spacing = row_h / 4.0;
+            let rows = opt.zoom_rows.max(1);
+            height = rows as f64 * row_h + (rows - 1) as f64 * spacing;
+            let mut marks = stroke_group("zoom-marks", opt.pen_width / 2.0);
+            let shifts: &[f64] = if periodic { &[0.0, -l, l] } else { &[0.0] };
+            for k in 0..rows {
+                let w = l * opt.zoom_fraction.powi(k as i32);
+                let mid = opt.zoom_center;
+                let (a, b) = (mid - w / 2.0, mid + w / 2.0);
+                let scale = l / w;
+                let y0 = k as f64 * (row_h + spacing);
+                let cy = y0 + row_h / 2.0;
+                let id = format!("row{k}");
+                defs = defs.add(
+                    ClipPath::new().set("id", format!("clip-{id}")).add(
+                        Rectangle::new()
+                            .set("x", 0)
+                            .set("y", num(y0, P))
+                            .set("width", num(l, P))
+                            .set("height", num(row_h, P)),
+                    ),
+                );
+                let mut g = circle_group(&id, opt).set("clip-path", format!("url(#clip-{id})"));
+                for (n, s) in doc.shapes.iter().enumerate() {
+                    let r = s.length / 2.0 * scale;
+                    if r < INVISIBLE {
+                        continue;
+                    }
+                    for &d in shifts {
+                        let (s0, s1) = (s.start + d, s.start + s.length + d);
+                        if s1 < a || s0 > b {
+                            continue;
+                        }
+                        let m = (s0 + s1) / 2.0;
+                        g = g.add(paint(circle((m - a) * scale, cy, r), opt, n, circle_paint));
+                    }
+                }
+                body.push(g);
+                if k + 1 < rows {
+                    // Ticks at the part of this row that the next row shows.
+                    let half = l * opt.zoom_fraction / 2.0;
+                    let at = (mid - a) * scale;
+                    for x in [at - half, at + half] {
+                        marks = marks.add(
+                            Line::new()
+                                .set("x1", num(x, P))
+                                .set("y1", num(y0 + row_h, P))
+                                .set("x2", num(x, P))
+                                .set("y2", num(y0 + row_h + spacing, P)),
+                        );
+                    }
+                }
+            }
+            body.push(marks);
+        }
+    }
+    let p = &doc.params;
+    let mut d = Document::new()
+        .set("xmlns:inkscape", "http://www.inkscape.org/namespaces/inkscape")
+        .set("width", format!("{}mm", num(l, P)))
+        .set("height", format!("{}mm", num(height, P)))
+        .set("viewBox", format!("0 0 {} {}", num(l, P), num(height, P)))
+        .add(Title::new("").add(Text::new(format!(
+            "zetafill line: {} segments, c = {}, N = {}, seed {}",
+            doc.shapes.len(),
+            p.c,
+            p.n_offset,
+            p.seed
+        ))))
+        .add(Description::new().add(Text::new(format!(
+            "{}{}{}",
+            command_line(doc),
+            drawing_flags(opt),
+            // The G-code's header has it among the plot flags.
+            if opt.colour_layers.is_some() { " --layers colours" } else { "" }
+        ))));
+    if let Some(bg) = &opt.background {
+        d = d.add(crate::output::palette::background(bg.as_str(), l, height));
+    }
+    if opt.render == Render::Zoom || (periodic && opt.render == Render::Circles) {
+        d = d.add(defs);
+    }
+    for g in body {
+        d = d.add(g);
+    }
+    if opt.boundary {
+        let mut g = stroke_group("boundary", opt.pen_width);
+        for x in [0.0, l] {
+            g = g.add(
+                Line::new()
+                    .set("x1", num(x, P))
+                    .set("y1", 0)
+                    .set("x2", num(x, P))
+                    .set("y2", num(height, P)),
+            );
+        }
+        d = d.add(g);
+    }
+    let mut s = d.to_string();
+    s.push('\n');
+    s.into_bytes()
+}
+
+/// JSON (version 1), numbers in shortest round-trip form, one line.
+pub fn render_json(doc: &LineDoc) -> Result<Vec<u8>, CliError> {
+    let mut v = serde_json::to_vec(doc).map_err(|e| CliError::Io(format!("cannot encode JSON: {e}")))?;
+    v.push(b'\n');
+    Ok(v)
+}
+
+/// CSV: `index,kind,start,end,length,trials`, full f64 precision (`end` = start + length, past
+/// L for a periodic segment that wraps).
+pub fn render_csv(doc: &LineDoc) -> Vec<u8> {
+    let mut s = String::from("index,kind,start,end,length,trials\n");
+    for sh in &doc.shapes {
+        let _ = writeln!(
+            s,
+            "{},{},{},{},{},{}",
+            sh.index,
+            sh.kind,
+            sh.start,
+            sh.start + sh.length,
+            sh.length,
+            sh.trials
+        );
+    }
+    s.into_bytes()
+}
+
+/// The digest line `COUNT HEX16` ([`zetafill::line::line_digest`]'s value).
+pub fn render_digest(doc: &LineDoc) -> Vec<u8> {
+    let mut h = zetafill::digest::Fnv1a::default();
+    let (c, n, l, z) = (doc.params.c, doc.params.n_offset, doc.region.length, doc.zeta);
+    for s in &doc.shapes {
+        let nominal = l / (z * zetafill::scalar::powf(s.index as f64 + n, c));
+        zetafill::digest::add_shape(&mut h, s.start, 0.0, nominal, 0.0);
+    }
+    format!("{} {:016x}\n", doc.shapes.len(), h.finish()).into_bytes()
+}
+
+/// The plotter drawing of a 1D fill, in the frame of its SVG (x along the interval, y up,
+/// the line at mid height): `dashes` one open stroke per segment (per piece when a periodic
+/// segment wraps), `circles` one circle of diameter L_i per segment centred on the line
+/// (a wrapping segment's circle centred at its middle taken modulo L), `bars` each segment's
+/// bar outline. `--hatch` hatches bars and circles (`--hatch-only`: without their outlines);
+/// `--min-feature` leaves out segments shorter than it. `zoom` has no G-code form.
+pub fn drawing(
+    doc: &LineDoc,
+    opt: &LineSvgOptions,
+    build: &crate::output::drawing::BuildOptions,
+) -> Result<(crate::model::Drawing, crate::model::Bounds), CliError> {
+    drawing_of(doc, opt, build, &|_| true)
+}
+
+/// [`drawing`] of the segments `keep` accepts (by index), laid out as in the whole drawing.
+fn drawing_of(
+    doc: &LineDoc,
+    opt: &LineSvgOptions,
+    build: &crate::output::drawing::BuildOptions,
+    keep: &dyn Fn(usize) -> bool,
+) -> Result<(crate::model::Drawing, crate::model::Bounds), CliError> {
+    use crate::model::{Bounds, Drawing, Path};
+    let l = doc.region.length;
+    let periodic = doc.region.periodic;
+    let d0 = doc.shapes.first().map_or(l / 10.0, |s| s.length);
+    let kept = doc
+        .shapes
+        .iter()
+        .enumerate()
+        .filter(|&(k, s)| keep(k) && s.length >= build.min_feature)
+        .map(|(_, s)| s);
+    let outline = !build.no_outline;
+    let mut paths = Vec::new();
+    let mut hatch = |lines: Vec<[crate::model::Pt; 2]>| paths.extend(lines.into_iter().map(|[a, b]| Path::polyline(vec![a, b], false)));
+    let mut outlines = Vec::new();
+    let height = match opt.render {
+        Render::Dashes => {
+            let h = (4.0 * opt.pen_width).max(2.0);
+            for s in kept {
+                for (a, b) in pieces(s, l, periodic) {
+                    if b - a >= INVISIBLE {
+                        outlines.push(Path::polyline(vec![[a, h / 2.0], [b, h / 2.0]], false));
+                    }
+                }
+            }
+            h
+        }
+        Render::Circles => {
+            for s in kept {
+                let r = s.length / 2.0;
+                if r >= INVISIBLE {
+                    let mid = s.start + r;
+                    let mid = if periodic && mid >= l { mid - l } else { mid };
+                    if outline {
+                        outlines.push(Path::circle([mid, d0 / 2.0], r));
+                    }
+                    if let Some(h) = &build.hatch {
+                        hatch(h.annulus([mid, d0 / 2.0], r, 0.0));
+                    }
+                }
+            }
+            d0
+        }
+        Render::Bars => {
+            let h = opt.bar_height;
+            for s in kept {
+                for (a, b) in pieces(s, l, periodic) {
+                    if b - a >= INVISIBLE {
+                        let bar = vec![[a, 0.0], [b, 0.0], [b, h], [a, h]];
+                        if let Some(hp) = &build.hatch {
+                            hatch(hp.polygon(&bar));
+                        }
+                        if outline {
+                            outlines.push(Path::polyline(bar, true));
+                        }
+                    }
+                }
+            }
+            h
+        }
+        Render::Zoom => return Err(CliError::arg("--render", "zoom has no G-code form; use dashes, circles or bars")),
+    };
+    paths.extend(outlines);
+    // Circles may reach past the ends of the interval: the frame holds them all.
+    let mut frame = Bounds {
+        x0: 0.0,
+        y0: 0.0,
+        x1: l,
+        y1: height,
+    };
+    for p in &paths {
+        let b = p.bounds();
+        frame = Bounds {
+            x0: frame.x0.min(b.x0),
+            y0: frame.y0.min(b.y0),
+            x1: frame.x1.max(b.x1),
+            y1: frame.y1.max(b.y1),
+        };
+    }
+    Ok((Drawing { paths }, frame))
+}
+
+fn render_gcode(doc: &LineDoc, opt: &LineSvgOptions, a: &LineArgs) -> Result<Vec<u8>, CliError> {
+    let build = a.plot.build_options()?;
+    let (d, frame) = drawing(doc, opt, &build)?;
+    let header = vec![format!("{}{}{}", command_line(doc), drawing_flags(opt), a.plot.flags())];
+    match (&opt.colour_layers, &opt.colours) {
+        // One pen per palette colour, each drawing its segments, placed as the whole.
+        (Some(palette), Some(colours)) => {
+            let mut pens = Vec::new();
+            for c in palette {
+                let (pen, _) = drawing_of(doc, opt, &build, &|k| colours.get(k) == Some(c))?;
+                pens.push((c.clone(), pen));
+            }
+            crate::cmd::plot::pens_gcode(&pens, &frame, &a.plot, header, a.quiet)
+        }
+        _ => crate::cmd::plot::drawing_gcode(&d, &frame, &a.plot, header, a.quiet),
+    }
+}
+
+/// Renders a document in a format.
+pub fn render(doc: &LineDoc, format: Format, a: &LineArgs) -> Result<Vec<u8>, CliError> {
+    let opt = LineSvgOptions {
+        render: a.render,
+        style: a.style.into(),
+        pen_width: a.pen_width,
+        bar_height: a.bar_height,
+        zoom_rows: a.zoom_rows,
+        zoom_fraction: a.zoom_fraction,
+        zoom_center: a.zoom_center.unwrap_or(a.length / 2.0),
+        boundary: a.boundary,
+        colours: a.colour.palette.as_ref().map(|p| {
+            let items: Vec<(u64, f64)> = doc.shapes.iter().map(|s| (s.index, s.length)).collect();
+            crate::output::palette::assign_items(&p.0, a.colour.by(), doc.params.seed, &items, |_| 0)
+        }),
+        background: a.colour.background.clone(),
+        colour_flags: a.colour.flags(),
+        colour_layers: match (&a.colour.palette, a.plot.layers) {
+            (Some(p), crate::args::plot::Layers::Colours) => Some(p.0.clone()),
+            _ => None,
+        },
+    };
+    Ok(match format {
+        Format::Svg => render_svg(doc, &opt),
+        Format::Json => render_json(doc)?,
+        Format::Csv => render_csv(doc),
+        Format::Digest => render_digest(doc),
+        Format::Png => a.raster.raster().render(&render_svg(doc, &opt))?,
+        Format::Gcode => render_gcode(doc, &opt, a)?,
+        #[allow(unreachable_patterns)]
+        f => {
+            return Err(CliError::arg(
+                "--format",
+                format!("{f:?} is not available for a 1D fill; use svg, png, json, csv or digest"),
+            ))
+        }
+    })
+}
+
+/// Refuses, before any work, a plot flag that `format` does not read: no output has pages or
+/// layers, only the G-code reads the other plot flags (the SVG is the paper's figure), and it
+/// has no zoom or hatched dashes.
+fn check_plot(a: &LineArgs, format: Format) -> Result<(), CliError> {
+    let p = &a.plot;
+    p.build_options()?;
+    if p.page.is_some() || matches!(p.layers, crate::args::plot::Layers::SizeBands(_)) {
+        return Err(CliError::arg(
+            if p.page.is_some() { "--page" } else { "--layers" },
+            "is not available for line in any format: its SVG is the interval at full size, with no page or size layers, and its G-code goes on the machine's bed (--fit, --center, --margin); drop it (--layers colours splits a coloured drawing by pen)",
+        ));
+    }
+    if p.layers == crate::args::plot::Layers::Colours {
+        if a.colour.palette.is_none() {
+            return Err(CliError::arg(
+                "--layers",
+                "colours makes one layer (one pen) per --palette colour: give --palette",
+            ));
+        }
+        if a.render == Render::Zoom || !matches!(format, Format::Svg | Format::Gcode) {
+            return Err(CliError::arg(
+                "--layers",
+                "colours splits a plotter drawing by pen: write .svg or .gcode, with --render dashes, circles or bars",
+            ));
+        }
+    }
+    if format != Format::Gcode {
+        return p.refuse_except(&["--layers"], |_| crate::args::plot::FOR_GCODE.to_string());
+    }
+    p.check_gcode()?;
+    match a.render {
+        Render::Zoom => Err(CliError::arg("--render", "zoom has no G-code form; use dashes, circles or bars")),
+        Render::Dashes if p.hatch.is_some() => Err(CliError::arg(
+            "--hatch",
+            "dashes are single strokes with nothing to hatch: use --render bars or circles",
+        )),
+        _ => Ok(()),
+    }
+}
+
+/// `zetafill line`.
+pub fn run(a: &LineArgs) -> Result<(), CliError> {
+    if a.zoom_center.is_some_and(|x| x > a.length) {
+        return Err(CliError::arg(
+            "--zoom-center",
+            format!("must lie in the interval [0, {}]", a.length),
+        ));
+    }
+    let dest = Dest::parse(&a.output);
+    let inputs: Vec<&std::path::Path> = a.plot.machine_file().into_iter().collect();
+    dest.check("--output", &inputs)?;
+    let format = Format::resolve(a.format, &a.output)?;
+    a.raster.check(format == Format::Png)?;
+    check_plot(a, format)?;
+    let pens = format == Format::Gcode && a.plot.layers == crate::args::plot::Layers::Colours && a.colour.background.is_none();
+    a.colour.check(
+        matches!(format, Format::Svg | Format::Png) || pens,
+        "write .svg or .png (or G-code with --layers colours, without --background)",
+        true,
+    )?;
+    let (doc, halt) = compute(a)?;
+    let bytes = render(&doc, format, a)?;
+    dest.write(&bytes)?;
+    stopping::outcome(halt, SEGMENTS, |index| {
+        if index < 100 {
+            "the first segments left no room for this one: lower --c, raise --n-offset, or try another --seed"
+        } else {
+            "raise --max-trials, lower --c, or ask for fewer segments"
+        }
+    })
+}

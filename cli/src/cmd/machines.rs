@@ -1,0 +1,55 @@
+//! `zetafill machines`: lists the built-in machine profiles; `zetafill machines show NAME`
+//! prints one as TOML, ready to copy, edit and pass back with `--machine FILE.toml`.
+
+use crate::error::CliError;
+use crate::output::machine::Machine;
+use clap::{Args, Subcommand};
+
+/// Arguments of `zetafill machines`.
+#[derive(Debug, Args)]
+pub struct MachinesArgs {
+    /// What to do (default: list the built-ins).
+    #[command(subcommand)]
+    pub command: Option<MachinesCommand>,
+}
+
+/// Subcommands of `zetafill machines`.
+#[derive(Debug, Subcommand)]
+pub enum MachinesCommand {
+    /// List the built-in profiles.
+    List,
+    /// Print a built-in profile (or check and print a FILE.toml) as TOML.
+    Show {
+        /// A built-in name or a FILE.toml.
+        name: String,
+    },
+}
+
+/// The listing: one line per built-in, name then description.
+pub fn listing() -> String {
+    let mut s = String::new();
+    for name in Machine::builtin_names() {
+        let m = Machine::builtin(name);
+        let (d, w, h) = m.map(|m| (m.description, m.bed.width, m.bed.height)).unwrap_or_default();
+        s.push_str(&format!("{name:<16} {w} x {h} mm  {d}\n"));
+    }
+    s.push_str("\n`zetafill machines show NAME` prints one as TOML; edit a copy and use --machine FILE.toml.\n");
+    s
+}
+
+/// `zetafill machines`.
+pub fn run(a: &MachinesArgs) -> Result<(), CliError> {
+    let text = match &a.command {
+        None | Some(MachinesCommand::List) => listing(),
+        Some(MachinesCommand::Show { name }) => match Machine::builtin_text(name) {
+            Some(t) => t.to_string(),
+            None => {
+                // A file: check it, then print it normalised.
+                let m = Machine::load(name).map_err(|e| CliError::arg("NAME", e))?;
+                toml::to_string(&m).map_err(|e| CliError::Io(format!("cannot encode TOML: {e}")))?
+            }
+        },
+    };
+    print!("{text}");
+    Ok(())
+}

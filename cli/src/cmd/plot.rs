@@ -1,0 +1,96 @@
+//! Plotter output shared by the commands: a drawing placed on the machine's bed by the plot
+//! flags and written as G-code, with the plot's figures (length, time) on stderr.
+
+use crate::args::plot::PlotArgs;
+use crate::error::CliError;
+use crate::model::doc::FillDoc;
+use crate::model::{place, Bounds, Drawing, Fit};
+use crate::output::drawing::from_fill;
+use crate::output::gcode;
+
+/// `--format gcode` of a fill: its drawing (outlines, hatching) placed on the bed by the
+/// region's box.
+pub fn render_gcode(doc: &FillDoc, a: &PlotArgs, quiet: bool) -> Result<Vec<u8>, CliError> {
+    render_gcode_pens(doc, a, None, quiet)
+}
+
+/// [`render_gcode`], with `pens` (each shape's colour, the palette, and the colour flags for
+/// the header): the shapes of each palette colour drawn as one pen, in the palette's order.
+pub fn render_gcode_pens(
+    doc: &FillDoc,
+    a: &PlotArgs,
+    pens: Option<(&[crate::output::palette::Colour], &[crate::output::palette::Colour], String)>,
+    quiet: bool,
+) -> Result<Vec<u8>, CliError> {
+    let build = a.build_options()?;
+    let (x0, y0, x1, y1) = doc.bbox();
+    let mut header = format!("{}{}", crate::output::svg::command_line(doc), a.flags());
+    let layers: Vec<(String, Drawing)> = match pens {
+        None => vec![(String::new(), from_fill(doc, &build))],
+        Some((colours, palette, flags)) => {
+            header.push_str(&flags);
+            palette
+                .iter()
+                .map(|c| {
+                    let mut part = doc.clone();
+                    part.shapes = doc
+                        .shapes
+                        .iter()
+                        .zip(colours)
+                        .filter(|(_, k)| *k == c)
+                        .map(|(s, _)| s.clone())
+                        .collect();
+                    (c.clone(), from_fill(&part, &build))
+                })
+                .collect()
+        }
+    };
+    pens_gcode(&layers, &Bounds { x0, y0, x1, y1 }, a, vec![header], quiet)
+}
+
+/// G-code of any drawing with the plotter flags of `a` (machine, feeds, power, passes, arcs,
+/// order, margin, `--fit`, `--center`): `frame` is the box placed on the bed (the region's,
+/// so every seed lands in the same place), `header` the comment lines that say how the
+/// drawing was made (command line, parameters, seed). The figures go to stderr unless
+/// `quiet`. This is the entry point for other modes (`line`, `territory`, ...).
+pub fn drawing_gcode(drawing: &Drawing, frame: &Bounds, a: &PlotArgs, header: Vec<String>, quiet: bool) -> Result<Vec<u8>, CliError> {
+    pens_gcode(&[(String::new(), drawing.clone())], frame, a, header, quiet)
+}
+
+/// [`drawing_gcode`] for a drawing in several named pens, drawn one after the other with a
+/// pen change between them (see [`gcode::write_pens`]), all placed on the bed as one.
+pub fn pens_gcode(pens: &[(String, Drawing)], frame: &Bounds, a: &PlotArgs, header: Vec<String>, quiet: bool) -> Result<Vec<u8>, CliError> {
+    let m = a.machine()?;
+    let mut opts = a.gcode_options(&m)?;
+    let area = m.usable_area(opts.margin);
+    let pl = place(frame, &area, a.fit(Fit::AsIs)).map_err(|e| {
+        CliError::arg(
+            "--machine",
+            format!(
+                "{e} of the bed of '{}' ({} x {} mm, margin {} mm); use --fit to scale it or --center to move it",
+                m.name, m.bed.width, m.bed.height, opts.margin
+            ),
+        )
+    })?;
+    let pens: Vec<(String, Drawing)> = pens.iter().map(|(n, d)| (n.clone(), d.placed(&pl))).collect();
+    opts.header = header;
+    opts.header.push(format!(
+        "plot: machine {} order {:?} passes {} hatch {} min-feature {} scale {} shift {} {}",
+        m.name,
+        opts.order,
+        opts.passes,
+        match (a.hatch.as_deref(), a.cross_hatch) {
+            (Some(h), true) => format!("{h} crossed"),
+            (h, _) => h.unwrap_or("none").to_string(),
+        },
+        a.min_feature,
+        pl.scale,
+        pl.dx,
+        pl.dy
+    ));
+    let out = gcode::write_pens(&pens, &m, &opts).map_err(|e| CliError::arg("--machine", e))?;
+    if !quiet {
+        eprintln!("{}", out.figures);
+    }
+    Ok(out.bytes)
+}

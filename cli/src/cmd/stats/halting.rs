@@ -1,0 +1,225 @@
+//! `zetafill stats halting`: the fraction of runs that halt at each c (the paper's Figure 6),
+//! as CSV or an SVG chart.
+//!
+//! A run places `--count` shapes; it *halts* when a placement reaches `--max-trials` trials or
+//! a shape cannot lie in the region at all (the paper: "non-halting if it did not halt in
+//! 8,000,000 trials at any placement"; most halts come in the first 50 placements).
+//! The values of c are `c_from + k * c_step` for `k = 0, 1, ...` up to `c_to` (inclusive, to
+//! within 1e-9 of a step). Run `r` (0-based) at the `k`-th value uses the seed
+//! `seed + k * runs + r` (wrapping): every run is independent, so the runs are spread over all
+//! cores (rayon) and the result does not depend on the number of threads.
+
+use super::chart::{self, HaltingSeries};
+use super::trials::{rect_2d, run_2d, shape_2d, shape_label, Rotate, RunSpec};
+use crate::args::spec;
+use crate::error::CliError;
+use clap::Args;
+use rayon::prelude::*;
+use std::fmt::Write as _;
+use std::io::IsTerminal;
+use std::path::PathBuf;
+use zetafill::ShapeKind;
+
+/// Most values of c one call may scan.
+pub const MAX_POINTS: u64 = 1000;
+
+/// Arguments of `stats halting`.
+#[derive(Debug, Args)]
+pub struct HaltingArgs {
+    /// circle | square | rect:ASPECT.
+    #[arg(long, default_value = "circle", value_parser = shape_2d)]
+    pub shape: ShapeKind,
+    /// Rotation of non-circles: none (the paper's squares) or random.
+    #[arg(long, value_enum, default_value = "none")]
+    pub rotate: Rotate,
+    /// rect:W:H, sizes in mm.
+    #[arg(long, default_value = "rect:200:200", value_parser = rect_2d, allow_negative_numbers = true)]
+    pub region: (f64, f64),
+    /// Periodic (toroidal) boundary.
+    #[arg(long)]
+    pub periodic: bool,
+    /// First c (> 1).
+    #[arg(long = "c-from", value_parser = spec::exponent, allow_negative_numbers = true)]
+    pub c_from: f64,
+    /// Last c (>= --c-from).
+    #[arg(long = "c-to", value_parser = spec::exponent, allow_negative_numbers = true)]
+    pub c_to: f64,
+    /// Step between values of c (> 0).
+    #[arg(long = "c-step", value_parser = spec::positive, allow_negative_numbers = true)]
+    pub c_step: f64,
+    /// The paper's N > 0.
+    #[arg(long = "n-offset", default_value_t = 1.0, value_parser = spec::positive, allow_negative_numbers = true)]
+    pub n_offset: f64,
+    /// Runs per value of c.
+    #[arg(long, default_value_t = 20, value_parser = clap::value_parser!(u64).range(1..=1_000_000))]
+    pub runs: u64,
+    /// Shapes per run: a run that places them all did not halt.
+    #[arg(long, default_value_t = 100, value_parser = clap::value_parser!(u64).range(1..=1_000_000))]
+    pub count: u64,
+    /// Trial limit per placement: reaching it is a halt.
+    #[arg(long = "max-trials", default_value_t = 1_000_000, value_parser = clap::value_parser!(u64).range(1..))]
+    pub max_trials: u64,
+    /// Base seed.
+    #[arg(long, default_value_t = 1)]
+    pub seed: u64,
+    /// Worker threads (0: one per core).
+    #[arg(long, default_value_t = 0)]
+    pub threads: usize,
+    /// Output: .csv (c,runs,halted,fraction) or .svg (chart); '-' is stdout.
+    #[arg(short = 'o', long)]
+    pub output: Option<PathBuf>,
+    /// Output format (overrides the extension): csv or svg.
+    #[arg(long, value_enum)]
+    pub format: Option<super::ChartFormat>,
+    /// Print one JSON object: {"points": [{"c", "runs", "halted", "fraction"}, ...]}.
+    #[arg(long)]
+    pub json: bool,
+    /// No progress bar.
+    #[arg(short, long)]
+    pub quiet: bool,
+}
+
+/// One value of c.
+#[derive(Debug, Clone, serde::Serialize)]
+pub struct PointDoc {
+    /// Exponent c.
+    pub c: f64,
+    /// Runs made.
+    pub runs: u64,
+    /// Runs that halted.
+    pub halted: u64,
+    /// halted / runs.
+    pub fraction: f64,
+    /// Median placement at which the halted runs halted (absent when none halted).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub median_halt: Option<u64>,
+}
+
+/// The values of c scanned.
+pub fn c_values(from: f64, to: f64, step: f64) -> Result<Vec<f64>, CliError> {
+    if to < from {
+        return Err(CliError::arg("--c-to", format!("{to} is below --c-from {from}")));
+    }
+    let k = ((to - from) / step + 1e-9).floor();
+    if !(k.is_finite() && k < MAX_POINTS as f64) {
+        return Err(CliError::arg(
+            "--c-step",
+            format!("{step} gives more than {MAX_POINTS} values of c; raise it"),
+        ));
+    }
+    Ok((0..=k as u64).map(|i| from + i as f64 * step).collect())
+}
+
+/// Runs the scan: one point per value of c.
+pub fn scan(a: &HaltingArgs) -> Result<Vec<PointDoc>, CliError> {
+    let cs = c_values(a.c_from, a.c_to, a.c_step)?;
+    let jobs: Vec<(usize, RunSpec)> = cs
+        .iter()
+        .enumerate()
+        .flat_map(|(k, &c)| {
+            (0..a.runs).map(move |r| {
+                let seed = a.seed.wrapping_add((k as u64).wrapping_mul(a.runs)).wrapping_add(r);
+                (
+                    k,
+                    RunSpec {
+                        shape: a.shape,
+                        rotate: a.rotate == Rotate::Random,
+                        size: a.region,
+                        periodic: a.periodic,
+                        c,
+                        n_offset: a.n_offset,
+                        count: a.count,
+                        max_trials: a.max_trials,
+                        seed,
+                        estimate: false,
+                    },
+                )
+            })
+        })
+        .collect();
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(a.threads)
+        .build()
+        .map_err(|e| CliError::Io(format!("cannot start worker threads: {e}")))?;
+    let show = !a.quiet && std::io::stderr().is_terminal();
+    let bar = if show {
+        indicatif::ProgressBar::new(jobs.len() as u64)
+    } else {
+        indicatif::ProgressBar::hidden()
+    };
+    let results: Vec<Result<Option<u64>, CliError>> = pool.install(|| {
+        jobs.par_iter()
+            .map(|(_, s)| {
+                let r = run_2d(s).map(|r| r.halted_at);
+                bar.inc(1);
+                r
+            })
+            .collect()
+    });
+    bar.finish_and_clear();
+    let mut halts: Vec<Vec<u64>> = vec![Vec::new(); cs.len()];
+    for ((k, _), res) in jobs.iter().zip(results) {
+        if let (Some(v), Some(i)) = (halts.get_mut(*k), res?) {
+            v.push(i);
+        }
+    }
+    Ok(cs
+        .iter()
+        .zip(halts)
+        .map(|(&c, mut h)| {
+            h.sort_unstable();
+            let halted = h.len() as u64;
+            PointDoc {
+                c,
+                runs: a.runs,
+                halted,
+                fraction: halted as f64 / a.runs as f64,
+                median_halt: h.get(h.len() / 2).copied(),
+            }
+        })
+        .collect())
+}
+
+/// `zetafill stats halting`.
+pub fn run(a: &HaltingArgs) -> Result<(), CliError> {
+    let out = super::chart_output(a.output.as_ref(), a.format, "stats halting")?;
+    let points = scan(a)?;
+    if let Some((dest, f)) = out {
+        let bytes = match f {
+            super::ChartFormat::Svg => {
+                let label = format!(
+                    "{}{} N = {}",
+                    if a.periodic { "periodic, " } else { "inclusive, " },
+                    shape_label(&a.shape),
+                    a.n_offset
+                );
+                let series = [HaltingSeries {
+                    label,
+                    points: points.iter().map(|p| (p.c, p.fraction)).collect(),
+                }];
+                let title = format!(
+                    "halting: {} runs per c, {} shapes, {} trials per placement at most",
+                    a.runs, a.count, a.max_trials
+                );
+                chart::halting_chart(&series, &title)?
+            }
+            super::ChartFormat::Csv => {
+                let mut s = String::from("c,runs,halted,fraction\n");
+                for p in &points {
+                    let _ = writeln!(s, "{},{},{},{}", p.c, p.runs, p.halted, p.fraction);
+                }
+                s.into_bytes()
+            }
+        };
+        dest.write(&bytes)?;
+    }
+    if a.json {
+        println!("{}", serde_json::json!({ "points": points }));
+    } else {
+        for p in &points {
+            let m = p.median_halt.map_or(String::new(), |m| format!(" (median halt at placement {m})"));
+            println!("c = {:.4}: {}/{} runs halted, fraction {}{m}", p.c, p.halted, p.runs, p.fraction);
+        }
+    }
+    Ok(())
+}

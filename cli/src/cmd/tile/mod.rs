@@ -1,0 +1,664 @@
+//! `zetafill tile`: the scale-periodic fractal tile of the "Fractal Tiles" post: a texture of
+//! discs (or Voronoi cobblestones of their centres) that matches itself left and right, two
+//! half-scale copies of itself along its top and a double-scale copy along its bottom. Drawn
+//! alone, as a mosaic of rows of copies, or as a planet of rings ([`render`]); the discs
+//! themselves as JSON. How the tile is grown is in [`model`].
+
+pub mod model;
+pub mod render;
+
+use crate::args::spec;
+use crate::error::CliError;
+use crate::io::write::Dest;
+use crate::output::num;
+use clap::{Args, ValueEnum};
+use model::{Tile, TileSpec};
+use render::{Arrangement, Layout, Piece, Render, Sheet, Style};
+use serde::Serialize;
+use std::io::IsTerminal;
+use std::path::{Path, PathBuf};
+use svg::node::element::{Circle, ClipPath, Definitions, Description, Group, Path as SvgPath, Rectangle, Title};
+use svg::node::{Node, Text};
+use svg::Document;
+
+/// Output formats of `zetafill tile`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum TileFormat {
+    /// SVG drawing in mm.
+    Svg,
+    /// PNG preview (the SVG rendered).
+    Png,
+    /// JSON document (version 1, mode "tile"): the tile's discs.
+    Json,
+    /// G-code for a plotter or laser (the drawing's outlines).
+    Gcode,
+}
+
+impl TileFormat {
+    fn resolve(given: Option<TileFormat>, path: &Path) -> Result<TileFormat, CliError> {
+        use TileFormat::*;
+        let known = [("svg", Svg), ("png", Png), ("json", Json), ("gcode", Gcode), ("nc", Gcode)];
+        crate::args::format::format_for(given, path, Svg, &known)
+    }
+}
+
+/// Arguments of `zetafill tile`. The tile draws its own outlines: pages and hatching are
+/// refused, and left out of the help; of the layers, only `--layers colours`.
+#[derive(Debug, Args)]
+#[command(
+    mut_arg("page", |a| a.hide(true)),
+    mut_arg("hatch", |a| a.hide(true)),
+    mut_arg("hatch_only", |a| a.hide(true)),
+    mut_arg("cross_hatch", |a| a.hide(true)),
+    mut_arg("min_feature", |a| a.hide(true)),
+)]
+pub struct TileArgs {
+    /// Tile width in mm.
+    #[arg(long, default_value_t = 100.0, value_parser = spec::positive, allow_negative_numbers = true)]
+    pub width: f64,
+    /// Tile height in mm.
+    #[arg(long, default_value_t = 100.0, value_parser = spec::positive, allow_negative_numbers = true)]
+    pub height: f64,
+    /// Disc radius at the tile's bottom edge in mm (half of it at the top edge).
+    #[arg(long, default_value_t = 5.0, value_parser = spec::positive, allow_negative_numbers = true)]
+    pub radius: f64,
+    /// Gap between discs at the bottom edge in mm (half of it at the top edge).
+    #[arg(long, default_value_t = 1.0, value_parser = spec::non_negative, allow_negative_numbers = true)]
+    pub spacing: f64,
+    /// Random tries in all (each places a disc where it fits).
+    #[arg(long, default_value_t = 20_000, value_parser = clap::value_parser!(u64).range(1..=100_000_000))]
+    pub tries: u64,
+    /// RNG seed.
+    #[arg(long, default_value_t = 1)]
+    pub seed: u64,
+    /// discs | voronoi (cobblestones of the disc centres).
+    #[arg(long, value_enum, default_value = "discs")]
+    pub render: Render,
+    /// outline (plotters) | filled (screens).
+    #[arg(long, value_enum, default_value = "outline")]
+    pub style: Style,
+    /// tile (the texture) | mosaic (rows of copies, each half the scale of the one below) |
+    /// planet (rings of copies, each holding twice as many as the one inside it).
+    #[arg(long, value_enum, default_value = "tile")]
+    pub layout: Layout,
+    /// Mosaic and planet: rows (rings) of tiles.
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=10))]
+    pub rows: Option<u32>,
+    /// Mosaic: tiles in the bottom row (default 2); planet: tiles in the inner ring (default
+    /// 16).
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=4096))]
+    pub columns: Option<u32>,
+    /// Planet: its outer radius in mm, where the rings pile up.
+    #[arg(long = "planet-radius", value_parser = spec::positive, allow_negative_numbers = true)]
+    pub planet_radius: Option<f64>,
+    /// Output path; the format comes from the extension (.svg .png .json); '-' is stdout.
+    #[arg(short = 'o', long)]
+    pub output: PathBuf,
+    /// Output format (overrides the extension).
+    #[arg(long, value_enum)]
+    pub format: Option<TileFormat>,
+    /// SVG: stroke width of the outlines in mm.
+    #[arg(long = "pen-width", default_value_t = 0.3, value_parser = spec::positive, allow_negative_numbers = true)]
+    pub pen_width: f64,
+    /// Colours (SVG/PNG).
+    #[command(flatten)]
+    pub colour: crate::args::colour::ColourArgs,
+    /// PNG size.
+    #[command(flatten)]
+    pub raster: crate::args::raster::RasterArgs,
+    /// PNG: write a 16-bit height map of the tile (each disc or cobblestone a raised stone of
+    /// this profile) instead of a picture.
+    #[arg(long, value_enum)]
+    pub relief: Option<crate::args::raster::ReliefArg>,
+    /// No figures on stderr.
+    #[arg(short, long)]
+    pub quiet: bool,
+    /// Plotter and laser output (G-code): machine, feeds, passes, order, --fit/--center.
+    #[command(flatten)]
+    pub plot: crate::args::plot::PlotArgs,
+}
+
+/// Refuses the plot flags that the output does not read, before any work.
+fn check_plot(a: &TileArgs, format: TileFormat) -> Result<(), CliError> {
+    use crate::args::plot::{FOR_GCODE, GCODE_FLAGS};
+    let p = &a.plot;
+    if format == TileFormat::Gcode {
+        let allowed: Vec<&str> = GCODE_FLAGS
+            .iter()
+            .copied()
+            .chain(["--fit", "--center", "--margin", "--layers"])
+            .collect();
+        p.refuse_except(&allowed, |f| {
+            format!("is not available for tile: {f} is for fills (the tile draws its own outlines, on the machine's bed)")
+        })?;
+        p.check_gcode()?;
+    } else {
+        p.refuse_except(&["--layers"], |_| FOR_GCODE.to_string())?;
+    }
+    match p.layers {
+        crate::args::plot::Layers::None => Ok(()),
+        crate::args::plot::Layers::SizeBands(_) => Err(CliError::arg(
+            "--layers",
+            "size bands are for fills; a coloured tile splits by pen with --layers colours",
+        )),
+        crate::args::plot::Layers::Colours if a.colour.palette.is_none() => Err(CliError::arg(
+            "--layers",
+            "colours makes one layer (one pen) per --palette colour: give --palette",
+        )),
+        crate::args::plot::Layers::Colours if !matches!(format, TileFormat::Svg | TileFormat::Gcode) => Err(CliError::arg(
+            "--layers",
+            "colours splits a plotter drawing by pen: write .svg or .gcode",
+        )),
+        crate::args::plot::Layers::Colours => Ok(()),
+    }
+}
+
+/// Each laid-out piece's colour from the palette: a copy of piece `j mod n` (`tags`), at its
+/// copy's scale (`scales`). Ids are the tile's discs, so every image and copy of a disc takes
+/// the same colour (but for size).
+fn piece_colours(a: &TileArgs, tags: &[render::Tag], scales: &[f64]) -> Option<Vec<crate::output::palette::Colour>> {
+    let p = a.colour.palette.as_ref()?;
+    let items: Vec<(u64, f64)> = scales
+        .iter()
+        .enumerate()
+        .map(|(j, s)| {
+            let t = tags.get(j % tags.len().max(1));
+            t.map_or((0, 0.0), |t| (t.disc as u64, t.r * s))
+        })
+        .collect();
+    Some(crate::output::palette::assign_items(&p.0, a.colour.by(), a.seed, &items, |_| 0))
+}
+
+/// The drawing as G-code: every piece as a path (circles as arcs where the machine allows),
+/// the sheet placed on the machine's bed.
+/// With `pens` (the palette and each piece's colour), one pen per colour, in the palette's
+/// order, with a pen change between them.
+fn gcode(pieces: &[Piece], sheet: Sheet, a: &TileArgs, header: String, pens: Option<(&[String], &[String])>) -> Result<Vec<u8>, CliError> {
+    use crate::cmd::plot::pens_gcode;
+    use crate::model::{Bounds, Drawing, Path as PlotPath};
+    let path = |p: &Piece| match p {
+        Piece::Circle { c, r } => PlotPath::circle(*c, *r),
+        Piece::Open(l) => PlotPath::polyline(l.clone(), false),
+        Piece::Closed(l) => PlotPath::polyline(l.clone(), true),
+    };
+    let layers: Vec<(String, Drawing)> = match pens {
+        None => vec![(
+            String::new(),
+            Drawing {
+                paths: pieces.iter().map(path).collect(),
+            },
+        )],
+        Some((palette, colours)) => palette
+            .iter()
+            .map(|c| {
+                let paths = pieces.iter().zip(colours).filter(|(_, k)| *k == c).map(|(p, _)| path(p)).collect();
+                (c.clone(), Drawing { paths })
+            })
+            .collect(),
+    };
+    let frame = Bounds {
+        x0: 0.0,
+        y0: 0.0,
+        x1: sheet.width,
+        y1: sheet.height,
+    };
+    pens_gcode(&layers, &frame, &a.plot, vec![header], a.quiet)
+}
+
+/// One disc in the JSON output.
+#[derive(Debug, Clone, Serialize)]
+pub struct DiscDoc {
+    /// Placement order.
+    pub index: usize,
+    /// Centre (mm, the tile's frame, y up).
+    pub center: [f64; 2],
+    /// Radius (mm).
+    pub radius: f64,
+    /// The doppelganger's index, if the disc has one.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub twin: Option<usize>,
+}
+
+/// The parameters of a tile run.
+#[derive(Debug, Clone, Serialize)]
+pub struct TileParamsDoc {
+    /// What the tile is grown from (the band of twins included).
+    #[serde(flatten)]
+    pub spec: TileSpec,
+    /// `"discs"` or `"voronoi"`.
+    pub render: &'static str,
+}
+
+/// Run statistics.
+#[derive(Debug, Clone, Serialize)]
+pub struct TileStatsDoc {
+    /// Discs, twins included.
+    pub discs: usize,
+    /// Discs that have a twin.
+    pub doppelgangers: usize,
+    /// Tries made.
+    pub tries: u64,
+}
+
+/// The JSON document of a tile run.
+#[derive(Debug, Clone, Serialize)]
+pub struct TileDoc {
+    /// Format version (1).
+    pub version: u32,
+    /// `"tile"`.
+    pub mode: &'static str,
+    /// Parameters.
+    pub params: TileParamsDoc,
+    /// The discs in placement order.
+    pub discs: Vec<DiscDoc>,
+    /// Statistics.
+    pub stats: TileStatsDoc,
+}
+
+/// The arrangement the flags ask for, with each layout's defaults; refuses layout flags the
+/// layout does not read.
+pub fn arrangement(a: &TileArgs) -> Result<Arrangement, CliError> {
+    let unread = |flag: &str, why: &str| {
+        Err(CliError::arg(
+            flag,
+            format!("is not read by --layout {}: {why}", layout_name(a.layout)),
+        ))
+    };
+    match a.layout {
+        Layout::Tile => {
+            if a.rows.is_some() {
+                return unread("--rows", "the tile is drawn alone; use --layout mosaic or planet");
+            }
+            if a.columns.is_some() {
+                return unread("--columns", "the tile is drawn alone; use --layout mosaic or planet");
+            }
+        }
+        Layout::Mosaic => {}
+        Layout::Planet => {}
+    }
+    if a.layout != Layout::Planet && a.planet_radius.is_some() {
+        return unread("--planet-radius", "it sizes --layout planet");
+    }
+    let arr = Arrangement {
+        layout: a.layout,
+        rows: a.rows.unwrap_or(4),
+        columns: a.columns.unwrap_or(if a.layout == Layout::Planet { 16 } else { 2 }),
+        radius: a.planet_radius.unwrap_or(100.0),
+    };
+    arr.check(a.width, a.height).map_err(|(flag, msg)| CliError::arg(flag, msg))?;
+    Ok(arr)
+}
+
+fn layout_name(l: Layout) -> &'static str {
+    match l {
+        Layout::Tile => "tile",
+        Layout::Mosaic => "mosaic",
+        Layout::Planet => "planet",
+    }
+}
+
+fn render_name(r: Render) -> &'static str {
+    match r {
+        Render::Discs => "discs",
+        Render::Voronoi => "voronoi",
+    }
+}
+
+/// The most pieces a drawing may hold (a planet of that many is a file of about 200 MB).
+pub const MAX_PIECES: u64 = 2_000_000;
+
+/// Tile runs of at least this many tries show a progress bar on a terminal.
+const LONG_RUN: u64 = 2_000_000;
+
+/// The band of twins Voronoi cobblestones start from (the "Fractal Tiles" post uses the top quarter).
+const VORONOI_BAND: f64 = 0.25;
+
+/// How far apart (relative to the tile's size) the matching ends of copies may be.
+const SEAM_TOLERANCE: f64 = 1e-9;
+
+/// Grows the tile the flags ask for and its picture. For cobblestones the band of twins
+/// doubles until the picture meets its copies; a picture that cannot is refused.
+pub fn compute(a: &TileArgs) -> Result<(Tile, Vec<Piece>, Vec<render::Tag>), CliError> {
+    let mut spec = TileSpec {
+        width: a.width,
+        height: a.height,
+        radius: a.radius,
+        spacing: a.spacing,
+        tries: a.tries,
+        seed: a.seed,
+        band: if a.render == Render::Voronoi { VORONOI_BAND } else { 0.0 },
+    };
+    spec.check().map_err(|(flag, msg)| CliError::arg(flag, msg))?;
+    // Long runs show their tries on a terminal (and nothing when piped or with --quiet).
+    let bar = (a.tries >= LONG_RUN && !a.quiet && std::io::stderr().is_terminal()).then(|| {
+        let b = indicatif::ProgressBar::new(a.tries);
+        if let Ok(style) = indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} tries, {elapsed} (eta {eta})") {
+            b.set_style(style);
+        }
+        b
+    });
+    loop {
+        if let Some(b) = &bar {
+            b.reset();
+        }
+        let tile = model::grow_with(&spec, |t| {
+            if let Some(b) = &bar {
+                b.set_position(t);
+            }
+        });
+        // The seams are checked on the outlines, whatever the style drawn.
+        let lines = render::tile_pieces(&tile, a.render, Style::Outline)?;
+        let gap = render::seam_gaps(&render::ends(&lines, a.width, a.height), a.width);
+        if gap <= SEAM_TOLERANCE * a.width.max(a.height) {
+            if let Some(b) = &bar {
+                b.finish_and_clear();
+            }
+            let (pieces, tags) = render::tagged_pieces(&tile, a.render, a.style)?;
+            return Ok((tile, pieces, tags));
+        }
+        if a.render == Render::Voronoi && spec.band < 1.0 {
+            spec.band = (2.0 * spec.band).min(1.0);
+            continue;
+        }
+        if let Some(b) = &bar {
+            b.finish_and_clear();
+        }
+        if a.render == Render::Discs {
+            // Twins make the discs across the top repeat at half the width: only a fault
+            // of this program could leave a seam.
+            return Err(CliError::Io(format!(
+                "internal: the tile's picture does not meet its copies (ends {} mm apart)",
+                num(gap, 6)
+            )));
+        }
+        return Err(CliError::arg(
+            "--tries",
+            format!(
+                "the cobblestones do not meet their copies even with every centre twinned (ends {} mm apart): the fill is too sparse for its cells to stay near their discs; raise --tries",
+                num(gap, 6)
+            ),
+        ));
+    }
+}
+
+/// The JSON document of a tile.
+pub fn doc(tile: &Tile, a: &TileArgs) -> TileDoc {
+    TileDoc {
+        version: 1,
+        mode: "tile",
+        params: TileParamsDoc {
+            spec: tile.spec,
+            render: render_name(a.render),
+        },
+        discs: tile
+            .discs
+            .iter()
+            .enumerate()
+            .map(|(index, d)| DiscDoc {
+                index,
+                center: d.c,
+                radius: d.r,
+                twin: d.twin,
+            })
+            .collect(),
+        stats: TileStatsDoc {
+            discs: tile.discs.len(),
+            doppelgangers: tile.discs.iter().filter(|d| d.twin.is_some()).count(),
+            tries: tile.tries,
+        },
+    }
+}
+
+/// The command line that reproduces a run (for the SVG's description).
+fn command_line(a: &TileArgs, arr: &Arrangement) -> String {
+    let mut s = format!(
+        "zetafill tile --width {} --height {} --radius {} --spacing {} --tries {} --seed {} --render {} --layout {}",
+        a.width,
+        a.height,
+        a.radius,
+        a.spacing,
+        a.tries,
+        a.seed,
+        render_name(a.render),
+        layout_name(a.layout)
+    );
+    if a.layout != Layout::Tile {
+        s.push_str(&format!(" --rows {} --columns {}", arr.rows, arr.columns));
+    }
+    if a.layout == Layout::Planet {
+        s.push_str(&format!(" --planet-radius {}", arr.radius));
+    }
+    if a.style == Style::Filled {
+        s.push_str(" --style filled");
+    }
+    if a.pen_width != 0.3 {
+        s.push_str(&format!(" --pen-width {}", a.pen_width));
+    }
+    s.push_str(&a.colour.flags());
+    s.push_str(&a.plot.flags());
+    s
+}
+
+const P: usize = 4;
+
+/// How a drawing is painted.
+#[derive(Debug, Clone, Copy)]
+pub struct Look<'a> {
+    /// Outlines or filled shapes.
+    pub style: Style,
+    /// Stroke width of outlines (mm).
+    pub pen_width: f64,
+    /// Clip the drawing to the sheet (whole shapes of copies reach past its edges).
+    pub clip: bool,
+    /// Each piece's colour (its fill, or its stroke for outlines); black without.
+    pub colours: Option<&'a [crate::output::palette::Colour]>,
+    /// A colour behind the drawing.
+    pub background: Option<&'a str>,
+    /// `Some(palette)`: one Inkscape layer per palette colour, each piece in its colour's.
+    pub layers: Option<&'a [crate::output::palette::Colour]>,
+}
+
+/// The drawing as SVG (mm, y up in the tile's frame, so flipped on the page).
+pub fn svg(pieces: &[Piece], sheet: Sheet, look: &Look<'_>, title: &str, desc: &str) -> Vec<u8> {
+    let pt = |p: [f64; 2]| format!("{},{}", num(p[0], P), num(sheet.height - p[1], P));
+    let line = |l: &[[f64; 2]]| l.iter().map(|&p| pt(p)).collect::<Vec<_>>().join(" L");
+    let style = look.style;
+    let mut g = Group::new()
+        .set("id", "tile")
+        .set("inkscape:groupmode", "layer")
+        .set("inkscape:label", "tile");
+    g = match style {
+        Style::Outline => g
+            .set("fill", "none")
+            .set("stroke", "black")
+            .set("stroke-width", num(look.pen_width, P))
+            .set("stroke-linecap", "round")
+            .set("stroke-linejoin", "round"),
+        Style::Filled => g.set("fill", "black").set("stroke", "none"),
+    };
+    let paint = if style == Style::Filled { "fill" } else { "stroke" };
+    // One layer, or one per palette colour.
+    let mut groups: Vec<Group> = match look.layers {
+        Some(palette) => crate::output::palette::colour_layers(&g, palette),
+        None => vec![g],
+    };
+    for (j, piece) in pieces.iter().enumerate() {
+        let node: Option<svg::node::element::Element> = match piece {
+            Piece::Circle { c, r } => Some(
+                Circle::new()
+                    .set("cx", num(c[0], P))
+                    .set("cy", num(sheet.height - c[1], P))
+                    .set("r", num(*r, P))
+                    .into(),
+            ),
+            Piece::Open(l) if l.len() >= 2 && style == Style::Outline => Some(SvgPath::new().set("d", format!("M{}", line(l))).into()),
+            Piece::Closed(l) if l.len() >= 3 => Some(SvgPath::new().set("d", format!("M{} Z", line(l))).into()),
+            _ => None,
+        };
+        if let Some(mut n) = node {
+            let colour = look.colours.and_then(|cs| cs.get(j));
+            if let Some(c) = colour {
+                n.assign(paint, c.as_str());
+            }
+            let layer = look.layers.map_or(0, |palette| crate::output::palette::layer_of(palette, colour));
+            if let Some(g) = groups.get_mut(layer) {
+                *g = std::mem::take(g).add(n);
+            }
+        }
+    }
+    let mut d = Document::new()
+        .set("xmlns:inkscape", "http://www.inkscape.org/namespaces/inkscape")
+        .set("width", format!("{}mm", num(sheet.width, P)))
+        .set("height", format!("{}mm", num(sheet.height, P)))
+        .set("viewBox", format!("0 0 {} {}", num(sheet.width, P), num(sheet.height, P)))
+        .add(Title::new("").add(Text::new(title)))
+        .add(Description::new().add(Text::new(desc)));
+    if let Some(bg) = look.background {
+        d = d.add(crate::output::palette::background(bg, sheet.width, sheet.height));
+    }
+    if look.clip {
+        let rect = Rectangle::new()
+            .set("width", num(sheet.width, P))
+            .set("height", num(sheet.height, P));
+        d = d.add(Definitions::new().add(ClipPath::new().set("id", "sheet").add(rect)));
+        groups = groups.into_iter().map(|g| g.set("clip-path", "url(#sheet)")).collect();
+    }
+    for g in groups {
+        d = d.add(g);
+    }
+    let mut s = d.to_string();
+    s.push('\n');
+    s.into_bytes()
+}
+
+/// Refuses colour flags the output cannot show.
+fn check_colours(a: &TileArgs, format: TileFormat) -> Result<(), CliError> {
+    let picture = matches!(format, TileFormat::Svg | TileFormat::Png) && a.relief.is_none();
+    let pens = format == TileFormat::Gcode && a.plot.layers == crate::args::plot::Layers::Colours && a.colour.background.is_none();
+    a.colour.check(
+        picture || pens,
+        "write .svg or .png, without --relief (or G-code with --layers colours, without --background)",
+        true,
+    )?;
+    if a.colour.palette.is_some() && a.render == Render::Voronoi && a.style == Style::Outline {
+        return Err(CliError::arg(
+            "--palette",
+            "cobblestone outlines are edges, each shared by two cells; add --style filled to colour the cells",
+        ));
+    }
+    Ok(())
+}
+
+/// The output the flags ask for (checked first: nothing is computed for bad input), and the
+/// tile it shows.
+pub fn output(a: &TileArgs) -> Result<(Tile, Vec<u8>), CliError> {
+    let format = TileFormat::resolve(a.format, &a.output)?;
+    a.raster.check(format == TileFormat::Png)?;
+    if a.relief.is_some() && format != TileFormat::Png {
+        return Err(crate::output::png::only_png("--relief"));
+    }
+    if a.relief.is_some() && a.layout != Layout::Tile {
+        return Err(CliError::arg(
+            "--layout",
+            "a height map is of the tile itself (it repeats seamlessly); drop --layout or --relief",
+        ));
+    }
+    let arr = arrangement(a)?;
+    check_plot(a, format)?;
+    if format == TileFormat::Json && a.layout != Layout::Tile {
+        return Err(CliError::arg(
+            "--layout",
+            "the JSON holds the tile's discs; draw a mosaic or a planet as SVG, PNG or G-code",
+        ));
+    }
+    check_colours(a, format)?;
+    let (tile, pieces, tags) = compute(a)?;
+    let (w, h) = (a.width, a.height);
+    let copies = arr.copies();
+    if copies.saturating_mul(pieces.len() as u64) > MAX_PIECES {
+        return Err(CliError::arg(
+            if a.layout == Layout::Tile { "--radius" } else { "--rows" },
+            format!(
+                "{copies} copies of a picture of {} pieces make more than {MAX_PIECES} pieces, too many to draw; lower --rows or --columns, or raise --radius",
+                pieces.len()
+            ),
+        ));
+    }
+    if let (TileFormat::Png, Some(relief)) = (format, a.relief) {
+        let relief: crate::output::height::Relief = relief.into();
+        let command = format!("{} --relief {}{}", command_line(a, &arr), relief.name(), a.raster.raster().flag());
+        let size = crate::output::height::grid((w, h), &a.raster.raster())?;
+        let stones = render::stones(&tile, a.render)?;
+        let bytes = crate::output::height::render_shapes(&stones, (0.0, 0.0, w, h), false, relief, size, &command)?;
+        return Ok((tile, bytes));
+    }
+    let bytes = match format {
+        TileFormat::Json => {
+            let mut v = serde_json::to_vec_pretty(&doc(&tile, a)).map_err(|e| CliError::Io(format!("internal: {e}")))?;
+            v.push(b'\n');
+            v
+        }
+        TileFormat::Gcode => {
+            let (laid, scales) = arr.lay_out_scaled(&pieces, w, h, false);
+            let colours = piece_colours(a, &tags, &scales);
+            let pens = match (&a.colour.palette, &colours) {
+                (Some(p), Some(cs)) if a.plot.layers == crate::args::plot::Layers::Colours => Some((&p.0[..], &cs[..])),
+                _ => None,
+            };
+            gcode(&laid, arr.sheet(w, h), a, command_line(a, &arr), pens)?
+        }
+        TileFormat::Svg | TileFormat::Png => {
+            let title = format!(
+                "zetafill: fractal tile, {} discs ({} doppelgangers), seed {}, {} {}",
+                tile.discs.len(),
+                tile.discs.iter().filter(|d| d.twin.is_some()).count(),
+                a.seed,
+                render_name(a.render),
+                layout_name(a.layout)
+            );
+            // Filled copies draw the tile's own shapes whole (the sheet's edge cuts them).
+            let whole = a.style == Style::Filled && a.layout != Layout::Tile;
+            let own;
+            let (drawn, drawn_tags) = if whole {
+                own = render::own_pieces(&tile, a.render)?;
+                (&own.0, &own.1)
+            } else {
+                (&pieces, &tags)
+            };
+            let (laid, scales) = arr.lay_out_scaled(drawn, w, h, whole);
+            let colours = piece_colours(a, drawn_tags, &scales);
+            let look = Look {
+                style: a.style,
+                pen_width: a.pen_width,
+                clip: whole,
+                colours: colours.as_deref(),
+                background: a.colour.background.as_deref(),
+                layers: match (&a.colour.palette, a.plot.layers) {
+                    (Some(p), crate::args::plot::Layers::Colours) => Some(&p.0[..]),
+                    _ => None,
+                },
+            };
+            let svg = svg(&laid, arr.sheet(w, h), &look, &title, &command_line(a, &arr));
+            if format == TileFormat::Png {
+                a.raster.raster().render(&svg)?
+            } else {
+                svg
+            }
+        }
+    };
+    Ok((tile, bytes))
+}
+
+/// Runs `zetafill tile`.
+pub fn run(a: &TileArgs) -> Result<(), CliError> {
+    let dest = Dest::parse(&a.output);
+    let inputs: Vec<&std::path::Path> = a.plot.machine_file().into_iter().collect();
+    dest.check("--output", &inputs)?;
+    let (tile, bytes) = output(a)?;
+    dest.write(&bytes)?;
+    if !a.quiet {
+        let twins = tile.discs.iter().filter(|d| d.twin.is_some()).count();
+        eprintln!("{} discs ({twins} doppelgangers) in {} tries", tile.discs.len(), tile.tries);
+    }
+    Ok(())
+}

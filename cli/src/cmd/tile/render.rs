@@ -1,0 +1,579 @@
+//! Drawings of a tile: the tile's own picture (what a texture holds), and two layouts built from
+//! copies of that picture (the "Fractal Tiles" post): the `mosaic`, rows of tiles each half the size of the row
+//! below, and the `planet`, rings of tiles each holding twice as many as the ring inside it.
+//!
+//! The picture is made of [`Piece`]s in the tile's frame: whole circles, open polylines (arcs
+//! and Voronoi edges cut exactly at the tile's edges) and closed polygons (filled shapes cut to
+//! the tile). It shows every disc of the plane that reaches into the tile, copies from the
+//! neighbouring tiles and rows included, so copies of the picture meet without a seam.
+
+use super::model::{images, Image, Tile};
+use crate::error::CliError;
+use crate::geometry::voronoi::{self as geom, Clip, Pt};
+use spade::{DelaunayTriangulation, Triangulation};
+use std::f64::consts::{PI, TAU};
+
+/// What the tile shows.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum Render {
+    /// The discs.
+    Discs,
+    /// Voronoi "cobblestones" of the disc centres.
+    Voronoi,
+}
+
+/// How pieces are drawn.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum Style {
+    /// Outlines, for plotters (Voronoi: the cell edges).
+    Outline,
+    /// Filled shapes, for screens (Voronoi: the cells, inset by half the local spacing).
+    Filled,
+}
+
+/// What is laid out.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum Layout {
+    /// The tile alone (the texture).
+    Tile,
+    /// Rows of tiles, each row half the scale of the one below, showing how the tile meets its
+    /// copies.
+    Mosaic,
+    /// Rings of tiles around a disc, each ring with twice as many tiles as the one inside it.
+    Planet,
+}
+
+/// A piece of a drawing.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Piece {
+    /// A whole circle.
+    Circle {
+        /// Centre.
+        c: Pt,
+        /// Radius.
+        r: f64,
+    },
+    /// An open polyline.
+    Open(Vec<Pt>),
+    /// A closed polygon (the last point joins the first).
+    Closed(Vec<Pt>),
+}
+
+/// Which disc of the tile a piece belongs to (a disc, part of one, or its cobblestone), and
+/// that disc's radius where the piece shows it (in the tile's frame: an image from the row
+/// above is half the size).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Tag {
+    /// The tile disc's index.
+    pub disc: usize,
+    /// Its radius as drawn in the tile's frame.
+    pub r: f64,
+}
+
+/// Largest distance between a circle and its polygon (mm, in the tile's frame).
+const TOLERANCE: f64 = 0.002;
+
+/// Points on the circle `(c, r)` from angle `a0` to `a1` (counter-clockwise), both ends
+/// included, with chords within [`TOLERANCE`] of the arc.
+fn arc_points(c: Pt, r: f64, a0: f64, a1: f64) -> Vec<Pt> {
+    let step = 2.0 * (1.0 - (TOLERANCE / r).min(1.0)).acos();
+    let n = (((a1 - a0) / step.max(1e-3)).ceil() as usize).clamp(2, 4096);
+    (0..=n)
+        .map(|k| {
+            // The ends exactly: a crossing point must be the same in every piece that uses it.
+            let a = if k == n { a1 } else { a0 + (a1 - a0) * k as f64 / n as f64 };
+            [c[0] + r * a.cos(), c[1] + r * a.sin()]
+        })
+        .collect()
+}
+
+/// The angles in `[0, 2 pi)` where the circle `(c, r)` crosses the lines of the box's edges
+/// inside the box's range, sorted.
+fn crossings(c: Pt, r: f64, w: f64, h: f64) -> Vec<f64> {
+    let mut out = Vec::new();
+    let norm = |a: f64| if a < 0.0 { a + TAU } else { a };
+    for (axis, at, lo, hi) in [(0usize, 0.0, 0.0, h), (0, w, 0.0, h), (1, 0.0, 0.0, w), (1, h, 0.0, w)] {
+        let d = at - c[axis];
+        if d.abs() >= r {
+            continue;
+        }
+        let half = (r * r - d * d).sqrt();
+        for s in [-half, half] {
+            let other = c[1 - axis] + s;
+            if other < lo || other > hi {
+                continue;
+            }
+            let (dx, dy) = if axis == 0 { (d, s) } else { (s, d) };
+            out.push(norm(dy.atan2(dx)));
+        }
+    }
+    out.sort_by(f64::total_cmp);
+    out.dedup();
+    out
+}
+
+/// A disc's part of the tile's picture: the whole circle, or the arcs inside the tile (open),
+/// or the disc cut to the tile (closed).
+fn disc_pieces(c: Pt, r: f64, w: f64, h: f64, style: Style, out: &mut Vec<Piece>) {
+    if c[0] - r >= 0.0 && c[0] + r <= w && c[1] - r >= 0.0 && c[1] + r <= h {
+        out.push(Piece::Circle { c, r });
+        return;
+    }
+    if c[0] + r <= 0.0 || c[0] - r >= w || c[1] + r <= 0.0 || c[1] - r >= h {
+        return;
+    }
+    let cuts = crossings(c, r, w, h);
+    if cuts.is_empty() {
+        // The circle misses the tile's edges: the disc holds the whole tile, or misses it.
+        let (dx, dy) = (0.5 * w - c[0], 0.5 * h - c[1]);
+        if style == Style::Filled && dx * dx + dy * dy < r * r {
+            out.push(Piece::Closed(vec![[0.0, 0.0], [w, 0.0], [w, h], [0.0, h]]));
+        }
+        return;
+    }
+    let inside = |a: f64| {
+        let p = [c[0] + r * a.cos(), c[1] + r * a.sin()];
+        p[0] >= 0.0 && p[0] <= w && p[1] >= 0.0 && p[1] <= h
+    };
+    let n = cuts.len();
+    let mut arcs = Vec::new();
+    for i in 0..n {
+        let a0 = cuts[i];
+        let a1 = if i + 1 < n { cuts[i + 1] } else { cuts[0] + TAU };
+        if inside(0.5 * (a0 + a1)) {
+            arcs.push(arc_points(c, r, a0, a1));
+        }
+    }
+    match style {
+        Style::Outline => out.extend(arcs.into_iter().map(Piece::Open)),
+        Style::Filled => {
+            // The whole circle through the crossing points, cut by the tile's four sides.
+            let mut ring: Vec<Pt> = Vec::new();
+            for i in 0..n {
+                let a0 = cuts[i];
+                let a1 = if i + 1 < n { cuts[i + 1] } else { cuts[0] + TAU };
+                let mut arc = arc_points(c, r, a0, a1);
+                arc.pop();
+                ring.extend(arc);
+            }
+            let poly = cut_to_box(ring, w, h);
+            if poly.len() >= 3 {
+                out.push(Piece::Closed(poly));
+            }
+        }
+    }
+}
+
+/// A convex polygon cut to the box `[0, w] x [0, h]`.
+fn cut_to_box(mut poly: Vec<Pt>, w: f64, h: f64) -> Vec<Pt> {
+    for (m, n) in [
+        ([0.0, 0.0], [-1.0, 0.0]),
+        ([w, 0.0], [1.0, 0.0]),
+        ([0.0, 0.0], [0.0, -1.0]),
+        ([0.0, h], [0.0, 1.0]),
+    ] {
+        if poly.is_empty() {
+            break;
+        }
+        poly = geom::clip_half_plane(&poly, m, n);
+    }
+    // Snap the cut points onto the box, so that pieces of neighbouring tiles meet exactly.
+    let snap = |v: f64, hi: f64| {
+        if v.abs() < 1e-9 * hi {
+            0.0
+        } else if (v - hi).abs() < 1e-9 * hi {
+            hi
+        } else {
+            v
+        }
+    };
+    poly.into_iter().map(|p| [snap(p[0], w), snap(p[1], h)]).collect()
+}
+
+/// The tile's picture.
+pub fn tile_pieces(tile: &Tile, render: Render, style: Style) -> Result<Vec<Piece>, CliError> {
+    tagged_pieces(tile, render, style).map(|(pieces, _)| pieces)
+}
+
+/// The tile's picture and the [`Tag`] of each piece; no tags for cobblestone outlines, whose
+/// edges each belong to two cells.
+pub fn tagged_pieces(tile: &Tile, render: Render, style: Style) -> Result<(Vec<Piece>, Vec<Tag>), CliError> {
+    let (w, h) = (tile.spec.width, tile.spec.height);
+    let mut out = Vec::new();
+    let mut tags = Vec::new();
+    match render {
+        Render::Discs => {
+            for im in images(tile, 0.0) {
+                disc_pieces(im.c, im.r, w, h, style, &mut out);
+                tags.resize(out.len(), Tag { disc: im.disc, r: im.r });
+            }
+        }
+        Render::Voronoi => {
+            let (sites, tri) = plane_diagram(tile)?;
+            if tri.num_vertices() < 3 {
+                return Ok((out, tags));
+            }
+            let clip = Clip::Rect {
+                x0: 0.0,
+                y0: 0.0,
+                x1: w,
+                y1: h,
+            };
+            match style {
+                Style::Outline => {
+                    let dual = geom::Dual::of(&tri, clip.bbox());
+                    out.extend(geom::polylines(&dual, 0..dual.edges.len(), &clip).into_iter().map(Piece::Open));
+                }
+                Style::Filled => {
+                    for (v, im) in sites.iter().enumerate() {
+                        let poly = cut_to_box(inset_cell(tile, &tri, &sites, v), w, h);
+                        if poly.len() >= 3 {
+                            out.push(Piece::Closed(poly));
+                            tags.push(Tag { disc: im.disc, r: im.r });
+                        }
+                    }
+                }
+            }
+        }
+    }
+    Ok((out, tags))
+}
+
+type Tri = DelaunayTriangulation<spade::Point2<f64>>;
+
+/// The Delaunay triangulation of every centre of the plane whose cell can reach the tile: in a
+/// grown tile the cells are a few disc spacings wide, well inside half a tile side (the seam
+/// check would catch a tile too sparse for that). The sites are the discs' images, the tile's
+/// own first, in order; vertex v of the triangulation is site v.
+fn plane_diagram(tile: &Tile) -> Result<(Vec<Image>, Tri), CliError> {
+    let (w, h) = (tile.spec.width, tile.spec.height);
+    let sites = images(tile, 0.5 * w.min(h));
+    let pts = sites.iter().map(|im| geom::p2(im.c)).collect();
+    let tri = Tri::bulk_load_stable(pts).map_err(|e| CliError::Io(format!("internal: cannot triangulate the centres: {e}")))?;
+    Ok((sites, tri))
+}
+
+/// The Voronoi cell of site `v`, each bisector moved towards the site by half the gap of the
+/// pair (so the lines between cells follow the size law).
+fn inset_cell(tile: &Tile, tri: &Tri, sites: &[Image], v: usize) -> Vec<Pt> {
+    let (w, h) = (tile.spec.width, tile.spec.height);
+    let s = sites[v].c;
+    let mut poly = vec![[-w, -h], [2.0 * w, -h], [2.0 * w, 2.0 * h], [-w, 2.0 * h]];
+    for o in geom::neighbours(tri, v) {
+        let q = sites[o].c;
+        let n = [q[0] - s[0], q[1] - s[1]];
+        let len = (n[0] * n[0] + n[1] * n[1]).sqrt();
+        if len == 0.0 || poly.is_empty() {
+            continue;
+        }
+        let inset = 0.5 * tile.spec.gap_between(s[1], q[1]);
+        let t = (0.5 * len - inset).max(0.0) / len;
+        poly = geom::clip_half_plane(&poly, [s[0] + t * n[0], s[1] + t * n[1]], n);
+    }
+    poly
+}
+
+/// The stones of the tile's height map: every disc of the plane that reaches the tile, or
+/// every inset cell of a centre whose cell can, whole (the map's edge cuts them, so a stone
+/// crossing an edge goes on in the copy beyond it).
+pub fn stones(tile: &Tile, render: Render) -> Result<Vec<crate::model::doc::ShapeDoc>, CliError> {
+    let (w, h) = (tile.spec.width, tile.spec.height);
+    let stone = |index: usize, c: Pt, radius: Option<f64>, vertices: Option<Vec<Pt>>| crate::model::doc::ShapeDoc {
+        index: index as u64,
+        kind: if radius.is_some() { "circle" } else { "polygon" },
+        center: c,
+        radius,
+        inner_radius: None,
+        angle: None,
+        area: 0.0,
+        trials: 0,
+        vertices,
+    };
+    Ok(match render {
+        Render::Discs => images(tile, 0.0)
+            .iter()
+            .enumerate()
+            .map(|(i, im)| stone(i, im.c, Some(im.r), None))
+            .collect(),
+        Render::Voronoi => {
+            let (sites, tri) = plane_diagram(tile)?;
+            if tri.num_vertices() < 3 {
+                return Ok(Vec::new());
+            }
+            (0..tri.num_vertices())
+                .filter_map(|v| {
+                    let cell = inset_cell(tile, &tri, &sites, v);
+                    let reaches = cell.len() >= 3
+                        && cell.iter().any(|p| p[0] > 0.0)
+                        && cell.iter().any(|p| p[0] < w)
+                        && cell.iter().any(|p| p[1] > 0.0)
+                        && cell.iter().any(|p| p[1] < h);
+                    reaches.then(|| stone(v, sites[v].c, None, Some(cell)))
+                })
+                .collect()
+        }
+    })
+}
+
+/// The tile's own shapes, whole and filled: its discs, or the inset cells of its centres. Laid
+/// out, every shape of the plane is drawn once and whole, so copies meet without the hairline
+/// seams that anti-aliasing leaves where two cut pieces abut.
+pub fn own_pieces(tile: &Tile, render: Render) -> Result<(Vec<Piece>, Vec<Tag>), CliError> {
+    let tag = |disc: usize| Tag {
+        disc,
+        r: tile.discs.get(disc).map_or(0.0, |d| d.r),
+    };
+    match render {
+        Render::Discs => Ok(tile
+            .discs
+            .iter()
+            .enumerate()
+            .map(|(i, d)| (Piece::Circle { c: d.c, r: d.r }, tag(i)))
+            .unzip()),
+        Render::Voronoi => {
+            let (sites, tri) = plane_diagram(tile)?;
+            if tri.num_vertices() < 3 {
+                return Ok((Vec::new(), Vec::new()));
+            }
+            // The identity map comes first: the first sites are the tile's own centres.
+            Ok((0..tile.discs.len().min(tri.num_vertices()))
+                .map(|v| (inset_cell(tile, &tri, &sites, v), tag(v)))
+                .filter(|(p, _)| p.len() >= 3)
+                .map(|(p, t)| (Piece::Closed(p), t))
+                .unzip())
+        }
+    }
+}
+
+/// Where the tile's picture crosses its edges, for the seam checks: the x of every open piece's
+/// end on the bottom and the top edge, and the y of every end on the left and the right edge
+/// (each list sorted).
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Ends {
+    /// On y = 0.
+    pub bottom: Vec<f64>,
+    /// On y = H.
+    pub top: Vec<f64>,
+    /// On x = 0.
+    pub left: Vec<f64>,
+    /// On x = W.
+    pub right: Vec<f64>,
+}
+
+/// The ends of the open pieces on the tile's edges.
+pub fn ends(pieces: &[Piece], w: f64, h: f64) -> Ends {
+    let mut e = Ends::default();
+    let tol = 1e-9 * w.max(h);
+    for p in pieces {
+        let Piece::Open(l) = p else { continue };
+        for q in [l.first(), l.last()].into_iter().flatten() {
+            if q[1].abs() <= tol {
+                e.bottom.push(q[0]);
+            } else if (q[1] - h).abs() <= tol {
+                e.top.push(q[0]);
+            } else if q[0].abs() <= tol {
+                e.left.push(q[1]);
+            } else if (q[0] - w).abs() <= tol {
+                e.right.push(q[1]);
+            }
+        }
+    }
+    for v in [&mut e.bottom, &mut e.top, &mut e.left, &mut e.right] {
+        v.sort_by(f64::total_cmp);
+    }
+    e
+}
+
+/// How far the picture is from meeting its copies: the largest distance between matching
+/// ends (left against right; the top's left half and right half each against the bottom at
+/// half scale), or infinity when their numbers differ. Zero up to rounding for a tile that
+/// tiles.
+pub fn seam_gaps(e: &Ends, w: f64) -> f64 {
+    let worst = |a: &[f64], b: &[f64]| -> f64 {
+        if a.len() != b.len() {
+            return f64::INFINITY;
+        }
+        a.iter().zip(b).fold(0.0, |m: f64, (x, y)| m.max((x - y).abs()))
+    };
+    let half: Vec<f64> = e.bottom.iter().map(|x| 0.5 * x).collect();
+    let (lo, hi): (Vec<f64>, Vec<f64>) = e.top.iter().partition(|&&x| x < 0.5 * w);
+    let hi: Vec<f64> = hi.iter().map(|x| x - 0.5 * w).collect();
+    worst(&e.left, &e.right).max(worst(&half, &lo)).max(worst(&half, &hi))
+}
+
+/// The size (mm) of a layout's drawing.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Sheet {
+    /// Width.
+    pub width: f64,
+    /// Height.
+    pub height: f64,
+}
+
+/// How the copies are laid out.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Arrangement {
+    /// The layout.
+    pub layout: Layout,
+    /// Rows of tiles (mosaic, planet).
+    pub rows: u32,
+    /// Tiles in the bottom row (mosaic) or the innermost ring (planet).
+    pub columns: u32,
+    /// The planet's outer radius (mm): where the rings pile up.
+    pub radius: f64,
+}
+
+impl Arrangement {
+    /// The ring-0 thickness of the planet: rings are conformal at the surface, so a tile's
+    /// height over its width there is the tile's own.
+    pub fn ring_height(&self, w: f64, h: f64) -> f64 {
+        TAU * self.radius * h / (f64::from(self.columns) * w)
+    }
+
+    /// Why the arrangement cannot be drawn, naming the flag to change.
+    pub fn check(&self, w: f64, h: f64) -> Result<(), (&'static str, String)> {
+        if self.layout == Layout::Planet {
+            let need = (2.0 * TAU * h / w).floor() as u32 + 1;
+            if self.columns < need {
+                return Err((
+                    "--columns",
+                    format!(
+                        "a planet of {w} x {h} mm tiles needs at least {need} tiles in its inner ring (got {}): with fewer the rings would cross the centre",
+                        self.columns
+                    ),
+                ));
+            }
+        }
+        Ok(())
+    }
+
+    /// How many copies of the tile's picture the layout draws.
+    pub fn copies(&self) -> u64 {
+        match self.layout {
+            Layout::Tile => 1,
+            _ => u64::from(self.columns).saturating_mul((1u64 << self.rows) - 1),
+        }
+    }
+
+    /// The drawing's size.
+    pub fn sheet(&self, w: f64, h: f64) -> Sheet {
+        match self.layout {
+            Layout::Tile => Sheet { width: w, height: h },
+            Layout::Mosaic => Sheet {
+                width: f64::from(self.columns) * w,
+                height: 2.0 * h * (1.0 - 0.5f64.powi(self.rows as i32)),
+            },
+            Layout::Planet => Sheet {
+                width: 2.0 * self.radius,
+                height: 2.0 * self.radius,
+            },
+        }
+    }
+
+    /// The planet's map from the plane of rows to the sheet: x around, y outwards.
+    fn polar(&self, w: f64, h: f64, p: Pt) -> Pt {
+        let theta = TAU * p[0] / (f64::from(self.columns) * w);
+        let rho = self.radius - (2.0 * h - p[1]) * self.ring_height(w, h) / h;
+        [self.radius + rho * theta.cos(), self.radius + rho * theta.sin()]
+    }
+
+    /// The copies of the tile's picture, on the sheet.
+    ///
+    /// With `whole` (the tile's own shapes, whole: see [`own_pieces`]), a mosaic also lays out
+    /// the copies just outside the sheet (a column each side, a row below and above), whose
+    /// shapes reach in across its edges; the sheet's edge cuts them.
+    pub fn lay_out(&self, pieces: &[Piece], w: f64, h: f64, whole: bool) -> Vec<Piece> {
+        self.lay_out_scaled(pieces, w, h, whole).0
+    }
+
+    /// [`Arrangement::lay_out`], with the scale of the copy each laid-out piece is in (1 for
+    /// the bottom row, 1/2 for the next, ...). Piece `j` of the result is a copy of piece
+    /// `j mod pieces.len()`.
+    pub fn lay_out_scaled(&self, pieces: &[Piece], w: f64, h: f64, whole: bool) -> (Vec<Piece>, Vec<f64>) {
+        if self.layout == Layout::Tile {
+            return (pieces.to_vec(), vec![1.0; pieces.len()]);
+        }
+        let rim = whole && self.layout == Layout::Mosaic;
+        let rows: Vec<i32> = if rim {
+            (-1..=self.rows as i32).collect()
+        } else {
+            (0..self.rows as i32).collect()
+        };
+        let mut out = Vec::new();
+        let mut scales = Vec::new();
+        for k in rows {
+            let s = 0.5f64.powi(k);
+            let y0 = 2.0 * h * (1.0 - s);
+            // Tiles across the sheet in row k (a row below has half as many, rounded up).
+            let count = if k >= 0 {
+                i64::from(self.columns) << k
+            } else {
+                (i64::from(self.columns) + 1) / 2
+            };
+            let (first, last) = if rim { (-1, count) } else { (0, count - 1) };
+            for i in first..=last {
+                let x0 = i as f64 * w * s;
+                let plane = |p: Pt| [x0 + s * p[0], y0 + s * p[1]];
+                for piece in pieces {
+                    out.push(match self.layout {
+                        Layout::Planet => self.bend(piece, s, w, h, plane),
+                        _ => match piece {
+                            Piece::Circle { c, r } => Piece::Circle { c: plane(*c), r: s * r },
+                            Piece::Open(l) => Piece::Open(l.iter().map(|&p| plane(p)).collect()),
+                            Piece::Closed(l) => Piece::Closed(l.iter().map(|&p| plane(p)).collect()),
+                        },
+                    });
+                }
+                scales.resize(out.len(), s);
+            }
+        }
+        (out, scales)
+    }
+
+    /// A piece through the planet's map: circles become polygons, and straight segments are
+    /// cut short enough to follow the curve.
+    fn bend(&self, piece: &Piece, s: f64, w: f64, h: f64, plane: impl Fn(Pt) -> Pt) -> Piece {
+        let map = |p: Pt| self.polar(w, h, plane(p));
+        // Segment length (tile frame) that keeps the bent chord within the tolerance.
+        let step = w / 64.0;
+        let dense = |l: &[Pt], closed: bool| -> Vec<Pt> {
+            let mut out = Vec::new();
+            let n = l.len();
+            let segs = if closed { n } else { n.saturating_sub(1) };
+            for i in 0..segs {
+                let (a, b) = (l[i], l[(i + 1) % n]);
+                let len = geom::dist2(a, b).sqrt();
+                let m = ((len / step).ceil() as usize).max(1);
+                for j in 0..m {
+                    let t = j as f64 / m as f64;
+                    out.push(map([a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])]));
+                }
+            }
+            if !closed {
+                if let Some(&last) = l.last() {
+                    out.push(map(last));
+                }
+            }
+            out
+        };
+        match piece {
+            Piece::Circle { c, r } => {
+                // As many sides as the circle needs at its drawn size (at least 12).
+                let drawn = r * s * self.ring_height(w, h) / h;
+                let n = ((PI / (1.0 - (TOLERANCE / drawn).min(1.0)).acos()).ceil() as usize).clamp(12, 256);
+                let ring: Vec<Pt> = (0..n)
+                    .map(|k| {
+                        let a = TAU * k as f64 / n as f64;
+                        map([c[0] + r * a.cos(), c[1] + r * a.sin()])
+                    })
+                    .collect();
+                Piece::Closed(ring)
+            }
+            Piece::Open(l) => Piece::Open(dense(l, false)),
+            Piece::Closed(l) => Piece::Closed(dense(l, true)),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests;

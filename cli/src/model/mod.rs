@@ -1,0 +1,46 @@
+//! The drawing model: the fill's document ([`doc`]), and one plain data model of what a pen
+//! or beam draws, with the geometry every writer shares.
+//!
+//! - [`path`]: a [`Drawing`] is paths in mm, in the *bed frame* (x right, y up, (0, 0) at the
+//!   bed's front-left corner). A [`Path`] is an open or closed polyline, or a circular arc (a
+//!   full circle when its sweep is ±2π).
+//! - [`shape`]: the bounding box and width of one placed shape.
+//! - [`periodic`]: the images of a shape that show in a periodic tile, for every writer.
+//! - [`clip`]: exact clipping of paths to a rectangle (circles into arcs, polygons into open
+//!   polylines).
+//! - [`place`](mod@place): [`Placement`] scales and moves a drawing onto a bed or a page.
+//!
+//! [`crate::output::drawing::from_fill`] builds a drawing from a fill; the writers of
+//! [`crate::output`] turn drawings into SVG or G-code. Any mode that produces lines can write
+//! G-code the same way `zetafill fill` does:
+//!
+//! ```no_run
+//! use zetafill_cli::model::{Drawing, Path};
+//! use zetafill_cli::output::{gcode, machine::Machine};
+//! let drawing = Drawing { paths: vec![Path::polyline(vec![[10.0, 10.0], [50.0, 10.0]], false)] };
+//! let machine = Machine::builtin("grbl-servo-pen").expect("built-in");
+//! let opts = gcode::GcodeOptions::new(&machine);
+//! let out = gcode::write(&drawing, &machine, &opts).expect("fits the bed");
+//! std::fs::write("out.gcode", &out.bytes).expect("written");
+//! eprintln!("{}", out.figures);
+//! ```
+//!
+//! A mode with clap arguments can `#[command(flatten)]` [`crate::args::plot::PlotArgs`] and
+//! call [`crate::cmd::plot::drawing_gcode`], which adds placement on the bed (`--fit`,
+//! `--center`, `--margin`) and every other flag, exactly as `zetafill fill` does.
+//!
+//! Nothing here prints, touches files or knows the command line; everything is
+//! deterministic: the same input gives the same values.
+
+pub mod clip;
+pub mod doc;
+pub mod path;
+pub mod periodic;
+pub mod place;
+pub mod shape;
+
+pub use clip::{clip_path, clip_segment};
+pub use path::{arc_extremes, polar, Bounds, Drawing, Path, Pt};
+pub use periodic::{periodic_images, shape_images};
+pub use place::{place, Fit, Placement};
+pub use shape::{polygon_width, shape_bounds, shape_width};

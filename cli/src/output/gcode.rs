@@ -1,0 +1,585 @@
+//! The G-code writer: a [`Drawing`] in the bed frame, a [`Machine`] and [`GcodeOptions`] in,
+//! bytes and [`Figures`] out.
+//!
+//! Safety invariants, by construction (and checked by `cli/tests/gcode.rs`, which replays the
+//! output through an independent interpreter):
+//! - every X/Y coordinate is inside the bed: the drawing is refused unless it lies inside the
+//!   usable area; every number is rounded on a fixed grid and clamped to the bed's grid; an
+//!   arc whose rounded circle would pass outside the bed is written as chords instead;
+//! - the tool is off for every travel move and at the end: travel happens only between the
+//!   profile's `tool_off` and `tool_on` blocks, and `tool_off` runs after `start` and before
+//!   `end`;
+//! - a feed is stated on the first cutting move after every profile block (so before the
+//!   first cutting move, and again if a block changed it);
+//! - numbers are plain fixed-precision decimals (integers in units of 10^-decimals formatted
+//!   by hand): never exponent notation, NaN or `-0`;
+//! - the same input gives the same bytes (no clock, no hashing, no environment).
+
+use crate::model::{arc_extremes, Bounds, Drawing, Path, Pt};
+use crate::output::machine::{Machine, Travel, Units};
+use crate::output::order::order;
+use crate::output::order::PathOrder;
+use std::f64::consts::TAU;
+use std::fmt::{self, Write as _};
+
+/// What to write besides the drawing.
+#[derive(Debug, Clone, PartialEq)]
+pub struct GcodeOptions {
+    /// Drawing feed, mm/min.
+    pub feed: f64,
+    /// Travel feed, mm/min.
+    pub travel_feed: f64,
+    /// Laser power (S), for profiles with a power range.
+    pub power: Option<f64>,
+    /// Times to draw everything.
+    pub passes: u32,
+    /// Circles and arcs as G2/G3.
+    pub arcs: bool,
+    /// Largest distance between an arc and the chords that replace it (mm).
+    pub chord_tolerance: f64,
+    /// Path order.
+    pub order: PathOrder,
+    /// Margin kept free on every side of the bed (mm).
+    pub margin: f64,
+    /// Comment lines for the header (parameters, seed, command line).
+    pub header: Vec<String>,
+}
+
+impl GcodeOptions {
+    /// The profile's defaults.
+    pub fn new(m: &Machine) -> GcodeOptions {
+        GcodeOptions {
+            feed: m.feed.draw,
+            travel_feed: m.feed.travel,
+            power: m.power.map(|p| p.default),
+            passes: 1,
+            arcs: m.arcs,
+            chord_tolerance: 0.01,
+            order: PathOrder::Improved,
+            margin: 0.0,
+            header: Vec::new(),
+        }
+    }
+}
+
+/// What a program does, for the header and stderr.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Figures {
+    /// Paths drawn (each pass counts).
+    pub paths: usize,
+    /// Times the tool goes on.
+    pub tool_ons: usize,
+    /// Pen-down (cutting) length, mm.
+    pub pen_down_mm: f64,
+    /// Pen-up travel, mm (from the machine's origin, and to `park`).
+    pub travel_mm: f64,
+    /// Estimated run time, seconds: lengths over feeds plus the profile's dwells.
+    pub seconds: f64,
+}
+
+impl fmt::Display for Figures {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let s = self.seconds.round() as u64;
+        write!(
+            f,
+            "{} paths, pen-down {:.1} mm, pen-up travel {:.1} mm, {} pen-downs, estimated time {}:{:02}:{:02}",
+            self.paths,
+            self.pen_down_mm,
+            self.travel_mm,
+            self.tool_ons,
+            s / 3600,
+            (s / 60) % 60,
+            s % 60
+        )
+    }
+}
+
+/// A written program.
+#[derive(Debug, Clone, PartialEq)]
+pub struct GcodeOutput {
+    /// The G-code text.
+    pub bytes: Vec<u8>,
+    /// Its figures.
+    pub figures: Figures,
+}
+
+/// A point on the output grid (units of 10^-decimals of the output unit).
+type Q = [i64; 2];
+
+struct Writer<'a> {
+    m: &'a Machine,
+    o: &'a GcodeOptions,
+    out: String,
+    dec: u32,
+    /// Grid units per mm of the bed frame.
+    k: f64,
+    lo: Q,
+    hi: Q,
+    pos: Option<Q>,
+    tool_on: bool,
+    feed_stated: bool,
+    fig: Figures,
+}
+
+/// A grid integer as a plain decimal with exactly `dec` decimals (never `-0`).
+pub fn fixed(q: i64, dec: u32) -> String {
+    let p = 10i64.pow(dec);
+    let sign = if q < 0 { "-" } else { "" };
+    let a = q.unsigned_abs();
+    if dec == 0 {
+        return format!("{sign}{a}");
+    }
+    format!("{sign}{}.{:0width$}", a / p as u64, a % p as u64, width = dec as usize)
+}
+
+/// A rate or power as a plain integer (at least `min`).
+fn int(v: f64, min: i64) -> String {
+    let r = v.round();
+    let r = if r.is_finite() { (r as i64).max(min) } else { min };
+    r.to_string()
+}
+
+impl Writer<'_> {
+    fn line(&mut self, s: &str) {
+        self.out.push_str(s);
+        self.out.push('\n');
+    }
+
+    fn block(&mut self, text: &str) {
+        let power = self.o.power.map(|p| int(p, 0)).unwrap_or_else(|| "0".into());
+        let (feed, travel) = (
+            int(self.o.feed * self.m.units.per_mm(), 1),
+            int(self.o.travel_feed * self.m.units.per_mm(), 1),
+        );
+        for l in text.lines() {
+            let l = l.trim();
+            if l.is_empty() {
+                continue;
+            }
+            let l = l
+                .replace("{power}", &power)
+                .replace("{feed}", &feed)
+                .replace("{travel_feed}", &travel);
+            self.line(&l);
+        }
+        // A block may change the feed: state it again on the next cutting move.
+        self.feed_stated = false;
+    }
+
+    /// Bed frame (mm) to the output grid, clamped to the bed.
+    fn q(&self, p: Pt) -> Q {
+        let r = self.q_raw(p);
+        [r[0].clamp(self.lo[0], self.hi[0]), r[1].clamp(self.lo[1], self.hi[1])]
+    }
+
+    /// Bed frame (mm) to the output grid, not clamped (arc centres may lie off the bed).
+    fn q_raw(&self, p: Pt) -> Q {
+        let (sy, dx, dy) = self.m.bed_to_machine();
+        let mx = (p[0] + dx) * self.k;
+        let my = (sy * p[1] + dy) * self.k;
+        [mx.round() as i64, my.round() as i64]
+    }
+
+    fn xy(&self, q: Q) -> String {
+        format!("X{} Y{}", fixed(q[0], self.dec), fixed(q[1], self.dec))
+    }
+
+    fn grid_mm(&self, a: Q, b: Q) -> f64 {
+        ((a[0] - b[0]) as f64).hypot((a[1] - b[1]) as f64) / self.k
+    }
+
+    /// Rapid to the profile's park position, if it has one and the head is elsewhere.
+    fn park(&mut self) {
+        if let Some(park) = self.m.park {
+            let q = [
+                ((park[0] * self.k).round() as i64).clamp(self.lo[0], self.hi[0]),
+                ((park[1] * self.k).round() as i64).clamp(self.lo[1], self.hi[1]),
+            ];
+            if self.pos != Some(q) {
+                let from = self.pos.unwrap_or([0, 0]);
+                self.fig.travel_mm += self.grid_mm(from, q);
+                let s = format!("G0 {}", self.xy(q));
+                self.line(&s);
+                self.pos = Some(q);
+            }
+        }
+    }
+
+    fn tool(&mut self, on: bool) {
+        if on == self.tool_on {
+            return;
+        }
+        let text = if on { self.m.tool_on.clone() } else { self.m.tool_off.clone() };
+        self.block(&text);
+        self.tool_on = on;
+        if on {
+            self.fig.tool_ons += 1;
+        }
+    }
+
+    fn travel_to(&mut self, q: Q) {
+        if self.pos == Some(q) {
+            return;
+        }
+        self.tool(false);
+        let from = self.pos.unwrap_or(self.home_q());
+        self.fig.travel_mm += self.grid_mm(from, q);
+        match self.m.travel {
+            Travel::Rapid => {
+                let s = format!("G0 {}", self.xy(q));
+                self.line(&s);
+            }
+            Travel::Feed => {
+                let s = format!("G1 {} F{}", self.xy(q), int(self.o.travel_feed * self.m.units.per_mm(), 1));
+                self.line(&s);
+                self.feed_stated = false;
+            }
+        }
+        self.pos = Some(q);
+    }
+
+    fn home_q(&self) -> Q {
+        [0, 0]
+    }
+
+    fn feed_word(&mut self) -> String {
+        if self.feed_stated {
+            String::new()
+        } else {
+            self.feed_stated = true;
+            format!(" F{}", int(self.o.feed * self.m.units.per_mm(), 1))
+        }
+    }
+
+    fn cut_to(&mut self, q: Q) {
+        let Some(from) = self.pos else { return };
+        if from == q {
+            return;
+        }
+        let f = self.feed_word();
+        let s = format!("G1 {}{f}", self.xy(q));
+        self.line(&s);
+        self.fig.pen_down_mm += self.grid_mm(from, q);
+        self.pos = Some(q);
+    }
+
+    /// Starts a path at `q`: travels unless already there with the tool on (consecutive
+    /// paths that meet are drawn without lifting).
+    fn begin(&mut self, q: Q) {
+        if !(self.tool_on && self.pos == Some(q)) {
+            self.travel_to(q);
+            self.tool(true);
+        }
+        self.fig.paths += 1;
+    }
+
+    fn polyline(&mut self, pts: &[Pt], closed: bool) {
+        let Some(first) = pts.first() else { return };
+        let q0 = self.q(*first);
+        self.begin(q0);
+        for p in &pts[1..] {
+            let q = self.q(*p);
+            self.cut_to(q);
+        }
+        if closed {
+            self.cut_to(q0);
+        }
+    }
+
+    fn chords(&mut self, c: Pt, r: f64, start: f64, sweep: f64) {
+        let sweep = sweep.clamp(-TAU, TAU);
+        let tol = self.o.chord_tolerance.min(r);
+        let step = 2.0 * (1.0 - tol / r).clamp(-1.0, 1.0).acos();
+        let min_n = if sweep.abs() >= TAU { 8 } else { 1 };
+        let n = ((sweep.abs() / step.max(1e-9)).ceil() as usize).clamp(min_n, 100_000);
+        let pts: Vec<Pt> = (0..=n)
+            .map(|i| crate::model::polar(c, r, start + sweep * i as f64 / n as f64))
+            .collect();
+        self.polyline(&pts, false);
+    }
+
+    /// An arc as G2/G3 when the rounded arc is well defined and inside the bed, else chords.
+    fn arc(&mut self, c: Pt, r: f64, start: f64, sweep: f64) {
+        let full = sweep.abs() >= TAU;
+        let s = crate::model::polar(c, r, start);
+        let e = if full { s } else { crate::model::polar(c, r, start + sweep) };
+        let (qs, qe, qc) = (self.q(s), self.q(e), self.q_raw(c));
+        let (sy, _, _) = self.m.bed_to_machine();
+        // Direction on the machine: a mirrored y turns the arc the other way.
+        let ccw = (sweep > 0.0) == (sy > 0.0);
+        let rq = ((qs[0] - qc[0]) as f64).hypot((qs[1] - qc[1]) as f64);
+        let ok = self.o.arcs && rq >= 10.0 && {
+            let a_s = ((qs[1] - qc[1]) as f64).atan2((qs[0] - qc[0]) as f64);
+            let (a_from, span) = if full {
+                (a_s, TAU)
+            } else {
+                let a_e = ((qe[1] - qc[1]) as f64).atan2((qe[0] - qc[0]) as f64);
+                let span = if ccw {
+                    (a_e - a_s).rem_euclid(TAU)
+                } else {
+                    (a_s - a_e).rem_euclid(TAU)
+                };
+                (if ccw { a_s } else { a_e }, span)
+            };
+            // The rounded arc must still be the intended one (no end point on the start, which
+            // a controller reads as a full circle) and stay inside the bed.
+            let sane = full || (qs != qe && (span - sweep.abs()).abs() < 1e-3 && span > 1e-3);
+            let extremes_in = arc_extremes(a_from, span).into_iter().all(|a| {
+                let x = qc[0] as f64 + rq * a.cos();
+                let y = qc[1] as f64 + rq * a.sin();
+                x >= self.lo[0] as f64 && x <= self.hi[0] as f64 && y >= self.lo[1] as f64 && y <= self.hi[1] as f64
+            });
+            sane && extremes_in
+        };
+        if !ok {
+            self.chords(c, r, start, sweep);
+            return;
+        }
+        self.begin(qs);
+        let f = self.feed_word();
+        let line = format!(
+            "{} {} I{} J{}{f}",
+            if ccw { "G3" } else { "G2" },
+            self.xy(qe),
+            fixed(qc[0] - qs[0], self.dec),
+            fixed(qc[1] - qs[1], self.dec)
+        );
+        self.line(&line);
+        self.fig.pen_down_mm += rq / self.k * if full { TAU } else { sweep.abs() };
+        self.pos = Some(qe);
+    }
+
+    fn path(&mut self, p: &Path) {
+        match p {
+            Path::Polyline { points, closed } => self.polyline(points, *closed),
+            Path::Arc {
+                center,
+                radius,
+                start,
+                sweep,
+            } => self.arc(*center, *radius, *start, *sweep),
+        }
+    }
+}
+
+fn check_options(m: &Machine, o: &GcodeOptions) -> Result<(), String> {
+    if !(o.feed.is_finite() && o.feed > 0.0) {
+        return Err(format!("feed {} mm/min must be positive", o.feed));
+    }
+    if !(o.travel_feed.is_finite() && o.travel_feed > 0.0) {
+        return Err(format!("travel feed {} mm/min must be positive", o.travel_feed));
+    }
+    match (&m.power, o.power) {
+        (Some(r), Some(p)) if !(p >= r.min && p <= r.max) => return Err(format!("power {p} is outside {}..{}", r.min, r.max)),
+        (None, Some(_)) => return Err(format!("'{}' has no power range", m.name)),
+        _ => {}
+    }
+    if o.passes == 0 {
+        return Err("passes must be at least 1".into());
+    }
+    if !(o.chord_tolerance.is_finite() && o.chord_tolerance > 0.0) {
+        return Err("the chord tolerance must be positive".into());
+    }
+    if !(o.margin.is_finite() && o.margin >= 0.0 && 2.0 * o.margin < m.bed.width.min(m.bed.height)) {
+        return Err(format!("margin {} mm leaves no room on the bed", o.margin));
+    }
+    Ok(())
+}
+
+fn comment(out: &mut String, s: &str) {
+    for l in s.lines() {
+        let clean: String = l
+            .chars()
+            .map(|c| if c.is_ascii() && !c.is_ascii_control() { c } else { '?' })
+            .collect();
+        let _ = writeln!(out, "; {clean}");
+    }
+}
+
+/// Writes `d` (bed frame, mm) for machine `m`. Refuses a drawing that does not lie inside the
+/// bed less the margin, and options outside the profile's ranges.
+pub fn write(d: &Drawing, m: &Machine, o: &GcodeOptions) -> Result<GcodeOutput, String> {
+    write_pens(std::slice::from_ref(&(String::new(), d.clone())), m, o)
+}
+
+/// [`write`](fn@write) for a drawing in several pens, drawn one after the other, each named (its
+/// colour) in a comment: between two pens the tool goes off, the head parks (if the profile
+/// has a park) and the profile's `pen_change` block is written (`M0` by default: the machine
+/// waits while the operator swaps the pen). Pens with nothing to draw are left out.
+pub fn write_pens(pens: &[(String, Drawing)], m: &Machine, o: &GcodeOptions) -> Result<GcodeOutput, String> {
+    let all = Drawing {
+        paths: pens.iter().flat_map(|(_, d)| d.paths.iter().cloned()).collect(),
+    };
+    let d = &all;
+    m.validate()?;
+    check_options(m, o)?;
+    let area = m.usable_area(o.margin);
+    let b = d.bounds();
+    if !b.inside(&area, 1e-6) {
+        return Err(format!(
+            "the drawing (x {:.3}..{:.3}, y {:.3}..{:.3} mm) does not fit the bed less margin (x {:.3}..{:.3}, y {:.3}..{:.3} mm)",
+            b.x0, b.x1, b.y0, b.y1, area.x0, area.x1, area.y0, area.y1
+        ));
+    }
+    if d.paths.iter().any(|p| !path_finite(p)) {
+        return Err("the drawing has a non-finite coordinate".into());
+    }
+    let dec = m.units.decimals();
+    let k = m.units.per_mm() * 10f64.powi(dec as i32);
+    let mb = m.machine_bounds_mm();
+    let lo = [(mb.x0 * k - 1e-6).ceil() as i64, (mb.y0 * k - 1e-6).ceil() as i64];
+    let hi = [(mb.x1 * k + 1e-6).floor() as i64, (mb.y1 * k + 1e-6).floor() as i64];
+    let mut w = Writer {
+        m,
+        o,
+        out: String::new(),
+        dec,
+        k,
+        lo,
+        hi,
+        pos: None,
+        tool_on: false,
+        feed_stated: false,
+        fig: Figures {
+            paths: 0,
+            tool_ons: 0,
+            pen_down_mm: 0.0,
+            travel_mm: 0.0,
+            seconds: 0.0,
+        },
+    };
+    w.line("G90");
+    w.line(if m.units == Units::Mm { "G21" } else { "G20" });
+    w.line("G17");
+    w.block(&m.start);
+    // The tool is off whatever the start block did.
+    w.tool_on = true;
+    w.tool(false);
+    w.fig.tool_ons = 0;
+    let used: Vec<&(String, Drawing)> = pens.iter().filter(|(_, d)| !d.paths.is_empty()).collect();
+    for (i, (name, pen)) in used.iter().enumerate() {
+        if used.len() > 1 {
+            if i > 0 {
+                w.tool(false);
+                w.park();
+            }
+            let s = format!("; pen {} of {}: {name}", i + 1, used.len());
+            w.line(&s);
+            if i > 0 {
+                w.block(&m.pen_change);
+            }
+        }
+        let paths = order(&pen.paths, m.home_in_bed(), o.order);
+        for _ in 0..o.passes {
+            for p in &paths {
+                w.path(p);
+            }
+        }
+    }
+    w.tool(false);
+    w.park();
+    w.block(&m.end);
+    let dwell = Machine::dwell_seconds(&m.tool_on) + Machine::dwell_seconds(&m.tool_off);
+    let mut fig = w.fig;
+    fig.seconds = fig.pen_down_mm / o.feed * 60.0 + fig.travel_mm / o.travel_feed * 60.0 + fig.tool_ons as f64 * dwell;
+    let body = w.out;
+
+    let mut head = String::new();
+    comment(&mut head, &format!("zetafill G-code for machine '{}': {}", m.name, m.description));
+    for h in &o.header {
+        comment(&mut head, h);
+    }
+    let unit = if m.units == Units::Mm { "mm" } else { "inch" };
+    comment(
+        &mut head,
+        &format!(
+            "bed {} x {} mm, origin {:?}, units {unit} ({} decimals), margin {} mm",
+            m.bed.width, m.bed.height, m.origin, dec, o.margin
+        ),
+    );
+    comment(
+        &mut head,
+        &format!(
+            "feed {} mm/min, travel {} mm/min ({:?}), power {}, passes {}, arcs {}, chord tolerance {} mm, order {:?}",
+            o.feed,
+            o.travel_feed,
+            m.travel,
+            o.power.map(|p| int(p, 0)).unwrap_or_else(|| "-".into()),
+            o.passes,
+            if o.arcs { "G2/G3" } else { "no (polylines)" },
+            o.chord_tolerance,
+            o.order
+        ),
+    );
+    comment(&mut head, &format!("figures: {fig}"));
+    head.push_str(&body);
+    Ok(GcodeOutput {
+        bytes: head.into_bytes(),
+        figures: fig,
+    })
+}
+
+fn path_finite(p: &Path) -> bool {
+    match p {
+        Path::Polyline { points, .. } => points.iter().all(|q| q[0].is_finite() && q[1].is_finite()),
+        Path::Arc {
+            center,
+            radius,
+            start,
+            sweep,
+        } => {
+            center[0].is_finite() && center[1].is_finite() && radius.is_finite() && *radius > 0.0 && start.is_finite() && sweep.is_finite()
+        }
+    }
+}
+
+/// The bed in the output units' grid, for checkers: (lo, hi) corners.
+pub fn grid_bounds(m: &Machine) -> Bounds {
+    let f = m.units.per_mm();
+    let b = m.machine_bounds_mm();
+    Bounds {
+        x0: b.x0 * f,
+        y0: b.y0 * f,
+        x1: b.x1 * f,
+        y1: b.y1 * f,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn fixed_numbers_are_plain() {
+        assert_eq!(fixed(0, 3), "0.000");
+        assert_eq!(fixed(-1, 3), "-0.001");
+        assert_eq!(fixed(123456, 3), "123.456");
+        assert_eq!(fixed(-2000, 3), "-2.000");
+        assert_eq!(fixed(5, 4), "0.0005");
+        assert_eq!(fixed(7, 0), "7");
+        assert_eq!(int(f64::NAN, 1), "1");
+        assert_eq!(int(-0.2, 0), "0");
+    }
+
+    #[test]
+    fn a_circle_on_the_bed_edge_falls_back_to_chords_inside() {
+        let m = Machine::builtin("grbl-servo-pen").unwrap_or_else(|| panic!("built-in"));
+        // Touching x = 0 exactly: the rounded circle could poke out; it must not.
+        let d = Drawing {
+            paths: vec![Path::circle([1.0004, 50.0], 1.0004)],
+        };
+        let o = GcodeOptions::new(&m);
+        let out = write(&d, &m, &o).unwrap_or_else(|e| panic!("{e}"));
+        let text = String::from_utf8_lossy(&out.bytes);
+        assert!(!text.contains("X-"), "{text}");
+    }
+
+    #[test]
+    fn refuses_what_is_off_the_bed() {
+        let m = Machine::builtin("grbl-laser").unwrap_or_else(|| panic!("built-in"));
+        let d = Drawing {
+            paths: vec![Path::circle([399.0, 50.0], 2.0)],
+        };
+        assert!(write(&d, &m, &GcodeOptions::new(&m)).is_err());
+    }
+}

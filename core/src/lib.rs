@@ -45,6 +45,7 @@ pub mod engine;
 pub mod fixed;
 pub mod geom;
 pub mod line;
+mod params;
 pub mod region;
 pub mod rng;
 pub mod sampler;

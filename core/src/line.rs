@@ -24,7 +24,8 @@
 //! same bits on every target; the first `k` segments never depend on how many are asked for.
 
 use crate::digest::{add_shape, Fnv1a};
-use crate::engine::{ParamError, Stats, StepError, Stop, StopReason};
+use crate::engine::Stats;
+use crate::params::{ParamError, StepError, Stop, StopReason};
 use crate::rng;
 use crate::scalar::{powf, Scalar};
 use rand_core::RngCore;

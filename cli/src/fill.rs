@@ -9,10 +9,10 @@ use crate::stopping::{self, Unit};
 use crate::write::Dest;
 use clap::{Args, ValueEnum};
 use std::path::PathBuf;
-use zetafill::engine::{ParamError, StepError};
 use zetafill::{
     index_words, CellSampler, Engine, Geo, MixOrder, Params, Placed, PolygonRegion, Region, ShapeKind, Stop, StopReason, Storage,
 };
+use zetafill::{ParamError, StepError};
 
 /// Largest number of shapes one run may hold (52 bytes each in the core).
 pub const MAX_SHAPES: u64 = 20_000_000;
@@ -205,11 +205,11 @@ fn param_error(e: ParamError) -> CliError {
 /// How many shape slots the stop conditions can need (see [`stopping::capacity`]).
 fn capacity(params: &Params, area: f64, stop: &Stop) -> Result<u64, CliError> {
     let (c, n) = (params.c, params.n_offset);
-    let zeta = zetafill::zeta::zeta(c, n).map_err(|e| CliError::arg("--n-offset", e))?;
+    let zeta = zetafill::internals::zeta::zeta(c, n).map_err(|e| CliError::arg("--n-offset", e))?;
     // Shape k's width decreases with k.
     let width = |k: u64| {
         let kind = params.shape.kind_of(k);
-        kind.min_width(kind.scale_for_area(area / (zeta * zetafill::scalar::powf(k as f64 + n, c))))
+        kind.min_width(kind.scale_for_area(area / (zeta * zetafill::internals::scalar::powf(k as f64 + n, c))))
     };
     stopping::capacity(c, n, stop, SHAPES, width)
 }
@@ -232,7 +232,7 @@ fn halt_advice(index: u64) -> &'static str {
 /// Nothing is written: an output with no shape is no drawing.
 fn first_shape_error(params: &Params, area: f64, zeta: f64, halt: Option<u64>) -> CliError {
     let kind = params.shape.kind_of(0);
-    let a0 = area / (zeta * zetafill::scalar::powf(params.n_offset, params.c));
+    let a0 = area / (zeta * zetafill::internals::scalar::powf(params.n_offset, params.c));
     let width = kind.min_width(kind.scale_for_area(a0));
     let what = match halt {
         None => "does not fit the region".to_string(),
@@ -364,7 +364,7 @@ fn holes_of(rings: &[&[zetafill::Point<f64>]]) -> Vec<bool> {
             let depth = rings
                 .iter()
                 .enumerate()
-                .filter(|(j, o)| *j != i && zetafill::geom::point_in_poly(probe, o))
+                .filter(|(j, o)| *j != i && zetafill::internals::geom::point_in_poly(probe, o))
                 .count();
             depth % 2 == 1
         })
@@ -430,10 +430,10 @@ fn check_known_limit(params: &Params, region: &Region<'_>) -> Result<(), CliErro
         return Ok(());
     }
     let fits = |c: f64| {
-        let Ok(z) = zetafill::zeta::zeta(c, params.n_offset) else {
+        let Ok(z) = zetafill::internals::zeta::zeta(c, params.n_offset) else {
             return false;
         };
-        let a = |i: f64| width * height / (z * zetafill::scalar::powf(i + params.n_offset, c));
+        let a = |i: f64| width * height / (z * zetafill::internals::scalar::powf(i + params.n_offset, c));
         first_two_fit(kind, a(0.0), a(1.0), *width, *height, params.gap)
     };
     if fits(params.c) {
@@ -515,7 +515,7 @@ impl ScalarArg {
 /// What a run of the engine produced, in f64 whatever the scalar.
 struct EngineRun {
     shapes: Vec<ShapeDoc>,
-    stats: zetafill::engine::Stats,
+    stats: zetafill::Stats,
     reason: StopReason,
     zeta: f64,
     area: f64,
@@ -532,7 +532,7 @@ fn geo_f64<S: zetafill::Scalar>(g: &Geo<S>) -> Geo<f64> {
             inner: inner.to_f64(),
         },
         Geo::Poly { v, n, convex } => {
-            let mut out = [zetafill::Point::new(0.0, 0.0); zetafill::geom::MAX_VERTS];
+            let mut out = [zetafill::Point::new(0.0, 0.0); zetafill::internals::geom::MAX_VERTS];
             for (o, p) in out.iter_mut().zip(v.iter()) {
                 *o = pt(*p);
             }

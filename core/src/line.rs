@@ -1,7 +1,7 @@
 //! The one-dimensional fill: segments in an interval (seed 001, Figure 3).
 //!
 //! Segment `i` has length `L_i = L / (zeta(c, N) (i + N)^c)` in an interval `[0, L]`, so the
-//! lengths add up to `L`. Each trial draws one unit value `u` (see [`crate::rng`]) and puts the
+//! lengths add up to `L`. Each trial draws one unit value `u` (see [`crate::internals::rng`]) and puts the
 //! segment's start at `lo + u (hi - lo)`: with an inclusive boundary `lo = gap`,
 //! `hi = L - gap - L_i` (the starts where the segment lies inside, at least `gap` from each
 //! end); with a periodic boundary (a circle of circumference `L`) `lo = 0`, `hi = L`, and a
@@ -10,7 +10,7 @@
 //! when `gap = 0`), exactly as in 2D.
 //!
 //! Placed segments are indexed by a one-dimensional version of the multi-level spatial hash of
-//! [`crate::spatial`]: level `l` cuts the interval into cells of length `L / 2^l`; a segment of
+//! [`crate::internals::spatial`]: level `l` cuts the interval into cells of length `L / 2^l`; a segment of
 //! length `len` lives at the finest level whose cells are at least `len` long, in the cell of
 //! its start. A query looks, level by level (coarsest first), at the two or three cells its
 //! reach can touch, so
@@ -38,6 +38,7 @@ const NIL: u32 = u32::MAX;
 
 /// The parameters of a 1D fill.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct LineParams {
     /// The power-law exponent c (> 1).
     pub c: f64,
@@ -68,6 +69,7 @@ impl LineParams {
 
 /// The interval `[0, length]`, inclusive or periodic.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct Interval {
     /// Length L, finite and > 0.
     pub length: f64,

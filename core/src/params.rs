@@ -8,6 +8,7 @@ use crate::shape::{ShapeKind, ShapeList};
 
 /// The parameters of a fill.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct Params {
     /// The power-law exponent c (> 1).
     pub c: f64,
@@ -44,6 +45,7 @@ impl Params {
 
 /// What was wrong with the parameters, region or storage.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub enum ParamError {
     /// c must be finite and > 1.
     Exponent,
@@ -78,8 +80,11 @@ impl core::fmt::Display for ParamError {
     }
 }
 
+impl core::error::Error for ParamError {}
+
 /// Why a step placed nothing. The engine keeps every shape placed before.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub enum StepError {
     /// The trial limit was reached at placement `index` after `trials` trials (halting).
     Halted {
@@ -111,8 +116,11 @@ impl core::fmt::Display for StepError {
     }
 }
 
+impl core::error::Error for StepError {}
+
 /// When [`crate::Engine::run`] stops: the first condition given that holds stops it.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct Stop {
     /// Stop once this many shapes are placed.
     pub count: Option<u64>,
@@ -124,6 +132,7 @@ pub struct Stop {
 
 /// Why [`crate::Engine::run`] stopped.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub enum StopReason {
     /// The count was reached.
     Count,

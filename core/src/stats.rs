@@ -3,7 +3,7 @@
 //! the first two shapes (section 3), and a least-squares fit for power laws.
 //!
 //! Everything is computed from the Hurwitz zeta function and its partial sums
-//! ([`crate::zeta`]), with `libm` only; nothing here allocates or panics.
+//! ([`crate::internals::zeta`]), with `libm` only; nothing here allocates or panics.
 //!
 //! ## The gasket width and its index convention
 //! Eq. 8 as printed sums over `i = 0..=n` and divides by the radius of circle `n + 1`. Table 1

@@ -13,8 +13,8 @@ use proptest::prelude::*;
 use proptest::test_runner::RngSeed;
 use rand_core::RngCore;
 use std::panic::{catch_unwind, AssertUnwindSafe};
-use zetafill::engine::Stats;
-use zetafill::geom::separated;
+use zetafill::internals::geom::separated;
+use zetafill::Stats;
 use zetafill::{
     index_words, rng_from_seed, CellSampler, Engine, Fixed, Geo, ParamError, Params, Placed, Placement, Point, Region, Scalar, ShapeKind,
     StepError, Stop, StopReason, Storage, ZetaRng,
@@ -349,7 +349,7 @@ fn check_run(case: &Case, r: &Run) -> Result<(), String> {
     if r.placements.len() != n {
         return Err(format!("{} placements reported for {n} shapes", r.placements.len()));
     }
-    let z = zetafill::zeta::hurwitz_zeta(case.c, case.n).map_err(|e| format!("zeta: {e:?}"))?;
+    let z = zetafill::internals::zeta::hurwitz_zeta(case.c, case.n).map_err(|e| format!("zeta: {e:?}"))?;
     if z.to_bits() != r.zeta.to_bits() {
         return Err(format!("engine zeta {} != hurwitz_zeta {z}", r.zeta));
     }
@@ -852,7 +852,8 @@ fn min_size_stop() {
         // A minimum width that the 40th shape is just above and the 41st below (roughly).
         let kind = case.shape;
         let width_of = |i: u64| {
-            let a = case.w * case.h / (zetafill::zeta::hurwitz_zeta(case.c, case.n).unwrap_or(f64::NAN) * (i as f64 + case.n).powf(case.c));
+            let a = case.w * case.h
+                / (zetafill::internals::zeta::hurwitz_zeta(case.c, case.n).unwrap_or(f64::NAN) * (i as f64 + case.n).powf(case.c));
             kind.min_width(kind.scale_for_area(a))
         };
         let m = 0.5 * (width_of(40) + width_of(41));
@@ -1440,11 +1441,11 @@ proptest! {
     fn zeta_never_panics(s in any_f64(0.0..5.0), a in any_f64(0.0..100.0), n in prop_oneof![any::<u64>(), 0u64..200, Just(u64::MAX)]) {
         let res = catch_unwind(|| {
             (
-                zetafill::zeta::hurwitz_zeta(s, a),
-                zetafill::zeta::zeta(s, a),
-                zetafill::zeta::partial_sum(s, a, n),
-                zetafill::zeta::tail_sum(s, a, n),
-                zetafill::zeta::table_lookup(s, a),
+                zetafill::internals::zeta::hurwitz_zeta(s, a),
+                zetafill::internals::zeta::zeta(s, a),
+                zetafill::internals::zeta::partial_sum(s, a, n),
+                zetafill::internals::zeta::tail_sum(s, a, n),
+                zetafill::internals::zeta::table_lookup(s, a),
             )
         });
         let Ok((h, z, p, t, _)) = res else {

@@ -16,7 +16,7 @@
 mod common;
 
 use rand_core::RngCore;
-use zetafill::geom::separated;
+use zetafill::internals::geom::separated;
 use zetafill::{
     cells_for, index_words, rng_from_seed, CellSampler, Engine, Params, Placed, Point, PolygonRegion, Region, Scalar, ShapeKind, StepError,
     Stop, StopReason, Storage,
@@ -254,7 +254,7 @@ fn a_biased_input_fails_the_same_test() {
 fn ks_test_separates_distributions_and_accepts_equal_ones() {
     // Deterministic uniform-looking samples from the engine's generator.
     let mut rng = rng_from_seed(7);
-    let mut u = || zetafill::rng::unit::<f64, _>(&mut rng);
+    let mut u = || zetafill::internals::rng::unit::<f64, _>(&mut rng);
     let a: Vec<f64> = (0..2000).map(|_| u()).collect();
     let b: Vec<f64> = (0..2000).map(|_| u()).collect();
     let shifted: Vec<f64> = (0..2000).map(|_| u() * 0.9 + 0.1).collect();
@@ -467,7 +467,7 @@ fn halts_with_certainty_when_nothing_fits() {
 fn fixed_point_fast_fills_are_valid_and_deterministic() {
     // The scalar the firmware uses without an FPU: the cell sampler must keep every exact
     // guarantee with it too.
-    use zetafill::geom::separated;
+    use zetafill::internals::geom::separated;
     use zetafill::{Fixed, Scalar};
     let run = || {
         let cap = 400;

@@ -1,4 +1,4 @@
-//! The engine as the cell sampler sees it ([`crate::sampler`]): the clearance the next shape
+//! The engine as the cell sampler sees it ([`crate::CellSampler`]): the clearance the next shape
 //! needs at its centre, signed distances to placed shapes, the nearest shapes to a point, and
 //! the step that draws candidates from the sampler's live cells ([`Engine::step_fast`]).
 
@@ -218,7 +218,7 @@ impl<S: Scalar> Engine<'_, S> {
 
     /// Places the next shape with the cell sampler: the same distribution of accepted
     /// placements as [`Engine::step`], far fewer trials late in a fill (see
-    /// [`crate::sampler`]). Halts at the trial limit, or at once when no cell can hold the
+    /// [`crate::CellSampler`]). Halts at the trial limit, or at once when no cell can hold the
     /// shape. Use one sampler per engine, for every step after the first that uses it.
     pub fn step_fast<R: RngCore + ?Sized>(&mut self, cells: &mut CellSampler<'_, S>, rng: &mut R) -> Result<Placement<S>, StepError> {
         let next = self.next_shape()?;

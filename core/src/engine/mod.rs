@@ -56,6 +56,7 @@ pub struct Placement<S> {
 
 /// Statistics of a fill so far.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct Stats {
     /// Shapes placed.
     pub placed: u64,
@@ -106,7 +107,7 @@ pub struct Storage<'a, S> {
     /// The spatial hash: longer than `shapes` ([`index_words`] recommends the size; any
     /// number of buckets works, fewer only make queries slower).
     pub index: &'a mut [u32],
-    /// The coverage bitmap (see [`crate::coverage`]); may be empty. It speeds up rejections
+    /// The coverage bitmap (see [`crate::internals::coverage`]); may be empty. It speeds up rejections
     /// and never changes a result.
     pub coverage: &'a mut [u64],
 }

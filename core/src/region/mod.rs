@@ -17,6 +17,7 @@ use crate::scalar::Scalar;
 
 /// What is wrong with a polygon region.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub enum RegionError {
     /// A ring has fewer than 3 vertices, or the ring ends are not increasing.
     TooFewVertices,
@@ -38,6 +39,8 @@ impl core::fmt::Display for RegionError {
         })
     }
 }
+
+impl core::error::Error for RegionError {}
 
 /// A validated polygonal region over caller-owned vertices.
 #[derive(Debug, Clone, Copy, PartialEq)]

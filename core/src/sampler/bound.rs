@@ -1,6 +1,6 @@
 //! The grid and the bounds: the level-0 grid over the region's box, each level's cell size,
 //! and the bound on the clearance anywhere in a cell from the outside of the region and the
-//! shapes the cell knows (see the module docs of [`crate::sampler`] for why it is a bound).
+//! shapes the cell knows (see the module docs of [`crate::CellSampler`] for why it is a bound).
 
 use super::{ceil_u32, far_corner, Cell, CellSampler, Field, LevelGeom, CELL_LEVELS, GRID0, NEAR, NONE};
 use crate::geom::Point;

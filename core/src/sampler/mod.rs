@@ -182,6 +182,7 @@ struct LevelGeom<S> {
 
 /// Counters of the cell sampler, for benchmarks and tests.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct CellStats {
     /// Live cells (candidates are drawn in them).
     pub live: usize,
@@ -237,8 +238,7 @@ pub struct CellSampler<'c, S> {
     slack: S,
     /// Cells drawn ahead within the current step (slot and copy as drawn); see
     /// [`CellSampler::draw`].
-    ahead: [(usize, Cell<S>); AHEAD],
-    ahead_len: usize,
+    ahead: heapless::Vec<(usize, Cell<S>), AHEAD>,
     ahead_pos: usize,
     /// The total weight the current batch was drawn from (0: no batch in this step yet).
     batch_weight: u64,
@@ -255,6 +255,7 @@ pub struct CellSampler<'c, S> {
 
 /// Why a cell sampler could not be set up: its storage is empty (or beyond `u32` indices).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct NoCells;
 
 impl<'c, S: Scalar> CellSampler<'c, S> {
@@ -276,8 +277,7 @@ impl<'c, S: Scalar> CellSampler<'c, S> {
             origin: Point::new(S::ZERO, S::ZERO),
             geom: [LevelGeom::default(); CELL_LEVELS],
             slack: S::ZERO,
-            ahead: [(usize::MAX, Cell::default()); AHEAD],
-            ahead_len: 0,
+            ahead: heapless::Vec::new(),
             ahead_pos: 0,
             batch_weight: 0,
             step_inv: 0.0,

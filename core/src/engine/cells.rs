@@ -88,20 +88,23 @@ impl<S: Scalar> Engine<'_, S> {
     /// those that come within `reach` of `c` (of one of its images, on a torus): the ones
     /// `near` holds and the ones the spatial hash lists.
     pub(super) fn gather(&self, c: Point<S>, reach: S, near: &mut [u32; NEAR]) {
-        // The shapes kept and their distances; a shape nearer than the farthest kept takes
-        // its place.
-        let mut best = [(reach, NONE); NEAR];
+        // The shapes kept and their distances, in the order they were kept: a shape within
+        // `reach` is kept while there is room; then it takes the place of the first of the
+        // farthest kept if it is nearer.
+        let mut best: heapless::Vec<(S, u32), NEAR> = heapless::Vec::new();
         let mut offer = |j: u32| {
             if best.iter().any(|b| b.1 == j) {
                 return;
             }
             let d = self.shape_dist(j, c);
-            let far = best.iter_mut().fold(None, |m: Option<&mut (S, u32)>, b| match m {
-                Some(m) if m.0 >= b.0 => Some(m),
-                _ => Some(b),
-            });
-            if let Some(f) = far.filter(|f| d < f.0) {
-                *f = (d, j);
+            if d < reach && best.push((d, j)).is_err() {
+                let far = best.iter_mut().fold(None, |m: Option<&mut (S, u32)>, b| match m {
+                    Some(m) if m.0 >= b.0 => Some(m),
+                    _ => Some(b),
+                });
+                if let Some(f) = far.filter(|f| d < f.0) {
+                    *f = (d, j);
+                }
             }
         };
         for &j in near.iter().filter(|&&j| j != NONE) {
@@ -129,8 +132,9 @@ impl<S: Scalar> Engine<'_, S> {
                 self.each_image(c.x, c.y, rr, |ox, oy| look(c.x + ox, c.y + oy));
             }
         }
-        for (n, b) in near.iter_mut().zip(best.iter()) {
-            *n = b.1;
+        let kept = best.iter().map(|b| b.1).chain(core::iter::repeat(NONE));
+        for (n, j) in near.iter_mut().zip(kept) {
+            *n = j;
         }
     }
 

@@ -211,6 +211,24 @@ pub struct CellStats {
 /// The cell structure over caller-provided storage. Build it with [`CellSampler::new`] and
 /// pass it to [`crate::Engine::step_fast`] or [`crate::Engine::run_fast`]; one sampler serves
 /// one engine.
+///
+/// ```
+/// use zetafill::{cells_for, index_words, rng_from_seed, CellSampler, CellWords, Engine, Params, Placed, Region, Stop, StopReason, Storage};
+///
+/// let n = 1000;
+/// let mut shapes = vec![Placed::<f64>::default(); n];
+/// let mut index = vec![0u32; index_words(n)];
+/// // Zeroed memory: the operating system maps only the cells the sampler writes.
+/// let mut pool: Vec<CellWords> = vec![[0; 4]; cells_for(n)];
+/// let storage = Storage { shapes: &mut shapes, index: &mut index, coverage: &mut [] };
+/// let region = Region::Rect { width: 200.0, height: 200.0, periodic: false };
+/// let mut engine = Engine::new(Params::circles(1.3, 1.0), region, storage)?;
+/// let mut cells = CellSampler::new(&mut pool).expect("a non-empty pool");
+/// let stop = Stop { count: Some(n as u64), ..Stop::default() };
+/// let reason = engine.run_fast(&mut cells, &mut rng_from_seed(1), &stop, |_| {});
+/// assert_eq!(reason, StopReason::Count);
+/// # Ok::<(), zetafill::ParamError>(())
+/// ```
 #[derive(Debug)]
 pub struct CellSampler<'c, S> {
     pool: &'c mut [CellWords],
@@ -238,7 +256,8 @@ pub struct CellSampler<'c, S> {
     slack: S,
     /// Cells drawn ahead within the current step (slot and copy as drawn); see
     /// [`CellSampler::draw`].
-    ahead: heapless::Vec<(usize, Cell<S>), AHEAD>,
+    ahead: [(usize, Cell<S>); AHEAD],
+    ahead_len: usize,
     ahead_pos: usize,
     /// The total weight the current batch was drawn from (0: no batch in this step yet).
     batch_weight: u64,
@@ -277,7 +296,8 @@ impl<'c, S: Scalar> CellSampler<'c, S> {
             origin: Point::new(S::ZERO, S::ZERO),
             geom: [LevelGeom::default(); CELL_LEVELS],
             slack: S::ZERO,
-            ahead: heapless::Vec::new(),
+            ahead: [(usize::MAX, Cell::default()); AHEAD],
+            ahead_len: 0,
             ahead_pos: 0,
             batch_weight: 0,
             step_inv: 0.0,

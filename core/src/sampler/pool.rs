@@ -212,7 +212,7 @@ impl<S: Scalar> CellSampler<'_, S> {
 
     /// Forgets the cells drawn ahead.
     pub(super) fn flush(&mut self) {
-        self.ahead.clear();
+        self.ahead_len = 0;
         self.ahead_pos = 0;
     }
 }

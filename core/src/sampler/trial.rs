@@ -88,7 +88,7 @@ impl<S: Scalar> CellSampler<'_, S> {
     /// valid": the accepted placement stays uniform. A cell that has moved or gone since it
     /// was drawn is tested without bookkeeping (see [`CellSampler::judge`]).
     pub(crate) fn draw<R: RngCore + ?Sized>(&mut self, rng: &mut R) -> Option<Drawn<S>> {
-        if self.ahead_pos >= self.ahead.len() {
+        if self.ahead_pos >= self.ahead_len {
             if self.estimating && self.batch_weight > 0 {
                 self.step_inv += self.ahead_pos as f64 / self.batch_weight as f64;
             }
@@ -111,15 +111,10 @@ impl<S: Scalar> CellSampler<'_, S> {
                 *slot = self.slot_of(r)?;
             }
             // The loads in a loop of their own, so that they are in flight together.
-            for &slot in slots.iter() {
-                let Some(cell) = self.pool.get(slot).map(Cell::load) else {
-                    // A batch is whole or absent: the next trial draws afresh.
-                    self.ahead.clear();
-                    return None;
-                };
-                // `slots` holds `AHEAD` entries, the batch's capacity: never full here.
-                let _ = self.ahead.push((slot, cell));
+            for (entry, &slot) in self.ahead.iter_mut().zip(slots.iter()) {
+                *entry = (slot, self.pool.get(slot).map(Cell::load)?);
             }
+            self.ahead_len = AHEAD;
         }
         let (slot, c) = self.ahead.get(self.ahead_pos).copied()?;
         self.ahead_pos += 1;

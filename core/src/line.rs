@@ -1,4 +1,5 @@
-//! The one-dimensional fill: segments in an interval (seed 001, Figure 3).
+//! The one-dimensional fill: segments in an interval (Shier and Bourke, "An Algorithm for
+//! Random Fractal Filling of Space", Figure 3).
 //!
 //! Segment `i` has length `L_i = L / (zeta(c, N) (i + N)^c)` in an interval `[0, L]`, so the
 //! lengths add up to `L`. Each trial draws one unit value `u` (see [`crate::internals::rng`]) and puts the
@@ -233,6 +234,20 @@ impl<'a, S: Scalar> LineHash<'a, S> {
 }
 
 /// The 1D fill engine over caller-provided storage.
+///
+/// ```
+/// use zetafill::{line_index_words, rng_from_seed, Interval, LineEngine, LineParams, LineStorage, Segment, Stop, StopReason};
+///
+/// let mut segments = [Segment::<f64>::default(); 50];
+/// let mut index = [0u32; line_index_words(50)];
+/// let storage = LineStorage { segments: &mut segments, index: &mut index };
+/// let interval = Interval { length: 100.0, periodic: false };
+/// let mut line = LineEngine::new(LineParams::new(1.4, 1.0), interval, storage)?;
+/// let stop = Stop { count: Some(50), ..Stop::default() };
+/// assert_eq!(line.run(&mut rng_from_seed(1), &stop, |_| {}), StopReason::Count);
+/// assert!(line.placed().iter().all(|s| s.start >= 0.0 && s.end() <= 100.0));
+/// # Ok::<(), zetafill::ParamError>(())
+/// ```
 #[derive(Debug)]
 pub struct LineEngine<'a, S: Scalar> {
     params: LineParams,

@@ -219,7 +219,7 @@ fn csv_and_digest_agree_with_json_and_the_core() {
         },
         |_| {},
     );
-    let (n, h) = zetafill::line::line_digest(&e);
+    let (n, h) = zetafill::internals::line::line_digest(&e);
     assert_eq!(out.trim(), format!("{n} {h:016x}"));
 }
 

@@ -258,8 +258,8 @@ fn incremental_repair_equals_the_rule_recomputed_from_scratch() {
         let seeds: Vec<Pt> = (0..30)
             .map(|_| {
                 [
-                    zetafill::rng::uniform(&mut rng, 0.0, 200.0),
-                    zetafill::rng::uniform(&mut rng, 0.0, 200.0),
+                    zetafill::internals::rng::uniform(&mut rng, 0.0, 200.0),
+                    zetafill::internals::rng::uniform(&mut rng, 0.0, 200.0),
                 ]
             })
             .collect();

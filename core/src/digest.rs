@@ -3,6 +3,22 @@
 //! unrotated), with `-0.0` written as `0.0` (a fixed-point scalar contributes its raw bits).
 //! Two runs agree bit for bit exactly when their digests and counts agree (up to FNV
 //! collisions). The host, the CLI (`--format digest`) and the firmware compute the same value.
+//!
+//! ```
+//! use zetafill::digest::engine_digest;
+//! use zetafill::{index_words, rng_from_seed, Engine, Params, Placed, Region, Stop, Storage};
+//!
+//! let mut shapes = [Placed::<f64>::default(); 10];
+//! let mut index = [0u32; index_words(10)];
+//! let storage = Storage { shapes: &mut shapes, index: &mut index, coverage: &mut [] };
+//! let region = Region::Rect { width: 200.0, height: 200.0, periodic: false };
+//! let mut engine = Engine::new(Params::circles(1.3, 1.0), region, storage)?;
+//! engine.run(&mut rng_from_seed(1), &Stop { count: Some(10), ..Stop::default() }, |_| {});
+//! let (count, hash) = engine_digest(&engine);
+//! assert_eq!(count, 10);
+//! # let _ = hash;
+//! # Ok::<(), zetafill::ParamError>(())
+//! ```
 
 use crate::engine::Engine;
 use crate::scalar::Scalar;

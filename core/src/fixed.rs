@@ -27,7 +27,7 @@
 //! - `from_f64`: the `fixed` crate's conversion, rounding to nearest, ties to even, saturating
 //!   (NaN gives 0); integer-only (it decodes the IEEE bits). `to_f64` is exact below 2^21 and
 //!   rounds to nearest otherwise.
-//! - `unit(bits)` (the [`crate::rng`] mapping): the top 32 of the 64 random bits are the
+//! - `unit(bits)` (the [`crate::internals::rng`] mapping): the top 32 of the 64 random bits are the
 //!   fraction, `u = (bits >> 32) · 2^-32`, in `[0, 1 - 2^-32]`.
 //! - `digest_bits`: the raw two's-complement bits as `u64` (there is no negative zero).
 //! - `floor_i64`: the integer part, `raw >> 32` (toward −∞).

@@ -1,37 +1,82 @@
 //! # zetafill
 //!
-//! Random fractal space filling after Shier & Bourke's "statistical geometry": a region of
-//! area `A` is filled with non-overlapping shapes whose areas follow the power law
-//! `A_i = A / (zeta(c, N) (i + N)^c)`, `i = 0, 1, 2, ...`, where `zeta` is the Hurwitz zeta
-//! function. Each shape is placed at a uniformly random position where it touches nothing.
+//! Random fractal space filling after Shier and Bourke ("An Algorithm for Random Fractal
+//! Filling of Space"; Bourke, "A space filling algorithm for generating procedural geometry and
+//! texture"): a region of area `A` is filled with non-overlapping shapes whose areas follow the
+//! power law `A_i = A / (zeta(c, N) (i + N)^c)`, `i = 0, 1, 2, ...`, where `zeta` is the
+//! Hurwitz zeta function ([`AreaSequence`]). Each shape is placed at a uniformly random
+//! position where it touches nothing.
+//!
+//! ```
+//! use zetafill::{index_words, rng_from_seed, Engine, Params, Placed, Region, Stop, StopReason, Storage};
+//!
+//! let mut shapes = [Placed::<f64>::default(); 100];
+//! let mut index = [0u32; index_words(100)];
+//! let storage = Storage { shapes: &mut shapes, index: &mut index, coverage: &mut [] };
+//! let region = Region::Rect { width: 200.0, height: 200.0, periodic: false };
+//! let mut engine = Engine::new(Params::circles(1.3, 1.0), region, storage)?;
+//! let stop = Stop { count: Some(100), ..Stop::default() };
+//! let reason = engine.run(&mut rng_from_seed(1), &stop, |p| {
+//!     let _ = (p.index, p.shape.x, p.shape.y, p.area, p.trials); // draw it here
+//! });
+//! assert_eq!(reason, StopReason::Count);
+//! assert_eq!(engine.placed().len(), 100);
+//! # Ok::<(), zetafill::ParamError>(())
+//! ```
+//!
+//! ## The public names
+//! - A fill: [`Engine`] over caller-owned [`Storage`] (sized with [`index_words`]), set up by
+//!   [`Params`] and a [`Region`] ([`PolygonRegion`] for outlines, [`RegionError`]), with shapes
+//!   from [`ShapeKind`] / [`ShapeList`] (mixes, [`MixOrder`]); each step gives a [`Placement`]
+//!   of a [`Placed`] shape, whose exact outline is a [`Geo`] of [`Point`]s.
+//! - Stopping and failing: [`Stop`], [`StopReason`], [`StepError`], [`ParamError`], [`Stats`].
+//! - Samplers: the paper's uniform sampler is [`Engine::step`]; the cell sampler
+//!   [`CellSampler`] (storage [`CellWords`], sized with [`cells_for`]) draws from exactly the
+//!   same distribution with far fewer trials ([`Engine::step_fast`]).
+//! - Before a fill: [`AreaSequence`] (the areas, zeta computed once), [`shape_capacity`] /
+//!   [`segment_capacity`] (the slots a stop condition needs), [`check_first_two`] and
+//!   [`first_shape`] (first shapes that cannot fit, with the largest c that works).
+//! - 1D: [`LineEngine`], [`LineParams`], [`Interval`], [`LineStorage`], [`Segment`].
+//! - Numbers and randomness: [`Scalar`] (`f64`, or [`Fixed`] for cores without an FPU),
+//!   [`rng_from_seed`] / [`ZetaRng`], and [`digest`] (the determinism digest).
+//!
+//! Everything else is under [`internals`]: not a stable API, there for zetafill's own crates
+//! (the command-line tool, the display and firmware crates, the tests and benchmarks).
 //!
 //! ## Layers
-//! - [`scalar`]: the number type geometry is written over (the only caller of `libm`);
-//! - [`fixed`](mod@fixed): [`Fixed`], the 32.32 fixed-point scalar for cores without an FPU;
-//! - [`zeta`]: Hurwitz zeta, partial sums, and a build-time table;
-//! - [`rng`]: the generator and the fixed mapping from random bits to numbers;
-//! - [`geom`], [`shape`], [`region`]: concrete shapes and their exact clearance tests;
-//! - [`spatial`]: the fixed-capacity multi-level spatial hash;
-//! - [`engine`]: parameters, the placement step, stop conditions, statistics;
-//! - [`sampler`]: the cell sampler, candidates only where the next shape could fit;
-//! - [`line`](mod@line): the 1D fill (segments in an interval) over its own 1D multi-level hash;
-//! - [`stats`]: the gasket width of the paper's Table 1, exact dimensions, power-law fits.
+//! - scalars: the number type geometry is written over (the only caller of `libm`), and the
+//!   32.32 fixed-point scalar;
+//! - zeta: Hurwitz zeta, partial sums, and a build-time table;
+//! - the generator and the fixed mapping from random bits to numbers;
+//! - geometry, shapes and regions, with exact clearance tests;
+//! - the fixed-capacity multi-level spatial hash and the coverage bitmap;
+//! - the engine (the paper's loop, then its optimisations) and the cell sampler;
+//! - the 1D fill over its own 1D multi-level hash;
+//! - statistics: the gasket width of the paper's Table 1, exact dimensions, power-law fits;
+//!   and the up-front checks ([`AreaSequence`], capacity, first-shape feasibility).
+//!
+//! ## Determinism contract
+//! - The same seed and parameters give the same bits on every target (x86-64, Cortex-M), for
+//!   each scalar. Floating-point maths goes only through IEEE basic operations and `libm`; no
+//!   fused multiply-add, no intrinsics, no hash-map iteration order. The generator
+//!   (xoshiro256++) and the mapping of its bits to coordinates and angles are fixed.
+//! - Prefix stability: the first `k` shapes of a seed never depend on how many are asked for.
+//! - The storage lent never changes a result, as long as it is large enough; nor does the
+//!   coverage bitmap.
+//! - Changing any produced value is a version-level event; [`digest`] pins them.
 //!
 //! ## Guarantees
-//! - `no_std`, no allocator: the caller owns every buffer ([`engine::Engine::new`] borrows a
-//!   shape slice and an index slice; see [`engine::index_words`]).
+//! - `no_std`, no allocator: the caller owns every buffer ([`Engine::new`] borrows a shape
+//!   slice and an index slice; see [`index_words`]).
 //! - No public function panics on any input: invalid input is an error value; running out of
 //!   storage and halting are error values with everything placed so far intact.
-//! - Determinism: the same seed and parameters give the same bits on every target (x86-64,
-//!   Cortex-M). Floating-point maths goes only through IEEE basic operations and `libm`; no
-//!   fused multiply-add, no intrinsics, no hash-map iteration order.
-//! - Prefix stability: the first `k` shapes of a seed never depend on how many are asked for.
+//! - With the `defmt` feature, the error types and key types derive `defmt::Format`.
 //!
 //! ## Memory
 //! A placed shape takes `size_of::<Placed<f64>>()` = 32 bytes plus 12 bytes of index
-//! (one link and two buckets), 44 bytes in all with the recommended [`engine::index_words`].
-//! The cell sampler ([`sampler`]) borrows a slice of 32-byte [`CellWords`] besides; circle fills
-//! of c = 1.3 hold at most about 15 of them per placed shape.
+//! (one link and two buckets), 44 bytes in all with the recommended [`index_words`].
+//! The cell sampler borrows a slice of 32-byte [`CellWords`] besides; circle fills of c = 1.3
+//! hold at most about 15 of them per placed shape.
 
 #![no_std]
 #![deny(missing_docs, unsafe_code)]
@@ -39,27 +84,91 @@
 // Unit tests may index and panic: a failing test should.
 #![cfg_attr(test, allow(clippy::unwrap_used, clippy::expect_used, clippy::panic, clippy::indexing_slicing))]
 
-pub mod coverage;
+mod coverage;
 pub mod digest;
-pub mod engine;
-pub mod fixed;
-pub mod geom;
-pub mod line;
-pub mod region;
-pub mod rng;
-pub mod sampler;
-pub mod scalar;
-pub mod shape;
-pub mod spatial;
-pub mod stats;
-pub mod zeta;
+mod engine;
+mod feasibility;
+mod fixed;
+mod geom;
+mod line;
+mod params;
+mod region;
+mod rng;
+mod sampler;
+mod scalar;
+mod shape;
+mod spatial;
+mod stats;
+mod zeta;
 
 pub use self::fixed::Fixed;
-pub use engine::{index_words, Engine, ParamError, Params, Placement, StepError, Stop, StopReason, Storage};
+pub use engine::{index_words, Engine, Placement, Stats, Storage};
+pub use feasibility::{
+    capacity, check_first_two, first_shape, first_two_fit, segment_capacity, shape_capacity, AreaSequence, CapacityError, FirstShape,
+    FirstTwoError,
+};
 pub use geom::{Geo, Point};
 pub use line::{line_index_words, Interval, LineEngine, LineParams, LinePlacement, LineStorage, Segment};
+pub use params::{ParamError, Params, StepError, Stop, StopReason};
 pub use region::{PolygonRegion, Region, RegionError};
 pub use rng::{rng_from_seed, ZetaRng};
-pub use sampler::{cells_for, CellSampler, CellStats, CellWords};
+pub use sampler::{cells_for, CellSampler, CellStats, CellWords, NoCells};
 pub use scalar::Scalar;
 pub use shape::{MixOrder, Placed, ShapeKind, ShapeList, MAX_MIX};
+pub use zeta::ZetaError;
+
+/// The building blocks under the public API, for zetafill's own crates (the command-line
+/// tool, the display and firmware crates, the tests and benchmarks).
+///
+/// **Not a stable API**: anything here may change or go in any release. A library user needs
+/// only the names at the crate root.
+pub mod internals {
+    /// The coverage bitmap that speeds up the reference sampler's rejections.
+    pub mod coverage {
+        pub use crate::coverage::*;
+    }
+    /// The 32.32 fixed-point scalar.
+    pub mod fixed {
+        pub use crate::fixed::*;
+    }
+    /// Points, concrete outlines and exact separation tests.
+    pub mod geom {
+        pub use crate::geom::*;
+    }
+    /// The 1D fill and its digest.
+    pub mod line {
+        pub use crate::line::*;
+    }
+    /// Regions and their clearance tests.
+    pub mod region {
+        pub use crate::region::*;
+    }
+    /// The generator and the fixed mapping from random bits to numbers.
+    pub mod rng {
+        pub use crate::rng::*;
+    }
+    /// The cell sampler's constants and counters.
+    pub mod sampler {
+        pub use crate::sampler::*;
+    }
+    /// The scalar trait and the libm functions it is written over.
+    pub mod scalar {
+        pub use crate::scalar::*;
+    }
+    /// Shape kinds, mixes and their geometry.
+    pub mod shape {
+        pub use crate::shape::*;
+    }
+    /// The fixed-capacity multi-level spatial hash.
+    pub mod spatial {
+        pub use crate::spatial::*;
+    }
+    /// The gasket width of the paper's Table 1, exact dimensions, power-law fits.
+    pub mod stats {
+        pub use crate::stats::*;
+    }
+    /// Hurwitz zeta, partial sums and the build-time table.
+    pub mod zeta {
+        pub use crate::zeta::*;
+    }
+}

@@ -1,7 +1,8 @@
-//! The one-dimensional fill: segments in an interval (seed 001, Figure 3).
+//! The one-dimensional fill: segments in an interval (Shier and Bourke, "An Algorithm for
+//! Random Fractal Filling of Space", Figure 3).
 //!
 //! Segment `i` has length `L_i = L / (zeta(c, N) (i + N)^c)` in an interval `[0, L]`, so the
-//! lengths add up to `L`. Each trial draws one unit value `u` (see [`crate::rng`]) and puts the
+//! lengths add up to `L`. Each trial draws one unit value `u` (see [`crate::internals::rng`]) and puts the
 //! segment's start at `lo + u (hi - lo)`: with an inclusive boundary `lo = gap`,
 //! `hi = L - gap - L_i` (the starts where the segment lies inside, at least `gap` from each
 //! end); with a periodic boundary (a circle of circumference `L`) `lo = 0`, `hi = L`, and a
@@ -10,7 +11,7 @@
 //! when `gap = 0`), exactly as in 2D.
 //!
 //! Placed segments are indexed by a one-dimensional version of the multi-level spatial hash of
-//! [`crate::spatial`]: level `l` cuts the interval into cells of length `L / 2^l`; a segment of
+//! [`crate::internals::spatial`]: level `l` cuts the interval into cells of length `L / 2^l`; a segment of
 //! length `len` lives at the finest level whose cells are at least `len` long, in the cell of
 //! its start. A query looks, level by level (coarsest first), at the two or three cells its
 //! reach can touch, so
@@ -24,7 +25,8 @@
 //! same bits on every target; the first `k` segments never depend on how many are asked for.
 
 use crate::digest::{add_shape, Fnv1a};
-use crate::engine::{ParamError, Stats, StepError, Stop, StopReason};
+use crate::engine::Stats;
+use crate::params::{ParamError, StepError, Stop, StopReason};
 use crate::rng;
 use crate::scalar::{powf, Scalar};
 use rand_core::RngCore;
@@ -37,6 +39,7 @@ const NIL: u32 = u32::MAX;
 
 /// The parameters of a 1D fill.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct LineParams {
     /// The power-law exponent c (> 1).
     pub c: f64,
@@ -67,6 +70,7 @@ impl LineParams {
 
 /// The interval `[0, length]`, inclusive or periodic.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct Interval {
     /// Length L, finite and > 0.
     pub length: f64,
@@ -230,6 +234,20 @@ impl<'a, S: Scalar> LineHash<'a, S> {
 }
 
 /// The 1D fill engine over caller-provided storage.
+///
+/// ```
+/// use zetafill::{line_index_words, rng_from_seed, Interval, LineEngine, LineParams, LineStorage, Segment, Stop, StopReason};
+///
+/// let mut segments = [Segment::<f64>::default(); 50];
+/// let mut index = [0u32; line_index_words(50)];
+/// let storage = LineStorage { segments: &mut segments, index: &mut index };
+/// let interval = Interval { length: 100.0, periodic: false };
+/// let mut line = LineEngine::new(LineParams::new(1.4, 1.0), interval, storage)?;
+/// let stop = Stop { count: Some(50), ..Stop::default() };
+/// assert_eq!(line.run(&mut rng_from_seed(1), &stop, |_| {}), StopReason::Count);
+/// assert!(line.placed().iter().all(|s| s.start >= 0.0 && s.end() <= 100.0));
+/// # Ok::<(), zetafill::ParamError>(())
+/// ```
 #[derive(Debug)]
 pub struct LineEngine<'a, S: Scalar> {
     params: LineParams,

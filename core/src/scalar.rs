@@ -38,7 +38,7 @@ pub trait Scalar:
     fn sin_cos(self) -> (Self, Self);
     /// Largest integer not above `self`, saturated to the `i64` range (NaN gives 0).
     fn floor_i64(self) -> i64;
-    /// A value uniform in `[0, 1)` made from 64 random bits (see [`crate::rng`]).
+    /// A value uniform in `[0, 1)` made from 64 random bits (see [`crate::internals::rng`]).
     fn unit(bits: u64) -> Self;
     /// The bits that identify this value in a digest, with `-0` written as `+0`.
     fn digest_bits(self) -> u64;

@@ -1,9 +1,9 @@
-//! The statistics of the papers: the dimensionless average gasket width `b(c, N, n)` (seed
-//! 001, section 4, eq. 8, Table 1), the exact fractal dimension, the hard limits on c set by
+//! The statistics of the papers: the dimensionless average gasket width `b(c, N, n)` (Shier
+//! and Bourke, "An Algorithm for Random Fractal Filling of Space", section 4, eq. 8, Table 1), the exact fractal dimension, the hard limits on c set by
 //! the first two shapes (section 3), and a least-squares fit for power laws.
 //!
 //! Everything is computed from the Hurwitz zeta function and its partial sums
-//! ([`crate::zeta`]), with `libm` only; nothing here allocates or panics.
+//! ([`crate::internals::zeta`]), with `libm` only; nothing here allocates or panics.
 //!
 //! ## The gasket width and its index convention
 //! Eq. 8 as printed sums over `i = 0..=n` and divides by the radius of circle `n + 1`. Table 1

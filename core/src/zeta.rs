@@ -20,6 +20,7 @@ include!(concat!(env!("OUT_DIR"), "/zeta_table.rs"));
 
 /// What was wrong with the arguments of a zeta computation.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub enum ZetaError {
     /// The exponent must be finite and greater than 1 (greater than 0 for partial sums).
     Exponent,
@@ -38,6 +39,8 @@ impl core::fmt::Display for ZetaError {
         }
     }
 }
+
+impl core::error::Error for ZetaError {}
 
 fn check_offset(a: f64) -> Result<(), ZetaError> {
     if a.is_finite() && a > 0.0 {

@@ -9,10 +9,10 @@
 
 use proptest::prelude::*;
 use proptest::test_runner::RngSeed;
-use zetafill::engine::{ParamError, StepError, Stop, StopReason};
-use zetafill::line::line_digest;
-use zetafill::zeta::hurwitz_zeta;
+use zetafill::internals::line::line_digest;
+use zetafill::internals::zeta::hurwitz_zeta;
 use zetafill::{line_index_words, rng_from_seed, Interval, LineEngine, LineParams, LineStorage, Segment};
+use zetafill::{ParamError, StepError, Stop, StopReason};
 
 // ---------------------------------------------------------------------------------------------
 // Checkers, written without the engine.

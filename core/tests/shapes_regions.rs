@@ -8,7 +8,7 @@
 
 mod common;
 
-use zetafill::geom::separated;
+use zetafill::internals::geom::separated;
 use zetafill::{
     index_words, rng_from_seed, CellSampler, Engine, Geo, Params, Placed, Point, PolygonRegion, Region, ShapeKind, Stop, StopReason,
     Storage,
@@ -161,7 +161,7 @@ fn disc_inside(kind: ShapeKind, area: f64, angle: f64, rho: f64) -> bool {
 #[test]
 fn inscribed_discs_lie_inside_their_shapes() {
     let mut rng = rng_from_seed(77);
-    let mut unit = || zetafill::rng::unit::<f64, _>(&mut rng);
+    let mut unit = || zetafill::internals::rng::unit::<f64, _>(&mut rng);
     for &kind in &KINDS {
         let Some(_) = kind.solid_radius(1.0f64) else {
             assert!(

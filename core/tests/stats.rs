@@ -5,8 +5,8 @@
 // The checks are written `!(a < b)` on purpose: a NaN must fail them.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
-use zetafill::stats::{exact_dimension, gasket_width, pair_limit, PairShape};
-use zetafill::zeta::{hurwitz_zeta, partial_sum};
+use zetafill::internals::stats::{exact_dimension, gasket_width, pair_limit, PairShape};
+use zetafill::internals::zeta::{hurwitz_zeta, partial_sum};
 
 /// Table 1 of seed 001: b(c, 1, n) for n = 10 ... 10^6 (rows) and c = 1.24, 1.32, 1.40, 1.48.
 const TABLE1_C: [f64; 4] = [1.24, 1.32, 1.40, 1.48];

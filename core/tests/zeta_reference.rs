@@ -4,7 +4,7 @@
 // Negated comparisons treat NaN as a failure; reference literals keep mpmath's digits.
 #![allow(clippy::neg_cmp_op_on_partial_ord, clippy::excessive_precision)]
 
-use zetafill::zeta::{self, hurwitz_zeta, partial_sum};
+use zetafill::internals::zeta::{self, hurwitz_zeta, partial_sum};
 
 const ZETA_CSV: &str = include_str!("data/zeta_reference.csv");
 const PARTIAL_CSV: &str = include_str!("data/partial_sum_reference.csv");

@@ -24,7 +24,7 @@ use embedded_graphics::pixelcolor::raw::{BigEndian, RawU1};
 use embedded_graphics::pixelcolor::BinaryColor;
 use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::{Circle, Line, PrimitiveStyle, Rectangle};
-use zetafill::geom::MAX_VERTS;
+use zetafill::internals::geom::MAX_VERTS;
 use zetafill::{Geo, Region, Scalar};
 
 /// Display width in pixels.
@@ -206,7 +206,7 @@ impl View {
         let chord = |r: f64, h: f64| {
             let q = r * r - h * h;
             if q > 0.0 {
-                Some(zetafill::scalar::sqrtf(q))
+                Some(zetafill::internals::scalar::sqrtf(q))
             } else {
                 None
             }
@@ -331,7 +331,7 @@ mod tests {
         );
         let mut f = Frame::new();
         let p = |x, y| Point::new(x, y);
-        let mut v = [p(0.0, 0.0); zetafill::geom::MAX_VERTS];
+        let mut v = [p(0.0, 0.0); zetafill::internals::geom::MAX_VERTS];
         v[..4].copy_from_slice(&[p(10.0, 10.0), p(20.0, 10.0), p(20.0, 20.0), p(10.0, 20.0)]);
         let sq = Geo::Poly { v, n: 4, convex: true };
         view.draw(&sq, &mut f).unwrap();

@@ -15,9 +15,9 @@
 
 use embedded_graphics::pixelcolor::BinaryColor;
 use embedded_graphics::prelude::*;
-use zetafill::region::{PolygonRegion, RegionError};
-use zetafill::shape::{MixOrder, ShapeList};
 use zetafill::{digest, CellSampler, CellWords, Engine, ParamError, Params, Point, Region, Scalar, ShapeKind, StepError, Storage};
+use zetafill::{MixOrder, ShapeList};
+use zetafill::{PolygonRegion, RegionError};
 
 use crate::draw::View;
 

@@ -219,7 +219,7 @@ proptest::proptest! {
             0 => Geo::Circle { c: p(c), r },
             1 => Geo::Ring { c: p(c), r, inner },
             _ => {
-                let mut v = [Point::new(0.0, 0.0); zetafill::geom::MAX_VERTS];
+                let mut v = [Point::new(0.0, 0.0); zetafill::internals::geom::MAX_VERTS];
                 for (slot, q) in v.iter_mut().zip(&vs) {
                     *slot = p(*q);
                 }

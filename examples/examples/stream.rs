@@ -59,6 +59,6 @@ fn inside(g: &Geo<f64>, x: f64, y: f64) -> bool {
             let d2 = (x - c.x).powi(2) + (y - c.y).powi(2);
             d2 <= r * r && d2 >= inner * inner
         }
-        Geo::Poly { .. } => zetafill::geom::point_in_poly(zetafill::Point::new(x, y), g.vertices()),
+        Geo::Poly { .. } => zetafill::internals::geom::point_in_poly(zetafill::Point::new(x, y), g.vertices()),
     }
 }

@@ -30,7 +30,7 @@ use semihosting::{eprintln, process};
 use zetafill::{Fixed, Placed, Scalar, Storage};
 use zetafill_display::draw::{Frame, PBM_HEADER};
 use zetafill_display::scenes::{
-    run, run_fast, ScalarKind, Scene, CAPACITY, FAST_CAPACITY, FAST_CELLS, FAST_INDEX_WORDS, INDEX_WORDS, SCENES,
+    run, run_fast, RunError, ScalarKind, Scene, CAPACITY, FAST_CAPACITY, FAST_CELLS, FAST_INDEX_WORDS, INDEX_WORDS, SCENES,
 };
 
 use board::{Board, CALIBRATION_INSTRUCTIONS};
@@ -117,6 +117,17 @@ impl Calibration {
     }
 }
 
+/// Logs a failed scene through defmt: the core's error values derive `defmt::Format` (its
+/// `defmt` feature), so the host decodes them without the firmware formatting any text.
+fn log_error<E>(scene: &str, e: &RunError<E>) {
+    match e {
+        RunError::Region(e) => defmt::error!("{=str}: invalid region: {}", scene, e),
+        RunError::Param(e) => defmt::error!("{=str}: invalid parameters: {}", scene, e),
+        RunError::Step(e) => defmt::error!("{=str}: {}", scene, e),
+        RunError::Draw(_) => defmt::error!("{=str}: the display refused a drawing", scene),
+    }
+}
+
 fn fail(msg: &str) -> ! {
     eprintln!("error {}", msg);
     process::exit(1)
@@ -138,6 +149,7 @@ fn run_scene<S: Scalar + Default>(scene: &Scene, board: &Board, cal: &Calibratio
         Ok(o) => o,
         Err(e) => {
             eprintln!("error {}: {}", scene.name, e);
+            log_error(scene.name, &e);
             return false;
         }
     };
@@ -180,6 +192,7 @@ fn run_scene_fast<S: Scalar + Default>(scene: &Scene, board: &Board, cal: &Calib
         Ok(o) => o,
         Err(e) => {
             eprintln!("error {}: {}", scene.name, e);
+            log_error(scene.name, &e);
             return false;
         }
     };

@@ -48,7 +48,8 @@ fn digest_detects_a_one_bit_change() {
     let mut d = zetafill::digest::Fnv1a::default();
     for (i, p) in shapes.iter().enumerate() {
         let x = if i == 7 { f64::from_bits(p.x.to_bits() ^ 1) } else { p.x };
-        let area = 40000.0 / (zetafill::zeta::zeta(1.3, 1.0).unwrap_or(1.0) * zetafill::scalar::powf(i as f64 + 1.0, 1.3));
+        let area =
+            40000.0 / (zetafill::internals::zeta::zeta(1.3, 1.0).unwrap_or(1.0) * zetafill::internals::scalar::powf(i as f64 + 1.0, 1.3));
         zetafill::digest::add_shape(&mut d, x, p.y, area, p.angle);
     }
     assert_ne!(d.finish(), h);

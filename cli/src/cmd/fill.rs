@@ -14,8 +14,8 @@ use crate::model::doc::{FillDoc, ParamsDoc, ShapeDoc, StatsDoc};
 use crate::output;
 use limits::check_known_limit;
 use region::RegionData;
-use zetafill::engine::{ParamError, StepError};
 use zetafill::{index_words, CellSampler, Engine, Geo, MixOrder, Params, Placed, Region, ShapeKind, Stop, StopReason, Storage};
+use zetafill::{ParamError, StepError};
 
 /// What a 2D run places.
 const SHAPES: Unit = Unit {
@@ -65,11 +65,11 @@ fn param_error(e: ParamError) -> CliError {
 /// How many shape slots the stop conditions can need (see [`stopping::capacity`]).
 fn capacity(params: &Params, area: f64, stop: &Stop) -> Result<u64, CliError> {
     let (c, n) = (params.c, params.n_offset);
-    let zeta = zetafill::zeta::zeta(c, n).map_err(|e| CliError::arg("--n-offset", e))?;
+    let zeta = zetafill::internals::zeta::zeta(c, n).map_err(|e| CliError::arg("--n-offset", e))?;
     // Shape k's width decreases with k.
     let width = |k: u64| {
         let kind = params.shape.kind_of(k);
-        kind.min_width(kind.scale_for_area(area / (zeta * zetafill::scalar::powf(k as f64 + n, c))))
+        kind.min_width(kind.scale_for_area(area / (zeta * zetafill::internals::scalar::powf(k as f64 + n, c))))
     };
     stopping::capacity(c, n, stop, SHAPES, width)
 }
@@ -89,7 +89,7 @@ fn halt_advice(index: u64) -> &'static str {
 /// Nothing is written: an output with no shape is no drawing.
 fn first_shape_error(params: &Params, area: f64, zeta: f64, halt: Option<u64>) -> CliError {
     let kind = params.shape.kind_of(0);
-    let a0 = area / (zeta * zetafill::scalar::powf(params.n_offset, params.c));
+    let a0 = area / (zeta * zetafill::internals::scalar::powf(params.n_offset, params.c));
     let width = kind.min_width(kind.scale_for_area(a0));
     let what = match halt {
         None => "does not fit the region".to_string(),
@@ -137,7 +137,7 @@ fn shape_doc(kind: &ShapeKind, geo: &Geo<f64>, p: &Placed<f64>, index: u64, area
 /// What a run of the engine produced, in f64 whatever the scalar.
 struct EngineRun {
     shapes: Vec<ShapeDoc>,
-    stats: zetafill::engine::Stats,
+    stats: zetafill::Stats,
     reason: StopReason,
     zeta: f64,
     area: f64,
@@ -154,7 +154,7 @@ fn geo_f64<S: zetafill::Scalar>(g: &Geo<S>) -> Geo<f64> {
             inner: inner.to_f64(),
         },
         Geo::Poly { v, n, convex } => {
-            let mut out = [zetafill::Point::new(0.0, 0.0); zetafill::geom::MAX_VERTS];
+            let mut out = [zetafill::Point::new(0.0, 0.0); zetafill::internals::geom::MAX_VERTS];
             for (o, p) in out.iter_mut().zip(v.iter()) {
                 *o = pt(*p);
             }

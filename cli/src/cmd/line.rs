@@ -17,8 +17,8 @@ use std::path::PathBuf;
 use svg::node::element::{ClipPath, Definitions, Description, Group, Line, Rectangle, Title};
 use svg::node::Text;
 use svg::Document;
-use zetafill::engine::{ParamError, StepError};
 use zetafill::{line_index_words, Interval, LineEngine, LineParams, LineStorage, Segment, Stop, StopReason};
+use zetafill::{ParamError, StepError};
 
 /// Largest number of segments one run may hold (28 bytes each in the core).
 pub const MAX_SEGMENTS: u64 = 10_000_000;
@@ -261,8 +261,8 @@ fn param_error(e: ParamError) -> CliError {
 
 /// How many segment slots the stop conditions can need (see [`stopping::capacity`]).
 fn capacity(c: f64, n: f64, length: f64, stop: &Stop) -> Result<u64, CliError> {
-    let zeta = zetafill::zeta::zeta(c, n).map_err(|e| CliError::arg("--n-offset", e))?;
-    let len = |k: u64| length / (zeta * zetafill::scalar::powf(k as f64 + n, c));
+    let zeta = zetafill::internals::zeta::zeta(c, n).map_err(|e| CliError::arg("--n-offset", e))?;
+    let len = |k: u64| length / (zeta * zetafill::internals::scalar::powf(k as f64 + n, c));
     stopping::capacity(c, n, stop, SEGMENTS, len)
 }
 
@@ -750,12 +750,12 @@ pub fn render_csv(doc: &LineDoc) -> Vec<u8> {
     s.into_bytes()
 }
 
-/// The digest line `COUNT HEX16` ([`zetafill::line::line_digest`]'s value).
+/// The digest line `COUNT HEX16` ([`zetafill::internals::line::line_digest`]'s value).
 pub fn render_digest(doc: &LineDoc) -> Vec<u8> {
     let mut h = zetafill::digest::Fnv1a::default();
     let (c, n, l, z) = (doc.params.c, doc.params.n_offset, doc.region.length, doc.zeta);
     for s in &doc.shapes {
-        let nominal = l / (z * zetafill::scalar::powf(s.index as f64 + n, c));
+        let nominal = l / (z * zetafill::internals::scalar::powf(s.index as f64 + n, c));
         zetafill::digest::add_shape(&mut h, s.start, 0.0, nominal, 0.0);
     }
     format!("{} {:016x}\n", doc.shapes.len(), h.finish()).into_bytes()

@@ -3,7 +3,7 @@
 
 use crate::error::CliError;
 use std::io::IsTerminal;
-use zetafill::engine::StepError;
+use zetafill::StepError;
 use zetafill::Stop;
 
 /// What a run places: `"shapes"` (2D) or `"segments"` (1D), with its limit per run.
@@ -30,7 +30,7 @@ pub fn stop(count: Option<u64>, fill: Option<f64>, min_size: Option<f64>) -> Sto
 /// cover `f` of the region); for `--min-size m` the first `k` whose width `width(k)`
 /// (decreasing in `k`) is below `m`. Each search doubles `k`, so it errs high by at most 2x.
 pub fn capacity(c: f64, n: f64, stop: &Stop, unit: Unit, width: impl Fn(u64) -> f64) -> Result<u64, CliError> {
-    let zeta = zetafill::zeta::zeta(c, n).map_err(|e| CliError::arg("--n-offset", e))?;
+    let zeta = zetafill::internals::zeta::zeta(c, n).map_err(|e| CliError::arg("--n-offset", e))?;
     // The smallest power of two at which `more` fails, or None past the unit's limit.
     let first_failing = |more: &dyn Fn(u64) -> bool| {
         let mut hi = 1u64;
@@ -42,7 +42,7 @@ pub fn capacity(c: f64, n: f64, stop: &Stop, unit: Unit, width: impl Fn(u64) -> 
     let mut need = stop.count.unwrap_or(u64::MAX);
     if let Some(f) = stop.fill {
         let target = (1.0 - f) * zeta;
-        let tail = |k: u64| zetafill::zeta::hurwitz_zeta(c, n + k as f64).unwrap_or(0.0);
+        let tail = |k: u64| zetafill::internals::zeta::hurwitz_zeta(c, n + k as f64).unwrap_or(0.0);
         let hi = first_failing(&|k| tail(k) > target).ok_or_else(|| {
             CliError::arg(
                 "--fill",
@@ -121,13 +121,13 @@ mod tests {
     #[test]
     fn capacity_covers_every_stop_condition() {
         let (c, n) = (1.3, 1.0);
-        let zeta = zetafill::zeta::zeta(c, n).expect("zeta");
+        let zeta = zetafill::internals::zeta::zeta(c, n).expect("zeta");
         // --count k: k slots and one to spare.
         assert_eq!(capacity(c, n, &stop(Some(77), None, None), UNIT, |_| 1.0).expect("capacity"), 78);
         // --fill f: the first cap - 1 pieces cover at least f, half as many do not.
         for f in [0.1, 0.5, 0.8] {
             let cap = capacity(c, n, &stop(None, Some(f), None), UNIT, |_| 1.0).expect("capacity");
-            let covered = |k: u64| 1.0 - zetafill::zeta::hurwitz_zeta(c, n + k as f64).expect("zeta") / zeta;
+            let covered = |k: u64| 1.0 - zetafill::internals::zeta::hurwitz_zeta(c, n + k as f64).expect("zeta") / zeta;
             assert!(covered(cap - 1) >= f, "f {f} cap {cap}");
             assert!(cap <= 2 || covered((cap - 1) / 2) < f, "f {f} cap {cap}");
         }

@@ -14,7 +14,7 @@
 use crate::error::CliError;
 use crate::model::doc::{FillDoc, ShapeDoc};
 use rayon::prelude::*;
-use zetafill::geom::{edges, point_in_poly, seg_dist2};
+use zetafill::internals::geom::{edges, point_in_poly, seg_dist2};
 use zetafill::Point;
 
 /// Samples per pixel along each axis.

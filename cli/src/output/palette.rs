@@ -2,7 +2,7 @@
 //! at random (fixed by the seed) or in turn, and a background colour.
 
 use crate::model::doc::FillDoc;
-use zetafill::shape::mix64;
+use zetafill::internals::shape::mix64;
 
 /// A colour as `#rrggbb` (lower case).
 pub type Colour = String;

@@ -17,6 +17,7 @@ use crate::scalar::Scalar;
 
 /// What is wrong with a polygon region.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub enum RegionError {
     /// A ring has fewer than 3 vertices, or the ring ends are not increasing.
     TooFewVertices,
@@ -39,7 +40,21 @@ impl core::fmt::Display for RegionError {
     }
 }
 
+impl core::error::Error for RegionError {}
+
 /// A validated polygonal region over caller-owned vertices.
+///
+/// ```
+/// use zetafill::{Point, PolygonRegion, Region};
+///
+/// // An L: a 100 x 100 square without its 60 x 60 upper right corner.
+/// let p = Point::new;
+/// let points = [p(0.0, 0.0), p(100.0, 0.0), p(100.0, 40.0), p(40.0, 40.0), p(40.0, 100.0), p(0.0, 100.0)];
+/// let ends = [points.len()];
+/// let region = Region::Polygon(PolygonRegion::new(&points, &ends)?);
+/// assert!((region.area() - 6400.0).abs() < 1e-9);
+/// # Ok::<(), zetafill::RegionError>(())
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct PolygonRegion<'a> {
     points: &'a [Point<f64>],

@@ -24,6 +24,7 @@ pub const MAX_MIX: usize = 8;
 
 /// A kind of shape, with its fixed proportions.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub enum ShapeKind {
     /// A disc.
     Circle,
@@ -77,6 +78,7 @@ pub struct Placed<S> {
 
 /// How a mix of shapes is taken.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub enum MixOrder {
     /// In turn: placement i gets kind i mod len (the paper's Figure 7).
     Cycle,
@@ -86,6 +88,7 @@ pub enum MixOrder {
 
 /// The shape, or mix of shapes, of a fill. The area sequence is the same whatever the mix.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct ShapeList {
     kinds: [ShapeKind; MAX_MIX],
     len: u8,

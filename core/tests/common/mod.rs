@@ -1,6 +1,9 @@
-//! Regions shared by the tests that run in every kind of region.
+//! Regions and buffers shared by the core's tests.
 
-use zetafill::{Point, PolygonRegion, Region};
+// Not every test crate that includes this module uses every helper.
+#![allow(dead_code)]
+
+use zetafill::{index_words, Params, Placed, Point, PolygonRegion, Region, ShapeKind, Storage};
 
 /// The outline of a ten-pointed star (radii 100 and 55 about (100, 100)) with a 20 mm square
 /// hole at its centre, as points and ring ends for [`PolygonRegion::new`].
@@ -39,4 +42,37 @@ pub fn every_kind(poly: PolygonRegion<'_>) -> [Region<'_>; 5] {
         Region::Annulus { outer: 90.0, inner: 35.0 },
         Region::Polygon(poly),
     ]
+}
+
+/// The shape and index buffers of an engine for `cap` shapes.
+pub struct Buffers<S> {
+    pub shapes: Vec<Placed<S>>,
+    pub index: Vec<u32>,
+}
+
+impl<S: zetafill::Scalar> Buffers<S> {
+    pub fn new(cap: usize) -> Self {
+        Buffers {
+            shapes: vec![Placed::<S>::default(); cap],
+            index: vec![0u32; index_words(cap)],
+        }
+    }
+
+    /// The storage, with a coverage bitmap or none.
+    pub fn storage<'a>(&'a mut self, coverage: &'a mut [u64]) -> Storage<'a, S> {
+        Storage {
+            shapes: &mut self.shapes,
+            index: &mut self.index,
+            coverage,
+        }
+    }
+}
+
+/// The parameters of the sampler tests: c = 1.3, N = 2, rotated where the kind rotates.
+pub fn params(kind: ShapeKind) -> Params {
+    let mut p = Params::circles(1.3, 2.0);
+    p.shape = kind.into();
+    p.rotate = kind.rotates();
+    p.max_trials = 10_000_000;
+    p
 }

@@ -45,10 +45,10 @@ pub(crate) fn check_known_limit(params: &Params, region: &Region<'_>) -> Result<
         return Ok(());
     }
     let fits = |c: f64| {
-        let Ok(z) = zetafill::zeta::zeta(c, params.n_offset) else {
+        let Ok(z) = zetafill::internals::zeta::zeta(c, params.n_offset) else {
             return false;
         };
-        let a = |i: f64| width * height / (z * zetafill::scalar::powf(i + params.n_offset, c));
+        let a = |i: f64| width * height / (z * zetafill::internals::scalar::powf(i + params.n_offset, c));
         first_two_fit(kind, a(0.0), a(1.0), *width, *height, params.gap)
     };
     if fits(params.c) {

@@ -93,7 +93,7 @@ fn holes_of(rings: &[&[zetafill::Point<f64>]]) -> Vec<bool> {
             let depth = rings
                 .iter()
                 .enumerate()
-                .filter(|(j, o)| *j != i && zetafill::geom::point_in_poly(probe, o))
+                .filter(|(j, o)| *j != i && zetafill::internals::geom::point_in_poly(probe, o))
                 .count();
             depth % 2 == 1
         })

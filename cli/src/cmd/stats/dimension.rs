@@ -455,7 +455,7 @@ pub fn estimate(set: &FillSet, c: f64, max_box: Option<f64>, min_box: Option<f64
         .filter(|b| b.used && b.count > 0)
         .map(|b| ((1.0 / b.size).ln(), (b.count as f64).ln()))
         .collect();
-    let d = zetafill::stats::least_squares(&pts).map(|(k, _)| k).ok_or_else(|| {
+    let d = zetafill::internals::stats::least_squares(&pts).map(|(k, _)| k).ok_or_else(|| {
         CliError::arg(
             "--min-box",
             format!("box sizes from {hi} down to {lo} mm give fewer than two levels; place more shapes or widen the range"),

@@ -94,7 +94,7 @@ pub fn chart_output(output: Option<&PathBuf>, format: Option<ChartFormat>, name:
 pub fn run(cmd: &StatsCommand) -> Result<(), CliError> {
     match cmd {
         StatsCommand::Zeta(a) => {
-            let z = zetafill::zeta::zeta(a.c, a.n_offset).map_err(|e| CliError::arg("--n-offset", e))?;
+            let z = zetafill::internals::zeta::zeta(a.c, a.n_offset).map_err(|e| CliError::arg("--n-offset", e))?;
             if a.json {
                 println!("{}", serde_json::json!({ "zeta": z, "c": a.c, "n_offset": a.n_offset }));
             } else {
@@ -103,7 +103,7 @@ pub fn run(cmd: &StatsCommand) -> Result<(), CliError> {
             Ok(())
         }
         StatsCommand::Gasket(a) => {
-            let b = zetafill::stats::gasket_width(a.c, a.n_offset, a.n).map_err(|e| CliError::arg("--n-offset", e))?;
+            let b = zetafill::internals::stats::gasket_width(a.c, a.n_offset, a.n).map_err(|e| CliError::arg("--n-offset", e))?;
             if a.json {
                 println!("{}", serde_json::json!({ "b": b, "c": a.c, "n_offset": a.n_offset, "n": a.n }));
             } else {

@@ -18,7 +18,7 @@ use clap::{Args, ValueEnum};
 use rayon::prelude::*;
 use std::fmt::Write as _;
 use std::path::PathBuf;
-use zetafill::engine::StepError;
+use zetafill::StepError;
 use zetafill::{cells_for, index_words, CellSampler, Engine, Params, Placed, Region, ShapeKind, Stop, StopReason, Storage};
 
 /// Rotation of non-circular shapes in the statistics runs.
@@ -256,7 +256,7 @@ fn fit(cum: &[(f64, f64)], from: f64) -> Option<(f64, f64)> {
         .filter(|p| p.0 >= from && p.1 > 0.0)
         .map(|p| (p.0.ln(), p.1.ln()))
         .collect();
-    zetafill::stats::least_squares(&pts).map(|(k, b)| (k, b.exp()))
+    zetafill::internals::stats::least_squares(&pts).map(|(k, b)| (k, b.exp()))
 }
 
 /// `zetafill stats trials`.

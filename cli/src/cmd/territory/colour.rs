@@ -6,7 +6,7 @@
 use super::model::Tri;
 use crate::geometry::voronoi::neighbours;
 use std::collections::VecDeque;
-use zetafill::rng::uniform;
+use zetafill::internals::rng::uniform;
 use zetafill::ZetaRng;
 
 /// A territory's colour rule: the seed's colour c^k and the step d^k per unit of distance.

@@ -553,7 +553,7 @@ pub fn compute(a: &TerritoryArgs) -> Result<Outcome, CliError> {
             let mut order: Vec<usize> = (0..n).collect();
             if a.site.is_empty() {
                 for i in 0..k {
-                    let j = i + (zetafill::rng::unit::<f64, _>(&mut rng) * (n - i) as f64) as usize;
+                    let j = i + (zetafill::internals::rng::unit::<f64, _>(&mut rng) * (n - i) as f64) as usize;
                     order.swap(i, j.min(n - 1));
                 }
             } else {
@@ -618,8 +618,8 @@ pub fn compute(a: &TerritoryArgs) -> Result<Outcome, CliError> {
                         return Err(CliError::arg("--region", "no seed could be drawn inside the region"));
                     }
                     let p = [
-                        zetafill::rng::uniform(&mut rng, bbox.0, bbox.2),
-                        zetafill::rng::uniform(&mut rng, bbox.1, bbox.3),
+                        zetafill::internals::rng::uniform(&mut rng, bbox.0, bbox.2),
+                        zetafill::internals::rng::uniform(&mut rng, bbox.1, bbox.3),
                     ];
                     if clip.inside(p) && !v.contains(&p) {
                         v.push(p);

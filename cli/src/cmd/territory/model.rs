@@ -38,7 +38,7 @@ use spade::handles::FixedVertexHandle;
 use spade::{DelaunayTriangulation, HierarchyHintGenerator, Point2, Triangulation};
 use std::collections::VecDeque;
 use std::fmt;
-use zetafill::rng::uniform;
+use zetafill::internals::rng::uniform;
 use zetafill::ZetaRng;
 
 /// The triangulation: positions only, with an O(log n) point-location hierarchy.

@@ -302,8 +302,8 @@ pub fn grow_with(spec: &TileSpec, mut progress: impl FnMut(u64)) -> Tile {
         if tries % PROGRESS_EVERY == 0 {
             progress(tries);
         }
-        let x = w * zetafill::rng::unit::<f64, _>(&mut rng);
-        let y = h * zetafill::rng::unit::<f64, _>(&mut rng);
+        let x = w * zetafill::internals::rng::unit::<f64, _>(&mut rng);
+        let y = h * zetafill::internals::rng::unit::<f64, _>(&mut rng);
         let r = spec.radius_at(y);
         let c = [x, y];
         let twin = y + r > h || y > h * (1.0 - spec.band);

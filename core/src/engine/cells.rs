@@ -1,0 +1,290 @@
+//! The engine as the cell sampler sees it ([`crate::CellSampler`]): the clearance the next shape
+//! needs at its centre, signed distances to placed shapes, the nearest shapes to a point, and
+//! the step that draws candidates from the sampler's live cells ([`Engine::step_fast`]).
+
+use super::{Engine, NextShape, Placement};
+use crate::geom::{edges, point_in_poly, seg_dist2, Point};
+use crate::params::{StepError, Stop, StopReason};
+use crate::region::Region;
+use crate::rng;
+use crate::sampler::{CellSampler, Drawn, Field, Verdict, NEAR, NONE};
+use crate::scalar::Scalar;
+use crate::shape::{Placed, ShapeKind};
+use rand_core::RngCore;
+
+/// The engine as the cell sampler sees it.
+struct FieldOf<'e, 'a, S: Scalar>(&'e Engine<'a, S>);
+
+impl<S: Scalar> Field<S> for FieldOf<'_, '_, S> {
+    fn edge(&self, p: Point<S>) -> S {
+        self.0.region.signed_clearance(p)
+    }
+
+    fn dist(&self, j: u32, p: Point<S>) -> S {
+        self.0.shape_dist(j, p)
+    }
+
+    fn disc(&self, j: u32, p: Point<S>) -> Option<(Point<S>, S)> {
+        self.0.disc(j, p)
+    }
+
+    fn gather(&self, c: Point<S>, reach: S, near: &mut [u32; NEAR]) {
+        self.0.gather(c, reach, near);
+    }
+}
+
+impl<S: Scalar> Engine<'_, S> {
+    /// The clearance the next shape needs at its centre: the radius of a disc about the
+    /// centre that it keeps free of other shapes and of the outside (its inscribed disc, at
+    /// the smallest scale it can take), plus the gap. `None` when no such disc exists: a ring
+    /// whose hole could hold an earlier shape or a hole of the region.
+    pub(super) fn clearance_needed(&self, next: &NextShape<S>) -> Option<S> {
+        let r = match next.kind {
+            ShapeKind::Ring { inner } => {
+                // Earlier shapes are larger than this ring's material, so none fits in a hole
+                // of at most that area.
+                let hole_small = inner * inner <= 1.0 - inner * inner;
+                let hole_r = next.base_scale * S::from_f64(inner);
+                let region_simple = match self.region {
+                    Region::Annulus { inner: hole, .. } => hole_r < S::from_f64(hole) + self.gap,
+                    Region::Polygon(p) => p.ring_ends().len() <= 1,
+                    _ => true,
+                };
+                if !(hole_small && region_simple) {
+                    return None;
+                }
+                next.base_scale
+            }
+            ShapeKind::Blob { delta } => {
+                // The smallest scale over all phases. A unit blob's vertices sit at equal
+                // angles 2 pi / n apart with radii r_k, so twice its area is
+                // sin(2 pi / n) sum r_k r_(k+1) <= sin(2 pi / n) sum r_k^2, and over n = 32
+                // samples the three harmonics are orthogonal: sum r_k^2 = n (1 + 1.5 delta^2)
+                // whatever the phases. (With a margin for rounding.)
+                let n = crate::shape::BLOB_VERTICES as f64;
+                let twice_area = n * libm::sin(core::f64::consts::TAU / n) * (1.0 + 1.5 * delta * delta) * (1.0 + 1e-6);
+                let min_scale = crate::scalar::sqrtf(2.0 * next.area / twice_area);
+                next.kind.inradius(S::from_f64(min_scale))
+            }
+            _ => next.kind.inradius(next.base_scale),
+        };
+        Some(r + self.gap)
+    }
+
+    /// When shape `j` is a circle, its centre in the periodic image nearest `p` (seen from
+    /// `p`) and its radius. None for other kinds: their inscribed discs give looser cell
+    /// bounds than their distances do.
+    pub(super) fn disc(&self, j: u32, p: Point<S>) -> Option<(Point<S>, S)> {
+        let s = self.shapes.get(j as usize)?;
+        if self.kind_of(u64::from(j)) != ShapeKind::Circle {
+            return None;
+        }
+        // `image_near` moves `p` next to the circle; the circle moves by the opposite shift.
+        let q = self.image_near(p, s);
+        Some((Point::new(s.x - (q.x - p.x), s.y - (q.y - p.y)), s.scale))
+    }
+
+    /// Replaces `near` by the [`NEAR`] shapes nearest to `c` by [`Engine::shape_dist`], among
+    /// those that come within `reach` of `c` (of one of its images, on a torus): the ones
+    /// `near` holds and the ones the spatial hash lists.
+    pub(super) fn gather(&self, c: Point<S>, reach: S, near: &mut [u32; NEAR]) {
+        // The shapes kept and their distances, in the order they were kept: a shape within
+        // `reach` is kept while there is room; then it takes the place of the first of the
+        // farthest kept if it is nearer.
+        let mut best: heapless::Vec<(S, u32), NEAR> = heapless::Vec::new();
+        let mut offer = |j: u32| {
+            if best.iter().any(|b| b.1 == j) {
+                return;
+            }
+            let d = self.shape_dist(j, c);
+            if d < reach && best.push((d, j)).is_err() {
+                let far = best.iter_mut().fold(None, |m: Option<&mut (S, u32)>, b| match m {
+                    Some(m) if m.0 >= b.0 => Some(m),
+                    _ => Some(b),
+                });
+                if let Some(f) = far.filter(|f| d < f.0) {
+                    *f = (d, j);
+                }
+            }
+        };
+        for &j in near.iter().filter(|&&j| j != NONE) {
+            offer(j);
+        }
+        let total = self.len as u32;
+        let periodic = self.region.periodic();
+        for (level, max_r) in self.hash.occupied() {
+            let rr = reach + max_r;
+            let mut look = |qx: S, qy: S| {
+                self.hash.query(level, [qx - rr, qy - rr, qx + rr, qy + rr], total, |j| {
+                    if let Some(p) = self.shapes.get(j as usize) {
+                        let contact = reach + self.kind_of(u64::from(j)).bounding_radius(p.scale);
+                        let (dx, dy) = (p.x - qx, p.y - qy);
+                        if dx * dx + dy * dy < contact * contact {
+                            offer(j);
+                        }
+                    }
+                    true
+                })
+            };
+            if !periodic {
+                look(c.x, c.y);
+            } else {
+                self.each_image(c.x, c.y, rr, |ox, oy| look(c.x + ox, c.y + oy));
+            }
+        }
+        let kept = best.iter().map(|b| b.1).chain(core::iter::repeat(NONE));
+        for (n, j) in near.iter_mut().zip(kept) {
+            *n = j;
+        }
+    }
+
+    /// `p`, or on a torus its copy nearest the centre of `s`.
+    pub(super) fn image_near(&self, p: Point<S>, s: &Placed<S>) -> Point<S> {
+        if !self.region.periodic() {
+            return p;
+        }
+        let (w, h) = self.period;
+        // Shift p by the period that brings it nearest to the shape's centre.
+        let shift = |a: S, c: S, m: S| {
+            let hm = m.half();
+            if a - c > hm {
+                -m
+            } else if c - a > hm {
+                m
+            } else {
+                S::ZERO
+            }
+        };
+        p.shift(shift(p.x, s.x, w), shift(p.y, s.y, h))
+    }
+
+    /// The signed distance from `p` to the material of placed shape `j` (in a periodic region,
+    /// to its image nearest to `p` by centre): negative inside. An upper bound of the distance
+    /// to the nearest image by material, which is all the cell sampler needs.
+    pub(super) fn shape_dist(&self, j: u32, p: Point<S>) -> S {
+        let Some(s) = self.shapes.get(j as usize) else {
+            return S::from_f64(f64::MAX);
+        };
+        let kind = self.kind_of(u64::from(j));
+        let q = self.image_near(p, s);
+        let centre = Point::new(s.x, s.y);
+        let dist = centre.dist2(q).sqrt();
+        match kind {
+            ShapeKind::Circle => dist - s.scale,
+            ShapeKind::Ring { inner } => {
+                let hole = s.scale * S::from_f64(inner);
+                if dist >= s.scale {
+                    dist - s.scale
+                } else if dist <= hole {
+                    hole - dist
+                } else {
+                    -(dist - hole).min(s.scale - dist)
+                }
+            }
+            _ => {
+                let g = kind.geo(centre, s.scale, s.angle);
+                let vs = g.vertices();
+                let m = edges(vs).fold(None, |m: Option<S>, (a, b)| {
+                    let d = seg_dist2(q, a, b);
+                    Some(m.map_or(d, |m| m.min(d)))
+                });
+                let d = m.unwrap_or(S::ZERO).sqrt();
+                if point_in_poly(q, vs) {
+                    -d
+                } else {
+                    d
+                }
+            }
+        }
+    }
+
+    /// Brings `cells` up to date for the next shape, as a step of [`Engine::step_fast`] does
+    /// before its first candidate: afterwards every centre where the next shape fits lies in
+    /// a live cell ([`CellSampler::live_boxes`]). Says whether the next shape is placed with
+    /// the cells (false when it falls back to the reference sampler, or none is left).
+    pub fn prepare_fast(&self, cells: &mut CellSampler<'_, S>) -> bool {
+        self.next_shape().ok().and_then(|next| self.prepare_cells(&next, cells)).is_some()
+    }
+
+    /// Lays out the grid on first use and wakes the cells for the next shape's clearance; none
+    /// when the shape has no clearance condition.
+    pub(super) fn prepare_cells(&self, next: &NextShape<S>, cells: &mut CellSampler<'_, S>) -> Option<S> {
+        let clearance = self.clearance_needed(next)?;
+        if !cells.ready() {
+            let (x0, y0, _, _) = self.region.bbox();
+            let (w, h) = self.period;
+            cells.init(S::from_f64(x0), S::from_f64(y0), w, h, &FieldOf(self));
+        }
+        cells.wake(clearance, self.len);
+        cells.begin_step();
+        Some(clearance)
+    }
+
+    /// Places the next shape with the cell sampler: the same distribution of accepted
+    /// placements as [`Engine::step`], far fewer trials late in a fill (see
+    /// [`crate::CellSampler`]). Halts at the trial limit, or at once when no cell can hold the
+    /// shape. Use one sampler per engine, for every step after the first that uses it.
+    pub fn step_fast<R: RngCore + ?Sized>(&mut self, cells: &mut CellSampler<'_, S>, rng: &mut R) -> Result<Placement<S>, StepError> {
+        let next = self.next_shape()?;
+        let Some(clearance) = self.prepare_cells(&next, cells) else {
+            let placed = self.step_reference(&next, rng);
+            if let Ok(p) = &placed {
+                cells.end_step_paper(p.trials);
+            }
+            return placed;
+        };
+        let mut trials = 0u64;
+        loop {
+            if trials >= self.params.max_trials || cells.is_empty() {
+                return Err(StepError::Halted { index: next.index, trials });
+            }
+            trials += 1;
+            self.trials = self.trials.saturating_add(1);
+            let Some(Drawn {
+                slot,
+                cell: drawn,
+                point: p,
+                quarter,
+            }) = cells.draw(rng)
+            else {
+                continue;
+            };
+            let angle = if next.rotated { rng::angle::<S, R>(rng) } else { S::ZERO };
+            let slot = match cells.judge(slot, &drawn, quarter, clearance, &FieldOf(self)) {
+                Verdict::Reject => continue,
+                Verdict::Test(s) => s,
+            };
+            let c = self.region.wrap(p);
+            let (x0, x1, y0, y1) = next.range;
+            if c.x < x0 || c.x > x1 || c.y < y0 || c.y > y1 {
+                cells.note_reject(slot, false);
+                continue;
+            }
+            let known = if slot == usize::MAX { drawn.near() } else { cells.known(slot) };
+            match self.try_at(&next, c, angle, trials, Some(&known)) {
+                Ok(placed) => {
+                    cells.learn(slot, next.index as u32, clearance, &FieldOf(self));
+                    cells.end_step(x1 - x0, y1 - y0);
+                    return Ok(placed);
+                }
+                Err(Some(j)) if known.contains(&j) => cells.note_reject(slot, true),
+                Err(Some(j)) => {
+                    cells.note_learned(slot);
+                    cells.learn(slot, j, clearance, &FieldOf(self));
+                }
+                Err(None) => cells.note_reject(slot, false),
+            }
+        }
+    }
+
+    /// [`Engine::run`] with the cell sampler ([`Engine::step_fast`]).
+    pub fn run_fast<R: RngCore + ?Sized>(
+        &mut self,
+        cells: &mut CellSampler<'_, S>,
+        rng: &mut R,
+        stop: &Stop,
+        on_place: impl FnMut(&Placement<S>),
+    ) -> StopReason {
+        self.run_with(stop, on_place, |e| e.step_fast(cells, rng))
+    }
+}

@@ -1,0 +1,375 @@
+//! The placement engine: the algorithm of Shier and Bourke ("An Algorithm for Random Fractal
+//! Filling of Space", section 2) over caller-owned storage.
+//!
+//! Shape `i` has area `A_i = A / (zeta(c, N) (i + N)^c)` (`AreaSequence`). The
+//! paper's loop is [`Engine::step`]: draw a candidate (an angle if the shape is rotated, then a
+//! centre uniform over the positions where the shape lies inside the region's box), test it,
+//! and place the shape at the first candidate that keeps more than `gap` from every placed
+//! shape (and its periodic images) and at least `gap` from the boundary. One step places one
+//! shape and reports how many trials it took, so a display can draw as the fill grows.
+//!
+//! The rest of this module only makes that loop fast without changing a single accepted
+//! placement:
+//! - `clearance`: the exact tests, through the spatial hash, with shortcuts (two circles,
+//!   inscribed discs that meet) whose answer never differs from the full test;
+//! - `fit`: what stays fixed over a placement's trials, and the shapes that certainly
+//!   cannot fit;
+//! - `cells`: the engine as the cell sampler sees it ([`crate::CellSampler`],
+//!   [`Engine::step_fast`]): same distribution of accepted placements, far fewer trials.
+//!
+//! The reference sampler may also consult a coverage bitmap (`coverage`)
+//! that rejects candidates whose centre is certainly inside a placed shape; it never rejects a
+//! valid one.
+//!
+//! Guarantees: same seed and parameters, same bits, on every target; the first `k` shapes
+//! never depend on how many are asked for later (each step uses only the RNG stream and the
+//! shapes before it); running out of storage, halting at the trial limit, and a first shape
+//! that cannot fit are error values, never panics.
+
+mod cells;
+mod clearance;
+mod fit;
+
+use crate::coverage::Coverage;
+use crate::geom::{Geo, Point};
+pub use crate::params::{ParamError, Params, StepError, Stop, StopReason};
+use crate::region::Region;
+use crate::rng;
+use crate::scalar::{powf, Scalar};
+use crate::shape::{Placed, ShapeKind};
+use crate::spatial::SpatialHash;
+use fit::NextShape;
+use rand_core::RngCore;
+
+/// One placement: the shape, its nominal area and the trials it took.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Placement<S> {
+    /// Placement index i (0 for the largest shape).
+    pub index: u64,
+    /// The shape as stored.
+    pub shape: Placed<S>,
+    /// A_i.
+    pub area: f64,
+    /// Trials spent on this placement (>= 1).
+    pub trials: u64,
+}
+
+/// Statistics of a fill so far.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct Stats {
+    /// Shapes placed.
+    pub placed: u64,
+    /// Trials made in all (including those of a halted placement).
+    pub trials: u64,
+    /// Sum of placed nominal areas over the region's area.
+    pub fill_fraction: f64,
+}
+
+impl Stats {
+    /// Average trials per placement (0 when nothing is placed).
+    pub fn trials_per_placement(&self) -> f64 {
+        if self.placed == 0 {
+            0.0
+        } else {
+            self.trials as f64 / self.placed as f64
+        }
+    }
+}
+
+/// The fill engine over caller-provided storage.
+#[derive(Debug)]
+pub struct Engine<'a, S: Scalar> {
+    params: Params,
+    region: Region<'a>,
+    shapes: &'a mut [Placed<S>],
+    len: usize,
+    hash: SpatialHash<'a, S>,
+    coverage: Coverage<'a, S>,
+    zeta: f64,
+    area: f64,
+    placed_area: f64,
+    trials: u64,
+    gap: S,
+    period: (S, S),
+}
+
+/// Index words needed for `capacity` shapes: one link each plus `2 * capacity` buckets.
+pub const fn index_words(capacity: usize) -> usize {
+    capacity * 3 + 1
+}
+
+/// The caller-owned storage of an engine.
+#[derive(Debug)]
+pub struct Storage<'a, S> {
+    /// One slot per shape: its length is the capacity.
+    pub shapes: &'a mut [Placed<S>],
+    /// The spatial hash: longer than `shapes` ([`index_words`] recommends the size; any
+    /// number of buckets works, fewer only make queries slower).
+    pub index: &'a mut [u32],
+    /// The coverage bitmap (see [`crate::internals::coverage`]); may be empty. It speeds up rejections
+    /// and never changes a result.
+    pub coverage: &'a mut [u64],
+}
+
+impl<'a, S: Scalar> Engine<'a, S> {
+    /// Validates the parameters and builds an engine over the caller's storage.
+    pub fn new(params: Params, region: Region<'a>, storage: Storage<'a, S>) -> Result<Self, ParamError> {
+        let Storage { shapes, index, coverage } = storage;
+        if !(params.c.is_finite() && params.c > 1.0) {
+            return Err(ParamError::Exponent);
+        }
+        if !(params.n_offset.is_finite() && params.n_offset > 0.0) {
+            return Err(ParamError::Offset);
+        }
+        if !params.shape.is_valid() {
+            return Err(ParamError::Shape);
+        }
+        if !region.is_valid() {
+            return Err(ParamError::Region);
+        }
+        let (w, h) = region.extent();
+        if !(params.gap.is_finite() && params.gap >= 0.0 && 2.0 * params.gap < w.min(h)) {
+            return Err(ParamError::Gap);
+        }
+        if params.max_trials == 0 {
+            return Err(ParamError::MaxTrials);
+        }
+        if shapes.is_empty() || index.len() <= shapes.len() {
+            return Err(ParamError::Storage);
+        }
+        let zeta = crate::zeta::zeta(params.c, params.n_offset).map_err(|_| ParamError::Zeta)?;
+        let (next, heads) = index.split_at_mut(shapes.len());
+        let hash = SpatialHash::new(heads, next, S::from_f64(w.max(h))).map_err(|_| ParamError::Storage)?;
+        let (x0, y0, _, _) = region.bbox();
+        let mut coverage = Coverage::new(
+            coverage,
+            Point::new(S::from_f64(x0), S::from_f64(y0)),
+            S::from_f64(w),
+            S::from_f64(h),
+        );
+        coverage.mark_outside(&region);
+        Ok(Engine {
+            params,
+            region,
+            shapes,
+            len: 0,
+            hash,
+            coverage,
+            zeta,
+            area: region.area(),
+            placed_area: 0.0,
+            trials: 0,
+            gap: S::from_f64(params.gap),
+            period: (S::from_f64(w), S::from_f64(h)),
+        })
+    }
+
+    /// The parameters.
+    pub fn params(&self) -> &Params {
+        &self.params
+    }
+
+    /// The region.
+    pub fn region(&self) -> &Region<'a> {
+        &self.region
+    }
+
+    /// zeta(c, N) used for the area sequence.
+    pub fn zeta(&self) -> f64 {
+        self.zeta
+    }
+
+    /// The region's area A.
+    pub fn total_area(&self) -> f64 {
+        self.area
+    }
+
+    /// A_i = A / (zeta(c, N) (i + N)^c).
+    pub fn area_of(&self, i: u64) -> f64 {
+        self.area / (self.zeta * powf(i as f64 + self.params.n_offset, self.params.c))
+    }
+
+    /// The shape kind of placement `i`.
+    #[inline]
+    pub fn kind_of(&self, i: u64) -> ShapeKind {
+        self.params.shape.kind_of(i)
+    }
+
+    /// The shapes placed so far, in placement order.
+    pub fn placed(&self) -> &[Placed<S>] {
+        self.shapes.get(..self.len).unwrap_or(&[])
+    }
+
+    /// The concrete geometry of placed shape `i`: exactly what was tested, and what to draw.
+    pub fn geo(&self, i: usize) -> Option<Geo<S>> {
+        let p = self.placed().get(i)?;
+        Some(self.kind_of(i as u64).geo(Point::new(p.x, p.y), p.scale, p.angle))
+    }
+
+    /// Statistics so far.
+    pub fn stats(&self) -> Stats {
+        Stats {
+            placed: self.len as u64,
+            trials: self.trials,
+            fill_fraction: self.placed_area / self.area,
+        }
+    }
+
+    /// Fraction of the region's bounding box marked in the coverage bitmap (0 without one).
+    pub fn coverage_fraction(&self) -> f64 {
+        self.coverage.marked_fraction()
+    }
+
+    /// The storage capacity in shapes.
+    pub fn capacity(&self) -> usize {
+        self.shapes.len()
+    }
+
+    // The paper's loop.
+
+    /// Places the next shape, drawing candidates from `rng` until one fits or the trial limit
+    /// is reached. On error nothing is placed and the engine may be stepped again.
+    pub fn step<R: RngCore + ?Sized>(&mut self, rng: &mut R) -> Result<Placement<S>, StepError> {
+        let next = self.next_shape()?;
+        self.step_reference(&next, rng)
+    }
+
+    /// The paper's sampler: candidates uniform over the whole centre range.
+    fn step_reference<R: RngCore + ?Sized>(&mut self, next: &NextShape<S>, rng: &mut R) -> Result<Placement<S>, StepError> {
+        let mut trials = 0u64;
+        loop {
+            if trials >= self.params.max_trials {
+                return Err(StepError::Halted { index: next.index, trials });
+            }
+            trials += 1;
+            self.trials = self.trials.saturating_add(1);
+            let angle = if next.rotated { rng::angle::<S, R>(rng) } else { S::ZERO };
+            let ux: S = rng::unit(rng);
+            let uy: S = rng::unit(rng);
+            let (x0, x1, y0, y1) = next.range;
+            let c = self.region.wrap(Point::new(x0 + ux * (x1 - x0), y0 + uy * (y1 - y0)));
+            if self.coverage.covered(c.x, c.y) {
+                continue;
+            }
+            if let Ok(p) = self.try_at(next, c, angle, trials, None) {
+                return Ok(p);
+            }
+        }
+    }
+
+    /// Runs the exact tests on a candidate centre and angle, and places the shape there if it
+    /// passes.
+    #[inline(always)]
+    /// On failure, names the placed shape the candidate hit when that was the reason.
+    /// The cell sampler passes `known`, the shapes its cell knows of: they are tested first, and
+    /// the shape named on failure does not depend on the hash table's size.
+    fn try_at(
+        &mut self,
+        next: &NextShape<S>,
+        c: Point<S>,
+        angle: S,
+        trials: u64,
+        known: Option<&[u32]>,
+    ) -> Result<Placement<S>, Option<u32>> {
+        let kind = next.kind;
+        // A circle against known circles needs no geometry: most of the cell sampler's
+        // rejections end here.
+        if kind == ShapeKind::Circle {
+            if let Some(&j) = known.unwrap_or(&[]).iter().find(|&&j| self.circles_meet(c, next.base_r, j)) {
+                return Err(Some(j));
+            }
+        }
+        let mut g = Geo::Circle { c, r: next.base_r };
+        let (scale, r, solid) = if next.is_blob {
+            let s: S = kind.scale_for(next.area, angle);
+            kind.geo_into(&mut g, c, s, angle);
+            (s, kind.bounding_radius(s), kind.solid_radius(s))
+        } else {
+            let (sin, cos) = if next.rotated {
+                ShapeKind::sin_cos(angle)
+            } else {
+                (S::ZERO, S::ONE)
+            };
+            kind.geo_sc_into(&mut g, c, next.base_scale, sin, cos);
+            (next.base_scale, next.base_r, next.base_solid)
+        };
+        // (Known circles were tested above for a circle.)
+        let tested = |j: u32| kind == ShapeKind::Circle && self.kind_of(u64::from(j)) == ShapeKind::Circle;
+        let mut other = Geo::Circle { c, r };
+        if let Some(&j) = known
+            .unwrap_or(&[])
+            .iter()
+            .find(|&&j| !tested(j) && self.hits(&g, c, (r, solid), j, &mut other))
+        {
+            return Err(Some(j));
+        }
+        if !self.region.contains(&g, self.gap) {
+            return Err(None);
+        }
+        let period = if self.region.periodic() { Some(self.period) } else { None };
+        if period.is_some() && self.self_overlaps(&g, r) {
+            return Err(None);
+        }
+        if let Some(j) = self.blocker(&g, c.x, c.y, (r, solid), known.is_some()) {
+            return Err(Some(j));
+        }
+        let i = self.len;
+        let shape = Placed {
+            x: c.x,
+            y: c.y,
+            scale,
+            angle,
+        };
+        if let Some(slot) = self.shapes.get_mut(i) {
+            *slot = shape;
+        }
+        self.hash.insert(i as u32, c.x, c.y, r);
+        // The cell sampler never asks the bitmap; a bitmap that misses shapes only rejects
+        // fewer candidates of the reference sampler, never a valid one.
+        if known.is_none() {
+            self.coverage.mark(&g, c, kind.inradius(scale), period);
+        }
+        self.len += 1;
+        self.placed_area += next.area;
+        Ok(Placement {
+            index: next.index,
+            shape,
+            area: next.area,
+            trials,
+        })
+    }
+
+    /// Steps until a stop condition holds or a step fails, calling `on_place` after each
+    /// placement.
+    pub fn run<R: RngCore + ?Sized>(&mut self, rng: &mut R, stop: &Stop, on_place: impl FnMut(&Placement<S>)) -> StopReason {
+        self.run_with(stop, on_place, |e| e.step(rng))
+    }
+
+    fn run_with(
+        &mut self,
+        stop: &Stop,
+        mut on_place: impl FnMut(&Placement<S>),
+        mut step: impl FnMut(&mut Self) -> Result<Placement<S>, StepError>,
+    ) -> StopReason {
+        loop {
+            let n = self.len as u64;
+            if stop.count.is_some_and(|k| n >= k) {
+                return StopReason::Count;
+            }
+            if stop.fill.is_some_and(|f| self.placed_area >= f * self.area) {
+                return StopReason::Fill;
+            }
+            if let Some(m) = stop.min_size {
+                let kind = self.kind_of(n);
+                if kind.min_width(kind.scale_for_area(self.area_of(n))) < m {
+                    return StopReason::MinSize;
+                }
+            }
+            match step(self) {
+                Ok(p) => on_place(&p),
+                Err(e) => return StopReason::Step(e),
+            }
+        }
+    }
+}

@@ -16,7 +16,13 @@ fn fill(args: &[&str]) -> zetafill_cli::model::doc::FillDoc {
     let zetafill_cli::Command::Fill(a) = cli.command else {
         panic!("not fill")
     };
-    zetafill_cli::cmd::fill::compute(&a).unwrap_or_else(|e| panic!("{e}")).0
+    zetafill_cli::cmd::fill::compute(
+        &zetafill_cli::plan::fill::resolve_as(&a, zetafill_cli::args::format::Format::Json)
+            .unwrap_or_else(|e| panic!("{e}"))
+            .0,
+    )
+    .unwrap_or_else(|e| panic!("{e}"))
+    .0
 }
 
 fn main() {

@@ -24,7 +24,11 @@ fn fill(args: &[&str]) -> zetafill_cli::model::doc::FillDoc {
     let zetafill_cli::Command::Fill(a) = cli.command else {
         panic!("not fill")
     };
-    match zetafill_cli::cmd::fill::compute(&a) {
+    match zetafill_cli::cmd::fill::compute(
+        &zetafill_cli::plan::fill::resolve_as(&a, zetafill_cli::args::format::Format::Json)
+            .unwrap_or_else(|e| panic!("{e}"))
+            .0,
+    ) {
         Ok((doc, _)) => doc,
         Err(e) => panic!("{e}"),
     }

@@ -12,6 +12,7 @@ pub mod geometry;
 pub mod io;
 pub mod model;
 pub mod output;
+pub mod plan;
 
 pub use args::{Cli, Command};
 use clap::Parser;
@@ -45,7 +46,7 @@ where
 /// Runs a parsed command.
 pub fn run(cli: Cli) -> Result<(), CliError> {
     match cli.command {
-        Command::Fill(a) => cmd::fill::run(&a),
+        Command::Fill(a) => cmd::fill::run(&plan::fill::resolve(&a)?),
         Command::Line(a) => cmd::line::run(&a),
         Command::Territory(a) => cmd::territory::run(&a),
         Command::Tile(a) => cmd::tile::run(&a),

@@ -20,7 +20,12 @@ fn fill_doc(args: &[&str]) -> FillDoc {
     let zetafill_cli::Command::Fill(f) = cli.command else {
         panic!("not fill")
     };
-    let (doc, halt) = fill::compute(&f).unwrap_or_else(|e| panic!("{e}"));
+    let (doc, halt) = fill::compute(
+        &zetafill_cli::plan::fill::resolve_as(&f, zetafill_cli::args::format::Format::Json)
+            .unwrap_or_else(|e| panic!("{e}"))
+            .0,
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
     assert!(halt.is_none());
     doc
 }

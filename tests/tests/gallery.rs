@@ -27,25 +27,28 @@ fn render(args_file: &Path) -> (PathBuf, Vec<u8>) {
         .command;
     if let zetafill_cli::Command::Tile(t) = command {
         let (_, bytes) = zetafill_cli::cmd::tile::output(&t).unwrap_or_else(|e| panic!("{}: {e}", args_file.display()));
-        return (gallery().join(&t.output), bytes);
+        return (gallery().join(&t.output.output), bytes);
     }
     if let zetafill_cli::Command::Territory(t) = command {
         let bytes = zetafill_cli::cmd::territory::output(&t).unwrap_or_else(|e| panic!("{}: {e}", args_file.display()));
-        return (gallery().join(&t.output), bytes);
+        return (gallery().join(&t.output.output), bytes);
     }
     if let zetafill_cli::Command::Line(l) = command {
         let (doc, halt) = zetafill_cli::cmd::line::compute(&l).unwrap_or_else(|e| panic!("{}: {e}", args_file.display()));
         assert!(halt.is_none(), "{} halted", args_file.display());
-        let format = zetafill_cli::args::format::Format::resolve(l.format, &l.output).unwrap_or(zetafill_cli::args::format::Format::Svg);
+        let format = zetafill_cli::args::format::Format::resolve(l.output.format, &l.output.output)
+            .unwrap_or(zetafill_cli::args::format::Format::Svg);
         let bytes = zetafill_cli::cmd::line::render(&doc, format, &l).unwrap_or_else(|e| panic!("{}: {e}", args_file.display()));
-        return (gallery().join(&l.output), bytes);
+        return (gallery().join(&l.output.output), bytes);
     }
     let a = parse_fill(&args);
-    let (doc, halt) = zetafill_cli::cmd::fill::compute(&a).unwrap_or_else(|e| panic!("{}: {e}", args_file.display()));
+    let format =
+        zetafill_cli::args::format::Format::resolve(a.output.format, &a.output.output).unwrap_or(zetafill_cli::args::format::Format::Svg);
+    let (run, draw) = zetafill_cli::plan::fill::resolve_as(&a, format).unwrap_or_else(|e| panic!("{}: {e}", args_file.display()));
+    let (doc, halt) = zetafill_cli::cmd::fill::compute(&run).unwrap_or_else(|e| panic!("{}: {e}", args_file.display()));
     assert!(halt.is_none(), "{} halted", args_file.display());
-    let format = zetafill_cli::args::format::Format::resolve(a.format, &a.output).unwrap_or(zetafill_cli::args::format::Format::Svg);
-    let bytes = zetafill_cli::cmd::fill::render(&doc, format, &a).unwrap_or_default();
-    (gallery().join(&a.output), bytes)
+    let bytes = zetafill_cli::cmd::fill::render(&doc, format, &draw).unwrap_or_default();
+    (gallery().join(&a.output.output), bytes)
 }
 
 #[test]

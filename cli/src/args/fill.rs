@@ -2,19 +2,15 @@
 //! the plotter, colour and raster groups flattened in.
 
 use crate::args::colour::ColourArgs;
+use crate::args::common::{MaxTrialsArgs, OutputArgs, PowerLawArgs, SeedArgs, StopArgs};
 use crate::args::format::Format;
 use crate::args::plot::PlotArgs;
 use crate::args::raster::{RasterArgs, ReliefArg};
 use crate::args::spec::{self, RegionSpec};
 use crate::args::style::StyleArg;
 use clap::{Args, ValueEnum};
-use std::path::PathBuf;
 
-/// Largest number of shapes one run may hold (52 bytes each in the core).
-pub const MAX_SHAPES: u64 = 20_000_000;
-
-/// The default of `--max-trials`.
-pub const DEFAULT_MAX_TRIALS: u64 = 10_000_000;
+pub use crate::args::common::{DEFAULT_MAX_TRIALS, MAX_SHAPES};
 
 /// Rotation of non-circular shapes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -104,33 +100,21 @@ pub struct FillArgs {
     /// Periodic (toroidal) boundary: the fill tiles seamlessly (rect regions only).
     #[arg(long)]
     pub periodic: bool,
-    /// Power-law exponent c > 1 (default 1.3).
-    #[arg(long, value_parser = spec::exponent, conflicts_with = "dimension", allow_negative_numbers = true)]
-    pub c: Option<f64>,
-    /// Fractal dimension D in (0, 2) instead of c (c = 2/D).
-    #[arg(long, value_parser = spec::dimension, allow_negative_numbers = true)]
-    pub dimension: Option<f64>,
-    /// The paper's N > 0: larger N makes the first shapes smaller.
-    #[arg(long = "n-offset", default_value_t = 1.0, value_parser = spec::positive, allow_negative_numbers = true)]
-    pub n_offset: f64,
-    /// Stop after K shapes (default 2000 when no stop condition is given).
-    #[arg(long, value_parser = clap::value_parser!(u64).range(1..=MAX_SHAPES))]
-    pub count: Option<u64>,
-    /// Stop once this fraction of the region is filled, 0 < F < 1.
-    #[arg(long, value_parser = spec::fraction, allow_negative_numbers = true)]
-    pub fill: Option<f64>,
-    /// Stop before the first shape narrower than MM.
-    #[arg(long = "min-size", value_parser = spec::positive, allow_negative_numbers = true)]
-    pub min_size: Option<f64>,
+    /// The power law.
+    #[command(flatten)]
+    pub power: PowerLawArgs,
+    /// The stop conditions.
+    #[command(flatten)]
+    pub stop: StopArgs,
     /// Minimum clearance between shapes and to the boundary, in mm.
     #[arg(long, default_value_t = 0.0, value_parser = spec::non_negative, allow_negative_numbers = true)]
     pub gap: f64,
-    /// Trial limit per placement; reaching it halts the fill (exit 3).
-    #[arg(long = "max-trials", default_value_t = DEFAULT_MAX_TRIALS, value_parser = clap::value_parser!(u64).range(1..))]
-    pub max_trials: u64,
-    /// RNG seed.
-    #[arg(long, default_value_t = 1)]
-    pub seed: u64,
+    /// The trial limit.
+    #[command(flatten)]
+    pub max_trials: MaxTrialsArgs,
+    /// The seed.
+    #[command(flatten)]
+    pub seed: SeedArgs,
     /// Candidate sampler: fast (cells where the next shape could fit) or reference (the
     /// paper's uniform search); both give the same distribution of placements.
     #[arg(long, value_enum, default_value = "fast")]
@@ -138,13 +122,9 @@ pub struct FillArgs {
     /// Number type of the engine: f64 or fixed (32.32 fixed point).
     #[arg(long, value_enum, default_value = "f64")]
     pub scalar: ScalarArg,
-    /// Output path; the format comes from the extension (.svg .png .json .csv .gcode/.nc);
-    /// '-' is stdout.
-    #[arg(short = 'o', long)]
-    pub output: PathBuf,
-    /// Output format (overrides the extension).
-    #[arg(long, value_enum)]
-    pub format: Option<Format>,
+    /// Where the output goes.
+    #[command(flatten)]
+    pub output: OutputArgs<Format>,
     /// SVG: outline (plotters) or filled.
     #[arg(long, value_enum, default_value = "outline")]
     pub style: StyleArg,

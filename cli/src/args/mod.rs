@@ -1,15 +1,21 @@
-//! The command line as clap parses it: the top-level parser and its subcommands, and the
-//! parsers of flag values ([`spec`]).
+//! The command line as clap parses it, and nothing else: the top-level parser, one module
+//! of flags per subcommand, the flag groups several share ([`common`]), and the parsers of
+//! flag values ([`spec`]).
 
 pub mod colour;
+pub mod common;
 pub mod fill;
 pub mod format;
+pub mod line;
+pub mod machines;
 pub mod plot;
 pub mod raster;
 pub mod spec;
+pub mod stats;
 pub mod style;
+pub mod territory;
+pub mod tile;
 
-use crate::cmd::{line, machines, stats, territory, tile};
 use clap::{Parser, Subcommand};
 
 /// Random fractal space filling (Shier and Bourke's statistical geometry): fills, 1D fills,

@@ -1,13 +1,11 @@
 //! The plotter and laser flags (`--machine`, feeds, power, hatch, order, pages, layers), one
 //! group flattened into every command that draws lines, and their conversion into the plain
-//! options of the writers ([`gcode::GcodeOptions`], [`SvgOptions`], [`BuildOptions`]).
+//! options of the writers ([`gcode::GcodeOptions`], [`BuildOptions`]).
 
 use crate::error::CliError;
-use crate::model::doc::FillDoc;
-use crate::model::{place, Bounds, Fit};
+use crate::model::Fit;
 use crate::output::drawing::BuildOptions;
 use crate::output::order::PathOrder;
-use crate::output::svg::{Style, SvgOptions};
 use crate::output::{gcode, hatch, machine};
 use clap::{Args, ValueEnum};
 
@@ -424,97 +422,6 @@ impl PlotArgs {
                     short / 2.0
                 ),
             ));
-        }
-        Ok(o)
-    }
-
-    /// Checks every flag that can be checked before the fill runs, for `format`: each plot
-    /// flag given must be one that `format` reads.
-    pub fn check(&self, format: crate::args::format::Format) -> Result<(), CliError> {
-        use crate::args::format::Format;
-        self.build_options()?;
-        match format {
-            Format::Gcode => self.check_gcode()?,
-            Format::Svg | Format::Png => {
-                self.refuse_except(&SVG_FLAGS, |_| FOR_GCODE.to_string())?;
-                if (self.fit || self.center || self.margin.is_some()) && self.page.is_none() {
-                    let flag = if self.fit {
-                        "--fit"
-                    } else if self.center {
-                        "--center"
-                    } else {
-                        "--margin"
-                    };
-                    return Err(CliError::arg(
-                        flag,
-                        "for SVG it needs --page (without a page the drawing is the region itself)",
-                    ));
-                }
-            }
-            other => {
-                let name = clap::ValueEnum::to_possible_value(&other).map_or_else(String::new, |v| v.get_name().to_string());
-                self.refuse_except(&[], |_| format!("is for drawings (svg, png, gcode), not {name} output"))?
-            }
-        }
-        Ok(())
-    }
-
-    /// SVG options from the fill's flags and these: page layout and layers.
-    pub fn svg_options(&self, doc: &FillDoc, style: Style, pen_width: f64, boundary: bool) -> Result<SvgOptions, CliError> {
-        let mut o = SvgOptions {
-            style,
-            pen_width,
-            boundary,
-            page: None,
-            layers: None,
-            build: self.build_options()?,
-            flags: format!(
-                " --style {}{}{}{}",
-                style.name(),
-                if pen_width == 0.3 {
-                    String::new()
-                } else {
-                    format!(" --pen-width {pen_width}")
-                },
-                if boundary { " --boundary" } else { "" },
-                self.flags()
-            ),
-            colours: None,
-            background: None,
-            colour_layers: None,
-        };
-        if let Layers::SizeBands(k) = self.layers {
-            o.layers = Some(k);
-        }
-        if let Some(page) = self.page {
-            let m = self.margin.unwrap_or(10.0);
-            if 2.0 * m >= page.width.min(page.height) {
-                return Err(CliError::arg(
-                    "--margin",
-                    format!("{m} mm leaves no room on a {} x {} mm page", page.width, page.height),
-                ));
-            }
-            let (x0, y0, x1, y1) = doc.bbox();
-            // The page frame here has y up from the page's bottom edge.
-            let area = Bounds {
-                x0: m,
-                y0: m,
-                x1: page.width - m,
-                y1: page.height - m,
-            };
-            let pl = place(&Bounds { x0, y0, x1, y1 }, &area, self.fit(Fit::TopLeft)).map_err(|e| {
-                CliError::arg(
-                    "--page",
-                    format!("{e}; use --fit to scale it, or a larger --page or smaller --margin"),
-                )
-            })?;
-            o.page = Some(crate::output::svg::PageLayout {
-                width: page.width,
-                height: page.height,
-                scale: pl.scale,
-                dx: pl.dx,
-                dy: pl.dy,
-            });
         }
         Ok(o)
     }

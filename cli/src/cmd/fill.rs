@@ -3,19 +3,18 @@
 pub mod limits;
 pub mod region;
 
-use crate::args::fill::{FillArgs, MixArg, Rotate, Sampler, ScalarArg, DEFAULT_MAX_TRIALS, MAX_SHAPES};
+use crate::args::fill::MAX_SHAPES;
 use crate::args::format::Format;
-use crate::args::spec::{self, RegionSpec};
-use crate::args::style::StyleArg;
+use crate::args::spec;
 use crate::cmd::stopping::{self, Unit};
 use crate::error::CliError;
-use crate::io::write::Dest;
 use crate::model::doc::{FillDoc, ParamsDoc, ShapeDoc, StatsDoc};
 use crate::output;
+use crate::plan::fill::{first_shape_error, halt_advice, param_error, FillDraw, FillPlan, FillRun};
 use limits::check_known_limit;
 use region::RegionData;
-use zetafill::{index_words, CellSampler, Engine, Geo, MixOrder, Params, Placed, Region, ShapeKind, Stop, StopReason, Storage};
-use zetafill::{ParamError, StepError};
+use zetafill::StepError;
+use zetafill::{index_words, CellSampler, Engine, Geo, Params, Placed, Region, ShapeKind, Stop, StopReason, Storage};
 
 /// What a 2D run places.
 const SHAPES: Unit = Unit {
@@ -25,42 +24,6 @@ const SHAPES: Unit = Unit {
 
 /// Words of the coverage bitmap (2 MiB): a 4096 x 4096 grid.
 const COVERAGE_WORDS: usize = 1 << 18;
-
-impl FillArgs {
-    /// The exponent c, from `--c`, `--dimension` or the default 1.3.
-    pub fn c(&self) -> f64 {
-        match (self.c, self.dimension) {
-            (Some(c), _) => c,
-            (None, Some(d)) => Params::c_from_dimension(d),
-            (None, None) => 1.3,
-        }
-    }
-
-    fn rotate(&self) -> bool {
-        match self.rotate {
-            Some(r) => r == Rotate::Random,
-            None => self.shape.rotates(),
-        }
-    }
-
-    fn stop(&self) -> Stop {
-        stopping::stop(self.count, self.fill, self.min_size)
-    }
-}
-
-/// Names the flag behind a core parameter error.
-fn param_error(e: ParamError) -> CliError {
-    let flag = match e {
-        ParamError::Exponent => "--c",
-        ParamError::Offset | ParamError::Zeta => "--n-offset",
-        ParamError::Shape => "--shape",
-        ParamError::Region => "--region",
-        ParamError::Gap => "--gap",
-        ParamError::MaxTrials => "--max-trials",
-        ParamError::Storage => "--count",
-    };
-    CliError::arg(flag, e)
-}
 
 /// How many shape slots the stop conditions can need (see [`stopping::capacity`]).
 fn capacity(params: &Params, area: f64, stop: &Stop) -> Result<u64, CliError> {
@@ -72,45 +35,6 @@ fn capacity(params: &Params, area: f64, stop: &Stop) -> Result<u64, CliError> {
         kind.min_width(kind.scale_for_area(area / (zeta * zetafill::internals::scalar::powf(k as f64 + n, c))))
     };
     stopping::capacity(c, n, stop, SHAPES, width)
-}
-
-/// Advice for a halt at placement `index` (at least 1: a halt at the first placement is
-/// [`first_shape_error`]).
-fn halt_advice(index: u64) -> &'static str {
-    if index < 100 {
-        "the first shapes left no room for this one: lower --c, raise --n-offset, or try another --seed"
-    } else {
-        "raise --max-trials, lower --c, or ask for fewer shapes"
-    }
-}
-
-/// The usage error of a fill that cannot place its first shape: `halt` is `None` when the
-/// core knows the shape is too large for the region, or the trials spent before giving up.
-/// Nothing is written: an output with no shape is no drawing.
-fn first_shape_error(params: &Params, area: f64, zeta: f64, halt: Option<u64>) -> CliError {
-    let kind = params.shape.kind_of(0);
-    let a0 = area / (zeta * zetafill::internals::scalar::powf(params.n_offset, params.c));
-    let width = kind.min_width(kind.scale_for_area(a0));
-    let what = match halt {
-        None => "does not fit the region".to_string(),
-        Some(t) if t < params.max_trials => "does not fit anywhere in the region".to_string(),
-        Some(t) => format!("never fit in the region ({t} trials found no place for it)"),
-    };
-    let mut advice = String::from("lower --c or raise --n-offset (a smaller first shape)");
-    if params.gap > 0.0 {
-        advice.push_str(", lower --gap");
-    }
-    advice.push_str(" or use a larger --region");
-    if halt.is_some_and(|t| t >= params.max_trials && params.max_trials < DEFAULT_MAX_TRIALS) {
-        advice.push_str("; if it does fit, raise --max-trials");
-    }
-    CliError::arg(
-        "--c",
-        format!(
-            "the first {} ({width:.4} mm wide, area {a0:.4} mm²) {what}; {advice}",
-            spec::kind_name(&kind)
-        ),
-    )
 }
 
 /// The concrete geometry of a placed shape as a [`ShapeDoc`].
@@ -165,7 +89,7 @@ fn geo_f64<S: zetafill::Scalar>(g: &Geo<S>) -> Geo<f64> {
 
 /// Runs the engine on scalar `S` with the CLI's storage, progress bar and known-limit check.
 fn run_engine<S: zetafill::Scalar>(
-    a: &FillArgs,
+    a: &FillRun,
     params: Params,
     region: Region<'_>,
     stop: &Stop,
@@ -174,7 +98,7 @@ fn run_engine<S: zetafill::Scalar>(
     let mut shapes = vec![Placed::<S>::default(); cap];
     let mut index = vec![0u32; index_words(cap)];
     // Only the paper's sampler asks the coverage bitmap (the cell sampler never does).
-    let mut coverage = vec![0u64; if a.sampler == Sampler::Reference { COVERAGE_WORDS } else { 0 }];
+    let mut coverage = vec![0u64; if a.reference_sampler { COVERAGE_WORDS } else { 0 }];
     let storage = Storage {
         shapes: &mut shapes,
         index: &mut index,
@@ -191,16 +115,15 @@ fn run_engine<S: zetafill::Scalar>(
             b.inc(1);
         }
     };
-    let reason = match a.sampler {
-        Sampler::Reference => engine.run(&mut rng, stop, on_place),
-        Sampler::Fast => {
-            // Enough cells that only the sampler's own budget limits it: the shapes of a seed
-            // then do not depend on the count asked for. Zeroed memory: the system maps only
-            // the pages the sampler writes.
-            let mut pool = vec![[0u64; 4]; zetafill::cells_for(cap)];
-            let mut cells = CellSampler::new(&mut pool).map_err(|_| CliError::Io("internal: no cells for the fast sampler".into()))?;
-            engine.run_fast(&mut cells, &mut rng, stop, on_place)
-        }
+    let reason = if a.reference_sampler {
+        engine.run(&mut rng, stop, on_place)
+    } else {
+        // Enough cells that only the sampler's own budget limits it: the shapes of a seed
+        // then do not depend on the count asked for. Zeroed memory: the system maps only
+        // the pages the sampler writes.
+        let mut pool = vec![[0u64; 4]; zetafill::cells_for(cap)];
+        let mut cells = CellSampler::new(&mut pool).map_err(|_| CliError::Io("internal: no cells for the fast sampler".into()))?;
+        engine.run_fast(&mut cells, &mut rng, stop, on_place)
     };
     if let Some(b) = &bar {
         b.finish_and_clear();
@@ -234,23 +157,16 @@ fn run_engine<S: zetafill::Scalar>(
 
 /// Runs the fill and returns the document (and the halt, if any, after at least one
 /// placement: a first shape that finds no place is a usage error). Nothing is written.
-pub fn compute(a: &FillArgs) -> Result<(FillDoc, Option<StepError>), CliError> {
+pub fn compute(a: &FillRun) -> Result<(FillDoc, Option<StepError>), CliError> {
     let data = RegionData::load(&a.region)?;
     let region = data.region(a.periodic)?;
-    let order = mix_order(a.mix_order);
-    let params = Params {
-        c: a.c(),
-        n_offset: a.n_offset,
-        shape: a.shape.list(order, a.seed),
-        rotate: a.rotate(),
-        gap: a.gap,
-        max_trials: a.max_trials,
-    };
-    let stop = a.stop();
+    let params = a.params;
+    let stop = a.stop;
     let cap = capacity(&params, region.area(), &stop)? as usize;
-    let run = match a.scalar {
-        ScalarArg::F64 => run_engine::<f64>(a, params, region, &stop, cap)?,
-        ScalarArg::Fixed => run_engine::<zetafill::Fixed>(a, params, region, &stop, cap)?,
+    let run = if a.fixed_point {
+        run_engine::<zetafill::Fixed>(a, params, region, &stop, cap)?
+    } else {
+        run_engine::<f64>(a, params, region, &stop, cap)?
     };
     let EngineRun {
         shapes: shapes_doc,
@@ -277,11 +193,11 @@ pub fn compute(a: &FillArgs) -> Result<(FillDoc, Option<StepError>), CliError> {
             c: params.c,
             n_offset: params.n_offset,
             seed: a.seed,
-            shape: a.shape.name(),
-            rotate: if params.rotate && a.shape.rotates() { "random" } else { "none" },
-            mix_order: (a.shape.0.len() > 1).then(|| a.mix_order.name()),
-            sampler: a.sampler.name(),
-            scalar: a.scalar.name(),
+            shape: a.names.shape.clone(),
+            rotate: a.names.rotate,
+            mix_order: a.names.mix_order,
+            sampler: a.names.sampler,
+            scalar: a.names.scalar,
             gap: params.gap,
             count: stop.count,
             fill: stop.fill,
@@ -305,170 +221,114 @@ pub fn compute(a: &FillArgs) -> Result<(FillDoc, Option<StepError>), CliError> {
     Ok((doc, halt))
 }
 
-/// The core's mix order.
-fn mix_order(m: MixArg) -> MixOrder {
-    match m {
-        MixArg::Cycle => MixOrder::Cycle,
-        MixArg::Random => MixOrder::Random,
-    }
-}
-
-/// The SVG options of the drawing flags, colours included.
-fn svg_options(doc: &FillDoc, a: &FillArgs) -> Result<output::svg::SvgOptions, CliError> {
-    let mut o = a.plot.svg_options(doc, a.style.into(), a.pen_width, a.boundary)?;
-    if let Some(p) = &a.colour.palette {
-        o.colours = Some(shape_colours(doc, a, &p.0));
-        if a.plot.layers == crate::args::plot::Layers::Colours {
-            o.colour_layers = Some(p.0.clone());
-        }
-    } else if a.plot.layers == crate::args::plot::Layers::Colours {
-        return Err(colours_need_palette());
-    }
-    o.flags.push_str(&a.colour.flags());
-    o.background.clone_from(&a.colour.background);
-    Ok(o)
-}
-
-fn colours_need_palette() -> CliError {
-    CliError::arg(
-        "--layers",
-        "colours makes one layer (one pen) per --palette colour: give --palette, or use size-bands:K",
-    )
+/// The SVG options of the drawing, colours included.
+fn svg_options(doc: &FillDoc, d: &FillDraw) -> Result<output::svg::SvgOptions, CliError> {
+    let flags = format!(
+        " --style {}{}{}{}",
+        d.style.name(),
+        if d.pen_width == 0.3 {
+            String::new()
+        } else {
+            format!(" --pen-width {}", d.pen_width)
+        },
+        if d.boundary { " --boundary" } else { "" },
+        d.plot_flags
+    );
+    let page = match &d.page {
+        Some(p) => Some(p.layout(doc.bbox())?),
+        None => None,
+    };
+    Ok(output::svg::SvgOptions {
+        style: d.style,
+        pen_width: d.pen_width,
+        boundary: d.boundary,
+        page,
+        layers: d.size_layers,
+        build: d.build,
+        flags: flags + &d.colour_flags,
+        colours: d.palette.as_ref().map(|p| shape_colours(doc, d, &p.0)),
+        background: d.background.clone(),
+        colour_layers: d.palette.as_ref().filter(|_| d.colour_layers).map(|p| p.0.clone()),
+    })
 }
 
 /// Each shape's colour from `palette` by the `--color-by` rule.
-fn shape_colours(doc: &FillDoc, a: &FillArgs, palette: &[output::palette::Colour]) -> Vec<output::palette::Colour> {
+fn shape_colours(doc: &FillDoc, d: &FillDraw, palette: &[output::palette::Colour]) -> Vec<output::palette::Colour> {
     // The mix entry of each shape, as the engine chose it.
-    let list = a.shape.list(mix_order(a.mix_order), a.seed);
     let entry = |i: u64| {
-        let kind = list.kind_of(i);
-        list.kinds().iter().position(|k| *k == kind).unwrap_or(0)
+        let kind = d.shapes.kind_of(i);
+        d.shapes.kinds().iter().position(|k| *k == kind).unwrap_or(0)
     };
-    output::palette::assign(doc, palette, a.colour.by(), entry)
+    output::palette::assign(doc, palette, d.color_by, entry)
 }
 
 /// How `--voronoi` draws the cobblestones: edges, or cells filled in their shapes' colours.
-fn cobble_look(doc: &FillDoc, a: &FillArgs) -> crate::cmd::cobble::Look {
-    let filled = a.style == StyleArg::Filled;
-    let mut flags = format!(" --pen-width {}", output::num(a.pen_width, 4));
+fn cobble_look(doc: &FillDoc, d: &FillDraw) -> crate::cmd::cobble::Look {
+    let filled = d.style == output::svg::Style::Filled;
+    let mut flags = format!(" --pen-width {}", output::num(d.pen_width, 4));
     if filled {
         flags.push_str(" --style filled");
     }
-    if a.boundary {
+    if d.boundary {
         flags.push_str(" --boundary");
     }
-    flags.push_str(&a.colour.flags());
+    flags.push_str(&d.colour_flags);
     crate::cmd::cobble::Look {
         filled,
-        pen_width: a.pen_width,
-        outline: a.boundary,
-        colours: a.colour.palette.as_ref().map(|p| shape_colours(doc, a, &p.0)),
-        background: a.colour.background.clone(),
+        pen_width: d.pen_width,
+        outline: d.boundary,
+        colours: d.palette.as_ref().map(|p| shape_colours(doc, d, &p.0)),
+        background: d.background.clone(),
         flags,
     }
 }
 
+/// The G-code plan of a drawing that has none (it was resolved for another format).
+fn no_gcode() -> CliError {
+    CliError::Io("internal: G-code asked of a plan resolved for another format".into())
+}
+
 /// Renders a document in a format.
-pub fn render(doc: &FillDoc, format: Format, a: &FillArgs) -> Result<Vec<u8>, CliError> {
-    if a.voronoi {
-        let look = cobble_look(doc, a);
+pub fn render(doc: &FillDoc, format: Format, d: &FillDraw) -> Result<Vec<u8>, CliError> {
+    if d.voronoi {
+        let look = cobble_look(doc, d);
         return match format {
-            Format::Svg => crate::cmd::cobble::svg(doc, &look),
-            Format::Png => a.raster.raster().render(&crate::cmd::cobble::svg(doc, &look)?),
-            _ => Err(CliError::arg(
-                "--voronoi",
-                "cobblestones are drawn as SVG or PNG; write .svg or .png, or drop --voronoi",
-            )),
+            Format::Png => d.raster.render(&crate::cmd::cobble::svg(doc, &look)?),
+            _ => crate::cmd::cobble::svg(doc, &look),
         };
     }
     Ok(match format {
-        Format::Svg => output::svg::render(doc, &svg_options(doc, a)?),
-        Format::Gcode => match (&a.colour.palette, a.plot.layers) {
-            (Some(p), crate::args::plot::Layers::Colours) => {
-                let colours = shape_colours(doc, a, &p.0);
-                crate::cmd::plot::render_gcode_pens(doc, &a.plot, Some((&colours, &p.0, a.colour.flags())), a.quiet)?
+        Format::Svg => output::svg::render(doc, &svg_options(doc, d)?),
+        Format::Gcode => {
+            let gcode = d.gcode.as_ref().ok_or_else(no_gcode)?;
+            match (&d.palette, d.colour_layers) {
+                (Some(p), true) => {
+                    let colours = shape_colours(doc, d, &p.0);
+                    crate::cmd::plot::render_gcode_pens(doc, gcode, Some((&colours, &p.0, d.colour_flags.clone())), d.quiet)?
+                }
+                _ => crate::cmd::plot::render_gcode(doc, gcode, d.quiet)?,
             }
-            (None, crate::args::plot::Layers::Colours) => return Err(colours_need_palette()),
-            _ => crate::cmd::plot::render_gcode(doc, &a.plot, a.quiet)?,
-        },
+        }
         Format::Json => output::json::render(doc)?,
         Format::Csv => output::csv::render(doc),
         Format::Digest => output::digest::render(doc),
-        Format::Png => match a.relief {
+        Format::Png => match d.relief {
             Some(relief) => {
-                let relief: output::height::Relief = relief.into();
-                let command = format!(
-                    "{} --relief {}{}",
-                    output::svg::command_line(doc),
-                    relief.name(),
-                    a.raster.raster().flag()
-                );
-                output::height::render(doc, relief, output::height::grid(doc.extent(), &a.raster.raster())?, &command)?
+                let command = format!("{} --relief {}{}", output::svg::command_line(doc), relief.name(), d.raster.flag());
+                output::height::render(doc, relief, output::height::grid(doc.extent(), &d.raster)?, &command)?
             }
             None => {
-                let svg = output::svg::render(doc, &svg_options(doc, a)?);
-                a.raster.raster().render(&svg)?
+                let svg = output::svg::render(doc, &svg_options(doc, d)?);
+                d.raster.render(&svg)?
             }
         },
     })
 }
 
-/// `zetafill fill`.
-pub fn run(a: &FillArgs) -> Result<(), CliError> {
-    let dest = Dest::parse(&a.output);
-    let mut inputs: Vec<&std::path::Path> = a.plot.machine_file().into_iter().collect();
-    if let RegionSpec::Svg(p) = &a.region {
-        inputs.push(p.as_path());
-    }
-    dest.check("--output", &inputs)?;
-    let format = Format::resolve(a.format, &a.output)?;
-    // Plotter flags (machine profile, feeds, power, hatch, page) are checked before the fill
-    // runs; the bed check needs the drawing and happens in render().
-    if a.voronoi {
-        a.plot.refuse_except(&[], |_| {
-            "is not available with --voronoi (cobblestones are drawn at the region's size)".to_string()
-        })?;
-    }
-    if format != Format::Png && a.relief.is_some() {
-        return Err(crate::output::png::only_png("--relief"));
-    }
-    a.raster.check(format == Format::Png)?;
-    // A palette also picks the pens of a G-code plot with --layers colours.
-    let pens = format == Format::Gcode && a.plot.layers == crate::args::plot::Layers::Colours && a.colour.background.is_none();
-    a.colour.check(
-        (matches!(format, Format::Svg | Format::Png) && a.relief.is_none()) || pens,
-        "write .svg or .png, without --relief (or G-code with --layers colours, without --background)",
-        false,
-    )?;
-    if a.plot.layers == crate::args::plot::Layers::Colours && a.colour.palette.is_none() {
-        return Err(colours_need_palette());
-    }
-    if a.voronoi && a.colour.palette.is_some() && a.style != StyleArg::Filled {
-        return Err(CliError::arg(
-            "--palette",
-            "cobblestone outlines are edges, each shared by two cells; add --style filled to colour the cells",
-        ));
-    }
-    if a.relief.is_some() {
-        if a.voronoi {
-            return Err(CliError::arg(
-                "--relief",
-                "a height map is made of the shapes, not of cobblestones: drop --voronoi",
-            ));
-        }
-        a.plot.refuse_except(&[], |_| {
-            "is not available with --relief (a height map has no page or layers)".to_string()
-        })?;
-    }
-    a.plot.check(format)?;
-    if a.plot.hatch.is_some() && a.style == StyleArg::Filled && matches!(format, Format::Svg | Format::Png) {
-        return Err(CliError::arg(
-            "--hatch",
-            "draws lines, which filled shapes would hide: use --style outline",
-        ));
-    }
-    let (doc, halt) = compute(a)?;
-    let bytes = render(&doc, format, a)?;
-    dest.write(&bytes)?;
+/// `zetafill fill`: runs the plan and writes its output.
+pub fn run(plan: &FillPlan) -> Result<(), CliError> {
+    let (doc, halt) = compute(&plan.run)?;
+    let bytes = render(&doc, plan.format, &plan.draw)?;
+    plan.dest.write(&bytes)?;
     stopping::outcome(halt, SHAPES, halt_advice)
 }

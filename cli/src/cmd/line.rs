@@ -3,25 +3,22 @@
 //! its outputs: SVG (dashes, circles, bars or zoom rows), PNG, JSON, CSV and the digest.
 
 use crate::args::format::Format;
-use crate::args::spec;
-use crate::args::style::StyleArg;
+pub use crate::args::line::LineArgs;
 use crate::cmd::stopping::{self, Unit};
 use crate::error::CliError;
 use crate::io::write::Dest;
 use crate::output::num;
 use crate::output::svg::Style;
-use clap::{Args, ValueEnum};
+use clap::ValueEnum;
 use serde::Serialize;
 use std::fmt::Write as _;
-use std::path::PathBuf;
 use svg::node::element::{ClipPath, Definitions, Description, Group, Line, Rectangle, Title};
 use svg::node::Text;
 use svg::Document;
 use zetafill::{line_index_words, Interval, LineEngine, LineParams, LineStorage, Segment, Stop, StopReason};
 use zetafill::{ParamError, StepError};
 
-/// Largest number of segments one run may hold (28 bytes each in the core).
-pub const MAX_SEGMENTS: u64 = 10_000_000;
+pub use crate::args::line::MAX_SEGMENTS;
 
 /// What a 1D run places.
 const SEGMENTS: Unit = Unit {
@@ -40,124 +37,6 @@ pub enum Render {
     Bars,
     /// Rows of circles, each zooming into the central `--zoom-fraction` of the row above.
     Zoom,
-}
-
-/// Arguments of `zetafill line`. Only its G-code reads the plotter flags, and it has no pages
-/// or layers: their help says so, and `--page` and `--layers` are left out of it.
-#[derive(Debug, Args)]
-#[command(
-    mut_arg("page", |a| a.hide(true)),
-    mut_arg("layers", |a| a.hide(true)),
-    mut_arg("fit", |a| a.help("G-code: scale the drawing to fill the bed less --margin, centred")),
-    mut_arg("center", |a| a.help("G-code: centre the drawing on the bed")),
-    mut_arg("margin", |a| a.help("G-code: keep-out border of the bed in mm [default: 0]")),
-    mut_arg("hatch", |a| a.help("G-code: hatch bars and circles, SPACING[:ANGLE] in mm and degrees (default angle 45)")),
-    mut_arg("min_feature", |a| a.help("G-code: leave out segments shorter than MM (the pen's or beam's width)")),
-)]
-pub struct LineArgs {
-    /// Length L of the interval in mm.
-    #[arg(long, default_value_t = 200.0, value_parser = spec::positive, allow_negative_numbers = true)]
-    pub length: f64,
-    /// Periodic boundary: the interval is a circle, a segment running past L continues at 0.
-    #[arg(long)]
-    pub periodic: bool,
-    /// Power-law exponent c > 1 (default 1.4; about 2.7 is the 1D maximum with N = 1).
-    #[arg(long, value_parser = spec::exponent, conflicts_with = "dimension", allow_negative_numbers = true)]
-    pub c: Option<f64>,
-    /// Fractal dimension D in (0, 1) instead of c (c = 1/D).
-    #[arg(long, value_parser = dimension_1d, allow_negative_numbers = true)]
-    pub dimension: Option<f64>,
-    /// The paper's N > 0: larger N makes the first segments shorter.
-    #[arg(long = "n-offset", default_value_t = 1.0, value_parser = spec::positive, allow_negative_numbers = true)]
-    pub n_offset: f64,
-    /// Stop after K segments (default 2000 when no stop condition is given).
-    #[arg(long, value_parser = clap::value_parser!(u64).range(1..=MAX_SEGMENTS))]
-    pub count: Option<u64>,
-    /// Stop once this fraction of the interval is filled, 0 < F < 1.
-    #[arg(long, value_parser = spec::fraction, allow_negative_numbers = true)]
-    pub fill: Option<f64>,
-    /// Stop before the first segment shorter than MM.
-    #[arg(long = "min-size", value_parser = spec::positive, allow_negative_numbers = true)]
-    pub min_size: Option<f64>,
-    /// Minimum clearance between segments and to the ends, in mm.
-    #[arg(long, default_value_t = 0.0, value_parser = spec::non_negative, allow_negative_numbers = true)]
-    pub gap: f64,
-    /// Trial limit per placement; reaching it halts the fill (exit 3).
-    #[arg(long = "max-trials", default_value_t = 10_000_000, value_parser = clap::value_parser!(u64).range(1..))]
-    pub max_trials: u64,
-    /// RNG seed.
-    #[arg(long, default_value_t = 1)]
-    pub seed: u64,
-    /// Output path; the format comes from the extension (.svg .png .json .csv .gcode/.nc);
-    /// '-' is stdout.
-    #[arg(short = 'o', long)]
-    pub output: PathBuf,
-    /// Output format (overrides the extension).
-    #[arg(long, value_enum)]
-    pub format: Option<Format>,
-    /// SVG: how segments are drawn.
-    #[arg(long, value_enum, default_value = "circles")]
-    pub render: Render,
-    /// SVG: circles as outlines (plotters) or filled (dashes are strokes, bars always filled).
-    #[arg(long, value_enum, default_value = "outline")]
-    pub style: StyleArg,
-    /// SVG: stroke width in mm (dashes and outlines).
-    #[arg(long = "pen-width", default_value_t = 0.3, value_parser = spec::positive, allow_negative_numbers = true)]
-    pub pen_width: f64,
-    /// SVG `bars`: bar height in mm.
-    #[arg(long = "bar-height", default_value_t = 10.0, value_parser = spec::positive, allow_negative_numbers = true)]
-    pub bar_height: f64,
-    /// SVG `zoom`: number of rows (the first shows the whole interval).
-    #[arg(long = "zoom-rows", default_value_t = 4, value_parser = clap::value_parser!(u32).range(1..=12))]
-    pub zoom_rows: u32,
-    /// SVG `zoom`: each row shows this central fraction of the row above (Figure 3: 0.05).
-    #[arg(long = "zoom-fraction", default_value_t = 0.05, value_parser = spec::fraction, allow_negative_numbers = true)]
-    pub zoom_fraction: f64,
-    /// SVG `zoom`: the point (mm from the left end) the rows zoom into (default: the middle).
-    #[arg(long = "zoom-center", value_parser = spec::non_negative, allow_negative_numbers = true)]
-    pub zoom_center: Option<f64>,
-    /// SVG: also mark the ends of the interval.
-    #[arg(long)]
-    pub boundary: bool,
-    /// Colours (SVG/PNG).
-    #[command(flatten)]
-    pub colour: crate::args::colour::ColourArgs,
-    /// PNG size.
-    #[command(flatten)]
-    pub raster: crate::args::raster::RasterArgs,
-    /// No progress bar.
-    #[arg(short, long)]
-    pub quiet: bool,
-    /// Plotter and laser flags (G-code output).
-    #[command(flatten)]
-    pub plot: crate::args::plot::PlotArgs,
-}
-
-/// The fractal dimension D in 1D: 0 < D < 1 (so that c = 1/D > 1).
-pub fn dimension_1d(s: &str) -> Result<f64, String> {
-    let v = spec::finite(s)?;
-    if v > 0.0 && v < 1.0 {
-        Ok(v)
-    } else {
-        Err(format!(
-            "the dimension of a 1D fill must be between 0 and 1, exclusive (got {s}); c = 1/D"
-        ))
-    }
-}
-
-impl LineArgs {
-    /// The exponent c, from `--c`, `--dimension` or the default 1.4.
-    pub fn c(&self) -> f64 {
-        match (self.c, self.dimension) {
-            (Some(c), _) => c,
-            (None, Some(d)) => LineParams::c_from_dimension(d),
-            (None, None) => 1.4,
-        }
-    }
-
-    fn stop(&self) -> Stop {
-        stopping::stop(self.count, self.fill, self.min_size)
-    }
 }
 
 /// A finished (or halted) 1D fill: DESIGN section 3's JSON with `"mode": "line"`.
@@ -269,10 +148,10 @@ fn capacity(c: f64, n: f64, length: f64, stop: &Stop) -> Result<u64, CliError> {
 /// Runs the fill and returns the document (and the halt, if any). Nothing is written.
 pub fn compute(a: &LineArgs) -> Result<(LineDoc, Option<StepError>), CliError> {
     let params = LineParams {
-        c: a.c(),
-        n_offset: a.n_offset,
+        c: crate::plan::exponent(&a.power, 1.4, LineParams::c_from_dimension),
+        n_offset: a.power.n_offset,
         gap: a.gap,
-        max_trials: a.max_trials,
+        max_trials: a.max_trials.max_trials,
     };
     let interval = Interval {
         length: a.length,
@@ -287,7 +166,7 @@ pub fn compute(a: &LineArgs) -> Result<(LineDoc, Option<StepError>), CliError> {
             ),
         ));
     }
-    let stop = a.stop();
+    let stop = crate::plan::stop(&a.stop);
     let cap = capacity(params.c, params.n_offset, a.length, &stop)? as usize;
     let mut segs = vec![Segment::<f64>::default(); cap];
     let mut index = vec![0u32; line_index_words(cap)];
@@ -300,7 +179,7 @@ pub fn compute(a: &LineArgs) -> Result<(LineDoc, Option<StepError>), CliError> {
         },
     )
     .map_err(param_error)?;
-    let mut rng = zetafill::rng_from_seed(a.seed);
+    let mut rng = zetafill::rng_from_seed(a.seed.seed);
     let bar = stopping::progress_bar(a.quiet, stop.count, SEGMENTS);
     let mut trials = Vec::with_capacity(cap);
     let reason = engine.run(&mut rng, &stop, |p| {
@@ -350,7 +229,7 @@ pub fn compute(a: &LineArgs) -> Result<(LineDoc, Option<StepError>), CliError> {
         params: LineParamsDoc {
             c: params.c,
             n_offset: params.n_offset,
-            seed: a.seed,
+            seed: a.seed.seed,
             gap: params.gap,
             count: stop.count,
             fill: stop.fill,
@@ -867,6 +746,7 @@ fn render_gcode(doc: &LineDoc, opt: &LineSvgOptions, a: &LineArgs) -> Result<Vec
     let build = a.plot.build_options()?;
     let (d, frame) = drawing(doc, opt, &build)?;
     let header = vec![format!("{}{}{}", command_line(doc), drawing_flags(opt), a.plot.flags())];
+    let gcode = crate::plan::plot::GcodePlan::resolve(&a.plot)?;
     match (&opt.colour_layers, &opt.colours) {
         // One pen per palette colour, each drawing its segments, placed as the whole.
         (Some(palette), Some(colours)) => {
@@ -875,9 +755,9 @@ fn render_gcode(doc: &LineDoc, opt: &LineSvgOptions, a: &LineArgs) -> Result<Vec
                 let (pen, _) = drawing_of(doc, opt, &build, &|k| colours.get(k) == Some(c))?;
                 pens.push((c.clone(), pen));
             }
-            crate::cmd::plot::pens_gcode(&pens, &frame, &a.plot, header, a.quiet)
+            crate::cmd::plot::pens_gcode(&pens, &frame, &gcode, header, a.quiet)
         }
-        _ => crate::cmd::plot::drawing_gcode(&d, &frame, &a.plot, header, a.quiet),
+        _ => crate::cmd::plot::drawing_gcode(&d, &frame, &gcode, header, a.quiet),
     }
 }
 
@@ -968,10 +848,10 @@ pub fn run(a: &LineArgs) -> Result<(), CliError> {
             format!("must lie in the interval [0, {}]", a.length),
         ));
     }
-    let dest = Dest::parse(&a.output);
+    let dest = Dest::parse(&a.output.output);
     let inputs: Vec<&std::path::Path> = a.plot.machine_file().into_iter().collect();
     dest.check("--output", &inputs)?;
-    let format = Format::resolve(a.format, &a.output)?;
+    let format = Format::resolve(a.output.format, &a.output.output)?;
     a.raster.check(format == Format::Png)?;
     check_plot(a, format)?;
     let pens = format == Format::Gcode && a.plot.layers == crate::args::plot::Layers::Colours && a.colour.background.is_none();

@@ -1,29 +1,9 @@
 //! `zetafill machines`: lists the built-in machine profiles; `zetafill machines show NAME`
 //! prints one as TOML, ready to copy, edit and pass back with `--machine FILE.toml`.
 
+use crate::args::machines::{MachinesArgs, MachinesCommand};
 use crate::error::CliError;
 use crate::output::machine::Machine;
-use clap::{Args, Subcommand};
-
-/// Arguments of `zetafill machines`.
-#[derive(Debug, Args)]
-pub struct MachinesArgs {
-    /// What to do (default: list the built-ins).
-    #[command(subcommand)]
-    pub command: Option<MachinesCommand>,
-}
-
-/// Subcommands of `zetafill machines`.
-#[derive(Debug, Subcommand)]
-pub enum MachinesCommand {
-    /// List the built-in profiles.
-    List,
-    /// Print a built-in profile (or check and print a FILE.toml) as TOML.
-    Show {
-        /// A built-in name or a FILE.toml.
-        name: String,
-    },
-}
 
 /// The listing: one line per built-in, name then description.
 pub fn listing() -> String {

@@ -1,16 +1,16 @@
 //! Plotter output shared by the commands: a drawing placed on the machine's bed by the plot
 //! flags and written as G-code, with the plot's figures (length, time) on stderr.
 
-use crate::args::plot::PlotArgs;
 use crate::error::CliError;
 use crate::model::doc::FillDoc;
-use crate::model::{place, Bounds, Drawing, Fit};
+use crate::model::{Bounds, Drawing};
 use crate::output::drawing::from_fill;
 use crate::output::gcode;
+use crate::plan::plot::GcodePlan;
 
 /// `--format gcode` of a fill: its drawing (outlines, hatching) placed on the bed by the
 /// region's box.
-pub fn render_gcode(doc: &FillDoc, a: &PlotArgs, quiet: bool) -> Result<Vec<u8>, CliError> {
+pub fn render_gcode(doc: &FillDoc, a: &GcodePlan, quiet: bool) -> Result<Vec<u8>, CliError> {
     render_gcode_pens(doc, a, None, quiet)
 }
 
@@ -18,13 +18,13 @@ pub fn render_gcode(doc: &FillDoc, a: &PlotArgs, quiet: bool) -> Result<Vec<u8>,
 /// the header): the shapes of each palette colour drawn as one pen, in the palette's order.
 pub fn render_gcode_pens(
     doc: &FillDoc,
-    a: &PlotArgs,
+    a: &GcodePlan,
     pens: Option<(&[crate::output::palette::Colour], &[crate::output::palette::Colour], String)>,
     quiet: bool,
 ) -> Result<Vec<u8>, CliError> {
-    let build = a.build_options()?;
+    let build = a.build;
     let (x0, y0, x1, y1) = doc.bbox();
-    let mut header = format!("{}{}", crate::output::svg::command_line(doc), a.flags());
+    let mut header = format!("{}{}", crate::output::svg::command_line(doc), a.flags);
     let layers: Vec<(String, Drawing)> = match pens {
         None => vec![(String::new(), from_fill(doc, &build))],
         Some((colours, palette, flags)) => {
@@ -48,47 +48,34 @@ pub fn render_gcode_pens(
     pens_gcode(&layers, &Bounds { x0, y0, x1, y1 }, a, vec![header], quiet)
 }
 
-/// G-code of any drawing with the plotter flags of `a` (machine, feeds, power, passes, arcs,
+/// G-code of any drawing with the plotter plan `a` (machine, feeds, power, passes, arcs,
 /// order, margin, `--fit`, `--center`): `frame` is the box placed on the bed (the region's,
 /// so every seed lands in the same place), `header` the comment lines that say how the
 /// drawing was made (command line, parameters, seed). The figures go to stderr unless
 /// `quiet`. This is the entry point for other modes (`line`, `territory`, ...).
-pub fn drawing_gcode(drawing: &Drawing, frame: &Bounds, a: &PlotArgs, header: Vec<String>, quiet: bool) -> Result<Vec<u8>, CliError> {
+pub fn drawing_gcode(drawing: &Drawing, frame: &Bounds, a: &GcodePlan, header: Vec<String>, quiet: bool) -> Result<Vec<u8>, CliError> {
     pens_gcode(&[(String::new(), drawing.clone())], frame, a, header, quiet)
 }
 
 /// [`drawing_gcode`] for a drawing in several named pens, drawn one after the other with a
 /// pen change between them (see [`gcode::write_pens`]), all placed on the bed as one.
-pub fn pens_gcode(pens: &[(String, Drawing)], frame: &Bounds, a: &PlotArgs, header: Vec<String>, quiet: bool) -> Result<Vec<u8>, CliError> {
-    let m = a.machine()?;
-    let mut opts = a.gcode_options(&m)?;
-    let area = m.usable_area(opts.margin);
-    let pl = place(frame, &area, a.fit(Fit::AsIs)).map_err(|e| {
-        CliError::arg(
-            "--machine",
-            format!(
-                "{e} of the bed of '{}' ({} x {} mm, margin {} mm); use --fit to scale it or --center to move it",
-                m.name, m.bed.width, m.bed.height, opts.margin
-            ),
-        )
-    })?;
+pub fn pens_gcode(
+    pens: &[(String, Drawing)],
+    frame: &Bounds,
+    a: &GcodePlan,
+    header: Vec<String>,
+    quiet: bool,
+) -> Result<Vec<u8>, CliError> {
+    let m = &a.machine;
+    let mut opts = a.options.clone();
+    let pl = a.place(frame)?;
     let pens: Vec<(String, Drawing)> = pens.iter().map(|(n, d)| (n.clone(), d.placed(&pl))).collect();
     opts.header = header;
     opts.header.push(format!(
         "plot: machine {} order {:?} passes {} hatch {} min-feature {} scale {} shift {} {}",
-        m.name,
-        opts.order,
-        opts.passes,
-        match (a.hatch.as_deref(), a.cross_hatch) {
-            (Some(h), true) => format!("{h} crossed"),
-            (h, _) => h.unwrap_or("none").to_string(),
-        },
-        a.min_feature,
-        pl.scale,
-        pl.dx,
-        pl.dy
+        m.name, opts.order, opts.passes, a.hatch, a.min_feature, pl.scale, pl.dx, pl.dy
     ));
-    let out = gcode::write_pens(&pens, &m, &opts).map_err(|e| CliError::arg("--machine", e))?;
+    let out = gcode::write_pens(&pens, m, &opts).map_err(|e| CliError::arg("--machine", e))?;
     if !quiet {
         eprintln!("{}", out.figures);
     }

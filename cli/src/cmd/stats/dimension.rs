@@ -19,31 +19,14 @@
 //! the whole boxes inside it); the 2D count tests each box against the one shape that could
 //! hold it (circles by chords, polygons by corners and edges, rings as a disc minus a hole).
 
+use crate::args::stats::DimensionArgs;
 use crate::error::CliError;
-use clap::Args;
 use serde_json::Value;
-use std::path::PathBuf;
 
 /// Finest 2D level: 2^12 boxes along the larger side.
 const MAX_LEVEL_2D: u32 = 12;
 /// Finest 1D level: 2^40 boxes.
 const MAX_LEVEL_1D: u32 = 40;
-
-/// Arguments of `stats dimension`.
-#[derive(Debug, Args)]
-pub struct DimensionArgs {
-    /// A JSON file written by `zetafill fill` or `zetafill line`.
-    pub input: PathBuf,
-    /// Largest box size in mm for the fit (default: see the module docs).
-    #[arg(long = "max-box", value_parser = crate::args::spec::positive, allow_negative_numbers = true)]
-    pub max_box: Option<f64>,
-    /// Smallest box size in mm for the fit (default: twice the smallest shape's size).
-    #[arg(long = "min-box", value_parser = crate::args::spec::positive, allow_negative_numbers = true)]
-    pub min_box: Option<f64>,
-    /// Print one JSON object: {"box_counting": ..., "exact": ..., ...}.
-    #[arg(long)]
-    pub json: bool,
-}
 
 /// A placed 2D shape as read from the JSON.
 #[derive(Debug, Clone)]

@@ -10,74 +10,15 @@
 //! cores (rayon) and the result does not depend on the number of threads.
 
 use super::chart::{self, HaltingSeries};
-use super::trials::{rect_2d, run_2d, shape_2d, shape_label, Rotate, RunSpec};
-use crate::args::spec;
+use super::trials::{run_2d, shape_label, RunSpec};
+use crate::args::stats::{HaltingArgs, Rotate};
 use crate::error::CliError;
-use clap::Args;
 use rayon::prelude::*;
 use std::fmt::Write as _;
 use std::io::IsTerminal;
-use std::path::PathBuf;
-use zetafill::ShapeKind;
 
 /// Most values of c one call may scan.
 pub const MAX_POINTS: u64 = 1000;
-
-/// Arguments of `stats halting`.
-#[derive(Debug, Args)]
-pub struct HaltingArgs {
-    /// circle | square | rect:ASPECT.
-    #[arg(long, default_value = "circle", value_parser = shape_2d)]
-    pub shape: ShapeKind,
-    /// Rotation of non-circles: none (the paper's squares) or random.
-    #[arg(long, value_enum, default_value = "none")]
-    pub rotate: Rotate,
-    /// rect:W:H, sizes in mm.
-    #[arg(long, default_value = "rect:200:200", value_parser = rect_2d, allow_negative_numbers = true)]
-    pub region: (f64, f64),
-    /// Periodic (toroidal) boundary.
-    #[arg(long)]
-    pub periodic: bool,
-    /// First c (> 1).
-    #[arg(long = "c-from", value_parser = spec::exponent, allow_negative_numbers = true)]
-    pub c_from: f64,
-    /// Last c (>= --c-from).
-    #[arg(long = "c-to", value_parser = spec::exponent, allow_negative_numbers = true)]
-    pub c_to: f64,
-    /// Step between values of c (> 0).
-    #[arg(long = "c-step", value_parser = spec::positive, allow_negative_numbers = true)]
-    pub c_step: f64,
-    /// The paper's N > 0.
-    #[arg(long = "n-offset", default_value_t = 1.0, value_parser = spec::positive, allow_negative_numbers = true)]
-    pub n_offset: f64,
-    /// Runs per value of c.
-    #[arg(long, default_value_t = 20, value_parser = clap::value_parser!(u64).range(1..=1_000_000))]
-    pub runs: u64,
-    /// Shapes per run: a run that places them all did not halt.
-    #[arg(long, default_value_t = 100, value_parser = clap::value_parser!(u64).range(1..=1_000_000))]
-    pub count: u64,
-    /// Trial limit per placement: reaching it is a halt.
-    #[arg(long = "max-trials", default_value_t = 1_000_000, value_parser = clap::value_parser!(u64).range(1..))]
-    pub max_trials: u64,
-    /// Base seed.
-    #[arg(long, default_value_t = 1)]
-    pub seed: u64,
-    /// Worker threads (0: one per core).
-    #[arg(long, default_value_t = 0)]
-    pub threads: usize,
-    /// Output: .csv (c,runs,halted,fraction) or .svg (chart); '-' is stdout.
-    #[arg(short = 'o', long)]
-    pub output: Option<PathBuf>,
-    /// Output format (overrides the extension): csv or svg.
-    #[arg(long, value_enum)]
-    pub format: Option<super::ChartFormat>,
-    /// Print one JSON object: {"points": [{"c", "runs", "halted", "fraction"}, ...]}.
-    #[arg(long)]
-    pub json: bool,
-    /// No progress bar.
-    #[arg(short, long)]
-    pub quiet: bool,
-}
 
 /// One value of c.
 #[derive(Debug, Clone, serde::Serialize)]
@@ -122,10 +63,10 @@ pub fn scan(a: &HaltingArgs) -> Result<Vec<PointDoc>, CliError> {
                 (
                     k,
                     RunSpec {
-                        shape: a.shape,
-                        rotate: a.rotate == Rotate::Random,
-                        size: a.region,
-                        periodic: a.periodic,
+                        shape: a.scene.shape,
+                        rotate: a.scene.rotate == Rotate::Random,
+                        size: a.scene.region,
+                        periodic: a.scene.periodic,
                         c,
                         n_offset: a.n_offset,
                         count: a.count,
@@ -189,8 +130,8 @@ pub fn run(a: &HaltingArgs) -> Result<(), CliError> {
             super::ChartFormat::Svg => {
                 let label = format!(
                     "{}{} N = {}",
-                    if a.periodic { "periodic, " } else { "inclusive, " },
-                    shape_label(&a.shape),
+                    if a.scene.periodic { "periodic, " } else { "inclusive, " },
+                    shape_label(&a.scene.shape),
                     a.n_offset
                 );
                 let series = [HaltingSeries {

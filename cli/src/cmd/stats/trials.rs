@@ -12,71 +12,12 @@
 //! spread over the cores with rayon and collected in order.
 
 use super::chart::{self, TrialsSeries};
-use crate::args::spec;
+use crate::args::stats::{Rotate, TrialsArgs, TrialsFrom};
 use crate::error::CliError;
-use clap::{Args, ValueEnum};
 use rayon::prelude::*;
 use std::fmt::Write as _;
-use std::path::PathBuf;
 use zetafill::StepError;
 use zetafill::{cells_for, index_words, CellSampler, Engine, Params, Placed, Region, ShapeKind, Stop, StopReason, Storage};
-
-/// Rotation of non-circular shapes in the statistics runs.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum Rotate {
-    /// Axis-aligned (the paper's squares).
-    None,
-    /// A uniformly random angle per trial.
-    Random,
-}
-
-/// Where the trials of `stats trials` come from.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum TrialsFrom {
-    /// The paper's sampler is run and its trials counted.
-    Reference,
-    /// The cell sampler places the shapes and estimates the paper's trials (unbiased, far
-    /// faster at large counts).
-    Fast,
-}
-
-/// `circle | square | rect:ASPECT`: the shapes of the paper's Figures 5 and 6.
-pub fn shape_2d(s: &str) -> Result<ShapeKind, String> {
-    match s.split(':').collect::<Vec<_>>().as_slice() {
-        ["circle"] => Ok(ShapeKind::Circle),
-        ["square"] => Ok(ShapeKind::Square),
-        ["rect", a] => Ok(ShapeKind::Rect {
-            aspect: spec::positive(a).map_err(|e| format!("rect:ASPECT: the aspect ratio {e}"))?,
-        }),
-        _ => Err(format!(
-            "unknown shape '{s}'; the statistics runs take circle, square or rect:ASPECT"
-        )),
-    }
-}
-
-/// `rect:W:H` in mm.
-pub fn rect_2d(s: &str) -> Result<(f64, f64), String> {
-    match s.split(':').collect::<Vec<_>>().as_slice() {
-        ["rect", w, h] => Ok((
-            spec::positive(w).map_err(|e| format!("rect:W:H: the width {e}"))?,
-            spec::positive(h).map_err(|e| format!("rect:W:H: the height {e}"))?,
-        )),
-        _ => Err(format!("unknown region '{s}'; use rect:W:H (sizes in mm)")),
-    }
-}
-
-/// A list of exponents given as `C1,C2,...`.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Exponents(pub Vec<f64>);
-
-/// A comma-separated list of 1 to 32 exponents, each > 1.
-pub fn exponents(s: &str) -> Result<Exponents, String> {
-    let v = s.split(',').map(spec::exponent).collect::<Result<Vec<_>, _>>()?;
-    if v.is_empty() || v.len() > 32 {
-        return Err("give 1 to 32 values of c separated by commas".into());
-    }
-    Ok(Exponents(v))
-}
 
 /// What one 2D run is.
 #[derive(Debug, Clone, Copy)]
@@ -176,59 +117,6 @@ pub fn run_2d(r: &RunSpec) -> Result<RunResult, CliError> {
     })
 }
 
-/// Arguments of `stats trials`.
-#[derive(Debug, Args)]
-pub struct TrialsArgs {
-    /// circle | square | rect:ASPECT.
-    #[arg(long, default_value = "circle", value_parser = shape_2d)]
-    pub shape: ShapeKind,
-    /// Rotation of non-circles: none (the paper's squares) or random.
-    #[arg(long, value_enum, default_value = "none")]
-    pub rotate: Rotate,
-    /// rect:W:H, sizes in mm.
-    #[arg(long, default_value = "rect:200:200", value_parser = rect_2d, allow_negative_numbers = true)]
-    pub region: (f64, f64),
-    /// Periodic (toroidal) boundary.
-    #[arg(long)]
-    pub periodic: bool,
-    /// Exponent c > 1, or several separated by commas (one curve each).
-    #[arg(long, default_value = "1.3", value_parser = exponents, allow_negative_numbers = true)]
-    pub c: Exponents,
-    /// The paper's N > 0.
-    #[arg(long = "n-offset", default_value_t = 1.0, value_parser = spec::positive, allow_negative_numbers = true)]
-    pub n_offset: f64,
-    /// Shapes per run.
-    #[arg(long, default_value_t = 10_000, value_parser = clap::value_parser!(u64).range(10..=10_000_000))]
-    pub count: u64,
-    /// reference: run the paper's sampler and count its trials; fast: place with the cell
-    /// sampler and estimate the paper's trials (unbiased; seconds where the paper's sampler
-    /// takes hours).
-    #[arg(long, value_enum, default_value = "reference")]
-    pub sampler: TrialsFrom,
-    /// Runs per value of c (seeds seed + k * runs + r).
-    #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u64).range(1..=100))]
-    pub runs: u64,
-    /// Base seed.
-    #[arg(long, default_value_t = 1)]
-    pub seed: u64,
-    /// Trial limit per placement.
-    #[arg(long = "max-trials", default_value_t = 10_000_000, value_parser = clap::value_parser!(u64).range(1..))]
-    pub max_trials: u64,
-    /// The fit uses placements n >= this (default: a tenth of --count).
-    #[arg(long = "fit-from", value_parser = clap::value_parser!(u64).range(1..))]
-    pub fit_from: Option<u64>,
-    /// Output: .csv (every placement of every run) or .svg (log-log chart); '-' is stdout.
-    #[arg(short = 'o', long)]
-    pub output: Option<PathBuf>,
-    /// Output format (overrides the extension): csv or svg.
-    #[arg(long, value_enum)]
-    pub format: Option<super::ChartFormat>,
-    /// Print one JSON object: {"exponent", "placed", "trials", ...} of the first run, and
-    /// every run under "series".
-    #[arg(long)]
-    pub json: bool,
-}
-
 /// One run's summary.
 #[derive(Debug, Clone, serde::Serialize)]
 pub struct SeriesDoc {
@@ -262,7 +150,7 @@ fn fit(cum: &[(f64, f64)], from: f64) -> Option<(f64, f64)> {
 /// `zetafill stats trials`.
 pub fn run(a: &TrialsArgs) -> Result<(), CliError> {
     let out = super::chart_output(a.output.as_ref(), a.format, "stats trials")?;
-    let (w, h) = a.region;
+    let (w, h) = a.scene.region;
     let from = a.fit_from.unwrap_or((a.count / 10).max(1));
     if from >= a.count {
         return Err(CliError::arg(
@@ -278,10 +166,10 @@ pub fn run(a: &TrialsArgs) -> Result<(), CliError> {
                 (0..a.runs).map(move |r| {
                     let seed = a.seed.wrapping_add((k as u64).wrapping_mul(a.runs)).wrapping_add(r);
                     let spec = RunSpec {
-                        shape: a.shape,
-                        rotate: a.rotate == Rotate::Random,
+                        shape: a.scene.shape,
+                        rotate: a.scene.rotate == Rotate::Random,
                         size: (w, h),
-                        periodic: a.periodic,
+                        periodic: a.scene.periodic,
                         c,
                         n_offset: a.n_offset,
                         count: a.count,
@@ -334,7 +222,7 @@ pub fn run(a: &TrialsArgs) -> Result<(), CliError> {
     if let Some((dest, f)) = out {
         let bytes = match f {
             super::ChartFormat::Svg => {
-                let title = format!("cumulative trials, {} N = {}", shape_label(&a.shape), a.n_offset);
+                let title = format!("cumulative trials, {} N = {}", shape_label(&a.scene.shape), a.n_offset);
                 chart::trials_chart(&curves, &title)?
             }
             super::ChartFormat::Csv => csv.into_bytes(),

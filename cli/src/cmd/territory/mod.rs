@@ -10,12 +10,11 @@ use crate::geometry::voronoi as geom;
 pub mod model;
 pub mod render;
 
-use crate::args::spec::{self, RegionSpec};
+use crate::args::spec::RegionSpec;
 use crate::cmd::fill::region::RegionData;
 use crate::error::CliError;
 use crate::io::write::Dest;
 use crate::model::doc::RegionDoc;
-use clap::{Args, ValueEnum};
 use colour::Rule;
 use geom::{Clip, Pt};
 use model::{Growth, Model, ModelError};
@@ -23,115 +22,9 @@ use render::{FillShape, Render, Style};
 use serde::Serialize;
 use serde_json::Value;
 use std::io::IsTerminal;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
-/// Largest number of sites one run may hold.
-pub const MAX_POINTS: usize = 10_000_000;
-
-/// Output formats of `zetafill territory`.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum TerritoryFormat {
-    /// SVG drawing in mm.
-    Svg,
-    /// PNG preview (the SVG rendered).
-    Png,
-    /// JSON document (version 1, mode "territory").
-    Json,
-    /// G-code for a plotter or laser (the boundaries, or every edge with --render cells).
-    Gcode,
-}
-
-impl TerritoryFormat {
-    fn resolve(given: Option<TerritoryFormat>, path: &Path) -> Result<TerritoryFormat, CliError> {
-        use TerritoryFormat::*;
-        let known = [("svg", Svg), ("png", Png), ("json", Json), ("gcode", Gcode), ("nc", Gcode)];
-        crate::args::format::format_for(given, path, Svg, &known)
-    }
-}
-
-/// Arguments of `zetafill territory`. Territory drawings have no pages, size layers or
-/// hatching: those flags are refused, and left out of the help.
-#[derive(Debug, Args)]
-#[command(
-    mut_arg("page", |a| a.hide(true)),
-    mut_arg("layers", |a| a.hide(true)),
-    mut_arg("hatch", |a| a.hide(true)),
-    mut_arg("hatch_only", |a| a.hide(true)),
-    mut_arg("cross_hatch", |a| a.hide(true)),
-    mut_arg("min_feature", |a| a.hide(true)),
-)]
-pub struct TerritoryArgs {
-    /// K random seed sites (territories 0..K-1), K >= 2 (default 3); with --sites-from, K of
-    /// the fill's centres chosen at random.
-    #[arg(long, value_parser = seed_count, conflicts_with = "site")]
-    pub sites: Option<usize>,
-    /// A seed site X,Y in mm (repeat for each; at least two). With --sites-from, the fill's
-    /// centre nearest to X,Y.
-    #[arg(long = "site", value_parser = point, allow_hyphen_values = true)]
-    pub site: Vec<Pt>,
-    /// Take the sites from a fill's JSON (`zetafill fill -o fill.json`): its shapes' centres,
-    /// inserted in fill order after the seeds; the region is the fill's.
-    #[arg(long = "sites-from", conflicts_with_all = ["points", "region"])]
-    pub sites_from: Option<PathBuf>,
-    /// Total number of sites, seeds included (the paper's pictures use about 7,000).
-    #[arg(long, value_parser = clap::value_parser!(u64).range(2..=MAX_POINTS as u64))]
-    pub points: Option<u64>,
-    /// rect:W:H | circle:R | annulus:R_OUTER:R_INNER | polygon:X1,Y1,X2,Y2,...[/X1,Y1,...] (rings,
-    /// even-odd) | svg:FILE (mm).
-    #[arg(long, default_value = "rect:200:200", value_parser = spec::region)]
-    pub region: RegionSpec,
-    /// RNG seed.
-    #[arg(long, default_value_t = 1)]
-    pub seed: u64,
-    /// boundaries (plotters) | cells | filled | shapes (with --sites-from).
-    #[arg(long, value_enum, default_value = "boundaries")]
-    pub render: Render,
-    /// No density control: every new point uniform over the region.
-    #[arg(long)]
-    pub uniform: bool,
-    /// Density control starts at the n0-th point (the paper's n0).
-    #[arg(long, default_value_t = 1000, value_parser = clap::value_parser!(u64).range(1..))]
-    pub n0: u64,
-    /// The paper's s: floor(log2(s i)) x floor(log2(s i)) buckets for the i-th point.
-    #[arg(long, default_value_t = 0.1, value_parser = spec::positive, allow_negative_numbers = true)]
-    pub s: f64,
-    /// How much more likely a new point lands in a boundary bucket than in another (>= 1).
-    #[arg(long, default_value_t = 8.0, value_parser = boost, allow_negative_numbers = true)]
-    pub boost: f64,
-    /// Colour of territory 0, 1, ... in turn: H,S,B (the seed's colour c^k, each in [0, 1])
-    /// or H,S,B:DH,DS,DB (with the step d^k per unit of distance). Territories without one
-    /// get random colours from the seed.
-    #[arg(long = "color", value_parser = colour::parse_rule, allow_hyphen_values = true)]
-    pub colors: Vec<([f64; 3], Option<[f64; 3]>)>,
-    /// Output path; the format comes from the extension (.svg .png .json); '-' is stdout.
-    #[arg(short = 'o', long)]
-    pub output: PathBuf,
-    /// Output format (overrides the extension).
-    #[arg(long, value_enum)]
-    pub format: Option<TerritoryFormat>,
-    /// SVG: stroke width of the boundaries in mm.
-    #[arg(long = "pen-width", default_value_t = 0.3, value_parser = spec::positive)]
-    pub pen_width: f64,
-    /// SVG: stroke width of the thin cell edges in mm.
-    #[arg(long = "thin-width", default_value_t = 0.1, value_parser = spec::positive)]
-    pub thin_width: f64,
-    /// SVG: also draw the region's outline.
-    #[arg(long)]
-    pub boundary: bool,
-    /// PNG size.
-    #[command(flatten)]
-    pub raster: crate::args::raster::RasterArgs,
-    /// No progress bar (and no G-code figures on stderr).
-    #[arg(short, long)]
-    pub quiet: bool,
-    /// Palette colours instead of the --color rules (filled cells or shapes; default
-    /// --color-by cycle: territory k takes colour k).
-    #[command(flatten)]
-    pub colours: crate::args::colour::ColourArgs,
-    /// Plotter and laser output (G-code): machine, feeds, passes, order, --fit/--center.
-    #[command(flatten)]
-    pub plot: crate::args::plot::PlotArgs,
-}
+pub use crate::args::territory::{TerritoryArgs, TerritoryFormat, MAX_POINTS};
 
 /// Refuses the plot flags that have no meaning for territories, before any work.
 fn check_plot(a: &TerritoryArgs, format: TerritoryFormat) -> Result<(), CliError> {
@@ -201,34 +94,13 @@ fn gcode(o: &Outcome, a: &TerritoryArgs, desc: String) -> Result<Vec<u8>, CliErr
         paths.extend(o.clip.outline_paths());
     }
     let (x0, y0, x1, y1) = o.clip.bbox();
-    drawing_gcode(&Drawing { paths }, &Bounds { x0, y0, x1, y1 }, &a.plot, vec![desc], a.quiet)
-}
-
-fn seed_count(s: &str) -> Result<usize, String> {
-    match s.trim().parse::<usize>() {
-        Ok(k) if (2..=MAX_POINTS).contains(&k) => Ok(k),
-        Ok(k) if k < 2 => Err(format!("territory competing needs at least 2 seeds (got {k})")),
-        _ => Err(format!("'{s}' is not a whole number from 2 to {MAX_POINTS}")),
-    }
-}
-
-fn point(s: &str) -> Result<Pt, String> {
-    let v: Vec<&str> = s.split(',').collect();
-    if v.len() != 2 {
-        return Err(format!("write X,Y in mm, for example 50,120 (got '{s}')"));
-    }
-    Ok([spec::finite(v[0])?, spec::finite(v[1])?])
-}
-
-fn boost(s: &str) -> Result<f64, String> {
-    let v = spec::finite(s)?;
-    if v >= 1.0 {
-        Ok(v)
-    } else {
-        Err(format!(
-            "must be 1 or more (got {s}); 1 means no preference, like --uniform after n0"
-        ))
-    }
+    drawing_gcode(
+        &Drawing { paths },
+        &Bounds { x0, y0, x1, y1 },
+        &crate::plan::plot::GcodePlan::resolve(&a.plot)?,
+        vec![desc],
+        a.quiet,
+    )
 }
 
 /// One site in the JSON output.
@@ -456,7 +328,7 @@ fn command_line(a: &TerritoryArgs, k: usize, points: usize, region: &str) -> Str
     for p in &a.site {
         s.push_str(&format!(" --site {},{}", p[0], p[1]));
     }
-    s.push_str(&format!(" --seed {}", a.seed));
+    s.push_str(&format!(" --seed {}", a.seed.seed));
     if a.uniform {
         s.push_str(" --uniform");
     } else {
@@ -501,7 +373,7 @@ pub fn compute(a: &TerritoryArgs) -> Result<Outcome, CliError> {
             "shapes draws a fill's shapes: it needs --sites-from FILE.json; use boundaries, cells or filled",
         ));
     }
-    let mut rng = zetafill::rng_from_seed(a.seed);
+    let mut rng = zetafill::rng_from_seed(a.seed.seed);
     let (region, source) = match &a.sites_from {
         Some(p) => {
             let src = load_source(p)?;
@@ -667,7 +539,7 @@ pub fn compute(a: &TerritoryArgs) -> Result<Outcome, CliError> {
         }
     }
     // Colours from their own stream, so they never move the geometry.
-    let mut crng = zetafill::rng_from_seed(a.seed ^ 0x436f_6c6f_7572_7321);
+    let mut crng = zetafill::rng_from_seed(a.seed.seed ^ 0x436f_6c6f_7572_7321);
     let rules: Vec<Rule> = (0..k)
         .map(|t| {
             let r = colour::random_rule(&mut crng, maxd[t]);
@@ -703,7 +575,7 @@ pub fn compute(a: &TerritoryArgs) -> Result<Outcome, CliError> {
         mode: "territory",
         seeds: k,
         params: TerritoryParamsDoc {
-            seed: a.seed,
+            seed: a.seed.seed,
             points,
             uniform: a.uniform,
             n0: a.n0,
@@ -758,7 +630,7 @@ pub fn render_bytes(o: &Outcome, a: &TerritoryArgs, format: TerritoryFormat) -> 
             "zetafill territory: {} sites, {} territories, seed {}",
             o.doc.sites.len(),
             o.doc.seeds,
-            a.seed
+            a.seed.seed
         );
         render::svg(&o.model, &o.clip, &colours, &o.shapes, &style, &title, &desc)
     };
@@ -793,12 +665,12 @@ fn site_colours(o: &Outcome, a: &TerritoryArgs) -> Vec<String> {
         .zip(areas.iter().chain(std::iter::repeat(&0.0)))
         .map(|(s, &area)| (u64::from(s.territory), area))
         .collect();
-    crate::output::palette::assign_items(&p.0, a.colours.by_or(COLOUR_BY), a.seed, &items, |_| 0)
+    crate::output::palette::assign_items(&p.0, a.colours.by_or(COLOUR_BY), a.seed.seed, &items, |_| 0)
 }
 
 /// `zetafill territory`.
 pub fn run(a: &TerritoryArgs) -> Result<(), CliError> {
-    let dest = Dest::parse(&a.output);
+    let dest = Dest::parse(&a.output.output);
     let mut inputs: Vec<&Path> = a.plot.machine_file().into_iter().collect();
     if let Some(p) = &a.sites_from {
         inputs.push(p.as_path());
@@ -813,7 +685,7 @@ pub fn run(a: &TerritoryArgs) -> Result<(), CliError> {
 
 /// The bytes `zetafill territory` writes: the flags checked, the pattern grown and rendered.
 pub fn output(a: &TerritoryArgs) -> Result<Vec<u8>, CliError> {
-    let format = TerritoryFormat::resolve(a.format, &a.output)?;
+    let format = TerritoryFormat::resolve(a.output.format, &a.output.output)?;
     a.raster.check(format == TerritoryFormat::Png)?;
     check_plot(a, format)?;
     check_colours(a, format)?;

@@ -7,116 +7,17 @@
 pub mod model;
 pub mod render;
 
-use crate::args::spec;
+pub use crate::args::tile::{TileArgs, TileFormat};
 use crate::error::CliError;
 use crate::io::write::Dest;
 use crate::output::num;
-use clap::{Args, ValueEnum};
 use model::{Tile, TileSpec};
 use render::{Arrangement, Layout, Piece, Render, Sheet, Style};
 use serde::Serialize;
 use std::io::IsTerminal;
-use std::path::{Path, PathBuf};
 use svg::node::element::{Circle, ClipPath, Definitions, Description, Group, Path as SvgPath, Rectangle, Title};
 use svg::node::{Node, Text};
 use svg::Document;
-
-/// Output formats of `zetafill tile`.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum TileFormat {
-    /// SVG drawing in mm.
-    Svg,
-    /// PNG preview (the SVG rendered).
-    Png,
-    /// JSON document (version 1, mode "tile"): the tile's discs.
-    Json,
-    /// G-code for a plotter or laser (the drawing's outlines).
-    Gcode,
-}
-
-impl TileFormat {
-    fn resolve(given: Option<TileFormat>, path: &Path) -> Result<TileFormat, CliError> {
-        use TileFormat::*;
-        let known = [("svg", Svg), ("png", Png), ("json", Json), ("gcode", Gcode), ("nc", Gcode)];
-        crate::args::format::format_for(given, path, Svg, &known)
-    }
-}
-
-/// Arguments of `zetafill tile`. The tile draws its own outlines: pages and hatching are
-/// refused, and left out of the help; of the layers, only `--layers colours`.
-#[derive(Debug, Args)]
-#[command(
-    mut_arg("page", |a| a.hide(true)),
-    mut_arg("hatch", |a| a.hide(true)),
-    mut_arg("hatch_only", |a| a.hide(true)),
-    mut_arg("cross_hatch", |a| a.hide(true)),
-    mut_arg("min_feature", |a| a.hide(true)),
-)]
-pub struct TileArgs {
-    /// Tile width in mm.
-    #[arg(long, default_value_t = 100.0, value_parser = spec::positive, allow_negative_numbers = true)]
-    pub width: f64,
-    /// Tile height in mm.
-    #[arg(long, default_value_t = 100.0, value_parser = spec::positive, allow_negative_numbers = true)]
-    pub height: f64,
-    /// Disc radius at the tile's bottom edge in mm (half of it at the top edge).
-    #[arg(long, default_value_t = 5.0, value_parser = spec::positive, allow_negative_numbers = true)]
-    pub radius: f64,
-    /// Gap between discs at the bottom edge in mm (half of it at the top edge).
-    #[arg(long, default_value_t = 1.0, value_parser = spec::non_negative, allow_negative_numbers = true)]
-    pub spacing: f64,
-    /// Random tries in all (each places a disc where it fits).
-    #[arg(long, default_value_t = 20_000, value_parser = clap::value_parser!(u64).range(1..=100_000_000))]
-    pub tries: u64,
-    /// RNG seed.
-    #[arg(long, default_value_t = 1)]
-    pub seed: u64,
-    /// discs | voronoi (cobblestones of the disc centres).
-    #[arg(long, value_enum, default_value = "discs")]
-    pub render: Render,
-    /// outline (plotters) | filled (screens).
-    #[arg(long, value_enum, default_value = "outline")]
-    pub style: Style,
-    /// tile (the texture) | mosaic (rows of copies, each half the scale of the one below) |
-    /// planet (rings of copies, each holding twice as many as the one inside it).
-    #[arg(long, value_enum, default_value = "tile")]
-    pub layout: Layout,
-    /// Mosaic and planet: rows (rings) of tiles.
-    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=10))]
-    pub rows: Option<u32>,
-    /// Mosaic: tiles in the bottom row (default 2); planet: tiles in the inner ring (default
-    /// 16).
-    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=4096))]
-    pub columns: Option<u32>,
-    /// Planet: its outer radius in mm, where the rings pile up.
-    #[arg(long = "planet-radius", value_parser = spec::positive, allow_negative_numbers = true)]
-    pub planet_radius: Option<f64>,
-    /// Output path; the format comes from the extension (.svg .png .json); '-' is stdout.
-    #[arg(short = 'o', long)]
-    pub output: PathBuf,
-    /// Output format (overrides the extension).
-    #[arg(long, value_enum)]
-    pub format: Option<TileFormat>,
-    /// SVG: stroke width of the outlines in mm.
-    #[arg(long = "pen-width", default_value_t = 0.3, value_parser = spec::positive, allow_negative_numbers = true)]
-    pub pen_width: f64,
-    /// Colours (SVG/PNG).
-    #[command(flatten)]
-    pub colour: crate::args::colour::ColourArgs,
-    /// PNG size.
-    #[command(flatten)]
-    pub raster: crate::args::raster::RasterArgs,
-    /// PNG: write a 16-bit height map of the tile (each disc or cobblestone a raised stone of
-    /// this profile) instead of a picture.
-    #[arg(long, value_enum)]
-    pub relief: Option<crate::args::raster::ReliefArg>,
-    /// No figures on stderr.
-    #[arg(short, long)]
-    pub quiet: bool,
-    /// Plotter and laser output (G-code): machine, feeds, passes, order, --fit/--center.
-    #[command(flatten)]
-    pub plot: crate::args::plot::PlotArgs,
-}
 
 /// Refuses the plot flags that the output does not read, before any work.
 fn check_plot(a: &TileArgs, format: TileFormat) -> Result<(), CliError> {
@@ -166,7 +67,13 @@ fn piece_colours(a: &TileArgs, tags: &[render::Tag], scales: &[f64]) -> Option<V
             t.map_or((0, 0.0), |t| (t.disc as u64, t.r * s))
         })
         .collect();
-    Some(crate::output::palette::assign_items(&p.0, a.colour.by(), a.seed, &items, |_| 0))
+    Some(crate::output::palette::assign_items(
+        &p.0,
+        a.colour.by(),
+        a.seed.seed,
+        &items,
+        |_| 0,
+    ))
 }
 
 /// The drawing as G-code: every piece as a path (circles as arcs where the machine allows),
@@ -202,7 +109,13 @@ fn gcode(pieces: &[Piece], sheet: Sheet, a: &TileArgs, header: String, pens: Opt
         x1: sheet.width,
         y1: sheet.height,
     };
-    pens_gcode(&layers, &frame, &a.plot, vec![header], a.quiet)
+    pens_gcode(
+        &layers,
+        &frame,
+        &crate::plan::plot::GcodePlan::resolve(&a.plot)?,
+        vec![header],
+        a.quiet,
+    )
 }
 
 /// One disc in the JSON output.
@@ -325,7 +238,7 @@ pub fn compute(a: &TileArgs) -> Result<(Tile, Vec<Piece>, Vec<render::Tag>), Cli
         radius: a.radius,
         spacing: a.spacing,
         tries: a.tries,
-        seed: a.seed,
+        seed: a.seed.seed,
         band: if a.render == Render::Voronoi { VORONOI_BAND } else { 0.0 },
     };
     spec.check().map_err(|(flag, msg)| CliError::arg(flag, msg))?;
@@ -418,7 +331,7 @@ fn command_line(a: &TileArgs, arr: &Arrangement) -> String {
         a.radius,
         a.spacing,
         a.tries,
-        a.seed,
+        a.seed.seed,
         render_name(a.render),
         layout_name(a.layout)
     );
@@ -552,7 +465,7 @@ fn check_colours(a: &TileArgs, format: TileFormat) -> Result<(), CliError> {
 /// The output the flags ask for (checked first: nothing is computed for bad input), and the
 /// tile it shows.
 pub fn output(a: &TileArgs) -> Result<(Tile, Vec<u8>), CliError> {
-    let format = TileFormat::resolve(a.format, &a.output)?;
+    let format = TileFormat::resolve(a.output.format, &a.output.output)?;
     a.raster.check(format == TileFormat::Png)?;
     if a.relief.is_some() && format != TileFormat::Png {
         return Err(crate::output::png::only_png("--relief"));
@@ -612,7 +525,7 @@ pub fn output(a: &TileArgs) -> Result<(Tile, Vec<u8>), CliError> {
                 "zetafill: fractal tile, {} discs ({} doppelgangers), seed {}, {} {}",
                 tile.discs.len(),
                 tile.discs.iter().filter(|d| d.twin.is_some()).count(),
-                a.seed,
+                a.seed.seed,
                 render_name(a.render),
                 layout_name(a.layout)
             );
@@ -651,7 +564,7 @@ pub fn output(a: &TileArgs) -> Result<(Tile, Vec<u8>), CliError> {
 
 /// Runs `zetafill tile`.
 pub fn run(a: &TileArgs) -> Result<(), CliError> {
-    let dest = Dest::parse(&a.output);
+    let dest = Dest::parse(&a.output.output);
     let inputs: Vec<&std::path::Path> = a.plot.machine_file().into_iter().collect();
     dest.check("--output", &inputs)?;
     let (tile, bytes) = output(a)?;

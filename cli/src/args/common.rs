@@ -1,0 +1,71 @@
+//! Flag groups several commands share, each written once and flattened where it is used:
+//! the power law (`--c`, `--dimension`, `--n-offset`), the stop conditions (`--count`,
+//! `--fill`, `--min-size`), `--max-trials`, `--seed` and the output (`-o`, `--format`).
+//!
+//! The help texts are the 2D fill's; a command whose pieces are other (the segments of
+//! `line`) or whose numbers differ rewords them with `mut_arg` where it flattens the group.
+
+use crate::args::spec;
+use std::path::PathBuf;
+
+/// The largest `--count` of a 2D fill (52 bytes a shape in the core).
+pub const MAX_SHAPES: u64 = 20_000_000;
+
+/// The default of `--max-trials`.
+pub const DEFAULT_MAX_TRIALS: u64 = 10_000_000;
+
+/// `--c`, `--dimension`, `--n-offset`: the power law of the pieces' sizes.
+#[derive(Debug, Clone, clap::Args)]
+pub struct PowerLawArgs {
+    /// Power-law exponent c > 1 (default 1.3).
+    #[arg(long, value_parser = spec::exponent, conflicts_with = "dimension", allow_negative_numbers = true)]
+    pub c: Option<f64>,
+    /// Fractal dimension D in (0, 2) instead of c (c = 2/D).
+    #[arg(long, value_parser = spec::dimension, allow_negative_numbers = true)]
+    pub dimension: Option<f64>,
+    /// The paper's N > 0: larger N makes the first shapes smaller.
+    #[arg(long = "n-offset", default_value_t = 1.0, value_parser = spec::positive, allow_negative_numbers = true)]
+    pub n_offset: f64,
+}
+
+/// `--count`, `--fill`, `--min-size`: when a fill stops.
+#[derive(Debug, Clone, clap::Args)]
+pub struct StopArgs {
+    /// Stop after K shapes (default 2000 when no stop condition is given).
+    #[arg(long, value_parser = clap::value_parser!(u64).range(1..=MAX_SHAPES))]
+    pub count: Option<u64>,
+    /// Stop once this fraction of the region is filled, 0 < F < 1.
+    #[arg(long, value_parser = spec::fraction, allow_negative_numbers = true)]
+    pub fill: Option<f64>,
+    /// Stop before the first shape narrower than MM.
+    #[arg(long = "min-size", value_parser = spec::positive, allow_negative_numbers = true)]
+    pub min_size: Option<f64>,
+}
+
+/// `--max-trials`: the trial limit of one placement.
+#[derive(Debug, Clone, clap::Args)]
+pub struct MaxTrialsArgs {
+    /// Trial limit per placement; reaching it halts the fill (exit 3).
+    #[arg(long = "max-trials", default_value_t = DEFAULT_MAX_TRIALS, value_parser = clap::value_parser!(u64).range(1..))]
+    pub max_trials: u64,
+}
+
+/// `--seed`: the seed of the run's random numbers.
+#[derive(Debug, Clone, clap::Args)]
+pub struct SeedArgs {
+    /// RNG seed.
+    #[arg(long, default_value_t = 1)]
+    pub seed: u64,
+}
+
+/// `-o` and `--format`: where the output goes and in which of the command's formats `F`.
+#[derive(Debug, Clone, clap::Args)]
+pub struct OutputArgs<F: clap::ValueEnum + Clone + Send + Sync + 'static> {
+    /// Output path; the format comes from the extension (.svg .png .json .csv .gcode/.nc);
+    /// '-' is stdout.
+    #[arg(short = 'o', long)]
+    pub output: PathBuf,
+    /// Output format (overrides the extension).
+    #[arg(long, value_enum)]
+    pub format: Option<F>,
+}

@@ -1,0 +1,338 @@
+//! `zetafill fill` resolved: the flags checked against each other in the order the command
+//! has always reported them, and turned into the run (the core's parameters and stops) and
+//! the drawing (the writers' plain options). Also the messages of the run's own outcomes
+//! that name a flag: a parameter the core refuses, a first shape that does not fit, a halt.
+
+use crate::args::fill::{FillArgs, MixArg, Rotate, Sampler, ScalarArg, DEFAULT_MAX_TRIALS};
+use crate::args::format::Format;
+use crate::args::plot::{Layers, PlotArgs, FOR_GCODE, SVG_FLAGS};
+use crate::args::spec::{self, RegionSpec};
+use crate::args::style::StyleArg;
+use crate::error::CliError;
+use crate::io::write::Dest;
+use crate::output::drawing::BuildOptions;
+use crate::output::height::Relief;
+use crate::output::palette::{ColorBy, Colour, Palette};
+use crate::output::png::{only_png, Raster};
+use crate::output::svg::Style;
+use crate::plan::plot::{GcodePlan, PagePlan};
+use zetafill::ParamError;
+use zetafill::{MixOrder, Params, ShapeList, Stop};
+
+/// A checked `zetafill fill`: where it writes, what it runs and how it draws.
+#[derive(Debug, Clone)]
+pub struct FillPlan {
+    /// Where the output goes.
+    pub dest: Dest,
+    /// The output format.
+    pub format: Format,
+    /// The run.
+    pub run: FillRun,
+    /// The drawing.
+    pub draw: FillDraw,
+}
+
+/// What the engine runs.
+#[derive(Debug, Clone)]
+pub struct FillRun {
+    /// The region (loaded when the run starts: an SVG region is a file).
+    pub region: RegionSpec,
+    /// Periodic boundary.
+    pub periodic: bool,
+    /// The core's parameters.
+    pub params: Params,
+    /// The stop conditions.
+    pub stop: Stop,
+    /// RNG seed.
+    pub seed: u64,
+    /// The paper's sampler (and the coverage bitmap it asks) instead of the cell sampler.
+    pub reference_sampler: bool,
+    /// The engine computes in 32.32 fixed point instead of f64.
+    pub fixed_point: bool,
+    /// No progress bar.
+    pub quiet: bool,
+    /// The names the JSON document records: shape, rotation, mix order (mixes only),
+    /// sampler and scalar.
+    pub names: FillNames,
+}
+
+/// The names of a run's settings as its JSON document writes them.
+#[derive(Debug, Clone)]
+pub struct FillNames {
+    /// `--shape` as written back.
+    pub shape: String,
+    /// `random` or `none`.
+    pub rotate: &'static str,
+    /// `cycle` or `random`, for a mix.
+    pub mix_order: Option<&'static str>,
+    /// `fast` or `reference`.
+    pub sampler: &'static str,
+    /// `f64` or `fixed`.
+    pub scalar: &'static str,
+}
+
+/// How the document is drawn.
+#[derive(Debug, Clone)]
+pub struct FillDraw {
+    /// Cobblestones (the Voronoi cells of the centres) instead of the shapes.
+    pub voronoi: bool,
+    /// PNG: a height map of this profile instead of a picture.
+    pub relief: Option<Relief>,
+    /// PNG size.
+    pub raster: Raster,
+    /// Outline or filled.
+    pub style: Style,
+    /// Stroke width (mm).
+    pub pen_width: f64,
+    /// Also draw the region's outline.
+    pub boundary: bool,
+    /// SVG: outlines, hatching and the smallest feature drawn.
+    pub build: BuildOptions,
+    /// SVG: the page, if any.
+    pub page: Option<PagePlan>,
+    /// SVG: K layers by size.
+    pub size_layers: Option<u32>,
+    /// The plot flags as command-line text.
+    pub plot_flags: String,
+    /// The palette, if any.
+    pub palette: Option<Palette>,
+    /// How shapes take the palette's colours.
+    pub color_by: ColorBy,
+    /// One layer (one pen) per palette colour.
+    pub colour_layers: bool,
+    /// A colour behind the drawing.
+    pub background: Option<Colour>,
+    /// The colour flags as command-line text.
+    pub colour_flags: String,
+    /// The shapes of the run, to tell each shape's entry in a mix.
+    pub shapes: ShapeList,
+    /// G-code: the machine and its placement.
+    pub gcode: Option<GcodePlan>,
+    /// No G-code figures on stderr.
+    pub quiet: bool,
+}
+
+/// The message of `--layers colours` without a palette.
+fn colours_need_palette() -> CliError {
+    CliError::arg(
+        "--layers",
+        "colours makes one layer (one pen) per --palette colour: give --palette, or use size-bands:K",
+    )
+}
+
+/// The core's mix order.
+fn mix_order(m: MixArg) -> MixOrder {
+    match m {
+        MixArg::Cycle => MixOrder::Cycle,
+        MixArg::Random => MixOrder::Random,
+    }
+}
+
+/// Checks that every plot flag given is one `format` reads (before the fill runs).
+fn check_plot(p: &PlotArgs, format: Format) -> Result<(), CliError> {
+    p.build_options()?;
+    match format {
+        Format::Gcode => p.check_gcode()?,
+        Format::Svg | Format::Png => {
+            p.refuse_except(&SVG_FLAGS, |_| FOR_GCODE.to_string())?;
+            if (p.fit || p.center || p.margin.is_some()) && p.page.is_none() {
+                let flag = if p.fit {
+                    "--fit"
+                } else if p.center {
+                    "--center"
+                } else {
+                    "--margin"
+                };
+                return Err(CliError::arg(
+                    flag,
+                    "for SVG it needs --page (without a page the drawing is the region itself)",
+                ));
+            }
+        }
+        other => {
+            let name = clap::ValueEnum::to_possible_value(&other).map_or_else(String::new, |v| v.get_name().to_string());
+            p.refuse_except(&[], |_| format!("is for drawings (svg, png, gcode), not {name} output"))?
+        }
+    }
+    Ok(())
+}
+
+/// Checks the flags of `zetafill fill` and resolves them into a plan. Nothing runs and
+/// nothing is read but the machine profile.
+pub fn resolve(a: &FillArgs) -> Result<FillPlan, CliError> {
+    let dest = Dest::parse(&a.output.output);
+    let mut inputs: Vec<&std::path::Path> = a.plot.machine_file().into_iter().collect();
+    if let RegionSpec::Svg(p) = &a.region {
+        inputs.push(p.as_path());
+    }
+    dest.check("--output", &inputs)?;
+    let format = Format::resolve(a.output.format, &a.output.output)?;
+    let (run, draw) = resolve_as(a, format)?;
+    Ok(FillPlan { dest, format, run, draw })
+}
+
+/// The run and the drawing of `a` written as `format`: every rule between the flags, but
+/// none about the output path (a library caller, such as a test, picks the format).
+pub fn resolve_as(a: &FillArgs, format: Format) -> Result<(FillRun, FillDraw), CliError> {
+    if a.voronoi {
+        a.plot.refuse_except(&[], |_| {
+            "is not available with --voronoi (cobblestones are drawn at the region's size)".to_string()
+        })?;
+    }
+    if format != Format::Png && a.relief.is_some() {
+        return Err(only_png("--relief"));
+    }
+    a.raster.check(format == Format::Png)?;
+    // A palette also picks the pens of a G-code plot with --layers colours.
+    let colour_layers = a.plot.layers == Layers::Colours;
+    let pens = format == Format::Gcode && colour_layers && a.colour.background.is_none();
+    a.colour.check(
+        (matches!(format, Format::Svg | Format::Png) && a.relief.is_none()) || pens,
+        "write .svg or .png, without --relief (or G-code with --layers colours, without --background)",
+        false,
+    )?;
+    if colour_layers && a.colour.palette.is_none() {
+        return Err(colours_need_palette());
+    }
+    if a.voronoi && a.colour.palette.is_some() && a.style != StyleArg::Filled {
+        return Err(CliError::arg(
+            "--palette",
+            "cobblestone outlines are edges, each shared by two cells; add --style filled to colour the cells",
+        ));
+    }
+    if a.relief.is_some() {
+        if a.voronoi {
+            return Err(CliError::arg(
+                "--relief",
+                "a height map is made of the shapes, not of cobblestones: drop --voronoi",
+            ));
+        }
+        a.plot.refuse_except(&[], |_| {
+            "is not available with --relief (a height map has no page or layers)".to_string()
+        })?;
+    }
+    check_plot(&a.plot, format)?;
+    if a.plot.hatch.is_some() && a.style == StyleArg::Filled && matches!(format, Format::Svg | Format::Png) {
+        return Err(CliError::arg(
+            "--hatch",
+            "draws lines, which filled shapes would hide: use --style outline",
+        ));
+    }
+    if a.voronoi && !matches!(format, Format::Svg | Format::Png) {
+        return Err(CliError::arg(
+            "--voronoi",
+            "cobblestones are drawn as SVG or PNG; write .svg or .png, or drop --voronoi",
+        ));
+    }
+    let seed = a.seed.seed;
+    let shapes = a.shape.list(mix_order(a.mix_order), seed);
+    let params = Params {
+        c: crate::plan::exponent(&a.power, 1.3, Params::c_from_dimension),
+        n_offset: a.power.n_offset,
+        shape: shapes,
+        rotate: a.rotate.map_or(a.shape.rotates(), |r| r == Rotate::Random),
+        gap: a.gap,
+        max_trials: a.max_trials.max_trials,
+    };
+    let names = FillNames {
+        shape: a.shape.name(),
+        rotate: if params.rotate && a.shape.rotates() { "random" } else { "none" },
+        mix_order: (a.shape.0.len() > 1).then(|| a.mix_order.name()),
+        sampler: a.sampler.name(),
+        scalar: a.scalar.name(),
+    };
+    let run = FillRun {
+        region: a.region.clone(),
+        periodic: a.periodic,
+        params,
+        stop: crate::plan::stop(&a.stop),
+        seed,
+        reference_sampler: a.sampler == Sampler::Reference,
+        fixed_point: a.scalar == ScalarArg::Fixed,
+        quiet: a.quiet,
+        names,
+    };
+    let picture = matches!(format, Format::Svg | Format::Png) && a.relief.is_none() && !a.voronoi;
+    let draw = FillDraw {
+        voronoi: a.voronoi,
+        relief: a.relief.map(Relief::from),
+        raster: a.raster.raster(),
+        style: a.style.into(),
+        pen_width: a.pen_width,
+        boundary: a.boundary,
+        build: a.plot.build_options()?,
+        page: if picture { PagePlan::resolve(&a.plot)? } else { None },
+        size_layers: match a.plot.layers {
+            Layers::SizeBands(k) => Some(k),
+            _ => None,
+        },
+        plot_flags: a.plot.flags(),
+        palette: a.colour.palette.clone(),
+        color_by: a.colour.by(),
+        colour_layers,
+        background: a.colour.background.clone(),
+        colour_flags: a.colour.flags(),
+        shapes,
+        gcode: if format == Format::Gcode {
+            Some(GcodePlan::resolve(&a.plot)?)
+        } else {
+            None
+        },
+        quiet: a.quiet,
+    };
+    Ok((run, draw))
+}
+
+/// Names the flag behind a core parameter error.
+pub fn param_error(e: ParamError) -> CliError {
+    let flag = match e {
+        ParamError::Exponent => "--c",
+        ParamError::Offset | ParamError::Zeta => "--n-offset",
+        ParamError::Shape => "--shape",
+        ParamError::Region => "--region",
+        ParamError::Gap => "--gap",
+        ParamError::MaxTrials => "--max-trials",
+        ParamError::Storage => "--count",
+    };
+    CliError::arg(flag, e)
+}
+
+/// Advice for a halt at placement `index` (at least 1: a halt at the first placement is
+/// [`first_shape_error`]).
+pub fn halt_advice(index: u64) -> &'static str {
+    if index < 100 {
+        "the first shapes left no room for this one: lower --c, raise --n-offset, or try another --seed"
+    } else {
+        "raise --max-trials, lower --c, or ask for fewer shapes"
+    }
+}
+
+/// The usage error of a fill that cannot place its first shape: `halt` is `None` when the
+/// core knows the shape is too large for the region, or the trials spent before giving up.
+/// `area` is the region's, `zeta` the run's zeta(c, N). Nothing is written: an output with no
+/// shape is no drawing.
+pub fn first_shape_error(params: &Params, area: f64, zeta: f64, halt: Option<u64>) -> CliError {
+    let kind = params.shape.kind_of(0);
+    let first_area = area / (zeta * zetafill::internals::scalar::powf(params.n_offset, params.c));
+    let width = kind.min_width(kind.scale_for_area(first_area));
+    let what = match halt {
+        None => "does not fit the region".to_string(),
+        Some(t) if t < params.max_trials => "does not fit anywhere in the region".to_string(),
+        Some(t) => format!("never fit in the region ({t} trials found no place for it)"),
+    };
+    let mut advice = String::from("lower --c or raise --n-offset (a smaller first shape)");
+    if params.gap > 0.0 {
+        advice.push_str(", lower --gap");
+    }
+    advice.push_str(" or use a larger --region");
+    if halt.is_some_and(|t| t >= params.max_trials && params.max_trials < DEFAULT_MAX_TRIALS) {
+        advice.push_str("; if it does fit, raise --max-trials");
+    }
+    CliError::arg(
+        "--c",
+        format!(
+            "the first {} ({width:.4} mm wide, area {first_area:.4} mm²) {what}; {advice}",
+            spec::kind_name(&kind)
+        ),
+    )
+}

@@ -39,7 +39,7 @@ pub fn capacity(c: f64, n: f64, stop: &Stop, unit: Unit, width: impl Fn(u64) -> 
         }
         (hi <= unit.max).then_some(hi)
     };
-    let mut need = stop.count.unwrap_or(u64::MAX);
+    let mut slots = stop.count.unwrap_or(u64::MAX);
     if let Some(f) = stop.fill {
         let target = (1.0 - f) * zeta;
         let tail = |k: u64| zetafill::internals::zeta::hurwitz_zeta(c, n + k as f64).unwrap_or(0.0);
@@ -49,7 +49,7 @@ pub fn capacity(c: f64, n: f64, stop: &Stop, unit: Unit, width: impl Fn(u64) -> 
                 format!("{f} needs more than {} {} at this c; lower it or raise --c", unit.max, unit.plural),
             )
         })?;
-        need = need.min(hi);
+        slots = slots.min(hi);
     }
     if let Some(m) = stop.min_size {
         let hi = first_failing(&|k| width(k) >= m).ok_or_else(|| {
@@ -58,9 +58,9 @@ pub fn capacity(c: f64, n: f64, stop: &Stop, unit: Unit, width: impl Fn(u64) -> 
                 format!("{m} mm needs more than {} {}; raise it", unit.max, unit.plural),
             )
         })?;
-        need = need.min(hi);
+        slots = slots.min(hi);
     }
-    Ok(need.saturating_add(1).min(unit.max))
+    Ok(slots.saturating_add(1).min(unit.max))
 }
 
 /// A progress bar on standard error when it is a terminal and `--quiet` is not given.

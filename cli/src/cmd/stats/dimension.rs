@@ -287,9 +287,9 @@ fn box_inside(s: &Shape2, x0: f64, y0: f64, x1: f64, y1: f64) -> bool {
         Shape2::Ring { c, r, ri } => {
             let outer = corners.iter().all(|p| (p[0] - c[0]).powi(2) + (p[1] - c[1]).powi(2) <= r * r);
             // The box's nearest point to the centre stays out of the hole.
-            let nx = c[0].clamp(x0, x1);
-            let ny = c[1].clamp(y0, y1);
-            outer && (nx - c[0]).powi(2) + (ny - c[1]).powi(2) >= ri * ri
+            let nearest_x = c[0].clamp(x0, x1);
+            let nearest_y = c[1].clamp(y0, y1);
+            outer && (nearest_x - c[0]).powi(2) + (nearest_y - c[1]).powi(2) >= ri * ri
         }
         Shape2::Poly { v } => {
             corners.iter().all(|p| in_poly(*p, v)) && (0..v.len()).all(|i| !seg_hits_box(v[i], v[(i + 1) % v.len()], x0, y0, x1, y1))
@@ -299,16 +299,16 @@ fn box_inside(s: &Shape2, x0: f64, y0: f64, x1: f64, y1: f64) -> bool {
 
 /// `(boxes, boxes that meet the gasket)` at box size `e` for a 2D fill in `[0, w] x [0, h]`.
 pub fn count_2d(w: f64, h: f64, periodic: bool, shapes: &[Shape2], e: f64) -> (u64, u64) {
-    let (nx, ny) = ((w / e).ceil() as i64, (h / e).ceil() as i64);
-    let total = (nx * ny) as u64;
+    let (columns, rows) = ((w / e).ceil() as i64, (h / e).ceil() as i64);
+    let total = (columns * rows) as u64;
     let mut inside = 0u64;
     let mut count_shape = |s: &Shape2| {
         let (bx0, by0, bx1, by1) = s.bbox();
         if bx1 <= 0.0 || by1 <= 0.0 || bx0 >= w || by0 >= h {
             return;
         }
-        let (i0, i1) = (((bx0 / e).floor() as i64).max(0), ((bx1 / e).ceil() as i64).min(nx));
-        let (j0, j1) = (((by0 / e).floor() as i64).max(0), ((by1 / e).ceil() as i64).min(ny));
+        let (i0, i1) = (((bx0 / e).floor() as i64).max(0), ((bx1 / e).ceil() as i64).min(columns));
+        let (j0, j1) = (((by0 / e).floor() as i64).max(0), ((by1 / e).ceil() as i64).min(rows));
         for j in j0..j1 {
             let (y0, y1) = (j as f64 * e, ((j + 1) as f64 * e).min(h));
             if let Shape2::Disc { c, r } = s {
@@ -320,8 +320,8 @@ pub fn count_2d(w: f64, h: f64, periodic: bool, shapes: &[Shape2], e: f64) -> (u
                 let half = (r * r - dy * dy).sqrt();
                 let (lo, hi) = (c[0] - half, c[0] + half);
                 let a = ((lo / e).ceil() as i64).max(0);
-                let b = ((hi / e).floor() as i64).min(nx);
-                for i in (a - 1).max(0)..(b + 1).min(nx) {
+                let b = ((hi / e).floor() as i64).min(columns);
+                for i in (a - 1).max(0)..(b + 1).min(columns) {
                     let (x0, x1) = (i as f64 * e, ((i + 1) as f64 * e).min(w));
                     if x0 >= lo && x1 <= hi && box_inside(s, x0, y0, x1, y1) {
                         inside += 1;

@@ -1,6 +1,5 @@
 //! `zetafill fill`: the 2D fractal fill.
 
-pub mod limits;
 pub mod region;
 
 use crate::args::fill::MAX_SHAPES;
@@ -10,8 +9,7 @@ use crate::cmd::stopping::{self, Unit};
 use crate::error::CliError;
 use crate::model::doc::{FillDoc, ParamsDoc, ShapeDoc, StatsDoc};
 use crate::output;
-use crate::plan::fill::{first_shape_error, halt_advice, param_error, FillDraw, FillPlan, FillRun};
-use limits::check_known_limit;
+use crate::plan::fill::{first_shape_error, first_two_error, halt_advice, param_error, FillDraw, FillPlan, FillRun};
 use region::RegionData;
 use zetafill::StepError;
 use zetafill::{index_words, CellSampler, Engine, Geo, Params, Placed, Region, ShapeKind, Stop, StopReason, Storage};
@@ -24,18 +22,6 @@ const SHAPES: Unit = Unit {
 
 /// Words of the coverage bitmap (2 MiB): a 4096 x 4096 grid.
 const COVERAGE_WORDS: usize = 1 << 18;
-
-/// How many shape slots the stop conditions can need (see [`stopping::capacity`]).
-fn capacity(params: &Params, area: f64, stop: &Stop) -> Result<u64, CliError> {
-    let (c, n) = (params.c, params.n_offset);
-    let zeta = zetafill::internals::zeta::zeta(c, n).map_err(|e| CliError::arg("--n-offset", e))?;
-    // Shape k's width decreases with k.
-    let width = |k: u64| {
-        let kind = params.shape.kind_of(k);
-        kind.min_width(kind.scale_for_area(area / (zeta * zetafill::internals::scalar::powf(k as f64 + n, c))))
-    };
-    stopping::capacity(c, n, stop, SHAPES, width)
-}
 
 /// The concrete geometry of a placed shape as a [`ShapeDoc`].
 fn shape_doc(kind: &ShapeKind, geo: &Geo<f64>, p: &Placed<f64>, index: u64, area: f64, trials: u64) -> ShapeDoc {
@@ -105,7 +91,7 @@ fn run_engine<S: zetafill::Scalar>(
         coverage: &mut coverage,
     };
     let mut engine = Engine::<S>::new(params, region, storage).map_err(param_error)?;
-    check_known_limit(&params, &region)?;
+    zetafill::check_first_two(&params, &region).map_err(|e| first_two_error(e, &params))?;
     let mut rng = zetafill::rng_from_seed(a.seed);
     let bar = stopping::progress_bar(a.quiet, stop.count, SHAPES);
     let mut trials = Vec::with_capacity(cap);
@@ -162,7 +148,8 @@ pub fn compute(a: &FillRun) -> Result<(FillDoc, Option<StepError>), CliError> {
     let region = data.region(a.periodic)?;
     let params = a.params;
     let stop = a.stop;
-    let cap = capacity(&params, region.area(), &stop)? as usize;
+    let sequence = stopping::sequence(region.area(), params.c, params.n_offset)?;
+    let cap = stopping::slots(zetafill::shape_capacity(&sequence, &params.shape, &stop, SHAPES.max), SHAPES)? as usize;
     let run = if a.fixed_point {
         run_engine::<zetafill::Fixed>(a, params, region, &stop, cap)?
     } else {
@@ -180,8 +167,16 @@ pub fn compute(a: &FillRun) -> Result<(FillDoc, Option<StepError>), CliError> {
         StopReason::Count => ("count", None),
         StopReason::Fill => ("fill", None),
         StopReason::MinSize => ("min-size", None),
-        StopReason::Step(StepError::CannotFit { index: 0 }) => return Err(first_shape_error(&params, area, zeta, None)),
-        StopReason::Step(StepError::Halted { index: 0, trials }) => return Err(first_shape_error(&params, area, zeta, Some(trials))),
+        StopReason::Step(StepError::CannotFit { index: 0 }) => {
+            return Err(first_shape_error(&params, &zetafill::first_shape(&sequence, &params.shape), None))
+        }
+        StopReason::Step(StepError::Halted { index: 0, trials }) => {
+            return Err(first_shape_error(
+                &params,
+                &zetafill::first_shape(&sequence, &params.shape),
+                Some(trials),
+            ))
+        }
         StopReason::Step(e @ StepError::Halted { .. }) => ("halted", Some(e)),
         StopReason::Step(e @ StepError::CannotFit { .. }) => ("halted", Some(e)),
         StopReason::Step(e @ StepError::Capacity { .. }) => return Err(CliError::Io(format!("internal: {e}"))),

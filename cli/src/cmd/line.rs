@@ -15,7 +15,7 @@ use std::fmt::Write as _;
 use svg::node::element::{ClipPath, Definitions, Description, Group, Line, Rectangle, Title};
 use svg::node::Text;
 use svg::Document;
-use zetafill::{line_index_words, Interval, LineEngine, LineParams, LineStorage, Segment, Stop, StopReason};
+use zetafill::{line_index_words, Interval, LineEngine, LineParams, LineStorage, Segment, StopReason};
 use zetafill::{ParamError, StepError};
 
 pub use crate::args::line::MAX_SEGMENTS;
@@ -56,6 +56,9 @@ pub struct LineDoc {
     pub shapes: Vec<SegmentDoc>,
     /// Run statistics.
     pub stats: LineStatsDoc,
+    /// The determinism digest (count, FNV-1a) of the engine's own bits.
+    #[serde(skip)]
+    pub digest: (u64, u64),
 }
 
 /// Run statistics of a 1D fill.
@@ -138,13 +141,6 @@ fn param_error(e: ParamError) -> CliError {
     CliError::arg(flag, e)
 }
 
-/// How many segment slots the stop conditions can need (see [`stopping::capacity`]).
-fn capacity(c: f64, n: f64, length: f64, stop: &Stop) -> Result<u64, CliError> {
-    let zeta = zetafill::internals::zeta::zeta(c, n).map_err(|e| CliError::arg("--n-offset", e))?;
-    let len = |k: u64| length / (zeta * zetafill::internals::scalar::powf(k as f64 + n, c));
-    stopping::capacity(c, n, stop, SEGMENTS, len)
-}
-
 /// Runs the fill and returns the document (and the halt, if any). Nothing is written.
 pub fn compute(a: &LineArgs) -> Result<(LineDoc, Option<StepError>), CliError> {
     let params = LineParams {
@@ -167,7 +163,8 @@ pub fn compute(a: &LineArgs) -> Result<(LineDoc, Option<StepError>), CliError> {
         ));
     }
     let stop = crate::plan::stop(&a.stop);
-    let cap = capacity(params.c, params.n_offset, a.length, &stop)? as usize;
+    let sequence = stopping::sequence(a.length, params.c, params.n_offset)?;
+    let cap = stopping::slots(zetafill::segment_capacity(&sequence, &stop, SEGMENTS.max), SEGMENTS)? as usize;
     let mut segs = vec![Segment::<f64>::default(); cap];
     let mut index = vec![0u32; line_index_words(cap)];
     let mut engine = LineEngine::<f64>::new(
@@ -251,6 +248,7 @@ pub fn compute(a: &LineArgs) -> Result<(LineDoc, Option<StepError>), CliError> {
             halted: halt.is_some(),
             stop: stop_name,
         },
+        digest: zetafill::internals::line::line_digest(&engine),
     };
     Ok((doc, halt))
 }
@@ -629,15 +627,10 @@ pub fn render_csv(doc: &LineDoc) -> Vec<u8> {
     s.into_bytes()
 }
 
-/// The digest line `COUNT HEX16` ([`zetafill::internals::line::line_digest`]'s value).
+/// The digest line `COUNT HEX16`: the engine's own digest of every segment's bits.
 pub fn render_digest(doc: &LineDoc) -> Vec<u8> {
-    let mut h = zetafill::digest::Fnv1a::default();
-    let (c, n, l, z) = (doc.params.c, doc.params.n_offset, doc.region.length, doc.zeta);
-    for s in &doc.shapes {
-        let nominal = l / (z * zetafill::internals::scalar::powf(s.index as f64 + n, c));
-        zetafill::digest::add_shape(&mut h, s.start, 0.0, nominal, 0.0);
-    }
-    format!("{} {:016x}\n", doc.shapes.len(), h.finish()).into_bytes()
+    let (count, hash) = doc.digest;
+    format!("{count} {hash:016x}\n").into_bytes()
 }
 
 /// The plotter drawing of a 1D fill, in the frame of its SVG (x along the interval, y up,

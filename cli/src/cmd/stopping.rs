@@ -1,10 +1,10 @@
 //! What `zetafill fill` and `zetafill line` share about running to a stop: the stop
-//! conditions, the slots they can need, the progress bar, and the message of a halt.
+//! conditions, the refusals of the slots they need (the core computes them), the progress
+//! bar, and the message of a halt.
 
 use crate::error::CliError;
 use std::io::IsTerminal;
-use zetafill::StepError;
-use zetafill::Stop;
+use zetafill::{AreaSequence, CapacityError, StepError, Stop};
 
 /// What a run places: `"shapes"` (2D) or `"segments"` (1D), with its limit per run.
 #[derive(Debug, Clone, Copy)]
@@ -25,42 +25,25 @@ pub fn stop(count: Option<u64>, fill: Option<f64>, min_size: Option<f64>) -> Sto
     Stop { count, fill, min_size }
 }
 
-/// How many slots the stop conditions can need, with one to spare: at most `--count`; for
-/// `--fill f` the first `k` with `zeta(c, N + k) <= (1 - f) zeta(c, N)` (the first `k` pieces
-/// cover `f` of the region); for `--min-size m` the first `k` whose width `width(k)`
-/// (decreasing in `k`) is below `m`. Each search doubles `k`, so it errs high by at most 2x.
-pub fn capacity(c: f64, n: f64, stop: &Stop, unit: Unit, width: impl Fn(u64) -> f64) -> Result<u64, CliError> {
-    let zeta = zetafill::internals::zeta::zeta(c, n).map_err(|e| CliError::arg("--n-offset", e))?;
-    // The smallest power of two at which `more` fails, or None past the unit's limit.
-    let first_failing = |more: &dyn Fn(u64) -> bool| {
-        let mut hi = 1u64;
-        while more(hi) && hi <= unit.max {
-            hi *= 2;
-        }
-        (hi <= unit.max).then_some(hi)
-    };
-    let mut slots = stop.count.unwrap_or(u64::MAX);
-    if let Some(f) = stop.fill {
-        let target = (1.0 - f) * zeta;
-        let tail = |k: u64| zetafill::internals::zeta::hurwitz_zeta(c, n + k as f64).unwrap_or(0.0);
-        let hi = first_failing(&|k| tail(k) > target).ok_or_else(|| {
-            CliError::arg(
-                "--fill",
-                format!("{f} needs more than {} {} at this c; lower it or raise --c", unit.max, unit.plural),
-            )
-        })?;
-        slots = slots.min(hi);
-    }
-    if let Some(m) = stop.min_size {
-        let hi = first_failing(&|k| width(k) >= m).ok_or_else(|| {
-            CliError::arg(
-                "--min-size",
-                format!("{m} mm needs more than {} {}; raise it", unit.max, unit.plural),
-            )
-        })?;
-        slots = slots.min(hi);
-    }
-    Ok(slots.saturating_add(1).min(unit.max))
+/// The power-law sequence of a run over `total` (area or length), from the core; a bad
+/// offset is named as `--n-offset`.
+pub fn sequence(total: f64, c: f64, n: f64) -> Result<AreaSequence, CliError> {
+    AreaSequence::new(total, c, n).map_err(|e| CliError::arg("--n-offset", e))
+}
+
+/// The slots the stop conditions need, as the core's [`zetafill::capacity`] found them; a
+/// stop condition no run of the unit's size can meet is refused naming its flag.
+pub fn slots(found: Result<u64, CapacityError>, unit: Unit) -> Result<u64, CliError> {
+    found.map_err(|e| match e {
+        CapacityError::Fill { fill, max } => CliError::arg(
+            "--fill",
+            format!("{fill} needs more than {max} {} at this c; lower it or raise --c", unit.plural),
+        ),
+        CapacityError::MinSize { min_size, max } => CliError::arg(
+            "--min-size",
+            format!("{min_size} mm needs more than {max} {}; raise it", unit.plural),
+        ),
+    })
 }
 
 /// A progress bar on standard error when it is a terminal and `--quiet` is not given.
@@ -119,32 +102,18 @@ mod tests {
     }
 
     #[test]
-    fn capacity_covers_every_stop_condition() {
-        let (c, n) = (1.3, 1.0);
-        let zeta = zetafill::internals::zeta::zeta(c, n).expect("zeta");
-        // --count k: k slots and one to spare.
-        assert_eq!(capacity(c, n, &stop(Some(77), None, None), UNIT, |_| 1.0).expect("capacity"), 78);
-        // --fill f: the first cap - 1 pieces cover at least f, half as many do not.
-        for f in [0.1, 0.5, 0.8] {
-            let cap = capacity(c, n, &stop(None, Some(f), None), UNIT, |_| 1.0).expect("capacity");
-            let covered = |k: u64| 1.0 - zetafill::internals::zeta::hurwitz_zeta(c, n + k as f64).expect("zeta") / zeta;
-            assert!(covered(cap - 1) >= f, "f {f} cap {cap}");
-            assert!(cap <= 2 || covered((cap - 1) / 2) < f, "f {f} cap {cap}");
-        }
-        // --min-size m: piece cap - 1 is narrower than m.
-        let width = |k: u64| 100.0 / (k as f64 + 1.0);
-        let cap = capacity(c, n, &stop(None, None, Some(0.7)), UNIT, width).expect("capacity");
-        assert!(width(cap - 1) < 0.7 && width((cap - 1) / 2) >= 0.7, "cap {cap}");
-        // The tighter condition wins.
-        assert_eq!(capacity(c, n, &stop(Some(5), None, Some(0.7)), UNIT, width).expect("capacity"), 6);
-    }
-
-    #[test]
-    fn capacity_past_the_limit_names_the_flag() {
-        let e = capacity(1.3, 1.0, &stop(None, Some(0.999_999_99), None), UNIT, |_| 1.0).expect_err("past the limit");
-        assert!(e.to_string().contains("--fill") && e.to_string().contains("pieces"), "{e}");
-        let e = capacity(1.3, 1.0, &stop(None, None, Some(1e-9)), UNIT, |_| 1.0).expect_err("past the limit");
-        assert!(e.to_string().contains("--min-size"), "{e}");
+    fn stops_past_the_limit_name_their_flag() {
+        let seq = sequence(1.0, 1.3, 1.0).expect("sequence");
+        let found = zetafill::segment_capacity(&seq, &stop(None, Some(0.999_999_99), None), UNIT.max);
+        let e = slots(found, UNIT).expect_err("past the limit").to_string();
+        assert!(e.starts_with("--fill: ") && e.contains("1048576 pieces"), "{e}");
+        let found = zetafill::segment_capacity(&seq, &stop(None, None, Some(1e-12)), UNIT.max);
+        let e = slots(found, UNIT).expect_err("past the limit").to_string();
+        assert!(e.starts_with("--min-size: ") && e.contains("pieces"), "{e}");
+        assert_eq!(slots(Ok(78), UNIT).ok(), Some(78));
+        // A bad offset is named.
+        let e = sequence(1.0, 1.3, -1.0).expect_err("bad offset").to_string();
+        assert!(e.starts_with("--n-offset: "), "{e}");
     }
 
     #[test]

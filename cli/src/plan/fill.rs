@@ -17,7 +17,7 @@ use crate::output::png::{only_png, Raster};
 use crate::output::svg::Style;
 use crate::plan::plot::{GcodePlan, PagePlan};
 use zetafill::ParamError;
-use zetafill::{MixOrder, Params, ShapeList, Stop};
+use zetafill::{FirstShape, FirstTwoError, MixOrder, Params, ShapeList, Stop};
 
 /// A checked `zetafill fill`: where it writes, what it runs and how it draws.
 #[derive(Debug, Clone)]
@@ -309,12 +309,14 @@ pub fn halt_advice(index: u64) -> &'static str {
 
 /// The usage error of a fill that cannot place its first shape: `halt` is `None` when the
 /// core knows the shape is too large for the region, or the trials spent before giving up.
-/// `area` is the region's, `zeta` the run's zeta(c, N). Nothing is written: an output with no
-/// shape is no drawing.
-pub fn first_shape_error(params: &Params, area: f64, zeta: f64, halt: Option<u64>) -> CliError {
-    let kind = params.shape.kind_of(0);
-    let first_area = area / (zeta * zetafill::internals::scalar::powf(params.n_offset, params.c));
-    let width = kind.min_width(kind.scale_for_area(first_area));
+/// `first` is the shape, as the core describes it. Nothing is written: an output with no shape
+/// is no drawing.
+pub fn first_shape_error(params: &Params, first: &FirstShape, halt: Option<u64>) -> CliError {
+    let FirstShape {
+        kind,
+        area: first_area,
+        width,
+    } = *first;
     let what = match halt {
         None => "does not fit the region".to_string(),
         Some(t) if t < params.max_trials => "does not fit anywhere in the region".to_string(),
@@ -335,4 +337,40 @@ pub fn first_shape_error(params: &Params, area: f64, zeta: f64, halt: Option<u64
             spec::kind_name(&kind)
         ),
     )
+}
+
+/// The usage error of parameters whose first two shapes can never both fit an inclusive
+/// rectangle (the core's [`zetafill::check_first_two`]), naming the flag to change and the
+/// largest value that works; `params` are the run's.
+pub fn first_two_error(e: FirstTwoError, params: &Params) -> CliError {
+    match e {
+        FirstTwoError::Gap {
+            kind,
+            gap,
+            max_gap,
+            width,
+            height,
+        } => CliError::arg(
+            "--gap",
+            format!(
+                "{gap} mm leaves no room for two {}s in this {width} x {height} mm region, whatever --c and --n-offset; lower it below {max_gap:.4} mm or enlarge --region",
+                spec::kind_name(&kind),
+            ),
+        ),
+        FirstTwoError::Offset { kind, n_offset: _ } => CliError::arg(
+            "--n-offset",
+            format!(
+                "the first two {}s cannot both fit this region for any c; raise --n-offset{} or enlarge --region",
+                spec::kind_name(&kind),
+                if params.gap > 0.0 { ", lower --gap" } else { "" }
+            ),
+        ),
+        FirstTwoError::Exponent { kind, n_offset, max_c, .. } => CliError::arg(
+            "--c",
+            format!(
+                "with N = {n_offset} the first two {}s cannot both fit in this region when c > {max_c:.4} (the paper's hard limit, section 3); lower --c or raise --n-offset",
+                spec::kind_name(&kind),
+            ),
+        ),
+    }
 }

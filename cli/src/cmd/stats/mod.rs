@@ -38,7 +38,9 @@ pub fn chart_output(output: Option<&PathBuf>, format: Option<ChartFormat>, name:
 pub fn run(cmd: &StatsCommand) -> Result<(), CliError> {
     match cmd {
         StatsCommand::Zeta(a) => {
-            let z = zetafill::internals::zeta::zeta(a.c, a.n_offset).map_err(|e| CliError::arg("--n-offset", e))?;
+            let z = zetafill::AreaSequence::new(1.0, a.c, a.n_offset)
+                .map_err(|e| CliError::arg("--n-offset", e))?
+                .zeta();
             if a.json {
                 println!("{}", serde_json::json!({ "zeta": z, "c": a.c, "n_offset": a.n_offset }));
             } else {

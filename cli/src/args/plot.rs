@@ -4,11 +4,12 @@
 
 use crate::error::CliError;
 use crate::model::doc::FillDoc;
+use crate::model::fill::BuildOptions;
+use crate::model::hatch;
 use crate::model::{place, Bounds, Fit};
-use crate::output::drawing::BuildOptions;
 use crate::output::order::PathOrder;
 use crate::output::svg::{Style, SvgOptions};
-use crate::output::{gcode, hatch, machine};
+use crate::output::{gcode, machine};
 use clap::{Args, ValueEnum};
 
 /// `--order`: path order before writing G-code.

@@ -770,7 +770,7 @@ pub fn render_digest(doc: &LineDoc) -> Vec<u8> {
 pub fn drawing(
     doc: &LineDoc,
     opt: &LineSvgOptions,
-    build: &crate::output::drawing::BuildOptions,
+    build: &crate::model::fill::BuildOptions,
 ) -> Result<(crate::model::Drawing, crate::model::Bounds), CliError> {
     drawing_of(doc, opt, build, &|_| true)
 }
@@ -779,7 +779,7 @@ pub fn drawing(
 fn drawing_of(
     doc: &LineDoc,
     opt: &LineSvgOptions,
-    build: &crate::output::drawing::BuildOptions,
+    build: &crate::model::fill::BuildOptions,
     keep: &dyn Fn(usize) -> bool,
 ) -> Result<(crate::model::Drawing, crate::model::Bounds), CliError> {
     use crate::model::{Bounds, Drawing, Path};

@@ -8,9 +8,9 @@
 //! Prints one Markdown table (the README quotes it). Timing is the median of 3 runs.
 
 use std::time::Instant;
+use zetafill_cli::model::fill::{from_fill, BuildOptions};
+use zetafill_cli::model::hatch::Hatch;
 use zetafill_cli::model::{Drawing, Path, Pt};
-use zetafill_cli::output::drawing::{from_fill, BuildOptions};
-use zetafill_cli::output::hatch::Hatch;
 use zetafill_cli::output::order::PathOrder;
 use zetafill_cli::output::order::{order, PointIndex};
 

@@ -3,10 +3,11 @@
 //! options of the writers ([`gcode::GcodeOptions`], [`BuildOptions`]).
 
 use crate::error::CliError;
+use crate::model::fill::BuildOptions;
+use crate::model::hatch;
 use crate::model::Fit;
-use crate::output::drawing::BuildOptions;
 use crate::output::order::PathOrder;
-use crate::output::{gcode, hatch, machine};
+use crate::output::{gcode, machine};
 use clap::{Args, ValueEnum};
 
 /// `--order`: path order before writing G-code.

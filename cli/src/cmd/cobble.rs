@@ -4,12 +4,12 @@
 //! centres and their 8 periodic copies and clipped to the tile, so the cells tile seamlessly:
 //! an edge leaving the tile on one side comes back at the same place on the other.
 
-use crate::cmd::territory::render::{document, polyline_d, region_d, stroke_layer, Frame};
 use crate::error::CliError;
 use crate::geometry::voronoi::{self as geom, Clip, Dual, Pt};
 use crate::model::doc::FillDoc;
+use crate::model::picture::ClipDef;
+use crate::model::{Bounds, Item, Layer, Paint, Picture, Shape};
 use spade::{DelaunayTriangulation, Point2, Triangulation};
-use svg::node::element::{ClipPath, Definitions, Group, Path as SvgPath, Polygon};
 
 /// The sites of the diagram: the centres, plus their 8 periodic copies when periodic.
 pub fn sites(doc: &FillDoc) -> Vec<Pt> {
@@ -79,14 +79,14 @@ pub fn cells(doc: &FillDoc) -> Result<Vec<(usize, Vec<Pt>)>, CliError> {
         .collect())
 }
 
-/// The cobblestones as SVG (mm, y flipped like the fill's SVG): the edges, or the cells
-/// filled in their shapes' colours with the edges drawn over them as mortar.
-pub fn svg(doc: &FillDoc, look: &Look) -> Result<Vec<u8>, CliError> {
+/// The cobblestones as a picture (mm, the region's frame): the edges, or the cells filled in
+/// their shapes' colours with the edges drawn over them as mortar.
+pub fn picture(doc: &FillDoc, look: &Look) -> Result<Picture, CliError> {
     let clip = Clip::from_doc(&doc.region);
-    let f = Frame::of(&clip);
-    let lines = polylines(doc)?;
+    let (x0, y0, x1, y1) = clip.bbox();
+    let mut pic = Picture::new(Bounds { x0, y0, x1, y1 });
     let p = &doc.params;
-    let title = format!(
+    pic.title = format!(
         "zetafill: Voronoi cobblestones of {} {}, c = {}, N = {}, seed {}",
         doc.shapes.len(),
         p.shape,
@@ -94,39 +94,40 @@ pub fn svg(doc: &FillDoc, look: &Look) -> Result<Vec<u8>, CliError> {
         p.n_offset,
         p.seed
     );
-    let desc = format!("{} --voronoi{}", crate::output::svg::command_line(doc), look.flags);
-    let mut d = document(&clip, &title, &desc);
-    if let Some(bg) = &look.background {
-        let (x0, y0, x1, y1) = clip.bbox();
-        d = d.add(crate::output::palette::background(bg, x1 - x0, y1 - y0));
-    }
+    pic.desc = format!("{} --voronoi{}", crate::output::svg::command_line(doc), look.flags);
+    pic.background.clone_from(&look.background);
+    let edges: Vec<Item> = polylines(doc)?.into_iter().map(Item::polyline).collect();
+    let mut mortar = Layer::strokes("cobblestones", look.pen_width, edges);
     if look.filled {
-        let mut g = Group::new().set("id", "cells").set("stroke", "none").set("fill", "black");
+        let mut cells_layer = Layer {
+            id: Some("cells".into()),
+            paint: Paint::filled(),
+            ..Layer::default()
+        };
         if !clip.is_rect() {
-            let cp = ClipPath::new()
-                .set("id", "region")
-                .add(SvgPath::new().set("d", region_d(&f, &clip)).set("clip-rule", "evenodd"));
-            d = d.add(Definitions::new().add(cp));
-            g = g.set("clip-path", "url(#region)");
+            pic.clips.push(ClipDef {
+                id: "region".into(),
+                item: Item::new(Shape::Path(clip.outline_paths())).evenodd(),
+            });
+            cells_layer.clip = Some("region".into());
         }
         for (k, cell) in cells(doc)? {
-            let pts: Vec<String> = cell.iter().map(|&q| f.pt(q)).collect();
-            let mut poly = Polygon::new().set("points", pts.join(" "));
-            if let Some(c) = look.colours.as_ref().and_then(|cs| cs.get(k)) {
-                poly = poly.set("fill", c.as_str());
-            }
-            g = g.add(poly);
+            let mut poly = Item::new(Shape::Polygon(cell));
+            poly.paint.fill = look.colours.as_ref().and_then(|cs| cs.get(k)).cloned();
+            cells_layer.items.push(poly);
         }
-        d = d.add(g);
-        let mortar = look.background.as_deref().unwrap_or("#ffffff");
-        d = d.add(stroke_layer("cobblestones", polyline_d(&f, &lines), look.pen_width).set("stroke", mortar));
-    } else {
-        d = d.add(stroke_layer("cobblestones", polyline_d(&f, &lines), look.pen_width));
+        pic.layers.push(cells_layer);
+        mortar.paint.stroke = Some(look.background.clone().unwrap_or_else(|| "#ffffff".into()));
     }
+    pic.layers.push(mortar);
     if look.outline {
-        d = d.add(stroke_layer("outline", vec![region_d(&f, &clip)], look.pen_width));
+        let outline = Item::new(Shape::Path(clip.outline_paths()));
+        pic.layers.push(Layer::strokes("outline", look.pen_width, vec![outline]));
     }
-    let mut s = d.to_string();
-    s.push('\n');
-    Ok(s.into_bytes())
+    Ok(pic)
+}
+
+/// The cobblestones as SVG (mm, y flipped like the fill's SVG).
+pub fn svg(doc: &FillDoc, look: &Look) -> Result<Vec<u8>, CliError> {
+    Ok(crate::output::svg::write(&picture(doc, look)?))
 }

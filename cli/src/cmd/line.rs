@@ -7,14 +7,12 @@ pub use crate::args::line::LineArgs;
 use crate::cmd::stopping::{self, Unit};
 use crate::error::CliError;
 use crate::io::write::Dest;
-use crate::output::num;
+use crate::model::picture::ClipDef;
+use crate::model::{Item, Layer, Paint, Picture, Shape};
 use crate::output::svg::Style;
 use clap::ValueEnum;
 use serde::Serialize;
 use std::fmt::Write as _;
-use svg::node::element::{ClipPath, Definitions, Description, Group, Line, Rectangle, Title};
-use svg::node::Text;
-use svg::Document;
 use zetafill::{line_index_words, Interval, LineEngine, LineParams, LineStorage, Segment, StopReason};
 use zetafill::{ParamError, StepError};
 
@@ -257,9 +255,6 @@ pub fn compute(a: &LineArgs) -> Result<(LineDoc, Option<StepError>), CliError> {
 // Outputs
 // ---------------------------------------------------------------------------------------------
 
-/// Decimals of SVG numbers (0.1 µm).
-const P: usize = 4;
-
 /// Drawn sizes below this (mm) round to zero at four decimals and are left out of the SVG.
 const INVISIBLE: f64 = 0.5e-4;
 
@@ -292,37 +287,6 @@ pub struct LineSvgOptions {
     /// `Some(palette)`: the segments in one Inkscape layer per palette colour, in its order
     /// (`--layers colours`).
     pub colour_layers: Option<Vec<crate::output::palette::Colour>>,
-}
-
-/// The segments' group, or one Inkscape layer per palette colour, each segment in the layer
-/// of its colour.
-struct Layered {
-    groups: Vec<Group>,
-    /// Each segment's layer.
-    of: Vec<usize>,
-}
-
-impl Layered {
-    fn new(base: Group, opt: &LineSvgOptions, n: usize) -> Layered {
-        match (&opt.colour_layers, &opt.colours) {
-            (Some(palette), Some(colours)) => Layered {
-                groups: crate::output::palette::colour_layers(&base, palette),
-                of: colours.iter().map(|c| crate::output::palette::layer_of(palette, Some(c))).collect(),
-            },
-            _ => Layered {
-                groups: vec![base],
-                of: vec![0; n],
-            },
-        }
-    }
-
-    /// Adds segment `k`'s element to its layer.
-    fn add(&mut self, k: usize, node: impl Into<Box<dyn svg::Node>>) {
-        let i = self.of.get(k).copied().unwrap_or(0);
-        if let Some(g) = self.groups.get_mut(i) {
-            *g = std::mem::take(g).add(node);
-        }
-    }
 }
 
 /// The pieces `[a, b]` of a segment inside `[0, L]`: itself, or, when it wraps past L in a
@@ -389,119 +353,155 @@ pub fn command_line(doc: &LineDoc) -> String {
     s
 }
 
-fn stroke_group(id: &str, pen: f64) -> Group {
-    Group::new()
-        .set("id", id)
-        .set("fill", "none")
-        .set("stroke", "black")
-        .set("stroke-width", num(pen, P))
-        .set("stroke-linecap", "butt")
-}
-
-fn circle_group(id: &str, opt: &LineSvgOptions) -> Group {
-    let g = Group::new().set("id", id);
-    match opt.style {
-        Style::Outline => g
-            .set("fill", "none")
-            .set("stroke", "black")
-            .set("stroke-width", num(opt.pen_width, P)),
-        Style::Filled => g.set("fill", "black").set("stroke", "none"),
+/// A group of black strokes with butt caps.
+fn stroke_layer(id: &str, pen: f64, items: Vec<Item>) -> Layer {
+    Layer {
+        id: Some(id.into()),
+        paint: Paint {
+            cap: Some("butt"),
+            ..Paint::outline(pen)
+        },
+        items,
+        ..Layer::default()
     }
 }
 
-fn circle(cx: f64, cy: f64, r: f64) -> svg::node::element::Circle {
-    svg::node::element::Circle::new()
-        .set("cx", num(cx, P))
-        .set("cy", num(cy, P))
-        .set("r", num(r, P))
+/// The group of circles in the drawing's style.
+fn circle_layer(id: &str, opt: &LineSvgOptions) -> Layer {
+    Layer {
+        id: Some(id.into()),
+        paint: match opt.style {
+            Style::Outline => Paint::outline(opt.pen_width),
+            Style::Filled => Paint::filled(),
+        },
+        ..Layer::default()
+    }
 }
 
-/// `node` in segment `k`'s colour, if the drawing has colours: its `attr` (`fill` or
-/// `stroke`).
-fn paint<N: svg::Node>(mut node: N, opt: &LineSvgOptions, k: usize, attr: &str) -> N {
+/// `item` in segment `k`'s colour, if the drawing has colours: its fill, or its stroke.
+fn painted(mut item: Item, opt: &LineSvgOptions, k: usize, fill: bool) -> Item {
     if let Some(c) = opt.colours.as_ref().and_then(|cs| cs.get(k)) {
-        node.assign(attr, c.as_str());
+        if fill {
+            item.paint.fill = Some(c.clone());
+        } else {
+            item.paint.stroke = Some(c.clone());
+        }
     }
-    node
+    item
 }
 
-/// Renders a 1D fill as SVG (mm units; the line runs left to right at x = 0 ... L).
-pub fn render_svg(doc: &LineDoc, opt: &LineSvgOptions) -> Vec<u8> {
-    let circle_paint = if opt.style == Style::Filled { "fill" } else { "stroke" };
+/// The segments' layer `base`, or one Inkscape layer per palette colour (copies of `base`),
+/// with each segment's layer.
+fn layered(base: Layer, opt: &LineSvgOptions, n: usize) -> (Vec<Layer>, Vec<usize>) {
+    match (&opt.colour_layers, &opt.colours) {
+        (Some(palette), Some(colours)) => {
+            let (specs, of) = crate::model::fill::LayerSpec::colours(palette, colours);
+            let layers = specs
+                .into_iter()
+                .enumerate()
+                .map(|(i, spec)| Layer {
+                    id: Some(format!("layer{}", i + 1)),
+                    label: Some(spec.label),
+                    pen: spec.pen,
+                    ..base.clone()
+                })
+                .collect();
+            (layers, of)
+        }
+        _ => (vec![base], vec![0; n]),
+    }
+}
+
+/// A 1D fill as a picture, y down (the line runs left to right at x = 0 ... L).
+pub fn picture(doc: &LineDoc, opt: &LineSvgOptions) -> Picture {
+    let filled_circles = opt.style == Style::Filled;
     let l = doc.region.length;
     let periodic = doc.region.periodic;
     let d0 = doc.shapes.first().map_or(l / 10.0, |s| s.length);
-    let mut defs = Definitions::new();
-    let mut body: Vec<Group> = Vec::new();
+    let mut clips = Vec::new();
+    let mut layers: Vec<Layer> = Vec::new();
+    let n = doc.shapes.len();
+    let mut add = |(mut ls, of): (Vec<Layer>, Vec<usize>), items: Vec<(usize, Item)>| {
+        for (k, item) in items {
+            if let Some(layer) = ls.get_mut(of.get(k).copied().unwrap_or(0)) {
+                layer.items.push(item);
+            }
+        }
+        layers.append(&mut ls);
+    };
     let height;
     match opt.render {
         Render::Dashes => {
             height = (4.0 * opt.pen_width).max(2.0);
             let y = height / 2.0;
-            let mut g = Layered::new(stroke_group("segments", opt.pen_width), opt, doc.shapes.len());
+            let mut items = Vec::new();
             for (k, s) in doc.shapes.iter().enumerate() {
                 for (a, b) in pieces(s, l, periodic) {
                     if b - a >= INVISIBLE {
-                        let line = Line::new()
-                            .set("x1", num(a, P))
-                            .set("y1", num(y, P))
-                            .set("x2", num(b, P))
-                            .set("y2", num(y, P));
-                        g.add(k, paint(line, opt, k, "stroke"));
+                        items.push((k, painted(Item::new(Shape::Line([a, y], [b, y])), opt, k, false)));
                     }
                 }
             }
-            body.extend(g.groups);
+            add(layered(stroke_layer("segments", opt.pen_width, Vec::new()), opt, n), items);
         }
         Render::Bars => {
             height = opt.bar_height;
-            let base = Group::new().set("id", "segments").set("fill", "black").set("stroke", "none");
-            let mut g = Layered::new(base, opt, doc.shapes.len());
+            let base = Layer {
+                id: Some("segments".into()),
+                paint: Paint::filled(),
+                ..Layer::default()
+            };
+            let mut items = Vec::new();
             for (k, s) in doc.shapes.iter().enumerate() {
                 for (a, b) in pieces(s, l, periodic) {
                     if b - a >= INVISIBLE {
-                        let bar = Rectangle::new()
-                            .set("x", num(a, P))
-                            .set("y", 0)
-                            .set("width", num(b - a, P))
-                            .set("height", num(opt.bar_height, P));
-                        g.add(k, paint(bar, opt, k, "fill"));
+                        let bar = Shape::Rect {
+                            corner: Some([a, 0.0]),
+                            w: b - a,
+                            h: opt.bar_height,
+                        };
+                        items.push((k, painted(Item::new(bar), opt, k, true)));
                     }
                 }
             }
-            body.extend(g.groups);
+            add(layered(base, opt, n), items);
         }
         Render::Circles => {
             height = d0;
-            let mut base = circle_group("segments", opt);
+            let mut base = circle_layer("segments", opt);
             if periodic {
-                defs = defs.add(
-                    ClipPath::new()
-                        .set("id", "interval")
-                        .add(Rectangle::new().set("width", num(l, P)).set("height", num(height, P))),
-                );
-                base = base.set("clip-path", "url(#interval)");
+                clips.push(ClipDef {
+                    id: "interval".into(),
+                    item: Item::new(Shape::Rect {
+                        corner: None,
+                        w: l,
+                        h: height,
+                    }),
+                });
+                base.clip = Some("interval".into());
             }
-            let mut g = Layered::new(base, opt, doc.shapes.len());
+            let mut items = Vec::new();
             for (k, s) in doc.shapes.iter().enumerate() {
                 let r = s.length / 2.0;
                 if r < INVISIBLE {
                     continue;
                 }
                 let mid = s.start + r;
-                g.add(k, paint(circle(mid, height / 2.0, r), opt, k, circle_paint));
+                let c = [mid, height / 2.0];
+                items.push((k, painted(Item::new(Shape::Circle { c, r }), opt, k, filled_circles)));
                 if periodic && s.start + s.length > l {
-                    g.add(k, paint(circle(mid - l, height / 2.0, r), opt, k, circle_paint));
+                    let c = [mid - l, height / 2.0];
+                    items.push((k, painted(Item::new(Shape::Circle { c, r }), opt, k, filled_circles)));
                 }
             }
-            body.extend(g.groups);
+            add(layered(base, opt, n), items);
         }
         Render::Zoom => {
             let row_h = d0;
             let spacing = row_h / 4.0;
             let rows = opt.zoom_rows.max(1);
             height = rows as f64 * row_h + (rows - 1) as f64 * spacing;
-            let mut marks = stroke_group("zoom-marks", opt.pen_width / 2.0);
+            let mut marks = stroke_layer("zoom-marks", opt.pen_width / 2.0, Vec::new());
             let shifts: &[f64] = if periodic { &[0.0, -l, l] } else { &[0.0] };
             for k in 0..rows {
                 let w = l * opt.zoom_fraction.powi(k as i32);
@@ -511,16 +511,16 @@ pub fn render_svg(doc: &LineDoc, opt: &LineSvgOptions) -> Vec<u8> {
                 let y0 = k as f64 * (row_h + spacing);
                 let cy = y0 + row_h / 2.0;
                 let id = format!("row{k}");
-                defs = defs.add(
-                    ClipPath::new().set("id", format!("clip-{id}")).add(
-                        Rectangle::new()
-                            .set("x", 0)
-                            .set("y", num(y0, P))
-                            .set("width", num(l, P))
-                            .set("height", num(row_h, P)),
-                    ),
-                );
-                let mut g = circle_group(&id, opt).set("clip-path", format!("url(#clip-{id})"));
+                clips.push(ClipDef {
+                    id: format!("clip-{id}"),
+                    item: Item::new(Shape::Rect {
+                        corner: Some([0.0, y0]),
+                        w: l,
+                        h: row_h,
+                    }),
+                });
+                let mut row = circle_layer(&id, opt);
+                row.clip = Some(format!("clip-{id}"));
                 for (n, s) in doc.shapes.iter().enumerate() {
                     let r = s.length / 2.0 * scale;
                     if r < INVISIBLE {
@@ -531,74 +531,58 @@ pub fn render_svg(doc: &LineDoc, opt: &LineSvgOptions) -> Vec<u8> {
                         if s1 < a || s0 > b {
                             continue;
                         }
-                        let m = (s0 + s1) / 2.0;
-                        g = g.add(paint(circle((m - a) * scale, cy, r), opt, n, circle_paint));
+                        let c = [((s0 + s1) / 2.0 - a) * scale, cy];
+                        row.items.push(painted(Item::new(Shape::Circle { c, r }), opt, n, filled_circles));
                     }
                 }
-                body.push(g);
+                layers.push(row);
                 if k + 1 < rows {
                     // Ticks at the part of this row that the next row shows.
                     let half = l * opt.zoom_fraction / 2.0;
                     let at = (mid - a) * scale;
                     for x in [at - half, at + half] {
-                        marks = marks.add(
-                            Line::new()
-                                .set("x1", num(x, P))
-                                .set("y1", num(y0 + row_h, P))
-                                .set("x2", num(x, P))
-                                .set("y2", num(y0 + row_h + spacing, P)),
-                        );
+                        marks.items.push(Item::new(Shape::Line([x, y0 + row_h], [x, y0 + row_h + spacing])));
                     }
                 }
             }
-            body.push(marks);
+            layers.push(marks);
         }
-    }
-    let p = &doc.params;
-    let mut d = Document::new()
-        .set("xmlns:inkscape", "http://www.inkscape.org/namespaces/inkscape")
-        .set("width", format!("{}mm", num(l, P)))
-        .set("height", format!("{}mm", num(height, P)))
-        .set("viewBox", format!("0 0 {} {}", num(l, P), num(height, P)))
-        .add(Title::new("").add(Text::new(format!(
-            "zetafill line: {} segments, c = {}, N = {}, seed {}",
-            doc.shapes.len(),
-            p.c,
-            p.n_offset,
-            p.seed
-        ))))
-        .add(Description::new().add(Text::new(format!(
-            "{}{}{}",
-            command_line(doc),
-            drawing_flags(opt),
-            // The G-code's header has it among the plot flags.
-            if opt.colour_layers.is_some() { " --layers colours" } else { "" }
-        ))));
-    if let Some(bg) = &opt.background {
-        d = d.add(crate::output::palette::background(bg.as_str(), l, height));
-    }
-    if opt.render == Render::Zoom || (periodic && opt.render == Render::Circles) {
-        d = d.add(defs);
-    }
-    for g in body {
-        d = d.add(g);
     }
     if opt.boundary {
-        let mut g = stroke_group("boundary", opt.pen_width);
-        for x in [0.0, l] {
-            g = g.add(
-                Line::new()
-                    .set("x1", num(x, P))
-                    .set("y1", 0)
-                    .set("x2", num(x, P))
-                    .set("y2", num(height, P)),
-            );
-        }
-        d = d.add(g);
+        let ends = [0.0, l].map(|x| Item::new(Shape::Line([x, 0.0], [x, height])));
+        layers.push(stroke_layer("boundary", opt.pen_width, ends.to_vec()));
     }
-    let mut s = d.to_string();
-    s.push('\n');
-    s.into_bytes()
+    let mut pic = Picture::new(crate::model::Bounds {
+        x0: 0.0,
+        y0: 0.0,
+        x1: l,
+        y1: height,
+    });
+    pic.flip = false;
+    let p = &doc.params;
+    pic.title = format!(
+        "zetafill line: {} segments, c = {}, N = {}, seed {}",
+        doc.shapes.len(),
+        p.c,
+        p.n_offset,
+        p.seed
+    );
+    pic.desc = format!(
+        "{}{}{}",
+        command_line(doc),
+        drawing_flags(opt),
+        // The G-code's header has it among the plot flags.
+        if opt.colour_layers.is_some() { " --layers colours" } else { "" }
+    );
+    pic.background.clone_from(&opt.background);
+    pic.clips = clips;
+    pic.layers = layers;
+    pic
+}
+
+/// Renders a 1D fill as SVG.
+pub fn render_svg(doc: &LineDoc, opt: &LineSvgOptions) -> Vec<u8> {
+    crate::output::svg::write(&picture(doc, opt))
 }
 
 /// JSON (version 1), numbers in shortest round-trip form, one line.
@@ -642,7 +626,7 @@ pub fn render_digest(doc: &LineDoc) -> Vec<u8> {
 pub fn drawing(
     doc: &LineDoc,
     opt: &LineSvgOptions,
-    build: &crate::output::drawing::BuildOptions,
+    build: &crate::model::fill::BuildOptions,
 ) -> Result<(crate::model::Drawing, crate::model::Bounds), CliError> {
     drawing_of(doc, opt, build, &|_| true)
 }
@@ -651,7 +635,7 @@ pub fn drawing(
 fn drawing_of(
     doc: &LineDoc,
     opt: &LineSvgOptions,
-    build: &crate::output::drawing::BuildOptions,
+    build: &crate::model::fill::BuildOptions,
     keep: &dyn Fn(usize) -> bool,
 ) -> Result<(crate::model::Drawing, crate::model::Bounds), CliError> {
     use crate::model::{Bounds, Drawing, Path};

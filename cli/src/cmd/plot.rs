@@ -3,8 +3,8 @@
 
 use crate::error::CliError;
 use crate::model::doc::FillDoc;
+use crate::model::fill::{FillLook, LayerSpec};
 use crate::model::{Bounds, Drawing};
-use crate::output::drawing::from_fill;
 use crate::output::gcode;
 use crate::plan::plot::GcodePlan;
 
@@ -22,29 +22,18 @@ pub fn render_gcode_pens(
     pens: Option<(&[crate::output::palette::Colour], &[crate::output::palette::Colour], String)>,
     quiet: bool,
 ) -> Result<Vec<u8>, CliError> {
-    let build = a.build;
+    let mut look = FillLook {
+        build: a.build,
+        plotter: true,
+        ..FillLook::default()
+    };
     let (x0, y0, x1, y1) = doc.bbox();
     let mut header = format!("{}{}", crate::output::svg::command_line(doc), a.flags);
-    let layers: Vec<(String, Drawing)> = match pens {
-        None => vec![(String::new(), from_fill(doc, &build))],
-        Some((colours, palette, flags)) => {
-            header.push_str(&flags);
-            palette
-                .iter()
-                .map(|c| {
-                    let mut part = doc.clone();
-                    part.shapes = doc
-                        .shapes
-                        .iter()
-                        .zip(colours)
-                        .filter(|(_, k)| *k == c)
-                        .map(|(s, _)| s.clone())
-                        .collect();
-                    (c.clone(), from_fill(&part, &build))
-                })
-                .collect()
-        }
-    };
+    if let Some((colours, palette, flags)) = pens {
+        header.push_str(&flags);
+        (look.layers, look.layer_of) = LayerSpec::colours(palette, colours);
+    }
+    let layers = crate::model::fill::picture(doc, &look).pens();
     pens_gcode(&layers, &Bounds { x0, y0, x1, y1 }, a, vec![header], quiet)
 }
 

@@ -10,7 +10,7 @@
 //!   polylines).
 //! - [`place`](mod@place): [`Placement`] scales and moves a drawing onto a bed or a page.
 //!
-//! [`crate::output::drawing::from_fill`] builds a drawing from a fill; the writers of
+//! [`fill::picture`] draws a fill as a [`Picture`], [`fill::from_fill`] as pen strokes; the writers of
 //! [`crate::output`] turn drawings into SVG or G-code. Any mode that produces lines can write
 //! G-code the same way `zetafill fill` does:
 //!
@@ -34,13 +34,17 @@
 
 pub mod clip;
 pub mod doc;
+pub mod fill;
+pub mod hatch;
 pub mod path;
 pub mod periodic;
+pub mod picture;
 pub mod place;
 pub mod shape;
 
 pub use clip::{clip_path, clip_segment};
 pub use path::{arc_extremes, polar, Bounds, Drawing, Path, Pt};
 pub use periodic::{periodic_images, shape_images};
+pub use picture::{Item, Layer, Paint, Picture, Shape};
 pub use place::{place, Fit, Placement};
 pub use shape::{polygon_width, shape_bounds, shape_width};

@@ -4,9 +4,7 @@
 
 pub mod csv;
 pub mod digest;
-pub mod drawing;
 pub mod gcode;
-pub mod hatch;
 pub mod height;
 pub mod json;
 pub mod machine;

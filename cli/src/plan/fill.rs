@@ -10,7 +10,7 @@ use crate::args::spec::{self, RegionSpec};
 use crate::args::style::StyleArg;
 use crate::error::CliError;
 use crate::io::write::Dest;
-use crate::output::drawing::BuildOptions;
+use crate::model::fill::BuildOptions;
 use crate::output::height::Relief;
 use crate::output::palette::{ColorBy, Colour, Palette};
 use crate::output::png::{only_png, Raster};

@@ -4,8 +4,8 @@
 
 use crate::args::plot::PlotArgs;
 use crate::error::CliError;
+use crate::model::fill::BuildOptions;
 use crate::model::{place, Bounds, Fit, Placement};
-use crate::output::drawing::BuildOptions;
 use crate::output::gcode::GcodeOptions;
 use crate::output::machine::Machine;
 use crate::output::svg::PageLayout;

@@ -104,8 +104,7 @@ mod zeta;
 pub use self::fixed::Fixed;
 pub use engine::{index_words, Engine, Placement, Stats, Storage};
 pub use feasibility::{
-    capacity, check_first_two, first_shape, first_two_fit, segment_capacity, shape_capacity, AreaSequence, CapacityError, FirstShape,
-    FirstTwoError,
+    check_first_two, first_shape, segment_capacity, shape_capacity, AreaSequence, CapacityError, FirstShape, FirstTwoError,
 };
 pub use geom::{Geo, Point};
 pub use line::{line_index_words, Interval, LineEngine, LineParams, LinePlacement, LineStorage, Segment};
@@ -158,6 +157,11 @@ pub mod internals {
     /// Shape kinds, mixes and their geometry.
     pub mod shape {
         pub use crate::shape::*;
+    }
+    /// The up-front checks' building blocks: the capacity search for any width function, and
+    /// the first-two-shapes test for given areas.
+    pub mod feasibility {
+        pub use crate::feasibility::{capacity, first_two_fit};
     }
     /// The fixed-capacity multi-level spatial hash.
     pub mod spatial {

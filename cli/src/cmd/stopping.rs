@@ -31,7 +31,7 @@ pub fn sequence(total: f64, c: f64, n: f64) -> Result<AreaSequence, CliError> {
     AreaSequence::new(total, c, n).map_err(|e| CliError::arg("--n-offset", e))
 }
 
-/// The slots the stop conditions need, as the core's [`zetafill::capacity`] found them; a
+/// The slots the stop conditions need, as the core found them ([`zetafill::shape_capacity`], [`zetafill::segment_capacity`]); a
 /// stop condition no run of the unit's size can meet is refused naming its flag.
 pub fn slots(found: Result<u64, CapacityError>, unit: Unit) -> Result<u64, CliError> {
     found.map_err(|e| match e {

@@ -34,7 +34,11 @@ fn render(args_file: &Path) -> (PathBuf, Vec<u8>) {
         return (gallery().join(&t.output.output), bytes);
     }
     if let zetafill_cli::Command::Territory(t) = command {
-        let bytes = zetafill_cli::cmd::territory::output(&t).unwrap_or_else(|e| panic!("{}: {e}", args_file.display()));
+        let format = zetafill_cli::args::territory::TerritoryFormat::resolve(t.output.format, &t.output.output)
+            .unwrap_or_else(|e| panic!("{}: {e}", args_file.display()));
+        let bytes = zetafill_cli::plan::territory::resolve_as(&t, format)
+            .and_then(|(run, draw)| zetafill_cli::cmd::territory::output(&run, &draw, format))
+            .unwrap_or_else(|e| panic!("{}: {e}", args_file.display()));
         return (gallery().join(&t.output.output), bytes);
     }
     if let zetafill_cli::Command::Line(l) = command {

@@ -6,6 +6,7 @@
 pub mod fill;
 pub mod line;
 pub mod plot;
+pub mod territory;
 pub mod tile;
 
 use crate::args::common::{PowerLawArgs, StopArgs};

@@ -47,9 +47,9 @@ where
 pub fn run(cli: Cli) -> Result<(), CliError> {
     match cli.command {
         Command::Fill(a) => cmd::fill::run(&plan::fill::resolve(&a)?),
-        Command::Line(a) => cmd::line::run(&a),
-        Command::Territory(a) => cmd::territory::run(&a),
-        Command::Tile(a) => cmd::tile::run(&a),
+        Command::Line(a) => cmd::line::run(&plan::line::resolve(&a)?),
+        Command::Territory(a) => cmd::territory::run(&plan::territory::resolve(&a)?),
+        Command::Tile(a) => cmd::tile::run(&plan::tile::resolve(&a)?),
         Command::Stats(s) => cmd::stats::run(&s),
         Command::Machines(m) => cmd::machines::run(&m),
     }

@@ -604,7 +604,8 @@ proptest::proptest! {
         let Ok(zetafill_cli::Cli { command: zetafill_cli::Command::Tile(a) }) = zetafill_cli::Cli::try_parse_from(&args) else {
             panic!("{args:?} does not parse")
         };
-        match zetafill_cli::cmd::tile::output(&a) {
+        let json = zetafill_cli::args::tile::TileFormat::Json;
+        match zetafill_cli::plan::tile::resolve_as(&a, json).and_then(|(run, draw)| zetafill_cli::cmd::tile::output(&run, &draw, json)) {
             Err(e) => proptest::prop_assert_eq!(e.exit_code(), 2, "{:?}: {}", args, e),
             Ok((_, bytes)) => {
                 let doc = parse_json(&bytes);

@@ -26,19 +26,28 @@ fn render(args_file: &Path) -> (PathBuf, Vec<u8>) {
         .unwrap_or_else(|e| panic!("{}: {e}", args_file.display()))
         .command;
     if let zetafill_cli::Command::Tile(t) = command {
-        let (_, bytes) = zetafill_cli::cmd::tile::output(&t).unwrap_or_else(|e| panic!("{}: {e}", args_file.display()));
+        let format = zetafill_cli::args::tile::TileFormat::resolve(t.output.format, &t.output.output)
+            .unwrap_or_else(|e| panic!("{}: {e}", args_file.display()));
+        let (_, bytes) = zetafill_cli::plan::tile::resolve_as(&t, format)
+            .and_then(|(run, draw)| zetafill_cli::cmd::tile::output(&run, &draw, format))
+            .unwrap_or_else(|e| panic!("{}: {e}", args_file.display()));
         return (gallery().join(&t.output.output), bytes);
     }
     if let zetafill_cli::Command::Territory(t) = command {
-        let bytes = zetafill_cli::cmd::territory::output(&t).unwrap_or_else(|e| panic!("{}: {e}", args_file.display()));
+        let format = zetafill_cli::args::territory::TerritoryFormat::resolve(t.output.format, &t.output.output)
+            .unwrap_or_else(|e| panic!("{}: {e}", args_file.display()));
+        let bytes = zetafill_cli::plan::territory::resolve_as(&t, format)
+            .and_then(|(run, draw)| zetafill_cli::cmd::territory::output(&run, &draw, format))
+            .unwrap_or_else(|e| panic!("{}: {e}", args_file.display()));
         return (gallery().join(&t.output.output), bytes);
     }
     if let zetafill_cli::Command::Line(l) = command {
-        let (doc, halt) = zetafill_cli::cmd::line::compute(&l).unwrap_or_else(|e| panic!("{}: {e}", args_file.display()));
-        assert!(halt.is_none(), "{} halted", args_file.display());
         let format = zetafill_cli::args::format::Format::resolve(l.output.format, &l.output.output)
             .unwrap_or(zetafill_cli::args::format::Format::Svg);
-        let bytes = zetafill_cli::cmd::line::render(&doc, format, &l).unwrap_or_else(|e| panic!("{}: {e}", args_file.display()));
+        let (run, draw) = zetafill_cli::plan::line::resolve_as(&l, format).unwrap_or_else(|e| panic!("{}: {e}", args_file.display()));
+        let (doc, halt) = zetafill_cli::cmd::line::compute(&run).unwrap_or_else(|e| panic!("{}: {e}", args_file.display()));
+        assert!(halt.is_none(), "{} halted", args_file.display());
+        let bytes = zetafill_cli::cmd::line::render(&doc, format, &draw).unwrap_or_else(|e| panic!("{}: {e}", args_file.display()));
         return (gallery().join(&l.output.output), bytes);
     }
     let a = parse_fill(&args);

@@ -8,8 +8,20 @@ use crate::args::plot::PlotArgs;
 use crate::args::raster::RasterArgs;
 use crate::args::spec;
 use crate::args::style::StyleArg;
-use crate::cmd::line::Render;
 use clap::Args;
+
+/// `--render`: how segments are drawn in SVG and PNG.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum RenderArg {
+    /// Each segment a stroke along one line: one pen-down per segment.
+    Dashes,
+    /// Each segment a circle of diameter L_i centred on the line (the paper's Figure 3).
+    Circles,
+    /// Each segment a filled bar `--bar-height` tall (for engraving).
+    Bars,
+    /// Rows of circles, each zooming into the central `--zoom-fraction` of the row above.
+    Zoom,
+}
 
 /// Largest number of segments one run may hold (28 bytes each in the core).
 pub const MAX_SEGMENTS: u64 = 10_000_000;
@@ -62,7 +74,7 @@ pub struct LineArgs {
     pub output: OutputArgs<Format>,
     /// SVG: how segments are drawn.
     #[arg(long, value_enum, default_value = "circles")]
-    pub render: Render,
+    pub render: RenderArg,
     /// SVG: circles as outlines (plotters) or filled (dashes are strokes, bars always filled).
     #[arg(long, value_enum, default_value = "outline")]
     pub style: StyleArg,

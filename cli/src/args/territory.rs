@@ -6,7 +6,6 @@ use crate::args::common::{OutputArgs, SeedArgs};
 use crate::args::plot::PlotArgs;
 use crate::args::raster::RasterArgs;
 use crate::args::spec::{self, RegionSpec};
-use crate::cmd::territory::render::Render;
 use crate::error::CliError;
 use crate::geometry::voronoi::Pt;
 use clap::{Args, ValueEnum};
@@ -14,6 +13,19 @@ use std::path::{Path, PathBuf};
 
 /// Largest number of sites one run may hold.
 pub const MAX_POINTS: usize = 10_000_000;
+
+/// `--render`: what to draw.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum RenderArg {
+    /// Territory boundaries as merged polylines (plotters).
+    Boundaries,
+    /// All Voronoi edges: cells thin, boundaries at pen width (two layers).
+    Cells,
+    /// Cells filled with their HSB colours (screens, prints).
+    Filled,
+    /// The fill's own shapes filled with their site's colour (only with --sites-from).
+    Shapes,
+}
 
 /// Output formats of `zetafill territory`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -74,7 +86,7 @@ pub struct TerritoryArgs {
     pub seed: SeedArgs,
     /// boundaries (plotters) | cells | filled | shapes (with --sites-from).
     #[arg(long, value_enum, default_value = "boundaries")]
-    pub render: Render,
+    pub render: RenderArg,
     /// No density control: every new point uniform over the region.
     #[arg(long)]
     pub uniform: bool,

@@ -6,10 +6,39 @@ use crate::args::common::{OutputArgs, SeedArgs};
 use crate::args::plot::PlotArgs;
 use crate::args::raster::{RasterArgs, ReliefArg};
 use crate::args::spec;
-use crate::cmd::tile::render::{Layout, Render, Style};
 use crate::error::CliError;
 use clap::{Args, ValueEnum};
 use std::path::Path;
+
+/// `--render`: what the tile shows.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum RenderArg {
+    /// The discs.
+    Discs,
+    /// Voronoi "cobblestones" of the disc centres.
+    Voronoi,
+}
+
+/// `--style`: how pieces are drawn.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum StyleArg {
+    /// Outlines, for plotters (Voronoi: the cell edges).
+    Outline,
+    /// Filled shapes, for screens (Voronoi: the cells, inset by half the local spacing).
+    Filled,
+}
+
+/// `--layout`: what is laid out.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum LayoutArg {
+    /// The tile alone (the texture).
+    Tile,
+    /// Rows of tiles, each row half the scale of the one below, showing how the tile meets its
+    /// copies.
+    Mosaic,
+    /// Rings of tiles around a disc, each ring with twice as many tiles as the one inside it.
+    Planet,
+}
 
 /// Output formats of `zetafill tile`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -65,14 +94,14 @@ pub struct TileArgs {
     pub seed: SeedArgs,
     /// discs | voronoi (cobblestones of the disc centres).
     #[arg(long, value_enum, default_value = "discs")]
-    pub render: Render,
+    pub render: RenderArg,
     /// outline (plotters) | filled (screens).
     #[arg(long, value_enum, default_value = "outline")]
-    pub style: Style,
+    pub style: StyleArg,
     /// tile (the texture) | mosaic (rows of copies, each half the scale of the one below) |
     /// planet (rings of copies, each holding twice as many as the one inside it).
     #[arg(long, value_enum, default_value = "tile")]
-    pub layout: Layout,
+    pub layout: LayoutArg,
     /// Mosaic and planet: rows (rings) of tiles.
     #[arg(long, value_parser = clap::value_parser!(u32).range(1..=10))]
     pub rows: Option<u32>,

@@ -3,18 +3,17 @@
 //! its outputs: SVG (dashes, circles, bars or zoom rows), PNG, JSON, CSV and the digest.
 
 use crate::args::format::Format;
-pub use crate::args::line::LineArgs;
 use crate::cmd::stopping::{self, Unit};
 use crate::error::CliError;
-use crate::io::write::Dest;
 use crate::model::picture::ClipDef;
 use crate::model::{Item, Layer, Paint, Picture, Shape};
 use crate::output::svg::Style;
-use clap::ValueEnum;
+use crate::plan::line::{first_segment_error, halt_advice, param_error, LineDraw, LinePlan, LineRun};
+use crate::plan::plot::GcodePlan;
 use serde::Serialize;
 use std::fmt::Write as _;
-use zetafill::{line_index_words, Interval, LineEngine, LineParams, LineStorage, Segment, StopReason};
-use zetafill::{ParamError, StepError};
+use zetafill::StepError;
+use zetafill::{line_index_words, LineEngine, LineStorage, Segment, StopReason};
 
 pub use crate::args::line::MAX_SEGMENTS;
 
@@ -25,7 +24,7 @@ const SEGMENTS: Unit = Unit {
 };
 
 /// How segments are drawn in SVG and PNG.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Render {
     /// Each segment a stroke along one line: one pen-down per segment.
     Dashes,
@@ -35,6 +34,18 @@ pub enum Render {
     Bars,
     /// Rows of circles, each zooming into the central `--zoom-fraction` of the row above.
     Zoom,
+}
+
+impl Render {
+    /// The name `--render` takes.
+    pub fn name(self) -> &'static str {
+        match self {
+            Render::Dashes => "dashes",
+            Render::Circles => "circles",
+            Render::Bars => "bars",
+            Render::Zoom => "zoom",
+        }
+    }
 }
 
 /// A finished (or halted) 1D fill: DESIGN section 3's JSON with `"mode": "line"`.
@@ -126,42 +137,10 @@ pub struct SegmentDoc {
     pub trials: u64,
 }
 
-/// Names the flag behind a core parameter error.
-fn param_error(e: ParamError) -> CliError {
-    let flag = match e {
-        ParamError::Exponent => "--c",
-        ParamError::Offset | ParamError::Zeta => "--n-offset",
-        ParamError::Region => "--length",
-        ParamError::Gap => "--gap",
-        ParamError::MaxTrials => "--max-trials",
-        _ => "--count",
-    };
-    CliError::arg(flag, e)
-}
-
 /// Runs the fill and returns the document (and the halt, if any). Nothing is written.
-pub fn compute(a: &LineArgs) -> Result<(LineDoc, Option<StepError>), CliError> {
-    let params = LineParams {
-        c: crate::plan::exponent(&a.power, 1.4, LineParams::c_from_dimension),
-        n_offset: a.power.n_offset,
-        gap: a.gap,
-        max_trials: a.max_trials.max_trials,
-    };
-    let interval = Interval {
-        length: a.length,
-        periodic: a.periodic,
-    };
-    if 2.0 * a.gap >= a.length {
-        return Err(CliError::arg(
-            "--gap",
-            format!(
-                "{} mm leaves no room in a {} mm interval; it must be under half the length",
-                a.gap, a.length
-            ),
-        ));
-    }
-    let stop = crate::plan::stop(&a.stop);
-    let sequence = stopping::sequence(a.length, params.c, params.n_offset)?;
+pub fn compute(a: &LineRun) -> Result<(LineDoc, Option<StepError>), CliError> {
+    let (params, interval, stop) = (a.params, a.interval, a.stop);
+    let sequence = stopping::sequence(interval.length, params.c, params.n_offset)?;
     let cap = stopping::slots(zetafill::segment_capacity(&sequence, &stop, SEGMENTS.max), SEGMENTS)? as usize;
     let mut segs = vec![Segment::<f64>::default(); cap];
     let mut index = vec![0u32; line_index_words(cap)];
@@ -174,7 +153,7 @@ pub fn compute(a: &LineArgs) -> Result<(LineDoc, Option<StepError>), CliError> {
         },
     )
     .map_err(param_error)?;
-    let mut rng = zetafill::rng_from_seed(a.seed.seed);
+    let mut rng = zetafill::rng_from_seed(a.seed);
     let bar = stopping::progress_bar(a.quiet, stop.count, SEGMENTS);
     let mut trials = Vec::with_capacity(cap);
     let reason = engine.run(&mut rng, &stop, |p| {
@@ -190,17 +169,7 @@ pub fn compute(a: &LineArgs) -> Result<(LineDoc, Option<StepError>), CliError> {
         StopReason::Count => ("count", None),
         StopReason::Fill => ("fill", None),
         StopReason::MinSize => ("min-size", None),
-        StopReason::Step(StepError::CannotFit { index: 0 }) => {
-            return Err(CliError::arg(
-                if a.gap > 0.0 { "--gap" } else { "--c" },
-                format!(
-                    "the first segment ({:.4} mm) with a gap of {} mm does not fit the {} mm interval; lower --c, raise --n-offset or lower --gap",
-                    engine.length_of(0),
-                    a.gap,
-                    a.length
-                ),
-            ));
-        }
+        StopReason::Step(StepError::CannotFit { index: 0 }) => return Err(first_segment_error(a, engine.length_of(0))),
         StopReason::Step(e @ (StepError::Halted { .. } | StepError::CannotFit { .. })) => ("halted", Some(e)),
         #[allow(unreachable_patterns)]
         r => return Err(CliError::Io(format!("internal: the fill stopped unexpectedly ({r:?})"))),
@@ -224,7 +193,7 @@ pub fn compute(a: &LineArgs) -> Result<(LineDoc, Option<StepError>), CliError> {
         params: LineParamsDoc {
             c: params.c,
             n_offset: params.n_offset,
-            seed: a.seed.seed,
+            seed: a.seed,
             gap: params.gap,
             count: stop.count,
             fill: stop.fill,
@@ -234,8 +203,8 @@ pub fn compute(a: &LineArgs) -> Result<(LineDoc, Option<StepError>), CliError> {
         },
         region: IntervalDoc {
             kind: "interval",
-            length: a.length,
-            periodic: a.periodic,
+            length: interval.length,
+            periodic: interval.periodic,
         },
         zeta: engine.zeta(),
         shapes,
@@ -303,8 +272,7 @@ fn pieces(s: &SegmentDoc, l: f64, periodic: bool) -> Vec<(f64, f64)> {
 /// The drawing flags of `opt` as command-line text (each with a leading space): with
 /// [`command_line`], the command that reproduces a drawing.
 fn drawing_flags(opt: &LineSvgOptions) -> String {
-    let name = |v: Option<clap::builder::PossibleValue>| v.map(|v| v.get_name().to_string()).unwrap_or_default();
-    let mut s = format!(" --render {} --style {}", name(opt.render.to_possible_value()), opt.style.name());
+    let mut s = format!(" --render {} --style {}", opt.render.name(), opt.style.name());
     if opt.pen_width != 0.3 {
         let _ = write!(s, " --pen-width {}", opt.pen_width);
     }
@@ -719,11 +687,10 @@ fn drawing_of(
     Ok((Drawing { paths }, frame))
 }
 
-fn render_gcode(doc: &LineDoc, opt: &LineSvgOptions, a: &LineArgs) -> Result<Vec<u8>, CliError> {
-    let build = a.plot.build_options()?;
+fn render_gcode(doc: &LineDoc, opt: &LineSvgOptions, gcode: &GcodePlan, quiet: bool) -> Result<Vec<u8>, CliError> {
+    let build = gcode.build;
     let (d, frame) = drawing(doc, opt, &build)?;
-    let header = vec![format!("{}{}{}", command_line(doc), drawing_flags(opt), a.plot.flags())];
-    let gcode = crate::plan::plot::GcodePlan::resolve(&a.plot)?;
+    let header = vec![format!("{}{}{}", command_line(doc), drawing_flags(opt), gcode.flags)];
     match (&opt.colour_layers, &opt.colours) {
         // One pen per palette colour, each drawing its segments, placed as the whole.
         (Some(palette), Some(colours)) => {
@@ -732,119 +699,50 @@ fn render_gcode(doc: &LineDoc, opt: &LineSvgOptions, a: &LineArgs) -> Result<Vec
                 let (pen, _) = drawing_of(doc, opt, &build, &|k| colours.get(k) == Some(c))?;
                 pens.push((c.clone(), pen));
             }
-            crate::cmd::plot::pens_gcode(&pens, &frame, &gcode, header, a.quiet)
+            crate::cmd::plot::pens_gcode(&pens, &frame, gcode, header, quiet)
         }
-        _ => crate::cmd::plot::drawing_gcode(&d, &frame, &gcode, header, a.quiet),
+        _ => crate::cmd::plot::drawing_gcode(&d, &frame, gcode, header, quiet),
     }
 }
 
 /// Renders a document in a format.
-pub fn render(doc: &LineDoc, format: Format, a: &LineArgs) -> Result<Vec<u8>, CliError> {
+pub fn render(doc: &LineDoc, format: Format, d: &LineDraw) -> Result<Vec<u8>, CliError> {
     let opt = LineSvgOptions {
-        render: a.render,
-        style: a.style.into(),
-        pen_width: a.pen_width,
-        bar_height: a.bar_height,
-        zoom_rows: a.zoom_rows,
-        zoom_fraction: a.zoom_fraction,
-        zoom_center: a.zoom_center.unwrap_or(a.length / 2.0),
-        boundary: a.boundary,
-        colours: a.colour.palette.as_ref().map(|p| {
+        render: d.render,
+        style: d.style,
+        pen_width: d.pen_width,
+        bar_height: d.bar_height,
+        zoom_rows: d.zoom_rows,
+        zoom_fraction: d.zoom_fraction,
+        zoom_center: d.zoom_center,
+        boundary: d.boundary,
+        colours: d.palette.as_ref().map(|p| {
             let items: Vec<(u64, f64)> = doc.shapes.iter().map(|s| (s.index, s.length)).collect();
-            crate::output::palette::assign_items(&p.0, a.colour.by(), doc.params.seed, &items, |_| 0)
+            crate::output::palette::assign_items(&p.0, d.color_by, doc.params.seed, &items, |_| 0)
         }),
-        background: a.colour.background.clone(),
-        colour_flags: a.colour.flags(),
-        colour_layers: match (&a.colour.palette, a.plot.layers) {
-            (Some(p), crate::args::plot::Layers::Colours) => Some(p.0.clone()),
-            _ => None,
-        },
+        background: d.background.clone(),
+        colour_flags: d.colour_flags.clone(),
+        colour_layers: d.palette.as_ref().filter(|_| d.colour_layers).map(|p| p.0.clone()),
     };
     Ok(match format {
         Format::Svg => render_svg(doc, &opt),
         Format::Json => render_json(doc)?,
         Format::Csv => render_csv(doc),
         Format::Digest => render_digest(doc),
-        Format::Png => a.raster.raster().render(&render_svg(doc, &opt))?,
-        Format::Gcode => render_gcode(doc, &opt, a)?,
-        #[allow(unreachable_patterns)]
-        f => {
-            return Err(CliError::arg(
-                "--format",
-                format!("{f:?} is not available for a 1D fill; use svg, png, json, csv or digest"),
-            ))
-        }
+        Format::Png => d.raster.render(&render_svg(doc, &opt))?,
+        Format::Gcode => render_gcode(doc, &opt, d.gcode.as_ref().ok_or_else(no_gcode)?, d.quiet)?,
     })
 }
 
-/// Refuses, before any work, a plot flag that `format` does not read: no output has pages or
-/// layers, only the G-code reads the other plot flags (the SVG is the paper's figure), and it
-/// has no zoom or hatched dashes.
-fn check_plot(a: &LineArgs, format: Format) -> Result<(), CliError> {
-    let p = &a.plot;
-    p.build_options()?;
-    if p.page.is_some() || matches!(p.layers, crate::args::plot::Layers::SizeBands(_)) {
-        return Err(CliError::arg(
-            if p.page.is_some() { "--page" } else { "--layers" },
-            "is not available for line in any format: its SVG is the interval at full size, with no page or size layers, and its G-code goes on the machine's bed (--fit, --center, --margin); drop it (--layers colours splits a coloured drawing by pen)",
-        ));
-    }
-    if p.layers == crate::args::plot::Layers::Colours {
-        if a.colour.palette.is_none() {
-            return Err(CliError::arg(
-                "--layers",
-                "colours makes one layer (one pen) per --palette colour: give --palette",
-            ));
-        }
-        if a.render == Render::Zoom || !matches!(format, Format::Svg | Format::Gcode) {
-            return Err(CliError::arg(
-                "--layers",
-                "colours splits a plotter drawing by pen: write .svg or .gcode, with --render dashes, circles or bars",
-            ));
-        }
-    }
-    if format != Format::Gcode {
-        return p.refuse_except(&["--layers"], |_| crate::args::plot::FOR_GCODE.to_string());
-    }
-    p.check_gcode()?;
-    match a.render {
-        Render::Zoom => Err(CliError::arg("--render", "zoom has no G-code form; use dashes, circles or bars")),
-        Render::Dashes if p.hatch.is_some() => Err(CliError::arg(
-            "--hatch",
-            "dashes are single strokes with nothing to hatch: use --render bars or circles",
-        )),
-        _ => Ok(()),
-    }
+/// The G-code plan of a drawing that has none (it was resolved for another format).
+fn no_gcode() -> CliError {
+    CliError::Io("internal: G-code asked of a plan resolved for another format".into())
 }
 
-/// `zetafill line`.
-pub fn run(a: &LineArgs) -> Result<(), CliError> {
-    if a.zoom_center.is_some_and(|x| x > a.length) {
-        return Err(CliError::arg(
-            "--zoom-center",
-            format!("must lie in the interval [0, {}]", a.length),
-        ));
-    }
-    let dest = Dest::parse(&a.output.output);
-    let inputs: Vec<&std::path::Path> = a.plot.machine_file().into_iter().collect();
-    dest.check("--output", &inputs)?;
-    let format = Format::resolve(a.output.format, &a.output.output)?;
-    a.raster.check(format == Format::Png)?;
-    check_plot(a, format)?;
-    let pens = format == Format::Gcode && a.plot.layers == crate::args::plot::Layers::Colours && a.colour.background.is_none();
-    a.colour.check(
-        matches!(format, Format::Svg | Format::Png) || pens,
-        "write .svg or .png (or G-code with --layers colours, without --background)",
-        true,
-    )?;
-    let (doc, halt) = compute(a)?;
-    let bytes = render(&doc, format, a)?;
-    dest.write(&bytes)?;
-    stopping::outcome(halt, SEGMENTS, |index| {
-        if index < 100 {
-            "the first segments left no room for this one: lower --c, raise --n-offset, or try another --seed"
-        } else {
-            "raise --max-trials, lower --c, or ask for fewer segments"
-        }
-    })
+/// `zetafill line`: runs the plan and writes its output.
+pub fn run(plan: &LinePlan) -> Result<(), CliError> {
+    let (doc, halt) = compute(&plan.run)?;
+    let bytes = render(&doc, plan.format, &plan.draw)?;
+    plan.dest.write(&bytes)?;
+    stopping::outcome(halt, SEGMENTS, halt_advice)
 }

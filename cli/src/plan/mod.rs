@@ -4,7 +4,10 @@
 //! write what the plan says, and never look at a flag again.
 
 pub mod fill;
+pub mod line;
 pub mod plot;
+pub mod territory;
+pub mod tile;
 
 use crate::args::common::{PowerLawArgs, StopArgs};
 use zetafill::Stop;

@@ -20,7 +20,7 @@ use svg::Document;
 const P: usize = 4;
 
 /// What to draw.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Render {
     /// Territory boundaries as merged polylines (plotters).
     Boundaries,

@@ -7,58 +7,24 @@
 pub mod model;
 pub mod render;
 
-pub use crate::args::tile::{TileArgs, TileFormat};
+use crate::args::tile::TileFormat;
 use crate::error::CliError;
-use crate::io::write::Dest;
 use crate::output::num;
+use crate::plan::plot::GcodePlan;
+use crate::plan::tile::{layout_name, seams_apart, too_many_pieces, TileDraw, TilePlan, TileRun};
 use model::{Tile, TileSpec};
-use render::{Arrangement, Layout, Piece, Render, Sheet, Style};
+use render::{Layout, Piece, Render, Sheet, Style};
 use serde::Serialize;
 use std::io::IsTerminal;
 use svg::node::element::{Circle, ClipPath, Definitions, Description, Group, Path as SvgPath, Rectangle, Title};
 use svg::node::{Node, Text};
 use svg::Document;
 
-/// Refuses the plot flags that the output does not read, before any work.
-fn check_plot(a: &TileArgs, format: TileFormat) -> Result<(), CliError> {
-    use crate::args::plot::{FOR_GCODE, GCODE_FLAGS};
-    let p = &a.plot;
-    if format == TileFormat::Gcode {
-        let allowed: Vec<&str> = GCODE_FLAGS
-            .iter()
-            .copied()
-            .chain(["--fit", "--center", "--margin", "--layers"])
-            .collect();
-        p.refuse_except(&allowed, |f| {
-            format!("is not available for tile: {f} is for fills (the tile draws its own outlines, on the machine's bed)")
-        })?;
-        p.check_gcode()?;
-    } else {
-        p.refuse_except(&["--layers"], |_| FOR_GCODE.to_string())?;
-    }
-    match p.layers {
-        crate::args::plot::Layers::None => Ok(()),
-        crate::args::plot::Layers::SizeBands(_) => Err(CliError::arg(
-            "--layers",
-            "size bands are for fills; a coloured tile splits by pen with --layers colours",
-        )),
-        crate::args::plot::Layers::Colours if a.colour.palette.is_none() => Err(CliError::arg(
-            "--layers",
-            "colours makes one layer (one pen) per --palette colour: give --palette",
-        )),
-        crate::args::plot::Layers::Colours if !matches!(format, TileFormat::Svg | TileFormat::Gcode) => Err(CliError::arg(
-            "--layers",
-            "colours splits a plotter drawing by pen: write .svg or .gcode",
-        )),
-        crate::args::plot::Layers::Colours => Ok(()),
-    }
-}
-
 /// Each laid-out piece's colour from the palette: a copy of piece `j mod n` (`tags`), at its
 /// copy's scale (`scales`). Ids are the tile's discs, so every image and copy of a disc takes
 /// the same colour (but for size).
-fn piece_colours(a: &TileArgs, tags: &[render::Tag], scales: &[f64]) -> Option<Vec<crate::output::palette::Colour>> {
-    let p = a.colour.palette.as_ref()?;
+fn piece_colours(d: &TileDraw, seed: u64, tags: &[render::Tag], scales: &[f64]) -> Option<Vec<crate::output::palette::Colour>> {
+    let p = d.palette.as_ref()?;
     let items: Vec<(u64, f64)> = scales
         .iter()
         .enumerate()
@@ -67,20 +33,21 @@ fn piece_colours(a: &TileArgs, tags: &[render::Tag], scales: &[f64]) -> Option<V
             t.map_or((0, 0.0), |t| (t.disc as u64, t.r * s))
         })
         .collect();
-    Some(crate::output::palette::assign_items(
-        &p.0,
-        a.colour.by(),
-        a.seed.seed,
-        &items,
-        |_| 0,
-    ))
+    Some(crate::output::palette::assign_items(&p.0, d.color_by, seed, &items, |_| 0))
 }
 
 /// The drawing as G-code: every piece as a path (circles as arcs where the machine allows),
 /// the sheet placed on the machine's bed.
 /// With `pens` (the palette and each piece's colour), one pen per colour, in the palette's
 /// order, with a pen change between them.
-fn gcode(pieces: &[Piece], sheet: Sheet, a: &TileArgs, header: String, pens: Option<(&[String], &[String])>) -> Result<Vec<u8>, CliError> {
+fn gcode(
+    pieces: &[Piece],
+    sheet: Sheet,
+    plan: &GcodePlan,
+    quiet: bool,
+    header: String,
+    pens: Option<(&[String], &[String])>,
+) -> Result<Vec<u8>, CliError> {
     use crate::cmd::plot::pens_gcode;
     use crate::model::{Bounds, Drawing, Path as PlotPath};
     let path = |p: &Piece| match p {
@@ -109,13 +76,7 @@ fn gcode(pieces: &[Piece], sheet: Sheet, a: &TileArgs, header: String, pens: Opt
         x1: sheet.width,
         y1: sheet.height,
     };
-    pens_gcode(
-        &layers,
-        &frame,
-        &crate::plan::plot::GcodePlan::resolve(&a.plot)?,
-        vec![header],
-        a.quiet,
-    )
+    pens_gcode(&layers, &frame, plan, vec![header], quiet)
 }
 
 /// One disc in the JSON output.
@@ -168,48 +129,6 @@ pub struct TileDoc {
     pub stats: TileStatsDoc,
 }
 
-/// The arrangement the flags ask for, with each layout's defaults; refuses layout flags the
-/// layout does not read.
-pub fn arrangement(a: &TileArgs) -> Result<Arrangement, CliError> {
-    let unread = |flag: &str, why: &str| {
-        Err(CliError::arg(
-            flag,
-            format!("is not read by --layout {}: {why}", layout_name(a.layout)),
-        ))
-    };
-    match a.layout {
-        Layout::Tile => {
-            if a.rows.is_some() {
-                return unread("--rows", "the tile is drawn alone; use --layout mosaic or planet");
-            }
-            if a.columns.is_some() {
-                return unread("--columns", "the tile is drawn alone; use --layout mosaic or planet");
-            }
-        }
-        Layout::Mosaic => {}
-        Layout::Planet => {}
-    }
-    if a.layout != Layout::Planet && a.planet_radius.is_some() {
-        return unread("--planet-radius", "it sizes --layout planet");
-    }
-    let arr = Arrangement {
-        layout: a.layout,
-        rows: a.rows.unwrap_or(4),
-        columns: a.columns.unwrap_or(if a.layout == Layout::Planet { 16 } else { 2 }),
-        radius: a.planet_radius.unwrap_or(100.0),
-    };
-    arr.check(a.width, a.height).map_err(|(flag, msg)| CliError::arg(flag, msg))?;
-    Ok(arr)
-}
-
-fn layout_name(l: Layout) -> &'static str {
-    match l {
-        Layout::Tile => "tile",
-        Layout::Mosaic => "mosaic",
-        Layout::Planet => "planet",
-    }
-}
-
 fn render_name(r: Render) -> &'static str {
     match r {
         Render::Discs => "discs",
@@ -223,28 +142,17 @@ pub const MAX_PIECES: u64 = 2_000_000;
 /// Tile runs of at least this many tries show a progress bar on a terminal.
 const LONG_RUN: u64 = 2_000_000;
 
-/// The band of twins Voronoi cobblestones start from (the "Fractal Tiles" post uses the top quarter).
-const VORONOI_BAND: f64 = 0.25;
-
 /// How far apart (relative to the tile's size) the matching ends of copies may be.
 const SEAM_TOLERANCE: f64 = 1e-9;
 
-/// Grows the tile the flags ask for and its picture. For cobblestones the band of twins
+/// Grows the tile the plan asks for and its picture. For cobblestones the band of twins
 /// doubles until the picture meets its copies; a picture that cannot is refused.
-pub fn compute(a: &TileArgs) -> Result<(Tile, Vec<Piece>, Vec<render::Tag>), CliError> {
-    let mut spec = TileSpec {
-        width: a.width,
-        height: a.height,
-        radius: a.radius,
-        spacing: a.spacing,
-        tries: a.tries,
-        seed: a.seed.seed,
-        band: if a.render == Render::Voronoi { VORONOI_BAND } else { 0.0 },
-    };
-    spec.check().map_err(|(flag, msg)| CliError::arg(flag, msg))?;
+pub fn compute(a: &TileRun) -> Result<(Tile, Vec<Piece>, Vec<render::Tag>), CliError> {
+    let mut spec = a.spec;
+    let (width, height, tries) = (spec.width, spec.height, spec.tries);
     // Long runs show their tries on a terminal (and nothing when piped or with --quiet).
-    let bar = (a.tries >= LONG_RUN && !a.quiet && std::io::stderr().is_terminal()).then(|| {
-        let b = indicatif::ProgressBar::new(a.tries);
+    let bar = (tries >= LONG_RUN && !a.quiet && std::io::stderr().is_terminal()).then(|| {
+        let b = indicatif::ProgressBar::new(tries);
         if let Ok(style) = indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} tries, {elapsed} (eta {eta})") {
             b.set_style(style);
         }
@@ -261,8 +169,8 @@ pub fn compute(a: &TileArgs) -> Result<(Tile, Vec<Piece>, Vec<render::Tag>), Cli
         });
         // The seams are checked on the outlines, whatever the style drawn.
         let lines = render::tile_pieces(&tile, a.render, Style::Outline)?;
-        let gap = render::seam_gaps(&render::ends(&lines, a.width, a.height), a.width);
-        if gap <= SEAM_TOLERANCE * a.width.max(a.height) {
+        let gap = render::seam_gaps(&render::ends(&lines, width, height), width);
+        if gap <= SEAM_TOLERANCE * width.max(height) {
             if let Some(b) = &bar {
                 b.finish_and_clear();
             }
@@ -284,18 +192,12 @@ pub fn compute(a: &TileArgs) -> Result<(Tile, Vec<Piece>, Vec<render::Tag>), Cli
                 num(gap, 6)
             )));
         }
-        return Err(CliError::arg(
-            "--tries",
-            format!(
-                "the cobblestones do not meet their copies even with every centre twinned (ends {} mm apart): the fill is too sparse for its cells to stay near their discs; raise --tries",
-                num(gap, 6)
-            ),
-        ));
+        return Err(seams_apart(gap));
     }
 }
 
 /// The JSON document of a tile.
-pub fn doc(tile: &Tile, a: &TileArgs) -> TileDoc {
+pub fn doc(tile: &Tile, a: &TileRun) -> TileDoc {
     TileDoc {
         version: 1,
         mode: "tile",
@@ -323,32 +225,34 @@ pub fn doc(tile: &Tile, a: &TileArgs) -> TileDoc {
 }
 
 /// The command line that reproduces a run (for the SVG's description).
-fn command_line(a: &TileArgs, arr: &Arrangement) -> String {
+fn command_line(a: &TileRun, d: &TileDraw) -> String {
+    let t = &a.spec;
+    let arr = &d.arrangement;
     let mut s = format!(
         "zetafill tile --width {} --height {} --radius {} --spacing {} --tries {} --seed {} --render {} --layout {}",
-        a.width,
-        a.height,
-        a.radius,
-        a.spacing,
-        a.tries,
-        a.seed.seed,
+        t.width,
+        t.height,
+        t.radius,
+        t.spacing,
+        t.tries,
+        t.seed,
         render_name(a.render),
-        layout_name(a.layout)
+        layout_name(arr.layout)
     );
-    if a.layout != Layout::Tile {
+    if arr.layout != Layout::Tile {
         s.push_str(&format!(" --rows {} --columns {}", arr.rows, arr.columns));
     }
-    if a.layout == Layout::Planet {
+    if arr.layout == Layout::Planet {
         s.push_str(&format!(" --planet-radius {}", arr.radius));
     }
     if a.style == Style::Filled {
         s.push_str(" --style filled");
     }
-    if a.pen_width != 0.3 {
-        s.push_str(&format!(" --pen-width {}", a.pen_width));
+    if d.pen_width != 0.3 {
+        s.push_str(&format!(" --pen-width {}", d.pen_width));
     }
-    s.push_str(&a.colour.flags());
-    s.push_str(&a.plot.flags());
+    s.push_str(&d.colour_flags);
+    s.push_str(&d.plot_flags);
     s
 }
 
@@ -444,63 +348,18 @@ pub fn svg(pieces: &[Piece], sheet: Sheet, look: &Look<'_>, title: &str, desc: &
     s.into_bytes()
 }
 
-/// Refuses colour flags the output cannot show.
-fn check_colours(a: &TileArgs, format: TileFormat) -> Result<(), CliError> {
-    let picture = matches!(format, TileFormat::Svg | TileFormat::Png) && a.relief.is_none();
-    let pens = format == TileFormat::Gcode && a.plot.layers == crate::args::plot::Layers::Colours && a.colour.background.is_none();
-    a.colour.check(
-        picture || pens,
-        "write .svg or .png, without --relief (or G-code with --layers colours, without --background)",
-        true,
-    )?;
-    if a.colour.palette.is_some() && a.render == Render::Voronoi && a.style == Style::Outline {
-        return Err(CliError::arg(
-            "--palette",
-            "cobblestone outlines are edges, each shared by two cells; add --style filled to colour the cells",
-        ));
-    }
-    Ok(())
-}
-
-/// The output the flags ask for (checked first: nothing is computed for bad input), and the
-/// tile it shows.
-pub fn output(a: &TileArgs) -> Result<(Tile, Vec<u8>), CliError> {
-    let format = TileFormat::resolve(a.output.format, &a.output.output)?;
-    a.raster.check(format == TileFormat::Png)?;
-    if a.relief.is_some() && format != TileFormat::Png {
-        return Err(crate::output::png::only_png("--relief"));
-    }
-    if a.relief.is_some() && a.layout != Layout::Tile {
-        return Err(CliError::arg(
-            "--layout",
-            "a height map is of the tile itself (it repeats seamlessly); drop --layout or --relief",
-        ));
-    }
-    let arr = arrangement(a)?;
-    check_plot(a, format)?;
-    if format == TileFormat::Json && a.layout != Layout::Tile {
-        return Err(CliError::arg(
-            "--layout",
-            "the JSON holds the tile's discs; draw a mosaic or a planet as SVG, PNG or G-code",
-        ));
-    }
-    check_colours(a, format)?;
+/// The output of a plan, and the tile it shows.
+pub fn output(a: &TileRun, d: &TileDraw, format: TileFormat) -> Result<(Tile, Vec<u8>), CliError> {
+    let arr = d.arrangement;
     let (tile, pieces, tags) = compute(a)?;
-    let (w, h) = (a.width, a.height);
+    let (w, h) = (a.spec.width, a.spec.height);
     let copies = arr.copies();
     if copies.saturating_mul(pieces.len() as u64) > MAX_PIECES {
-        return Err(CliError::arg(
-            if a.layout == Layout::Tile { "--radius" } else { "--rows" },
-            format!(
-                "{copies} copies of a picture of {} pieces make more than {MAX_PIECES} pieces, too many to draw; lower --rows or --columns, or raise --radius",
-                pieces.len()
-            ),
-        ));
+        return Err(too_many_pieces(arr.layout, copies, pieces.len(), MAX_PIECES));
     }
-    if let (TileFormat::Png, Some(relief)) = (format, a.relief) {
-        let relief: crate::output::height::Relief = relief.into();
-        let command = format!("{} --relief {}{}", command_line(a, &arr), relief.name(), a.raster.raster().flag());
-        let size = crate::output::height::grid((w, h), &a.raster.raster())?;
+    if let (TileFormat::Png, Some(relief)) = (format, d.relief) {
+        let command = format!("{} --relief {}{}", command_line(a, d), relief.name(), d.raster.flag());
+        let size = crate::output::height::grid((w, h), &d.raster)?;
         let stones = render::stones(&tile, a.render)?;
         let bytes = crate::output::height::render_shapes(&stones, (0.0, 0.0, w, h), false, relief, size, &command)?;
         return Ok((tile, bytes));
@@ -513,24 +372,25 @@ pub fn output(a: &TileArgs) -> Result<(Tile, Vec<u8>), CliError> {
         }
         TileFormat::Gcode => {
             let (laid, scales) = arr.lay_out_scaled(&pieces, w, h, false);
-            let colours = piece_colours(a, &tags, &scales);
-            let pens = match (&a.colour.palette, &colours) {
-                (Some(p), Some(cs)) if a.plot.layers == crate::args::plot::Layers::Colours => Some((&p.0[..], &cs[..])),
+            let colours = piece_colours(d, a.spec.seed, &tags, &scales);
+            let pens = match (&d.palette, &colours) {
+                (Some(p), Some(cs)) if d.colour_layers => Some((&p.0[..], &cs[..])),
                 _ => None,
             };
-            gcode(&laid, arr.sheet(w, h), a, command_line(a, &arr), pens)?
+            let plan = d.gcode.as_ref().ok_or_else(no_gcode)?;
+            gcode(&laid, arr.sheet(w, h), plan, a.quiet, command_line(a, d), pens)?
         }
         TileFormat::Svg | TileFormat::Png => {
             let title = format!(
                 "zetafill: fractal tile, {} discs ({} doppelgangers), seed {}, {} {}",
                 tile.discs.len(),
                 tile.discs.iter().filter(|d| d.twin.is_some()).count(),
-                a.seed.seed,
+                a.spec.seed,
                 render_name(a.render),
-                layout_name(a.layout)
+                layout_name(arr.layout)
             );
             // Filled copies draw the tile's own shapes whole (the sheet's edge cuts them).
-            let whole = a.style == Style::Filled && a.layout != Layout::Tile;
+            let whole = a.style == Style::Filled && arr.layout != Layout::Tile;
             let own;
             let (drawn, drawn_tags) = if whole {
                 own = render::own_pieces(&tile, a.render)?;
@@ -539,21 +399,18 @@ pub fn output(a: &TileArgs) -> Result<(Tile, Vec<u8>), CliError> {
                 (&pieces, &tags)
             };
             let (laid, scales) = arr.lay_out_scaled(drawn, w, h, whole);
-            let colours = piece_colours(a, drawn_tags, &scales);
+            let colours = piece_colours(d, a.spec.seed, drawn_tags, &scales);
             let look = Look {
                 style: a.style,
-                pen_width: a.pen_width,
+                pen_width: d.pen_width,
                 clip: whole,
                 colours: colours.as_deref(),
-                background: a.colour.background.as_deref(),
-                layers: match (&a.colour.palette, a.plot.layers) {
-                    (Some(p), crate::args::plot::Layers::Colours) => Some(&p.0[..]),
-                    _ => None,
-                },
+                background: d.background.as_deref(),
+                layers: d.palette.as_ref().filter(|_| d.colour_layers).map(|p| &p.0[..]),
             };
-            let svg = svg(&laid, arr.sheet(w, h), &look, &title, &command_line(a, &arr));
+            let svg = svg(&laid, arr.sheet(w, h), &look, &title, &command_line(a, d));
             if format == TileFormat::Png {
-                a.raster.raster().render(&svg)?
+                d.raster.render(&svg)?
             } else {
                 svg
             }
@@ -562,14 +419,16 @@ pub fn output(a: &TileArgs) -> Result<(Tile, Vec<u8>), CliError> {
     Ok((tile, bytes))
 }
 
-/// Runs `zetafill tile`.
-pub fn run(a: &TileArgs) -> Result<(), CliError> {
-    let dest = Dest::parse(&a.output.output);
-    let inputs: Vec<&std::path::Path> = a.plot.machine_file().into_iter().collect();
-    dest.check("--output", &inputs)?;
-    let (tile, bytes) = output(a)?;
-    dest.write(&bytes)?;
-    if !a.quiet {
+/// The G-code plan of a drawing that has none (it was resolved for another format).
+fn no_gcode() -> CliError {
+    CliError::Io("internal: G-code asked of a plan resolved for another format".into())
+}
+
+/// Runs `zetafill tile`: grows the tile of the plan and writes its output.
+pub fn run(plan: &TilePlan) -> Result<(), CliError> {
+    let (tile, bytes) = output(&plan.run, &plan.draw, plan.format)?;
+    plan.dest.write(&bytes)?;
+    if !plan.run.quiet {
         let twins = tile.discs.iter().filter(|d| d.twin.is_some()).count();
         eprintln!("{} discs ({twins} doppelgangers) in {} tries", tile.discs.len(), tile.tries);
     }

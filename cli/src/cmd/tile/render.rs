@@ -14,7 +14,7 @@ use spade::{DelaunayTriangulation, Triangulation};
 use std::f64::consts::{PI, TAU};
 
 /// What the tile shows.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Render {
     /// The discs.
     Discs,
@@ -23,7 +23,7 @@ pub enum Render {
 }
 
 /// How pieces are drawn.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Style {
     /// Outlines, for plotters (Voronoi: the cell edges).
     Outline,
@@ -32,7 +32,7 @@ pub enum Style {
 }
 
 /// What is laid out.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Layout {
     /// The tile alone (the texture).
     Tile,

@@ -1,0 +1,262 @@
+//! `zetafill line` resolved: the flags checked against each other in the order the command
+//! has always reported them, and turned into the run (the core's parameters, the interval
+//! and the stops) and the drawing (the writers' plain options). Also the messages of the
+//! run's own outcomes that name a flag: a parameter the core refuses, a first segment that
+//! does not fit, a halt.
+
+use crate::args::format::Format;
+use crate::args::line::{LineArgs, RenderArg};
+use crate::args::plot::{Layers, PlotArgs, FOR_GCODE};
+use crate::cmd::line::Render;
+use crate::error::CliError;
+use crate::io::write::Dest;
+use crate::output::palette::{ColorBy, Colour, Palette};
+use crate::output::png::Raster;
+use crate::output::svg::Style;
+use crate::plan::plot::GcodePlan;
+use zetafill::{Interval, LineParams, ParamError, Stop};
+
+/// A checked `zetafill line`: where it writes, what it runs and how it draws.
+#[derive(Debug, Clone)]
+pub struct LinePlan {
+    /// Where the output goes.
+    pub dest: Dest,
+    /// The output format.
+    pub format: Format,
+    /// The run.
+    pub run: LineRun,
+    /// The drawing.
+    pub draw: LineDraw,
+}
+
+/// What the 1D engine runs.
+#[derive(Debug, Clone, Copy)]
+pub struct LineRun {
+    /// The core's parameters.
+    pub params: LineParams,
+    /// The interval.
+    pub interval: Interval,
+    /// The stop conditions.
+    pub stop: Stop,
+    /// RNG seed.
+    pub seed: u64,
+    /// No progress bar.
+    pub quiet: bool,
+}
+
+/// How the document is drawn.
+#[derive(Debug, Clone)]
+pub struct LineDraw {
+    /// How segments are drawn.
+    pub render: Render,
+    /// Outline or filled circles.
+    pub style: Style,
+    /// Stroke width (mm).
+    pub pen_width: f64,
+    /// Bar height (mm).
+    pub bar_height: f64,
+    /// Zoom rows.
+    pub zoom_rows: u32,
+    /// Zoom fraction per row.
+    pub zoom_fraction: f64,
+    /// The point the rows zoom into (mm; the middle unless given).
+    pub zoom_center: f64,
+    /// Mark the interval's ends.
+    pub boundary: bool,
+    /// PNG size.
+    pub raster: Raster,
+    /// The palette, if any.
+    pub palette: Option<Palette>,
+    /// How segments take the palette's colours.
+    pub color_by: ColorBy,
+    /// One layer (one pen) per palette colour (a palette is then given).
+    pub colour_layers: bool,
+    /// A colour behind the drawing.
+    pub background: Option<Colour>,
+    /// The colour flags as command-line text.
+    pub colour_flags: String,
+    /// G-code: the machine and its placement.
+    pub gcode: Option<GcodePlan>,
+    /// No G-code figures on stderr.
+    pub quiet: bool,
+}
+
+impl From<RenderArg> for Render {
+    fn from(r: RenderArg) -> Render {
+        match r {
+            RenderArg::Dashes => Render::Dashes,
+            RenderArg::Circles => Render::Circles,
+            RenderArg::Bars => Render::Bars,
+            RenderArg::Zoom => Render::Zoom,
+        }
+    }
+}
+
+/// Checks the flags of `zetafill line` and resolves them into a plan. Nothing runs and
+/// nothing is read but the machine profile.
+pub fn resolve(a: &LineArgs) -> Result<LinePlan, CliError> {
+    check_zoom(a)?;
+    let dest = Dest::parse(&a.output.output);
+    let inputs: Vec<&std::path::Path> = a.plot.machine_file().into_iter().collect();
+    dest.check("--output", &inputs)?;
+    let format = Format::resolve(a.output.format, &a.output.output)?;
+    let (run, draw) = resolve_format(a, format)?;
+    Ok(LinePlan { dest, format, run, draw })
+}
+
+/// The run and the drawing of `a` written as `format`: every rule between the flags, but
+/// none about the output path (a library caller, such as a test, picks the format).
+pub fn resolve_as(a: &LineArgs, format: Format) -> Result<(LineRun, LineDraw), CliError> {
+    check_zoom(a)?;
+    resolve_format(a, format)
+}
+
+/// Refuses a `--zoom-center` outside the interval.
+fn check_zoom(a: &LineArgs) -> Result<(), CliError> {
+    if a.zoom_center.is_some_and(|x| x > a.length) {
+        return Err(CliError::arg(
+            "--zoom-center",
+            format!("must lie in the interval [0, {}]", a.length),
+        ));
+    }
+    Ok(())
+}
+
+/// [`resolve_as`] after the zoom centre.
+fn resolve_format(a: &LineArgs, format: Format) -> Result<(LineRun, LineDraw), CliError> {
+    a.raster.check(format == Format::Png)?;
+    check_plot(a, format)?;
+    let colour_layers = a.plot.layers == Layers::Colours;
+    let pens = format == Format::Gcode && colour_layers && a.colour.background.is_none();
+    a.colour.check(
+        matches!(format, Format::Svg | Format::Png) || pens,
+        "write .svg or .png (or G-code with --layers colours, without --background)",
+        true,
+    )?;
+    if 2.0 * a.gap >= a.length {
+        return Err(CliError::arg(
+            "--gap",
+            format!(
+                "{} mm leaves no room in a {} mm interval; it must be under half the length",
+                a.gap, a.length
+            ),
+        ));
+    }
+    let run = LineRun {
+        params: LineParams {
+            c: crate::plan::exponent(&a.power, 1.4, LineParams::c_from_dimension),
+            n_offset: a.power.n_offset,
+            gap: a.gap,
+            max_trials: a.max_trials.max_trials,
+        },
+        interval: Interval {
+            length: a.length,
+            periodic: a.periodic,
+        },
+        stop: crate::plan::stop(&a.stop),
+        seed: a.seed.seed,
+        quiet: a.quiet,
+    };
+    let draw = LineDraw {
+        render: a.render.into(),
+        style: a.style.into(),
+        pen_width: a.pen_width,
+        bar_height: a.bar_height,
+        zoom_rows: a.zoom_rows,
+        zoom_fraction: a.zoom_fraction,
+        zoom_center: a.zoom_center.unwrap_or(a.length / 2.0),
+        boundary: a.boundary,
+        raster: a.raster.raster(),
+        palette: a.colour.palette.clone(),
+        color_by: a.colour.by(),
+        colour_layers: colour_layers && a.colour.palette.is_some(),
+        background: a.colour.background.clone(),
+        colour_flags: a.colour.flags(),
+        gcode: if format == Format::Gcode {
+            Some(GcodePlan::resolve(&a.plot)?)
+        } else {
+            None
+        },
+        quiet: a.quiet,
+    };
+    Ok((run, draw))
+}
+
+/// Refuses, before any work, a plot flag that `format` does not read: no output has pages or
+/// layers, only the G-code reads the other plot flags (the SVG is the paper's figure), and it
+/// has no zoom or hatched dashes.
+fn check_plot(a: &LineArgs, format: Format) -> Result<(), CliError> {
+    let p: &PlotArgs = &a.plot;
+    p.build_options()?;
+    if p.page.is_some() || matches!(p.layers, Layers::SizeBands(_)) {
+        return Err(CliError::arg(
+            if p.page.is_some() { "--page" } else { "--layers" },
+            "is not available for line in any format: its SVG is the interval at full size, with no page or size layers, and its G-code goes on the machine's bed (--fit, --center, --margin); drop it (--layers colours splits a coloured drawing by pen)",
+        ));
+    }
+    if p.layers == Layers::Colours {
+        if a.colour.palette.is_none() {
+            return Err(CliError::arg(
+                "--layers",
+                "colours makes one layer (one pen) per --palette colour: give --palette",
+            ));
+        }
+        if a.render == RenderArg::Zoom || !matches!(format, Format::Svg | Format::Gcode) {
+            return Err(CliError::arg(
+                "--layers",
+                "colours splits a plotter drawing by pen: write .svg or .gcode, with --render dashes, circles or bars",
+            ));
+        }
+    }
+    if format != Format::Gcode {
+        return p.refuse_except(&["--layers"], |_| FOR_GCODE.to_string());
+    }
+    p.check_gcode()?;
+    match a.render {
+        RenderArg::Zoom => Err(zoom_has_no_gcode()),
+        RenderArg::Dashes if p.hatch.is_some() => Err(CliError::arg(
+            "--hatch",
+            "dashes are single strokes with nothing to hatch: use --render bars or circles",
+        )),
+        _ => Ok(()),
+    }
+}
+
+/// The refusal of `--render zoom` for G-code.
+pub fn zoom_has_no_gcode() -> CliError {
+    CliError::arg("--render", "zoom has no G-code form; use dashes, circles or bars")
+}
+
+/// Names the flag behind a core parameter error.
+pub fn param_error(e: ParamError) -> CliError {
+    let flag = match e {
+        ParamError::Exponent => "--c",
+        ParamError::Offset | ParamError::Zeta => "--n-offset",
+        ParamError::Region => "--length",
+        ParamError::Gap => "--gap",
+        ParamError::MaxTrials => "--max-trials",
+        _ => "--count",
+    };
+    CliError::arg(flag, e)
+}
+
+/// The usage error of a fill whose first segment, `length` mm long, does not fit.
+pub fn first_segment_error(run: &LineRun, length: f64) -> CliError {
+    let gap = run.params.gap;
+    CliError::arg(
+        if gap > 0.0 { "--gap" } else { "--c" },
+        format!(
+            "the first segment ({length:.4} mm) with a gap of {gap} mm does not fit the {} mm interval; lower --c, raise --n-offset or lower --gap",
+            run.interval.length
+        ),
+    )
+}
+
+/// Advice for a halt at placement `index`.
+pub fn halt_advice(index: u64) -> &'static str {
+    if index < 100 {
+        "the first segments left no room for this one: lower --c, raise --n-offset, or try another --seed"
+    } else {
+        "raise --max-trials, lower --c, or ask for fewer segments"
+    }
+}

@@ -1,0 +1,287 @@
+//! `zetafill tile` resolved: the flags checked against each other in the order the command
+//! has always reported them, and turned into the tile to grow (its spec and picture) and the
+//! drawing (the arrangement of copies and the writers' plain options). Also the messages of
+//! the run's own outcomes that name a flag: cobblestones that never meet their copies, a
+//! drawing of too many pieces.
+
+use crate::args::plot::{Layers, PlotArgs, FOR_GCODE, GCODE_FLAGS};
+use crate::args::tile::{LayoutArg, RenderArg, StyleArg, TileArgs, TileFormat};
+use crate::cmd::tile::model::TileSpec;
+use crate::cmd::tile::render::{Arrangement, Layout, Render, Style};
+use crate::error::CliError;
+use crate::io::write::Dest;
+use crate::output::height::Relief;
+use crate::output::num;
+use crate::output::palette::{ColorBy, Colour, Palette};
+use crate::output::png::{only_png, Raster};
+use crate::plan::plot::GcodePlan;
+
+/// A checked `zetafill tile`: where it writes, the tile it grows and how it draws it.
+#[derive(Debug, Clone)]
+pub struct TilePlan {
+    /// Where the output goes.
+    pub dest: Dest,
+    /// The output format.
+    pub format: TileFormat,
+    /// The tile.
+    pub run: TileRun,
+    /// The drawing.
+    pub draw: TileDraw,
+}
+
+/// The tile to grow and the picture made of it.
+#[derive(Debug, Clone, Copy)]
+pub struct TileRun {
+    /// The tile's parameters, checked (the band of twins is the one cobblestones start from).
+    pub spec: TileSpec,
+    /// Discs or cobblestones.
+    pub render: Render,
+    /// Outlines or filled shapes.
+    pub style: Style,
+    /// No progress bar, no figures on stderr.
+    pub quiet: bool,
+}
+
+/// How the tile is drawn.
+#[derive(Debug, Clone)]
+pub struct TileDraw {
+    /// The tile alone, a mosaic or a planet, with its rows and columns.
+    pub arrangement: Arrangement,
+    /// PNG: a height map of this profile instead of a picture.
+    pub relief: Option<Relief>,
+    /// PNG size.
+    pub raster: Raster,
+    /// Stroke width of outlines (mm).
+    pub pen_width: f64,
+    /// The palette, if any.
+    pub palette: Option<Palette>,
+    /// How pieces take the palette's colours.
+    pub color_by: ColorBy,
+    /// One layer (one pen) per palette colour (a palette is then given).
+    pub colour_layers: bool,
+    /// A colour behind the drawing.
+    pub background: Option<Colour>,
+    /// The colour flags as command-line text.
+    pub colour_flags: String,
+    /// The plot flags as command-line text.
+    pub plot_flags: String,
+    /// G-code: the machine and its placement.
+    pub gcode: Option<GcodePlan>,
+}
+
+impl From<RenderArg> for Render {
+    fn from(r: RenderArg) -> Render {
+        match r {
+            RenderArg::Discs => Render::Discs,
+            RenderArg::Voronoi => Render::Voronoi,
+        }
+    }
+}
+
+impl From<StyleArg> for Style {
+    fn from(s: StyleArg) -> Style {
+        match s {
+            StyleArg::Outline => Style::Outline,
+            StyleArg::Filled => Style::Filled,
+        }
+    }
+}
+
+impl From<LayoutArg> for Layout {
+    fn from(l: LayoutArg) -> Layout {
+        match l {
+            LayoutArg::Tile => Layout::Tile,
+            LayoutArg::Mosaic => Layout::Mosaic,
+            LayoutArg::Planet => Layout::Planet,
+        }
+    }
+}
+
+/// The band of twins Voronoi cobblestones start from (the "Fractal Tiles" post uses the top quarter).
+const VORONOI_BAND: f64 = 0.25;
+
+/// Checks the flags of `zetafill tile` and resolves them into a plan. Nothing runs and
+/// nothing is read but the machine profile.
+pub fn resolve(a: &TileArgs) -> Result<TilePlan, CliError> {
+    let dest = Dest::parse(&a.output.output);
+    let inputs: Vec<&std::path::Path> = a.plot.machine_file().into_iter().collect();
+    dest.check("--output", &inputs)?;
+    let format = TileFormat::resolve(a.output.format, &a.output.output)?;
+    let (run, draw) = resolve_as(a, format)?;
+    Ok(TilePlan { dest, format, run, draw })
+}
+
+/// The tile and the drawing of `a` written as `format`: every rule between the flags, but
+/// none about the output path (a library caller, such as a test, picks the format).
+pub fn resolve_as(a: &TileArgs, format: TileFormat) -> Result<(TileRun, TileDraw), CliError> {
+    a.raster.check(format == TileFormat::Png)?;
+    if a.relief.is_some() && format != TileFormat::Png {
+        return Err(only_png("--relief"));
+    }
+    let layout = Layout::from(a.layout);
+    if a.relief.is_some() && layout != Layout::Tile {
+        return Err(CliError::arg(
+            "--layout",
+            "a height map is of the tile itself (it repeats seamlessly); drop --layout or --relief",
+        ));
+    }
+    let arrangement = arrangement(a)?;
+    check_plot(a, format)?;
+    if format == TileFormat::Json && layout != Layout::Tile {
+        return Err(CliError::arg(
+            "--layout",
+            "the JSON holds the tile's discs; draw a mosaic or a planet as SVG, PNG or G-code",
+        ));
+    }
+    check_colours(a, format)?;
+    let render = Render::from(a.render);
+    let spec = TileSpec {
+        width: a.width,
+        height: a.height,
+        radius: a.radius,
+        spacing: a.spacing,
+        tries: a.tries,
+        seed: a.seed.seed,
+        band: if render == Render::Voronoi { VORONOI_BAND } else { 0.0 },
+    };
+    spec.check().map_err(|(flag, msg)| CliError::arg(flag, msg))?;
+    let run = TileRun {
+        spec,
+        render,
+        style: a.style.into(),
+        quiet: a.quiet,
+    };
+    let draw = TileDraw {
+        arrangement,
+        relief: a.relief.map(Relief::from),
+        raster: a.raster.raster(),
+        pen_width: a.pen_width,
+        palette: a.colour.palette.clone(),
+        color_by: a.colour.by(),
+        colour_layers: a.plot.layers == Layers::Colours && a.colour.palette.is_some(),
+        background: a.colour.background.clone(),
+        colour_flags: a.colour.flags(),
+        plot_flags: a.plot.flags(),
+        gcode: if format == TileFormat::Gcode {
+            Some(GcodePlan::resolve(&a.plot)?)
+        } else {
+            None
+        },
+    };
+    Ok((run, draw))
+}
+
+/// The name `--layout` takes.
+pub fn layout_name(l: Layout) -> &'static str {
+    match l {
+        Layout::Tile => "tile",
+        Layout::Mosaic => "mosaic",
+        Layout::Planet => "planet",
+    }
+}
+
+/// The arrangement the flags ask for, with each layout's defaults; refuses layout flags the
+/// layout does not read.
+fn arrangement(a: &TileArgs) -> Result<Arrangement, CliError> {
+    let layout = Layout::from(a.layout);
+    let unread = |flag: &str, why: &str| {
+        Err(CliError::arg(
+            flag,
+            format!("is not read by --layout {}: {why}", layout_name(layout)),
+        ))
+    };
+    if layout == Layout::Tile {
+        if a.rows.is_some() {
+            return unread("--rows", "the tile is drawn alone; use --layout mosaic or planet");
+        }
+        if a.columns.is_some() {
+            return unread("--columns", "the tile is drawn alone; use --layout mosaic or planet");
+        }
+    }
+    if layout != Layout::Planet && a.planet_radius.is_some() {
+        return unread("--planet-radius", "it sizes --layout planet");
+    }
+    let arr = Arrangement {
+        layout,
+        rows: a.rows.unwrap_or(4),
+        columns: a.columns.unwrap_or(if layout == Layout::Planet { 16 } else { 2 }),
+        radius: a.planet_radius.unwrap_or(100.0),
+    };
+    arr.check(a.width, a.height).map_err(|(flag, msg)| CliError::arg(flag, msg))?;
+    Ok(arr)
+}
+
+/// Refuses the plot flags that the output does not read, before any work.
+fn check_plot(a: &TileArgs, format: TileFormat) -> Result<(), CliError> {
+    let p: &PlotArgs = &a.plot;
+    if format == TileFormat::Gcode {
+        let allowed: Vec<&str> = GCODE_FLAGS
+            .iter()
+            .copied()
+            .chain(["--fit", "--center", "--margin", "--layers"])
+            .collect();
+        p.refuse_except(&allowed, |f| {
+            format!("is not available for tile: {f} is for fills (the tile draws its own outlines, on the machine's bed)")
+        })?;
+        p.check_gcode()?;
+    } else {
+        p.refuse_except(&["--layers"], |_| FOR_GCODE.to_string())?;
+    }
+    match p.layers {
+        Layers::None => Ok(()),
+        Layers::SizeBands(_) => Err(CliError::arg(
+            "--layers",
+            "size bands are for fills; a coloured tile splits by pen with --layers colours",
+        )),
+        Layers::Colours if a.colour.palette.is_none() => Err(CliError::arg(
+            "--layers",
+            "colours makes one layer (one pen) per --palette colour: give --palette",
+        )),
+        Layers::Colours if !matches!(format, TileFormat::Svg | TileFormat::Gcode) => Err(CliError::arg(
+            "--layers",
+            "colours splits a plotter drawing by pen: write .svg or .gcode",
+        )),
+        Layers::Colours => Ok(()),
+    }
+}
+
+/// Refuses colour flags the output cannot show.
+fn check_colours(a: &TileArgs, format: TileFormat) -> Result<(), CliError> {
+    let picture = matches!(format, TileFormat::Svg | TileFormat::Png) && a.relief.is_none();
+    let pens = format == TileFormat::Gcode && a.plot.layers == Layers::Colours && a.colour.background.is_none();
+    a.colour.check(
+        picture || pens,
+        "write .svg or .png, without --relief (or G-code with --layers colours, without --background)",
+        true,
+    )?;
+    if a.colour.palette.is_some() && a.render == RenderArg::Voronoi && a.style == StyleArg::Outline {
+        return Err(CliError::arg(
+            "--palette",
+            "cobblestone outlines are edges, each shared by two cells; add --style filled to colour the cells",
+        ));
+    }
+    Ok(())
+}
+
+/// The refusal of cobblestones that do not meet their copies even with every centre
+/// twinned (their matching ends `gap` mm apart).
+pub fn seams_apart(gap: f64) -> CliError {
+    CliError::arg(
+        "--tries",
+        format!(
+            "the cobblestones do not meet their copies even with every centre twinned (ends {} mm apart): the fill is too sparse for its cells to stay near their discs; raise --tries",
+            num(gap, 6)
+        ),
+    )
+}
+
+/// The refusal of a drawing of `copies` copies of a picture of `pieces` pieces, more than
+/// `max` in all.
+pub fn too_many_pieces(layout: Layout, copies: u64, pieces: usize, max: u64) -> CliError {
+    CliError::arg(
+        if layout == Layout::Tile { "--radius" } else { "--rows" },
+        format!(
+            "{copies} copies of a picture of {pieces} pieces make more than {max} pieces, too many to draw; lower --rows or --columns, or raise --radius"
+        ),
+    )
+}

@@ -267,18 +267,6 @@ impl Clip {
     }
 }
 
-impl Clip {
-    /// The region's outline as plotter paths: closed polylines, or full circles.
-    pub fn outline_paths(&self) -> Vec<crate::model::Path> {
-        use crate::model::Path;
-        match self {
-            Clip::Circle { c, r } => vec![Path::circle(*c, *r)],
-            Clip::Annulus { c, ro, ri } => vec![Path::circle(*c, *ro), Path::circle(*c, *ri)],
-            other => other.rings().into_iter().map(|r| Path::polyline(r, true)).collect(),
-        }
-    }
-}
-
 /// The parameter t in (0, 1) where `a + t d` crosses the segment `p -> q`, if it does.
 fn cross_param(a: Pt, d: Pt, p: Pt, q: Pt) -> Option<f64> {
     let e = [q[0] - p[0], q[1] - p[1]];

@@ -91,7 +91,7 @@ fn gcode(o: &Outcome, a: &TerritoryArgs, desc: String) -> Result<Vec<u8>, CliErr
     lines.extend(o.boundaries.iter().cloned());
     let mut paths: Vec<PlotPath> = lines.into_iter().map(|l| PlotPath::polyline(l, false)).collect();
     if a.boundary {
-        paths.extend(o.clip.outline_paths());
+        paths.extend(o.doc.region.outline());
     }
     let (x0, y0, x1, y1) = o.clip.bbox();
     drawing_gcode(

@@ -73,34 +73,12 @@ fn check_colours(a: &TerritoryArgs, format: TerritoryFormat) -> Result<(), CliEr
     Ok(())
 }
 
-/// The drawing as G-code: boundary polylines (and with `cells` every other Voronoi edge),
-/// placed on the machine's bed, written by the plot back end with its safety invariants.
-fn gcode(o: &Outcome, a: &TerritoryArgs, desc: String) -> Result<Vec<u8>, CliError> {
-    use crate::cmd::plot::drawing_gcode;
-    use crate::model::{Bounds, Drawing, Path as PlotPath};
-    let mut lines = Vec::new();
-    if a.render == Render::Cells {
-        let dual = geom::Dual::of(&o.model.tri, o.clip.bbox());
-        let t = &o.model.territory;
-        lines = geom::polylines(
-            &dual,
-            (0..dual.edges.len()).filter(|&i| t[dual.edges[i].sites.0] == t[dual.edges[i].sites.1]),
-            &o.clip,
-        );
-    }
-    lines.extend(o.boundaries.iter().cloned());
-    let mut paths: Vec<PlotPath> = lines.into_iter().map(|l| PlotPath::polyline(l, false)).collect();
-    if a.boundary {
-        paths.extend(o.doc.region.outline());
-    }
-    let (x0, y0, x1, y1) = o.clip.bbox();
-    drawing_gcode(
-        &Drawing { paths },
-        &Bounds { x0, y0, x1, y1 },
-        &crate::plan::plot::GcodePlan::resolve(&a.plot)?,
-        vec![desc],
-        a.quiet,
-    )
+/// The picture as G-code: its strokes (boundary polylines, with `cells` every other Voronoi
+/// edge, with `--boundary` the region's outline) placed on the machine's bed by the region's
+/// box, written by the plot back end with its safety invariants.
+fn gcode(pic: &crate::model::Picture, a: &TerritoryArgs, desc: String) -> Result<Vec<u8>, CliError> {
+    let gcode = crate::plan::plot::GcodePlan::resolve(&a.plot)?;
+    crate::cmd::plot::pens_gcode(&pic.pens(), &pic.frame, &gcode, vec![desc], a.quiet)
 }
 
 /// One site in the JSON output.
@@ -616,8 +594,7 @@ pub fn compute(a: &TerritoryArgs) -> Result<Outcome, CliError> {
 /// Renders a finished run.
 pub fn render_bytes(o: &Outcome, a: &TerritoryArgs, format: TerritoryFormat) -> Result<Vec<u8>, CliError> {
     let desc = command_line(a, o.doc.seeds, o.doc.params.points, &o.doc.region.arg());
-    let svg = || {
-        let colours = site_colours(o, a);
+    let picture = || {
         let style = Style {
             render: a.render,
             pen_width: a.pen_width,
@@ -626,18 +603,20 @@ pub fn render_bytes(o: &Outcome, a: &TerritoryArgs, format: TerritoryFormat) -> 
             background: a.colours.background.as_deref(),
             flat: a.colours.palette.is_some(),
         };
-        let title = format!(
+        let mut pic = render::picture(o, &site_colours(o, a), &style);
+        pic.title = format!(
             "zetafill territory: {} sites, {} territories, seed {}",
             o.doc.sites.len(),
             o.doc.seeds,
             a.seed.seed
         );
-        render::svg(&o.model, &o.clip, &colours, &o.shapes, &style, &title, &desc)
+        pic.desc.clone_from(&desc);
+        pic
     };
     Ok(match format {
-        TerritoryFormat::Gcode => gcode(o, a, desc.clone())?,
-        TerritoryFormat::Svg => svg(),
-        TerritoryFormat::Png => a.raster.raster().render(&svg())?,
+        TerritoryFormat::Gcode => gcode(&picture(), a, desc.clone())?,
+        TerritoryFormat::Svg => crate::output::svg::write(&picture()),
+        TerritoryFormat::Png => a.raster.raster().render(&crate::output::svg::write(&picture()))?,
         TerritoryFormat::Json => {
             let mut v = serde_json::to_vec(&o.doc).map_err(|e| CliError::Io(format!("cannot encode JSON: {e}")))?;
             v.push(b'\n');

@@ -107,7 +107,7 @@ pub fn picture(doc: &FillDoc, look: &Look) -> Result<Picture, CliError> {
         if !clip.is_rect() {
             pic.clips.push(ClipDef {
                 id: "region".into(),
-                item: Item::new(Shape::Path(clip.outline_paths())).evenodd(),
+                item: Item::new(Shape::Path(doc.region.outline())).evenodd(),
             });
             cells_layer.clip = Some("region".into());
         }
@@ -121,7 +121,7 @@ pub fn picture(doc: &FillDoc, look: &Look) -> Result<Picture, CliError> {
     }
     pic.layers.push(mortar);
     if look.outline {
-        let outline = Item::new(Shape::Path(clip.outline_paths()));
+        let outline = Item::new(Shape::Path(doc.region.outline()));
         pic.layers.push(Layer::strokes("outline", look.pen_width, vec![outline]));
     }
     Ok(pic)

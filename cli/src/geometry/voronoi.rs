@@ -255,28 +255,6 @@ impl Clip {
         }
         out
     }
-
-    /// The region's outline as closed rings (circles as 720-gons are not used for plotting;
-    /// callers draw circles as arcs).
-    pub fn rings(&self) -> Vec<Vec<Pt>> {
-        match self {
-            Clip::Rect { x0, y0, x1, y1 } => vec![vec![[*x0, *y0], [*x1, *y0], [*x1, *y1], [*x0, *y1]]],
-            Clip::Polygon { rings } => rings.clone(),
-            Clip::Circle { .. } | Clip::Annulus { .. } => Vec::new(),
-        }
-    }
-}
-
-impl Clip {
-    /// The region's outline as plotter paths: closed polylines, or full circles.
-    pub fn outline_paths(&self) -> Vec<crate::model::Path> {
-        use crate::model::Path;
-        match self {
-            Clip::Circle { c, r } => vec![Path::circle(*c, *r)],
-            Clip::Annulus { c, ro, ri } => vec![Path::circle(*c, *ro), Path::circle(*c, *ri)],
-            other => other.rings().into_iter().map(|r| Path::polyline(r, true)).collect(),
-        }
-    }
 }
 
 /// The parameter t in (0, 1) where `a + t d` crosses the segment `p -> q`, if it does.

@@ -1,6 +1,7 @@
 //! The result of a fill as one plain data model, shared by every output format (and
 //! serialised as is for JSON, DESIGN section 3, `version` 1).
 
+use super::Path;
 use serde::Serialize;
 
 /// A finished (or halted) fill.
@@ -124,6 +125,28 @@ impl RegionDoc {
                 let rings = std::iter::once(vertices).chain(outers).chain(holes);
                 format!("polygon:{}", rings.map(|r| ring(r)).collect::<Vec<_>>().join("/"))
             }
+        }
+    }
+
+    /// The region's outline as one even-odd path: closed polylines (the outer outlines, then
+    /// the holes) or full circles.
+    pub fn outline(&self) -> Vec<Path> {
+        match self {
+            RegionDoc::Rect { width, height, .. } => vec![Path::polyline(
+                vec![[0.0, 0.0], [*width, 0.0], [*width, *height], [0.0, *height]],
+                true,
+            )],
+            RegionDoc::Circle { center, radius } => vec![Path::circle(*center, *radius)],
+            RegionDoc::Annulus {
+                center,
+                radius_outer,
+                radius_inner,
+            } => vec![Path::circle(*center, *radius_outer), Path::circle(*center, *radius_inner)],
+            RegionDoc::Polygon { vertices, holes, outers } => std::iter::once(vertices)
+                .chain(outers)
+                .chain(holes)
+                .map(|r| Path::polyline(r.clone(), true))
+                .collect(),
         }
     }
 }

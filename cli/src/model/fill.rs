@@ -6,7 +6,7 @@
 //! each image that crosses the tile's edge cut into path pieces (plotters, whose tools ignore
 //! clip paths: always for G-code, and for an outline SVG on a page or in layers).
 
-use super::doc::{FillDoc, RegionDoc, ShapeDoc};
+use super::doc::{FillDoc, ShapeDoc};
 use super::hatch;
 use super::picture::{ClipDef, Colour, Item, Layer, PageLayout, Paint, Picture, Shape};
 use super::{shape_bounds, shape_images, shape_width, Bounds, Drawing, Path};
@@ -101,27 +101,6 @@ fn outline(sh: &ShapeDoc, off: (f64, f64), min_feature: f64) -> Item {
             let vs = sh.vertices.as_deref().unwrap_or(&[]);
             Item::new(Shape::Polygon(vs.iter().map(|v| [v[0] + off.0, v[1] + off.1]).collect()))
         }
-    }
-}
-
-/// The region's outline as one even-odd path.
-fn region_outline(region: &RegionDoc) -> Vec<Path> {
-    match region {
-        RegionDoc::Rect { width, height, .. } => vec![Path::polyline(
-            vec![[0.0, 0.0], [*width, 0.0], [*width, *height], [0.0, *height]],
-            true,
-        )],
-        RegionDoc::Circle { center, radius } => vec![Path::circle(*center, *radius)],
-        RegionDoc::Annulus {
-            center,
-            radius_outer,
-            radius_inner,
-        } => vec![Path::circle(*center, *radius_outer), Path::circle(*center, *radius_inner)],
-        RegionDoc::Polygon { vertices, holes, outers } => std::iter::once(vertices)
-            .chain(outers)
-            .chain(holes)
-            .map(|r| Path::polyline(r.clone(), true))
-            .collect(),
     }
 }
 
@@ -227,7 +206,7 @@ pub fn picture(doc: &FillDoc, look: &FillLook) -> Picture {
         }
     }
     if look.boundary {
-        let mut outline = Item::new(Shape::Path(region_outline(&doc.region))).evenodd();
+        let mut outline = Item::new(Shape::Path(doc.region.outline())).evenodd();
         outline.id = Some("boundary");
         outline.paint = Paint::outline(look.pen_width);
         pic.layers.push(Layer {

@@ -27,34 +27,12 @@ use std::path::Path;
 
 pub use crate::args::territory::{TerritoryFormat, MAX_POINTS};
 
-/// The drawing as G-code: boundary polylines (and with `cells` every other Voronoi edge),
-/// placed on the machine's bed, written by the plot back end with its safety invariants.
-fn gcode(o: &Outcome, d: &TerritoryDraw, desc: String) -> Result<Vec<u8>, CliError> {
-    use crate::cmd::plot::drawing_gcode;
-    use crate::model::{Bounds, Drawing, Path as PlotPath};
-    let mut lines = Vec::new();
-    if d.render == Render::Cells {
-        let dual = geom::Dual::of(&o.model.tri, o.clip.bbox());
-        let t = &o.model.territory;
-        lines = geom::polylines(
-            &dual,
-            (0..dual.edges.len()).filter(|&i| t[dual.edges[i].sites.0] == t[dual.edges[i].sites.1]),
-            &o.clip,
-        );
-    }
-    lines.extend(o.boundaries.iter().cloned());
-    let mut paths: Vec<PlotPath> = lines.into_iter().map(|l| PlotPath::polyline(l, false)).collect();
-    if d.boundary {
-        paths.extend(o.clip.outline_paths());
-    }
-    let (x0, y0, x1, y1) = o.clip.bbox();
-    drawing_gcode(
-        &Drawing { paths },
-        &Bounds { x0, y0, x1, y1 },
-        d.gcode.as_ref().ok_or_else(no_gcode)?,
-        vec![desc],
-        d.quiet,
-    )
+/// The picture as G-code: its strokes (boundary polylines, with `cells` every other Voronoi
+/// edge, with `--boundary` the region's outline) placed on the machine's bed by the region's
+/// box, written by the plot back end with its safety invariants.
+fn gcode(pic: &crate::model::Picture, d: &TerritoryDraw, desc: String) -> Result<Vec<u8>, CliError> {
+    let gcode = d.gcode.as_ref().ok_or_else(no_gcode)?;
+    crate::cmd::plot::pens_gcode(&pic.pens(), &pic.frame, gcode, vec![desc], d.quiet)
 }
 
 /// A finished run: the model, the document and what the drawing needs.
@@ -323,8 +301,7 @@ pub fn compute(a: &TerritoryRun) -> Result<Outcome, CliError> {
 /// Renders a finished run.
 pub fn render_bytes(o: &Outcome, run: &TerritoryRun, d: &TerritoryDraw, format: TerritoryFormat) -> Result<Vec<u8>, CliError> {
     let desc = command_line(run, d, o.doc.params.points, &o.doc.region.arg());
-    let svg = || {
-        let colours = site_colours(o, d, run.seed);
+    let picture = || {
         let style = Style {
             render: d.render,
             pen_width: d.pen_width,
@@ -333,18 +310,20 @@ pub fn render_bytes(o: &Outcome, run: &TerritoryRun, d: &TerritoryDraw, format: 
             background: d.background.as_deref(),
             flat: d.palette.is_some(),
         };
-        let title = format!(
+        let mut pic = render::picture(o, &site_colours(o, d, run.seed), &style);
+        pic.title = format!(
             "zetafill territory: {} sites, {} territories, seed {}",
             o.doc.sites.len(),
             o.doc.seeds,
             run.seed
         );
-        render::svg(&o.model, &o.clip, &colours, &o.shapes, &style, &title, &desc)
+        pic.desc.clone_from(&desc);
+        pic
     };
     Ok(match format {
-        TerritoryFormat::Gcode => gcode(o, d, desc.clone())?,
-        TerritoryFormat::Svg => svg(),
-        TerritoryFormat::Png => d.raster.render(&svg())?,
+        TerritoryFormat::Gcode => gcode(&picture(), d, desc.clone())?,
+        TerritoryFormat::Svg => crate::output::svg::write(&picture()),
+        TerritoryFormat::Png => d.raster.render(&crate::output::svg::write(&picture()))?,
         TerritoryFormat::Json => {
             let mut v = serde_json::to_vec(&o.doc).map_err(|e| CliError::Io(format!("cannot encode JSON: {e}")))?;
             v.push(b'\n');

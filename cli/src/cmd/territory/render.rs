@@ -1,4 +1,5 @@
-//! Drawings of a territory pattern, as SVG in mm (PNG is that SVG rendered by resvg):
+//! Drawings of a territory pattern, as one [`Picture`] in mm: the SVG writes it, PNG is that
+//! SVG rendered by resvg, the G-code draws its strokes:
 //! - `boundaries`: the Voronoi edges between sites of different territories, merged into long
 //!   polylines (every edge drawn once) and clipped exactly to the region: the plotter's
 //!   product;
@@ -7,17 +8,14 @@
 //!   one colour as one path, seamless);
 //! - `shapes` (sites from a fill): the fill's own shapes filled with their site's colour.
 //!
-//! Like the fill's SVG: y is flipped about the region's top (no transform), four decimals,
-//! the parameters in `<title>` and `<desc>`, no timestamp (same run, same bytes).
+//! Written like the fill's picture: y flipped about the region's top (no transform), four
+//! decimals, the parameters in `<title>` and `<desc>`, no timestamp (same run, same bytes).
 
 use super::model::Model;
+use super::Outcome;
 use crate::geometry::voronoi::{self as geom, Clip, Dual, Pt};
-use crate::output::num;
-use svg::node::element::{ClipPath, Definitions, Description, Group, Path, Polygon, Title};
-use svg::node::Text;
-use svg::Document;
-
-const P: usize = 4;
+use crate::model::picture::ClipDef;
+use crate::model::{Bounds, Item, Layer, Paint, Path, Picture, Shape};
 
 /// What to draw.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -120,194 +118,105 @@ pub fn cells(model: &Model, clip: &Clip) -> Vec<Vec<Pt>> {
         .collect()
 }
 
-/// The page frame: SVG x = x - x0, SVG y = y1 - y.
-#[derive(Debug, Clone, Copy)]
-pub struct Frame {
-    /// Left of the region's box.
-    pub x0: f64,
-    /// Top of the region's box.
-    pub y1: f64,
-}
-
-impl Frame {
-    /// The frame of a clip region.
-    pub fn of(clip: &Clip) -> Frame {
-        let (x0, _, _, y1) = clip.bbox();
-        Frame { x0, y1 }
-    }
-
-    /// A point as `x,y` on the page.
-    pub fn pt(&self, p: Pt) -> String {
-        format!("{},{}", num(p[0] - self.x0, P), num(self.y1 - p[1], P))
-    }
-}
-
-/// Path data of open polylines (`M ... L ...` each).
-pub fn polyline_d(f: &Frame, lines: &[Vec<Pt>]) -> Vec<String> {
-    lines
-        .iter()
-        .map(|l| {
-            let pts: Vec<String> = l.iter().map(|&p| f.pt(p)).collect();
-            format!("M{}", pts.join(" L"))
-        })
-        .collect()
-}
-
-fn ring_d(f: &Frame, ring: &[Pt]) -> String {
-    let pts: Vec<String> = ring.iter().map(|&p| f.pt(p)).collect();
-    format!("M{} Z", pts.join(" L"))
-}
-
-fn circle_d(f: &Frame, c: Pt, r: f64) -> String {
-    let rr = num(r, P);
-    format!(
-        "M{} A{rr},{rr} 0 1 0 {} A{rr},{rr} 0 1 0 {} Z",
-        f.pt([c[0] + r, c[1]]),
-        f.pt([c[0] - r, c[1]]),
-        f.pt([c[0] + r, c[1]])
-    )
-}
-
-/// The region's outline as one even-odd path's data.
-pub fn region_d(f: &Frame, clip: &Clip) -> String {
-    match clip {
-        Clip::Circle { c, r } => circle_d(f, *c, *r),
-        Clip::Annulus { c, ro, ri } => format!("{} {}", circle_d(f, *c, *ro), circle_d(f, *c, *ri)),
-        other => other.rings().iter().map(|r| ring_d(f, r)).collect::<Vec<_>>().join(" "),
-    }
-}
-
-/// A plotter layer (Inkscape layer group) of stroked paths.
-pub fn stroke_layer(id: &str, d: Vec<String>, width: f64) -> Group {
-    let mut g = Group::new()
-        .set("id", id)
-        .set("inkscape:groupmode", "layer")
-        .set("inkscape:label", id)
-        .set("fill", "none")
-        .set("stroke", "black")
-        .set("stroke-width", num(width, P))
-        .set("stroke-linecap", "round")
-        .set("stroke-linejoin", "round");
-    for d in d {
-        g = g.add(Path::new().set("d", d));
-    }
-    g
-}
-
-/// A document `w` x `h` mm with its title and description.
-pub fn document(clip: &Clip, title: &str, desc: &str) -> Document {
+/// The pattern as a picture (mm, the region's frame; title and description left to the
+/// caller). `colours` holds each site's colour (`#rrggbb`), for the filled cells and the fill's
+/// shapes. The SVG writes it whole; the G-code draws its strokes (boundaries, cell edges, the
+/// region's outline).
+pub fn picture(o: &Outcome, colours: &[String], style: &Style) -> Picture {
+    let clip = &o.clip;
     let (x0, y0, x1, y1) = clip.bbox();
-    let (w, h) = (x1 - x0, y1 - y0);
-    Document::new()
-        .set("xmlns:inkscape", "http://www.inkscape.org/namespaces/inkscape")
-        .set("width", format!("{}mm", num(w, P)))
-        .set("height", format!("{}mm", num(h, P)))
-        .set("viewBox", format!("0 0 {} {}", num(w, P), num(h, P)))
-        .add(Title::new("").add(Text::new(title)))
-        .add(Description::new().add(Text::new(desc)))
-}
-
-/// Renders the pattern. `colours` holds each site's colour (`#rrggbb`); `shapes` the fill's
-/// shapes (for [`Render::Shapes`]).
-pub fn svg(model: &Model, clip: &Clip, colours: &[String], shapes: &[FillShape], style: &Style, title: &str, desc: &str) -> Vec<u8> {
-    let f = Frame::of(clip);
-    let mut doc = document(clip, title, desc);
-    if let Some(bg) = style.background {
-        let (x0, y0, x1, y1) = clip.bbox();
-        doc = doc.add(crate::output::palette::background(bg, x1 - x0, y1 - y0));
-    }
+    let mut pic = Picture::new(Bounds { x0, y0, x1, y1 });
+    pic.background = style.background.map(String::from);
     let clipped = !clip.is_rect();
     if clipped {
-        let cp = ClipPath::new()
-            .set("id", "region")
-            .add(Path::new().set("d", region_d(&f, clip)).set("clip-rule", "evenodd"));
-        doc = doc.add(Definitions::new().add(cp));
+        pic.clips.push(ClipDef {
+            id: "region".into(),
+            item: Item::new(Shape::Path(o.doc.region.outline())).evenodd(),
+        });
     }
+    let lines = |ls: Vec<Vec<Pt>>| ls.into_iter().map(Item::polyline).collect();
     match style.render {
-        Render::Boundaries => {
-            doc = doc.add(stroke_layer(
-                "boundaries",
-                polyline_d(&f, &boundaries(model, clip)),
-                style.pen_width,
-            ));
-        }
+        Render::Boundaries => pic
+            .layers
+            .push(Layer::strokes("boundaries", style.pen_width, lines(o.boundaries.clone()))),
         Render::Cells => {
-            let dual = Dual::of(&model.tri, clip.bbox());
-            let t = &model.territory;
+            let dual = Dual::of(&o.model.tri, clip.bbox());
+            let t = &o.model.territory;
             let inner = (0..dual.edges.len()).filter(|&i| {
                 let (a, b) = dual.edges[i].sites;
                 t[a] == t[b]
             });
             let thin = geom::polylines(&dual, inner, clip);
-            let bound = geom::polylines(&dual, boundary_edges(&dual, t), clip);
-            doc = doc.add(stroke_layer("cells", polyline_d(&f, &thin), style.thin_width));
-            doc = doc.add(stroke_layer("boundaries", polyline_d(&f, &bound), style.pen_width));
+            pic.layers.push(Layer::strokes("cells", style.thin_width, lines(thin)));
+            pic.layers
+                .push(Layer::strokes("boundaries", style.pen_width, lines(o.boundaries.clone())));
         }
         Render::Filled => {
-            let mut g = Group::new()
-                .set("id", "cells")
-                .set("stroke-width", num(style.thin_width.min(0.1), P))
-                .set("stroke-linejoin", "round");
-            if clipped {
-                g = g.set("clip-path", "url(#region)");
-            }
-            let cells = cells(model, clip);
+            let mut layer = Layer {
+                id: Some("cells".into()),
+                paint: Paint {
+                    width: Some(style.thin_width.min(0.1)),
+                    join: Some("round"),
+                    ..Paint::default()
+                },
+                clip: clipped.then(|| "region".into()),
+                ..Layer::default()
+            };
+            let cells = cells(&o.model, clip);
+            let drawn = cells.into_iter().zip(colours).filter(|(cell, _)| cell.len() >= 3);
             if style.flat {
                 // One path per colour, its cells as subpaths, in order of first use.
-                let mut order: Vec<(&String, Vec<String>)> = Vec::new();
-                for (cell, c) in cells.iter().zip(colours).filter(|(cell, _)| cell.len() >= 3) {
-                    let ring = ring_d(&f, cell);
+                let mut order: Vec<(&String, Vec<Path>)> = Vec::new();
+                for (cell, c) in drawn {
+                    let ring = Path::polyline(cell, true);
                     match order.iter_mut().find(|(k, _)| *k == c) {
                         Some((_, rings)) => rings.push(ring),
                         None => order.push((c, vec![ring])),
                     }
                 }
                 for (c, rings) in order {
-                    g = g.add(Path::new().set("d", rings.join(" ")).set("fill", c.clone()).set("stroke", "none"));
+                    let mut item = Item::new(Shape::Path(rings));
+                    item.paint.fill = Some(c.clone());
+                    item.paint.stroke = Some("none".into());
+                    layer.items.push(item);
+                }
+            } else {
+                for (cell, c) in drawn {
+                    // A hairline of the cell's own colour closes anti-aliasing seams.
+                    let mut item = Item::new(Shape::Polygon(cell));
+                    item.paint.fill = Some(c.clone());
+                    item.paint.stroke = Some(c.clone());
+                    layer.items.push(item);
                 }
             }
-            for (cell, c) in cells.iter().zip(colours).filter(|_| !style.flat) {
-                if cell.len() < 3 {
-                    continue;
-                }
-                let pts: Vec<String> = cell.iter().map(|&p| f.pt(p)).collect();
-                let col = c.clone();
-                // A hairline of the cell's own colour closes anti-aliasing seams.
-                g = g.add(
-                    Polygon::new()
-                        .set("points", pts.join(" "))
-                        .set("fill", col.clone())
-                        .set("stroke", col),
-                );
-            }
-            doc = doc.add(g);
+            pic.layers.push(layer);
         }
         Render::Shapes => {
-            let mut g = Group::new().set("id", "shapes").set("stroke", "none");
-            for (sh, c) in shapes.iter().zip(colours) {
-                let col = c.clone();
-                g = match sh {
-                    FillShape::Circle { c, r } => g.add(Path::new().set("d", circle_d(&f, *c, *r)).set("fill", col)),
-                    FillShape::Ring { c, r, inner } => g.add(
-                        Path::new()
-                            .set("d", format!("{} {}", circle_d(&f, *c, *r), circle_d(&f, *c, *inner)))
-                            .set("fill-rule", "evenodd")
-                            .set("fill", col),
-                    ),
-                    FillShape::Poly(vs) => g.add(
-                        Polygon::new()
-                            .set("points", vs.iter().map(|&p| f.pt(p)).collect::<Vec<_>>().join(" "))
-                            .set("fill", col),
-                    ),
+            let mut layer = Layer {
+                id: Some("shapes".into()),
+                paint: Paint {
+                    stroke: Some("none".into()),
+                    ..Paint::default()
+                },
+                ..Layer::default()
+            };
+            for (sh, c) in o.shapes.iter().zip(colours) {
+                let mut item = match sh {
+                    FillShape::Circle { c, r } => Item::new(Shape::Path(vec![Path::circle(*c, *r)])),
+                    FillShape::Ring { c, r, inner } => {
+                        Item::new(Shape::Path(vec![Path::circle(*c, *r), Path::circle(*c, *inner)])).evenodd()
+                    }
+                    FillShape::Poly(vs) => Item::new(Shape::Polygon(vs.clone())),
                 };
+                item.paint.fill = Some(c.clone());
+                layer.items.push(item);
             }
-            doc = doc.add(g);
+            pic.layers.push(layer);
         }
     }
     if style.outline {
-        doc = doc.add(stroke_layer("outline", vec![region_d(&f, clip)], style.pen_width));
+        let outline = Item::new(Shape::Path(o.doc.region.outline()));
+        pic.layers.push(Layer::strokes("outline", style.pen_width, vec![outline]));
     }
-    let mut s = doc.to_string();
-    s.push('\n');
-    s.into_bytes()
+    pic
 }

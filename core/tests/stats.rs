@@ -1,4 +1,4 @@
-//! The statistics of seed 001 against the paper: Table 1 (the gasket width for circles,
+//! The statistics of Shier and Bourke, "An Algorithm for Random Fractal Filling of Space", against the paper: Table 1 (the gasket width for circles,
 //! N = 1) to its four decimals, the monotonicity of b in n and c, the halting limit of
 //! section 3, and exact dimensions. Each checker is shown to fail on a wrong input.
 
@@ -8,7 +8,7 @@
 use zetafill::internals::stats::{exact_dimension, gasket_width, pair_limit, PairShape};
 use zetafill::internals::zeta::{hurwitz_zeta, partial_sum};
 
-/// Table 1 of seed 001: b(c, 1, n) for n = 10 ... 10^6 (rows) and c = 1.24, 1.32, 1.40, 1.48.
+/// Table 1 of Shier and Bourke: b(c, 1, n) for n = 10 ... 10^6 (rows) and c = 1.24, 1.32, 1.40, 1.48.
 const TABLE1_C: [f64; 4] = [1.24, 1.32, 1.40, 1.48];
 const TABLE1: [(u64, [f64; 4]); 6] = [
     (10, [0.6024, 0.4314, 0.3291, 0.2613]),

@@ -394,20 +394,7 @@ fn painted(mut item: Item, opt: &LineSvgOptions, k: usize, fill: bool) -> Item {
 /// with each segment's layer.
 fn layered(base: Layer, opt: &LineSvgOptions, n: usize) -> (Vec<Layer>, Vec<usize>) {
     match (&opt.colour_layers, &opt.colours) {
-        (Some(palette), Some(colours)) => {
-            let (specs, of) = crate::model::fill::LayerSpec::colours(palette, colours);
-            let layers = specs
-                .into_iter()
-                .enumerate()
-                .map(|(i, spec)| Layer {
-                    id: Some(format!("layer{}", i + 1)),
-                    label: Some(spec.label),
-                    pen: spec.pen,
-                    ..base.clone()
-                })
-                .collect();
-            (layers, of)
-        }
+        (Some(palette), Some(colours)) => base.per_colour(palette, colours),
         _ => (vec![base], vec![0; n]),
     }
 }

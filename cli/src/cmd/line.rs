@@ -362,20 +362,7 @@ fn painted(mut item: Item, opt: &LineSvgOptions, k: usize, fill: bool) -> Item {
 /// with each segment's layer.
 fn layered(base: Layer, opt: &LineSvgOptions, n: usize) -> (Vec<Layer>, Vec<usize>) {
     match (&opt.colour_layers, &opt.colours) {
-        (Some(palette), Some(colours)) => {
-            let (specs, of) = crate::model::fill::LayerSpec::colours(palette, colours);
-            let layers = specs
-                .into_iter()
-                .enumerate()
-                .map(|(i, spec)| Layer {
-                    id: Some(format!("layer{}", i + 1)),
-                    label: Some(spec.label),
-                    pen: spec.pen,
-                    ..base.clone()
-                })
-                .collect();
-            (layers, of)
-        }
+        (Some(palette), Some(colours)) => base.per_colour(palette, colours),
         _ => (vec![base], vec![0; n]),
     }
 }
@@ -585,64 +572,49 @@ pub fn render_digest(doc: &LineDoc) -> Vec<u8> {
     format!("{count} {hash:016x}\n").into_bytes()
 }
 
-/// The plotter drawing of a 1D fill, in the frame of its SVG (x along the interval, y up,
-/// the line at mid height): `dashes` one open stroke per segment (per piece when a periodic
-/// segment wraps), `circles` one circle of diameter L_i per segment centred on the line
-/// (a wrapping segment's circle centred at its middle taken modulo L), `bars` each segment's
-/// bar outline. `--hatch` hatches bars and circles (`--hatch-only`: without their outlines);
-/// `--min-feature` leaves out segments shorter than it. `zoom` has no G-code form.
-pub fn drawing(
-    doc: &LineDoc,
-    opt: &LineSvgOptions,
-    build: &crate::model::fill::BuildOptions,
-) -> Result<(crate::model::Drawing, crate::model::Bounds), CliError> {
-    drawing_of(doc, opt, build, &|_| true)
-}
-
-/// [`drawing`] of the segments `keep` accepts (by index), laid out as in the whole drawing.
-fn drawing_of(
-    doc: &LineDoc,
-    opt: &LineSvgOptions,
-    build: &crate::model::fill::BuildOptions,
-    keep: &dyn Fn(usize) -> bool,
-) -> Result<(crate::model::Drawing, crate::model::Bounds), CliError> {
-    use crate::model::{Bounds, Drawing, Path};
+/// The plotter variant of the picture, what the G-code draws, in the frame of its SVG (x along
+/// the interval, y up, the line at mid height): `dashes` one open stroke per segment (per
+/// piece when a periodic segment wraps), `circles` one whole circle of diameter L_i per
+/// segment centred on the line (a wrapping segment's circle centred at its middle taken
+/// modulo L), `bars` each segment's bar outline. `--hatch` hatches bars and circles
+/// (`--hatch-only`: without their outlines), each layer's hatching before its outlines;
+/// `--min-feature` leaves out segments shorter than it. The picture's frame is the interval's
+/// box grown to hold every circle. `zoom` has no G-code form.
+pub fn plotter_picture(doc: &LineDoc, opt: &LineSvgOptions, build: &crate::model::fill::BuildOptions) -> Result<Picture, CliError> {
+    use crate::model::{Bounds, Path};
     let l = doc.region.length;
     let periodic = doc.region.periodic;
     let d0 = doc.shapes.first().map_or(l / 10.0, |s| s.length);
-    let kept = doc
-        .shapes
-        .iter()
-        .enumerate()
-        .filter(|&(k, s)| keep(k) && s.length >= build.min_feature)
-        .map(|(_, s)| s);
+    let kept = doc.shapes.iter().enumerate().filter(|(_, s)| s.length >= build.min_feature);
     let outline = !build.no_outline;
-    let mut paths = Vec::new();
-    let mut hatch = |lines: Vec<[crate::model::Pt; 2]>| paths.extend(lines.into_iter().map(|[a, b]| Path::polyline(vec![a, b], false)));
-    let mut outlines = Vec::new();
+    let (mut hatching, mut outlines) = (Vec::new(), Vec::new());
+    let mut hatch = |k: usize, lines: Vec<[crate::model::Pt; 2]>| {
+        let pieces = lines.into_iter().map(|[a, b]| Path::polyline(vec![a, b], false)).collect();
+        hatching.push((k, Item::new(Shape::Path(pieces))));
+    };
     let height = match opt.render {
         Render::Dashes => {
             let h = (4.0 * opt.pen_width).max(2.0);
-            for s in kept {
+            for (k, s) in kept {
                 for (a, b) in pieces(s, l, periodic) {
                     if b - a >= INVISIBLE {
-                        outlines.push(Path::polyline(vec![[a, h / 2.0], [b, h / 2.0]], false));
+                        outlines.push((k, Item::polyline(vec![[a, h / 2.0], [b, h / 2.0]])));
                     }
                 }
             }
             h
         }
         Render::Circles => {
-            for s in kept {
+            for (k, s) in kept {
                 let r = s.length / 2.0;
                 if r >= INVISIBLE {
                     let mid = s.start + r;
-                    let mid = if periodic && mid >= l { mid - l } else { mid };
+                    let c = [if periodic && mid >= l { mid - l } else { mid }, d0 / 2.0];
                     if outline {
-                        outlines.push(Path::circle([mid, d0 / 2.0], r));
+                        outlines.push((k, Item::new(Shape::Circle { c, r })));
                     }
                     if let Some(h) = &build.hatch {
-                        hatch(h.annulus([mid, d0 / 2.0], r, 0.0));
+                        hatch(k, h.annulus(c, r, 0.0));
                     }
                 }
             }
@@ -650,15 +622,15 @@ fn drawing_of(
         }
         Render::Bars => {
             let h = opt.bar_height;
-            for s in kept {
+            for (k, s) in kept {
                 for (a, b) in pieces(s, l, periodic) {
                     if b - a >= INVISIBLE {
                         let bar = vec![[a, 0.0], [b, 0.0], [b, h], [a, h]];
                         if let Some(hp) = &build.hatch {
-                            hatch(hp.polygon(&bar));
+                            hatch(k, hp.polygon(&bar));
                         }
                         if outline {
-                            outlines.push(Path::polyline(bar, true));
+                            outlines.push((k, Item::new(Shape::Polygon(bar))));
                         }
                     }
                 }
@@ -667,7 +639,7 @@ fn drawing_of(
         }
         Render::Zoom => return Err(CliError::arg("--render", "zoom has no G-code form; use dashes, circles or bars")),
     };
-    paths.extend(outlines);
+    let (mut layers, of) = layered(Layer::default(), opt, doc.shapes.len());
     // Circles may reach past the ends of the interval: the frame holds them all.
     let mut frame = Bounds {
         x0: 0.0,
@@ -675,34 +647,31 @@ fn drawing_of(
         x1: l,
         y1: height,
     };
-    for p in &paths {
-        let b = p.bounds();
-        frame = Bounds {
-            x0: frame.x0.min(b.x0),
-            y0: frame.y0.min(b.y0),
-            x1: frame.x1.max(b.x1),
-            y1: frame.y1.max(b.y1),
-        };
+    for (k, item) in hatching.into_iter().chain(outlines) {
+        for p in item.strokes() {
+            let b = p.bounds();
+            frame = Bounds {
+                x0: frame.x0.min(b.x0),
+                y0: frame.y0.min(b.y0),
+                x1: frame.x1.max(b.x1),
+                y1: frame.y1.max(b.y1),
+            };
+        }
+        if let Some(layer) = layers.get_mut(of.get(k).copied().unwrap_or(0)) {
+            layer.items.push(item);
+        }
     }
-    Ok((Drawing { paths }, frame))
+    let mut pic = Picture::new(frame);
+    pic.layers = layers;
+    Ok(pic)
 }
 
 fn render_gcode(doc: &LineDoc, opt: &LineSvgOptions, gcode: &GcodePlan, quiet: bool) -> Result<Vec<u8>, CliError> {
-    let build = gcode.build;
-    let (d, frame) = drawing(doc, opt, &build)?;
+    let pic = plotter_picture(doc, opt, &gcode.build)?;
     let header = vec![format!("{}{}{}", command_line(doc), drawing_flags(opt), gcode.flags)];
-    match (&opt.colour_layers, &opt.colours) {
-        // One pen per palette colour, each drawing its segments, placed as the whole.
-        (Some(palette), Some(colours)) => {
-            let mut pens = Vec::new();
-            for c in palette {
-                let (pen, _) = drawing_of(doc, opt, &build, &|k| colours.get(k) == Some(c))?;
-                pens.push((c.clone(), pen));
-            }
-            crate::cmd::plot::pens_gcode(&pens, &frame, gcode, header, quiet)
-        }
-        _ => crate::cmd::plot::drawing_gcode(&d, &frame, gcode, header, quiet),
-    }
+    // With --layers colours, one pen per palette colour, each drawing its segments, placed as
+    // the whole.
+    crate::cmd::plot::pens_gcode(&pic.pens(), &pic.frame, gcode, header, quiet)
 }
 
 /// Renders a document in a format.

@@ -198,6 +198,26 @@ impl Layer {
     }
 }
 
+impl Layer {
+    /// Copies of this layer, one per colour of `palette` in its order (one pen each, for
+    /// `--layers colours`): identified `layerK`, labelled `K #rrggbb`; and the layer of each
+    /// of `colours` (the first, for a colour not in the palette).
+    pub fn per_colour(&self, palette: &[Colour], colours: &[Colour]) -> (Vec<Layer>, Vec<usize>) {
+        let (specs, of) = super::fill::LayerSpec::colours(palette, colours);
+        let layers = specs
+            .into_iter()
+            .enumerate()
+            .map(|(i, spec)| Layer {
+                id: Some(format!("layer{}", i + 1)),
+                label: Some(spec.label),
+                pen: spec.pen,
+                ..self.clone()
+            })
+            .collect();
+        (layers, of)
+    }
+}
+
 /// A clip outline, which layers refer to by its identifier.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ClipDef {

@@ -64,27 +64,6 @@ pub fn background(colour: &str, width: f64, height: f64) -> svg::node::element::
         .set("fill", colour)
 }
 
-/// One Inkscape layer per colour of `palette` (`--layers colours`), in its order: copies of
-/// `base` with `id="layerK"` and the label `K #rrggbb`.
-pub fn colour_layers(base: &svg::node::element::Group, palette: &[Colour]) -> Vec<svg::node::element::Group> {
-    palette
-        .iter()
-        .enumerate()
-        .map(|(i, c)| {
-            base.clone()
-                .set("id", format!("layer{}", i + 1))
-                .set("inkscape:groupmode", "layer")
-                .set("inkscape:label", format!("{} {c}", i + 1))
-        })
-        .collect()
-}
-
-/// The layer of a shape of `colour` among [`colour_layers`] (the first, for a colour that is
-/// not in the palette).
-pub fn layer_of(palette: &[Colour], colour: Option<&Colour>) -> usize {
-    colour.and_then(|c| palette.iter().position(|p| p == c)).unwrap_or(0)
-}
-
 /// A list of colours.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Palette(pub Vec<Colour>);

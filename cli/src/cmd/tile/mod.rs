@@ -9,16 +9,14 @@ pub mod render;
 
 use crate::args::tile::TileFormat;
 use crate::error::CliError;
+use crate::model::picture::ClipDef;
+use crate::model::{Bounds, Item, Layer, Paint, Path, Picture, Shape};
 use crate::output::num;
-use crate::plan::plot::GcodePlan;
 use crate::plan::tile::{layout_name, seams_apart, too_many_pieces, TileDraw, TilePlan, TileRun};
 use model::{Tile, TileSpec};
-use render::{Layout, Piece, Render, Sheet, Style};
+use render::{Layout, Render, Sheet, Style};
 use serde::Serialize;
 use std::io::IsTerminal;
-use svg::node::element::{Circle, ClipPath, Definitions, Description, Group, Path as SvgPath, Rectangle, Title};
-use svg::node::{Node, Text};
-use svg::Document;
 
 /// Each laid-out piece's colour from the palette: a copy of piece `j mod n` (`tags`), at its
 /// copy's scale (`scales`). Ids are the tile's discs, so every image and copy of a disc takes
@@ -36,47 +34,30 @@ fn piece_colours(d: &TileDraw, seed: u64, tags: &[render::Tag], scales: &[f64]) 
     Some(crate::output::palette::assign_items(&p.0, d.color_by, seed, &items, |_| 0))
 }
 
-/// The drawing as G-code: every piece as a path (circles as arcs where the machine allows),
-/// the sheet placed on the machine's bed.
+/// The drawing as G-code: the strokes of its picture (circles as arcs where the machine
+/// allows), the sheet placed on the machine's bed.
 /// With `pens` (the palette and each piece's colour), one pen per colour, in the palette's
 /// order, with a pen change between them.
 fn gcode(
-    pieces: &[Piece],
+    pieces: &[Path],
     sheet: Sheet,
-    plan: &GcodePlan,
+    style: Style,
+    d: &TileDraw,
     quiet: bool,
     header: String,
     pens: Option<(&[String], &[String])>,
 ) -> Result<Vec<u8>, CliError> {
-    use crate::cmd::plot::pens_gcode;
-    use crate::model::{Bounds, Drawing, Path as PlotPath};
-    let path = |p: &Piece| match p {
-        Piece::Circle { c, r } => PlotPath::circle(*c, *r),
-        Piece::Open(l) => PlotPath::polyline(l.clone(), false),
-        Piece::Closed(l) => PlotPath::polyline(l.clone(), true),
+    let look = Look {
+        style,
+        pen_width: d.pen_width,
+        clip: false,
+        colours: pens.map(|(_, colours)| colours),
+        background: None,
+        layers: pens.map(|(palette, _)| palette),
     };
-    let layers: Vec<(String, Drawing)> = match pens {
-        None => vec![(
-            String::new(),
-            Drawing {
-                paths: pieces.iter().map(path).collect(),
-            },
-        )],
-        Some((palette, colours)) => palette
-            .iter()
-            .map(|c| {
-                let paths = pieces.iter().zip(colours).filter(|(_, k)| *k == c).map(|(p, _)| path(p)).collect();
-                (c.clone(), Drawing { paths })
-            })
-            .collect(),
-    };
-    let frame = Bounds {
-        x0: 0.0,
-        y0: 0.0,
-        x1: sheet.width,
-        y1: sheet.height,
-    };
-    pens_gcode(&layers, &frame, plan, vec![header], quiet)
+    let pic = picture(pieces, sheet, &look);
+    let plan = d.gcode.as_ref().ok_or_else(no_gcode)?;
+    crate::cmd::plot::pens_gcode(&pic.pens(), &pic.frame, plan, vec![header], quiet)
 }
 
 /// One disc in the JSON output.
@@ -147,7 +128,7 @@ const SEAM_TOLERANCE: f64 = 1e-9;
 
 /// Grows the tile the plan asks for and its picture. For cobblestones the band of twins
 /// doubles until the picture meets its copies; a picture that cannot is refused.
-pub fn compute(a: &TileRun) -> Result<(Tile, Vec<Piece>, Vec<render::Tag>), CliError> {
+pub fn compute(a: &TileRun) -> Result<(Tile, Vec<Path>, Vec<render::Tag>), CliError> {
     let mut spec = a.spec;
     let (width, height, tries) = (spec.width, spec.height, spec.tries);
     // Long runs show their tries on a terminal (and nothing when piped or with --quiet).
@@ -256,8 +237,6 @@ fn command_line(a: &TileRun, d: &TileDraw) -> String {
     s
 }
 
-const P: usize = 4;
-
 /// How a drawing is painted.
 #[derive(Debug, Clone, Copy)]
 pub struct Look<'a> {
@@ -275,77 +254,69 @@ pub struct Look<'a> {
     pub layers: Option<&'a [crate::output::palette::Colour]>,
 }
 
-/// The drawing as SVG (mm, y up in the tile's frame, so flipped on the page).
-pub fn svg(pieces: &[Piece], sheet: Sheet, look: &Look<'_>, title: &str, desc: &str) -> Vec<u8> {
-    let pt = |p: [f64; 2]| format!("{},{}", num(p[0], P), num(sheet.height - p[1], P));
-    let line = |l: &[[f64; 2]]| l.iter().map(|&p| pt(p)).collect::<Vec<_>>().join(" L");
-    let style = look.style;
-    let mut g = Group::new()
-        .set("id", "tile")
-        .set("inkscape:groupmode", "layer")
-        .set("inkscape:label", "tile");
-    g = match style {
-        Style::Outline => g
-            .set("fill", "none")
-            .set("stroke", "black")
-            .set("stroke-width", num(look.pen_width, P))
-            .set("stroke-linecap", "round")
-            .set("stroke-linejoin", "round"),
-        Style::Filled => g.set("fill", "black").set("stroke", "none"),
-    };
-    let paint = if style == Style::Filled { "fill" } else { "stroke" };
-    // One layer, or one per palette colour.
-    let mut groups: Vec<Group> = match look.layers {
-        Some(palette) => crate::output::palette::colour_layers(&g, palette),
-        None => vec![g],
+/// The laid-out pieces as a picture (mm, y up in the tile's frame): whole circles, open
+/// polylines (outlines only) and closed ones, each in its colour, in one layer or one per
+/// palette colour. The SVG writes it; the G-code draws its strokes, a pen per layer.
+pub fn picture(pieces: &[Path], sheet: Sheet, look: &Look<'_>) -> Picture {
+    let mut pic = Picture::new(Bounds {
+        x0: 0.0,
+        y0: 0.0,
+        x1: sheet.width,
+        y1: sheet.height,
+    });
+    pic.background = look.background.map(String::from);
+    let filled = look.style == Style::Filled;
+    let mut base = Layer::strokes("tile", look.pen_width, Vec::new());
+    if filled {
+        base.paint = Paint::filled();
+    }
+    let colours = look.colours.unwrap_or(&[]);
+    let (mut layers, layer_of) = match look.layers {
+        Some(palette) => base.per_colour(palette, colours),
+        None => (vec![base], Vec::new()),
     };
     for (j, piece) in pieces.iter().enumerate() {
-        let node: Option<svg::node::element::Element> = match piece {
-            Piece::Circle { c, r } => Some(
-                Circle::new()
-                    .set("cx", num(c[0], P))
-                    .set("cy", num(sheet.height - c[1], P))
-                    .set("r", num(*r, P))
-                    .into(),
-            ),
-            Piece::Open(l) if l.len() >= 2 && style == Style::Outline => Some(SvgPath::new().set("d", format!("M{}", line(l))).into()),
-            Piece::Closed(l) if l.len() >= 3 => Some(SvgPath::new().set("d", format!("M{} Z", line(l))).into()),
-            _ => None,
+        let shape = match piece {
+            Path::Arc { center, radius, .. } => Shape::Circle { c: *center, r: *radius },
+            Path::Polyline { points, closed: false } if points.len() >= 2 && !filled => Shape::Path(vec![piece.clone()]),
+            Path::Polyline { points, closed: true } if points.len() >= 3 => Shape::Path(vec![piece.clone()]),
+            Path::Polyline { .. } => continue,
         };
-        if let Some(mut n) = node {
-            let colour = look.colours.and_then(|cs| cs.get(j));
-            if let Some(c) = colour {
-                n.assign(paint, c.as_str());
-            }
-            let layer = look.layers.map_or(0, |palette| crate::output::palette::layer_of(palette, colour));
-            if let Some(g) = groups.get_mut(layer) {
-                *g = std::mem::take(g).add(n);
+        let mut item = Item::new(shape);
+        if let Some(c) = colours.get(j) {
+            if filled {
+                item.paint.fill = Some(c.clone());
+            } else {
+                item.paint.stroke = Some(c.clone());
             }
         }
-    }
-    let mut d = Document::new()
-        .set("xmlns:inkscape", "http://www.inkscape.org/namespaces/inkscape")
-        .set("width", format!("{}mm", num(sheet.width, P)))
-        .set("height", format!("{}mm", num(sheet.height, P)))
-        .set("viewBox", format!("0 0 {} {}", num(sheet.width, P), num(sheet.height, P)))
-        .add(Title::new("").add(Text::new(title)))
-        .add(Description::new().add(Text::new(desc)));
-    if let Some(bg) = look.background {
-        d = d.add(crate::output::palette::background(bg, sheet.width, sheet.height));
+        if let Some(layer) = layers.get_mut(layer_of.get(j).copied().unwrap_or(0)) {
+            layer.items.push(item);
+        }
     }
     if look.clip {
-        let rect = Rectangle::new()
-            .set("width", num(sheet.width, P))
-            .set("height", num(sheet.height, P));
-        d = d.add(Definitions::new().add(ClipPath::new().set("id", "sheet").add(rect)));
-        groups = groups.into_iter().map(|g| g.set("clip-path", "url(#sheet)")).collect();
+        pic.clips.push(ClipDef {
+            id: "sheet".into(),
+            item: Item::new(Shape::Rect {
+                corner: None,
+                w: sheet.width,
+                h: sheet.height,
+            }),
+        });
+        for layer in &mut layers {
+            layer.clip = Some("sheet".into());
+        }
     }
-    for g in groups {
-        d = d.add(g);
-    }
-    let mut s = d.to_string();
-    s.push('\n');
-    s.into_bytes()
+    pic.layers = layers;
+    pic
+}
+
+/// The drawing as SVG (mm, y up in the tile's frame, so flipped on the page).
+pub fn svg(pieces: &[Path], sheet: Sheet, look: &Look<'_>, title: &str, desc: &str) -> Vec<u8> {
+    let mut pic = picture(pieces, sheet, look);
+    pic.title = title.into();
+    pic.desc = desc.into();
+    crate::output::svg::write(&pic)
 }
 
 /// The output of a plan, and the tile it shows.
@@ -377,8 +348,7 @@ pub fn output(a: &TileRun, d: &TileDraw, format: TileFormat) -> Result<(Tile, Ve
                 (Some(p), Some(cs)) if d.colour_layers => Some((&p.0[..], &cs[..])),
                 _ => None,
             };
-            let plan = d.gcode.as_ref().ok_or_else(no_gcode)?;
-            gcode(&laid, arr.sheet(w, h), plan, a.quiet, command_line(a, d), pens)?
+            gcode(&laid, arr.sheet(w, h), a.style, d, a.quiet, command_line(a, d), pens)?
         }
         TileFormat::Svg | TileFormat::Png => {
             let title = format!(

@@ -2,14 +2,15 @@
 //! copies of that picture (the "Fractal Tiles" post): the `mosaic`, rows of tiles each half the size of the row
 //! below, and the `planet`, rings of tiles each holding twice as many as the ring inside it.
 //!
-//! The picture is made of [`Piece`]s in the tile's frame: whole circles, open polylines (arcs
-//! and Voronoi edges cut exactly at the tile's edges) and closed polygons (filled shapes cut to
-//! the tile). It shows every disc of the plane that reaches into the tile, copies from the
+//! The picture is made of model [`Path`]s in the tile's frame: whole circles, open polylines
+//! (arcs and Voronoi edges cut exactly at the tile's edges) and closed polylines (filled
+//! shapes cut to the tile). It shows every disc of the plane that reaches into the tile, copies from the
 //! neighbouring tiles and rows included, so copies of the picture meet without a seam.
 
 use super::model::{images, Image, Tile};
 use crate::error::CliError;
 use crate::geometry::voronoi::{self as geom, Clip, Pt};
+use crate::model::Path;
 use spade::{DelaunayTriangulation, Triangulation};
 use std::f64::consts::{PI, TAU};
 
@@ -41,22 +42,6 @@ pub enum Layout {
     Mosaic,
     /// Rings of tiles around a disc, each ring with twice as many tiles as the one inside it.
     Planet,
-}
-
-/// A piece of a drawing.
-#[derive(Debug, Clone, PartialEq)]
-pub enum Piece {
-    /// A whole circle.
-    Circle {
-        /// Centre.
-        c: Pt,
-        /// Radius.
-        r: f64,
-    },
-    /// An open polyline.
-    Open(Vec<Pt>),
-    /// A closed polygon (the last point joins the first).
-    Closed(Vec<Pt>),
 }
 
 /// Which disc of the tile a piece belongs to (a disc, part of one, or its cobblestone), and
@@ -114,9 +99,9 @@ fn crossings(c: Pt, r: f64, w: f64, h: f64) -> Vec<f64> {
 
 /// A disc's part of the tile's picture: the whole circle, or the arcs inside the tile (open),
 /// or the disc cut to the tile (closed).
-fn disc_pieces(c: Pt, r: f64, w: f64, h: f64, style: Style, out: &mut Vec<Piece>) {
+fn disc_pieces(c: Pt, r: f64, w: f64, h: f64, style: Style, out: &mut Vec<Path>) {
     if c[0] - r >= 0.0 && c[0] + r <= w && c[1] - r >= 0.0 && c[1] + r <= h {
-        out.push(Piece::Circle { c, r });
+        out.push(Path::circle(c, r));
         return;
     }
     if c[0] + r <= 0.0 || c[0] - r >= w || c[1] + r <= 0.0 || c[1] - r >= h {
@@ -127,7 +112,7 @@ fn disc_pieces(c: Pt, r: f64, w: f64, h: f64, style: Style, out: &mut Vec<Piece>
         // The circle misses the tile's edges: the disc holds the whole tile, or misses it.
         let (dx, dy) = (0.5 * w - c[0], 0.5 * h - c[1]);
         if style == Style::Filled && dx * dx + dy * dy < r * r {
-            out.push(Piece::Closed(vec![[0.0, 0.0], [w, 0.0], [w, h], [0.0, h]]));
+            out.push(Path::polyline(vec![[0.0, 0.0], [w, 0.0], [w, h], [0.0, h]], true));
         }
         return;
     }
@@ -145,7 +130,7 @@ fn disc_pieces(c: Pt, r: f64, w: f64, h: f64, style: Style, out: &mut Vec<Piece>
         }
     }
     match style {
-        Style::Outline => out.extend(arcs.into_iter().map(Piece::Open)),
+        Style::Outline => out.extend(arcs.into_iter().map(|a| Path::polyline(a, false))),
         Style::Filled => {
             // The whole circle through the crossing points, cut by the tile's four sides.
             let mut ring: Vec<Pt> = Vec::new();
@@ -158,7 +143,7 @@ fn disc_pieces(c: Pt, r: f64, w: f64, h: f64, style: Style, out: &mut Vec<Piece>
             }
             let poly = cut_to_box(ring, w, h);
             if poly.len() >= 3 {
-                out.push(Piece::Closed(poly));
+                out.push(Path::polyline(poly, true));
             }
         }
     }
@@ -191,13 +176,13 @@ fn cut_to_box(mut poly: Vec<Pt>, w: f64, h: f64) -> Vec<Pt> {
 }
 
 /// The tile's picture.
-pub fn tile_pieces(tile: &Tile, render: Render, style: Style) -> Result<Vec<Piece>, CliError> {
+pub fn tile_pieces(tile: &Tile, render: Render, style: Style) -> Result<Vec<Path>, CliError> {
     tagged_pieces(tile, render, style).map(|(pieces, _)| pieces)
 }
 
 /// The tile's picture and the [`Tag`] of each piece; no tags for cobblestone outlines, whose
 /// edges each belong to two cells.
-pub fn tagged_pieces(tile: &Tile, render: Render, style: Style) -> Result<(Vec<Piece>, Vec<Tag>), CliError> {
+pub fn tagged_pieces(tile: &Tile, render: Render, style: Style) -> Result<(Vec<Path>, Vec<Tag>), CliError> {
     let (w, h) = (tile.spec.width, tile.spec.height);
     let mut out = Vec::new();
     let mut tags = Vec::new();
@@ -222,13 +207,17 @@ pub fn tagged_pieces(tile: &Tile, render: Render, style: Style) -> Result<(Vec<P
             match style {
                 Style::Outline => {
                     let dual = geom::Dual::of(&tri, clip.bbox());
-                    out.extend(geom::polylines(&dual, 0..dual.edges.len(), &clip).into_iter().map(Piece::Open));
+                    out.extend(
+                        geom::polylines(&dual, 0..dual.edges.len(), &clip)
+                            .into_iter()
+                            .map(|l| Path::polyline(l, false)),
+                    );
                 }
                 Style::Filled => {
                     for (v, im) in sites.iter().enumerate() {
                         let poly = cut_to_box(inset_cell(tile, &tri, &sites, v), w, h);
                         if poly.len() >= 3 {
-                            out.push(Piece::Closed(poly));
+                            out.push(Path::polyline(poly, true));
                             tags.push(Tag { disc: im.disc, r: im.r });
                         }
                     }
@@ -318,18 +307,13 @@ pub fn stones(tile: &Tile, render: Render) -> Result<Vec<crate::model::doc::Shap
 /// The tile's own shapes, whole and filled: its discs, or the inset cells of its centres. Laid
 /// out, every shape of the plane is drawn once and whole, so copies meet without the hairline
 /// seams that anti-aliasing leaves where two cut pieces abut.
-pub fn own_pieces(tile: &Tile, render: Render) -> Result<(Vec<Piece>, Vec<Tag>), CliError> {
+pub fn own_pieces(tile: &Tile, render: Render) -> Result<(Vec<Path>, Vec<Tag>), CliError> {
     let tag = |disc: usize| Tag {
         disc,
         r: tile.discs.get(disc).map_or(0.0, |d| d.r),
     };
     match render {
-        Render::Discs => Ok(tile
-            .discs
-            .iter()
-            .enumerate()
-            .map(|(i, d)| (Piece::Circle { c: d.c, r: d.r }, tag(i)))
-            .unzip()),
+        Render::Discs => Ok(tile.discs.iter().enumerate().map(|(i, d)| (Path::circle(d.c, d.r), tag(i))).unzip()),
         Render::Voronoi => {
             let (sites, tri) = plane_diagram(tile)?;
             if tri.num_vertices() < 3 {
@@ -339,7 +323,7 @@ pub fn own_pieces(tile: &Tile, render: Render) -> Result<(Vec<Piece>, Vec<Tag>),
             Ok((0..tile.discs.len().min(tri.num_vertices()))
                 .map(|v| (inset_cell(tile, &tri, &sites, v), tag(v)))
                 .filter(|(p, _)| p.len() >= 3)
-                .map(|(p, t)| (Piece::Closed(p), t))
+                .map(|(p, t)| (Path::polyline(p, true), t))
                 .unzip())
         }
     }
@@ -361,11 +345,11 @@ pub struct Ends {
 }
 
 /// The ends of the open pieces on the tile's edges.
-pub fn ends(pieces: &[Piece], w: f64, h: f64) -> Ends {
+pub fn ends(pieces: &[Path], w: f64, h: f64) -> Ends {
     let mut e = Ends::default();
     let tol = 1e-9 * w.max(h);
     for p in pieces {
-        let Piece::Open(l) = p else { continue };
+        let Path::Polyline { points: l, closed: false } = p else { continue };
         for q in [l.first(), l.last()].into_iter().flatten() {
             if q[1].abs() <= tol {
                 e.bottom.push(q[0]);
@@ -482,14 +466,14 @@ impl Arrangement {
     /// With `whole` (the tile's own shapes, whole: see [`own_pieces`]), a mosaic also lays out
     /// the copies just outside the sheet (a column each side, a row below and above), whose
     /// shapes reach in across its edges; the sheet's edge cuts them.
-    pub fn lay_out(&self, pieces: &[Piece], w: f64, h: f64, whole: bool) -> Vec<Piece> {
+    pub fn lay_out(&self, pieces: &[Path], w: f64, h: f64, whole: bool) -> Vec<Path> {
         self.lay_out_scaled(pieces, w, h, whole).0
     }
 
     /// [`Arrangement::lay_out`], with the scale of the copy each laid-out piece is in (1 for
     /// the bottom row, 1/2 for the next, ...). Piece `j` of the result is a copy of piece
     /// `j mod pieces.len()`.
-    pub fn lay_out_scaled(&self, pieces: &[Piece], w: f64, h: f64, whole: bool) -> (Vec<Piece>, Vec<f64>) {
+    pub fn lay_out_scaled(&self, pieces: &[Path], w: f64, h: f64, whole: bool) -> (Vec<Path>, Vec<f64>) {
         if self.layout == Layout::Tile {
             return (pieces.to_vec(), vec![1.0; pieces.len()]);
         }
@@ -517,11 +501,7 @@ impl Arrangement {
                 for piece in pieces {
                     out.push(match self.layout {
                         Layout::Planet => self.bend(piece, s, w, h, plane),
-                        _ => match piece {
-                            Piece::Circle { c, r } => Piece::Circle { c: plane(*c), r: s * r },
-                            Piece::Open(l) => Piece::Open(l.iter().map(|&p| plane(p)).collect()),
-                            Piece::Closed(l) => Piece::Closed(l.iter().map(|&p| plane(p)).collect()),
-                        },
+                        _ => piece.transformed(s, s, x0, y0),
                     });
                 }
                 scales.resize(out.len(), s);
@@ -530,9 +510,9 @@ impl Arrangement {
         (out, scales)
     }
 
-    /// A piece through the planet's map: circles become polygons, and straight segments are
-    /// cut short enough to follow the curve.
-    fn bend(&self, piece: &Piece, s: f64, w: f64, h: f64, plane: impl Fn(Pt) -> Pt) -> Piece {
+    /// A piece through the planet's map: circles (the tile's only arcs) become polygons, and
+    /// straight segments are cut short enough to follow the curve.
+    fn bend(&self, piece: &Path, s: f64, w: f64, h: f64, plane: impl Fn(Pt) -> Pt) -> Path {
         let map = |p: Pt| self.polar(w, h, plane(p));
         // Segment length (tile frame) that keeps the bent chord within the tolerance.
         let step = w / 64.0;
@@ -557,7 +537,7 @@ impl Arrangement {
             out
         };
         match piece {
-            Piece::Circle { c, r } => {
+            Path::Arc { center: c, radius: r, .. } => {
                 // As many sides as the circle needs at its drawn size (at least 12).
                 let drawn = r * s * self.ring_height(w, h) / h;
                 let n = ((PI / (1.0 - (TOLERANCE / drawn).min(1.0)).acos()).ceil() as usize).clamp(12, 256);
@@ -567,10 +547,9 @@ impl Arrangement {
                         map([c[0] + r * a.cos(), c[1] + r * a.sin()])
                     })
                     .collect();
-                Piece::Closed(ring)
+                Path::polyline(ring, true)
             }
-            Piece::Open(l) => Piece::Open(dense(l, false)),
-            Piece::Closed(l) => Piece::Closed(dense(l, true)),
+            Path::Polyline { points, closed } => Path::polyline(dense(points, *closed), *closed),
         }
     }
 }

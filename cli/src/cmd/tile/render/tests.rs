@@ -10,7 +10,7 @@ fn arcs_end_exactly_on_the_edges_they_cross() {
     disc_pieces([3.0, 78.0], 6.0, w, h, Style::Outline, &mut out);
     disc_pieces([50.0, 1.0], 4.0, w, h, Style::Outline, &mut out);
     disc_pieces([50.0, 40.0], 4.0, w, h, Style::Outline, &mut out);
-    assert_eq!(out.iter().filter(|p| matches!(p, Piece::Circle { .. })).count(), 1);
+    assert_eq!(out.iter().filter(|p| matches!(p, Path::Arc { .. })).count(), 1);
     let e = ends(&out, w, h);
     assert_eq!((e.bottom.len(), e.top.len(), e.left.len(), e.right.len()), (2, 1, 1, 0));
     assert!((e.bottom[0] - (50.0 - 15f64.sqrt())).abs() < 1e-12);
@@ -23,7 +23,11 @@ fn filled_discs_are_cut_to_the_tile() {
     let (w, h) = (100.0, 80.0);
     let mut out = Vec::new();
     disc_pieces([50.0, 0.0], 4.0, w, h, Style::Filled, &mut out);
-    let Some(Piece::Closed(poly)) = out.first() else {
+    let Some(Path::Polyline {
+        points: poly,
+        closed: true,
+    }) = out.first()
+    else {
         panic!("{out:?}")
     };
     assert!(poly.iter().all(|p| p[1] >= 0.0 && (p[0] - 50.0).hypot(p[1]) <= 4.0 + 1e-12));
@@ -41,7 +45,7 @@ fn filled_discs_are_cut_to_the_tile() {
     disc_pieces([-3.0, -3.0], 4.0, w, h, Style::Filled, &mut out);
     assert!(out.is_empty(), "{out:?}");
     disc_pieces([50.0, 40.0], 70.0, w, h, Style::Filled, &mut out);
-    assert_eq!(out, [Piece::Closed(vec![[0.0, 0.0], [w, 0.0], [w, h], [0.0, h]])]);
+    assert_eq!(out, [Path::polyline(vec![[0.0, 0.0], [w, 0.0], [w, h], [0.0, h]], true)]);
 }
 
 #[test]

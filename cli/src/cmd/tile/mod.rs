@@ -79,7 +79,7 @@ fn piece_colours(a: &TileArgs, tags: &[render::Tag], scales: &[f64]) -> Option<V
 /// allows), the sheet placed on the machine's bed.
 /// With `pens` (the palette and each piece's colour), one pen per colour, in the palette's
 /// order, with a pen change between them.
-fn gcode(pieces: &[Path], sheet: Sheet, a: &TileArgs, header: String, pens: Option<(&[String], &[String])>) -> Result<Vec<u8>, CliError> {
+fn gcode(pieces: Vec<Path>, sheet: Sheet, a: &TileArgs, header: String, pens: Option<(&[String], &[String])>) -> Result<Vec<u8>, CliError> {
     let look = Look {
         style: a.style,
         pen_width: a.pen_width,
@@ -352,7 +352,7 @@ pub struct Look<'a> {
 /// The laid-out pieces as a picture (mm, y up in the tile's frame): whole circles, open
 /// polylines (outlines only) and closed ones, each in its colour, in one layer or one per
 /// palette colour. The SVG writes it; the G-code draws its strokes, a pen per layer.
-pub fn picture(pieces: &[Path], sheet: Sheet, look: &Look<'_>) -> Picture {
+pub fn picture(pieces: Vec<Path>, sheet: Sheet, look: &Look<'_>) -> Picture {
     let mut pic = Picture::new(Bounds {
         x0: 0.0,
         y0: 0.0,
@@ -370,11 +370,12 @@ pub fn picture(pieces: &[Path], sheet: Sheet, look: &Look<'_>) -> Picture {
         Some(palette) => base.per_colour(palette, colours),
         None => (vec![base], Vec::new()),
     };
-    for (j, piece) in pieces.iter().enumerate() {
+    for (j, piece) in pieces.into_iter().enumerate() {
         let shape = match piece {
-            Path::Arc { center, radius, .. } => Shape::Circle { c: *center, r: *radius },
-            Path::Polyline { points, closed: false } if points.len() >= 2 && !filled => Shape::Path(vec![piece.clone()]),
-            Path::Polyline { points, closed: true } if points.len() >= 3 => Shape::Path(vec![piece.clone()]),
+            Path::Arc { center, radius, .. } => Shape::Circle { c: center, r: radius },
+            Path::Polyline { ref points, closed } if points.len() >= if closed { 3 } else { 2 } && (closed || !filled) => {
+                Shape::Path(vec![piece])
+            }
             Path::Polyline { .. } => continue,
         };
         let mut item = Item::new(shape);
@@ -407,7 +408,7 @@ pub fn picture(pieces: &[Path], sheet: Sheet, look: &Look<'_>) -> Picture {
 }
 
 /// The drawing as SVG (mm, y up in the tile's frame, so flipped on the page).
-pub fn svg(pieces: &[Path], sheet: Sheet, look: &Look<'_>, title: &str, desc: &str) -> Vec<u8> {
+pub fn svg(pieces: Vec<Path>, sheet: Sheet, look: &Look<'_>, title: &str, desc: &str) -> Vec<u8> {
     let mut pic = picture(pieces, sheet, look);
     pic.title = title.into();
     pic.desc = desc.into();
@@ -488,7 +489,7 @@ pub fn output(a: &TileArgs) -> Result<(Tile, Vec<u8>), CliError> {
                 (Some(p), Some(cs)) if a.plot.layers == crate::args::plot::Layers::Colours => Some((&p.0[..], &cs[..])),
                 _ => None,
             };
-            gcode(&laid, arr.sheet(w, h), a, command_line(a, &arr), pens)?
+            gcode(laid, arr.sheet(w, h), a, command_line(a, &arr), pens)?
         }
         TileFormat::Svg | TileFormat::Png => {
             let title = format!(
@@ -521,7 +522,7 @@ pub fn output(a: &TileArgs) -> Result<(Tile, Vec<u8>), CliError> {
                     _ => None,
                 },
             };
-            let svg = svg(&laid, arr.sheet(w, h), &look, &title, &command_line(a, &arr));
+            let svg = svg(laid, arr.sheet(w, h), &look, &title, &command_line(a, &arr));
             if format == TileFormat::Png {
                 a.raster.raster().render(&svg)?
             } else {

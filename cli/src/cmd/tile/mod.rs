@@ -39,7 +39,7 @@ fn piece_colours(d: &TileDraw, seed: u64, tags: &[render::Tag], scales: &[f64]) 
 /// With `pens` (the palette and each piece's colour), one pen per colour, in the palette's
 /// order, with a pen change between them.
 fn gcode(
-    pieces: &[Path],
+    pieces: Vec<Path>,
     sheet: Sheet,
     style: Style,
     d: &TileDraw,
@@ -257,7 +257,7 @@ pub struct Look<'a> {
 /// The laid-out pieces as a picture (mm, y up in the tile's frame): whole circles, open
 /// polylines (outlines only) and closed ones, each in its colour, in one layer or one per
 /// palette colour. The SVG writes it; the G-code draws its strokes, a pen per layer.
-pub fn picture(pieces: &[Path], sheet: Sheet, look: &Look<'_>) -> Picture {
+pub fn picture(pieces: Vec<Path>, sheet: Sheet, look: &Look<'_>) -> Picture {
     let mut pic = Picture::new(Bounds {
         x0: 0.0,
         y0: 0.0,
@@ -275,11 +275,12 @@ pub fn picture(pieces: &[Path], sheet: Sheet, look: &Look<'_>) -> Picture {
         Some(palette) => base.per_colour(palette, colours),
         None => (vec![base], Vec::new()),
     };
-    for (j, piece) in pieces.iter().enumerate() {
+    for (j, piece) in pieces.into_iter().enumerate() {
         let shape = match piece {
-            Path::Arc { center, radius, .. } => Shape::Circle { c: *center, r: *radius },
-            Path::Polyline { points, closed: false } if points.len() >= 2 && !filled => Shape::Path(vec![piece.clone()]),
-            Path::Polyline { points, closed: true } if points.len() >= 3 => Shape::Path(vec![piece.clone()]),
+            Path::Arc { center, radius, .. } => Shape::Circle { c: center, r: radius },
+            Path::Polyline { ref points, closed } if points.len() >= if closed { 3 } else { 2 } && (closed || !filled) => {
+                Shape::Path(vec![piece])
+            }
             Path::Polyline { .. } => continue,
         };
         let mut item = Item::new(shape);
@@ -312,7 +313,7 @@ pub fn picture(pieces: &[Path], sheet: Sheet, look: &Look<'_>) -> Picture {
 }
 
 /// The drawing as SVG (mm, y up in the tile's frame, so flipped on the page).
-pub fn svg(pieces: &[Path], sheet: Sheet, look: &Look<'_>, title: &str, desc: &str) -> Vec<u8> {
+pub fn svg(pieces: Vec<Path>, sheet: Sheet, look: &Look<'_>, title: &str, desc: &str) -> Vec<u8> {
     let mut pic = picture(pieces, sheet, look);
     pic.title = title.into();
     pic.desc = desc.into();
@@ -348,7 +349,7 @@ pub fn output(a: &TileRun, d: &TileDraw, format: TileFormat) -> Result<(Tile, Ve
                 (Some(p), Some(cs)) if d.colour_layers => Some((&p.0[..], &cs[..])),
                 _ => None,
             };
-            gcode(&laid, arr.sheet(w, h), a.style, d, a.quiet, command_line(a, d), pens)?
+            gcode(laid, arr.sheet(w, h), a.style, d, a.quiet, command_line(a, d), pens)?
         }
         TileFormat::Svg | TileFormat::Png => {
             let title = format!(
@@ -378,7 +379,7 @@ pub fn output(a: &TileRun, d: &TileDraw, format: TileFormat) -> Result<(Tile, Ve
                 background: d.background.as_deref(),
                 layers: d.palette.as_ref().filter(|_| d.colour_layers).map(|p| &p.0[..]),
             };
-            let svg = svg(&laid, arr.sheet(w, h), &look, &title, &command_line(a, d));
+            let svg = svg(laid, arr.sheet(w, h), &look, &title, &command_line(a, d));
             if format == TileFormat::Png {
                 d.raster.render(&svg)?
             } else {

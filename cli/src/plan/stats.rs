@@ -7,12 +7,12 @@
 //! `stats dimension` reads its FILE before it checks `--min-box` against `--max-box` (a bad
 //! file is reported first): that check is a plan method the run calls after the read.
 
-use crate::args::stats::{ChartFormat, DimensionArgs, GasketArgs, HaltingArgs, Rotate, SceneArgs, StatsCommand};
+use crate::args::stats::{ChartArgs, ChartFormat, DimensionArgs, GasketArgs, HaltingArgs, Rotate, SceneArgs, StatsCommand};
 use crate::args::stats::{TrialsArgs, TrialsFrom, ZetaArgs};
 use crate::error::CliError;
 use crate::io::write::Dest;
 use std::fmt::Display;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use zetafill::ShapeKind;
 
 /// A checked `zetafill stats` subcommand.
@@ -186,7 +186,7 @@ fn scene(a: &SceneArgs) -> Scene {
 }
 
 fn trials(a: &TrialsArgs) -> Result<TrialsPlan, CliError> {
-    let output = chart_output(a.output.as_deref(), a.format, "stats trials")?;
+    let output = chart_output(&a.chart, "stats trials")?;
     let fit_from = a.fit_from.unwrap_or((a.count / 10).max(1));
     if fit_from >= a.count {
         return Err(CliError::arg(
@@ -210,7 +210,7 @@ fn trials(a: &TrialsArgs) -> Result<TrialsPlan, CliError> {
 }
 
 fn halting(a: &HaltingArgs) -> Result<HaltingPlan, CliError> {
-    let output = chart_output(a.output.as_deref(), a.format, "stats halting")?;
+    let output = chart_output(&a.chart, "stats halting")?;
     Ok(HaltingPlan {
         scene: scene(&a.scene),
         c: c_values(a.c_from, a.c_to, a.c_step)?,
@@ -240,8 +240,9 @@ fn dimension(a: &DimensionArgs) -> DimensionPlan {
 /// Where a chart-writing subcommand (`name`, e.g. `"stats trials"`) writes: the checked
 /// destination of `--output` and its format, `--format` or else the extension (SVG for `-`);
 /// `None` without `--output`.
-pub fn chart_output(output: Option<&Path>, format: Option<ChartFormat>, name: &str) -> Result<ChartOutput, CliError> {
-    let Some(p) = output else { return Ok(None) };
+pub fn chart_output(a: &ChartArgs, name: &str) -> Result<ChartOutput, CliError> {
+    let Some(p) = &a.output else { return Ok(None) };
+    let format = a.format;
     let dest = Dest::parse(p);
     let ext = p.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase);
     let f = match (format, ext.as_deref()) {

@@ -50,7 +50,7 @@ pub fn run(cli: Cli) -> Result<(), CliError> {
         Command::Line(a) => cmd::line::run(&plan::line::resolve(&a)?),
         Command::Territory(a) => cmd::territory::run(&plan::territory::resolve(&a)?),
         Command::Tile(a) => cmd::tile::run(&plan::tile::resolve(&a)?),
-        Command::Stats(s) => cmd::stats::run(&s),
+        Command::Stats(s) => cmd::stats::run(&plan::stats::resolve(&s)?),
         Command::Machines(m) => cmd::machines::run(&m),
     }
 }

@@ -4,9 +4,11 @@
 //! clips exactly, reruns are byte-identical, and formats other than SVG/PNG are refused. Each
 //! checker is shown to fail on a broken input.
 
+mod common;
+
 use clap::Parser;
-use std::path::Path;
-use std::process::Command;
+use common::voronoi::{same_segment, segment_mismatch, segments, voronoi_cell, ON_BOX};
+use common::{zf, Out};
 use zetafill_cli::cmd::{cobble, fill};
 use zetafill_cli::geometry::voronoi::Pt;
 use zetafill_cli::model::doc::FillDoc;
@@ -30,79 +32,26 @@ fn fill_doc(args: &[&str]) -> FillDoc {
     doc
 }
 
-/// The Voronoi cell of site i among all `pts`, clipped to the box, by half-planes.
-fn brute_cell(i: usize, pts: &[Pt], bbox: (f64, f64, f64, f64)) -> Vec<(Pt, bool)> {
-    let (x0, y0, x1, y1) = bbox;
-    // (vertex, whether the edge from it to the next lies on a bisector)
-    let mut poly: Vec<(Pt, bool)> = vec![([x0, y0], false), ([x1, y0], false), ([x1, y1], false), ([x0, y1], false)];
-    let s = pts[i];
-    for (j, &o) in pts.iter().enumerate() {
-        if j == i {
-            continue;
-        }
-        let n = [o[0] - s[0], o[1] - s[1]];
-        let c = (o[0] * o[0] + o[1] * o[1] - s[0] * s[0] - s[1] * s[1]) / 2.0;
-        let side = |p: Pt| n[0] * p[0] + n[1] * p[1] - c;
-        let mut out = Vec::new();
-        for k in 0..poly.len() {
-            let (a, la) = poly[k];
-            let (b, _) = poly[(k + 1) % poly.len()];
-            let (sa, sb) = (side(a), side(b));
-            if sa <= 0.0 {
-                out.push((a, la));
-            }
-            if (sa <= 0.0) != (sb <= 0.0) {
-                let t = sa / (sa - sb);
-                let p = [a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])];
-                out.push((p, if sa <= 0.0 { true } else { la }));
-            }
-        }
-        poly = out;
-    }
-    poly
-}
-
 /// Every Voronoi edge inside the box, once (each appears in two cells; deduplicated).
 fn brute_edges(pts: &[Pt], bbox: (f64, f64, f64, f64)) -> Vec<(Pt, Pt)> {
     let mut all: Vec<(Pt, Pt)> = Vec::new();
     for i in 0..pts.len() {
-        let cell = brute_cell(i, pts, bbox);
+        let cell = voronoi_cell(i, pts, bbox);
         for k in 0..cell.len() {
-            let (a, on) = cell[k];
+            let (a, j) = cell[k];
             let (b, _) = cell[(k + 1) % cell.len()];
-            if on && (a[0] - b[0]).hypot(a[1] - b[1]) > 1e-9 {
+            if j != ON_BOX && (a[0] - b[0]).hypot(a[1] - b[1]) > 1e-9 {
                 all.push((a, b));
             }
         }
     }
     let mut out: Vec<(Pt, Pt)> = Vec::new();
     for e in all {
-        if !out.iter().any(|o| same(o, &e, 1e-7)) {
+        if !out.iter().any(|o| same_segment(o, &e, 1e-7)) {
             out.push(e);
         }
     }
     out
-}
-
-fn same(a: &(Pt, Pt), b: &(Pt, Pt), tol: f64) -> bool {
-    let close = |p: Pt, q: Pt| (p[0] - q[0]).abs() <= tol && (p[1] - q[1]).abs() <= tol;
-    (close(a.0, b.0) && close(a.1, b.1)) || (close(a.0, b.1) && close(a.1, b.0))
-}
-
-fn mismatches(got: &[(Pt, Pt)], want: &[(Pt, Pt)]) -> usize {
-    let mut used = vec![false; got.len()];
-    let mut bad = 0;
-    for w in want {
-        match (0..got.len()).find(|&g| !used[g] && same(&got[g], w, 1e-7)) {
-            Some(g) => used[g] = true,
-            None => bad += 1,
-        }
-    }
-    bad + used.iter().filter(|u| !**u).count()
-}
-
-fn segments(lines: &[Vec<Pt>]) -> Vec<(Pt, Pt)> {
-    lines.iter().flat_map(|l| l.windows(2).map(|w| (w[0], w[1]))).collect()
 }
 
 #[test]
@@ -113,13 +62,13 @@ fn cobblestones_are_the_voronoi_edges_of_the_centres() {
         let got = segments(&lines);
         let centres: Vec<Pt> = doc.shapes.iter().map(|s| s.center).collect();
         let want = brute_edges(&centres, doc.bbox());
-        assert_eq!(mismatches(&got, &want), 0, "{region}");
+        assert_eq!(segment_mismatch(&got, &want, 1e-7).len(), 0, "{region}");
         assert!(lines.len() < got.len(), "edges not merged");
         // The checker fails on a missing and on a doubled edge.
-        assert!(mismatches(&got[1..], &want) > 0);
+        assert!(!segment_mismatch(&got[1..], &want, 1e-7).is_empty());
         let mut doubled = got.clone();
         doubled.push(got[0]);
-        assert!(mismatches(&doubled, &want) > 0);
+        assert!(!segment_mismatch(&doubled, &want, 1e-7).is_empty());
     }
 }
 
@@ -182,20 +131,11 @@ fn disc_region_clips_exactly() {
         .all(|p| (r(&p) - 50.0).abs() < 1e-9));
 }
 
-fn run(dir: &Path, args: &[&str]) -> (i32, String) {
-    let o = Command::new(env!("CARGO_BIN_EXE_zetafill"))
-        .args(args)
-        .current_dir(dir)
-        .output()
-        .unwrap_or_else(|e| panic!("{e}"));
-    (o.status.code().unwrap_or(-1), String::from_utf8_lossy(&o.stderr).into_owned())
-}
-
 #[test]
 fn cli_writes_svg_and_png_identically_on_rerun_and_refuses_other_formats() {
     let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
     for name in ["a.svg", "b.svg", "a.png", "b.png"] {
-        let (code, err) = run(
+        let Out { code, stderr: err, .. } = zf(
             dir.path(),
             &["fill", "--count", "500", "--periodic", "--voronoi", "--boundary", "-o", name],
         );
@@ -207,7 +147,7 @@ fn cli_writes_svg_and_png_identically_on_rerun_and_refuses_other_formats() {
     let text = String::from_utf8(read("a.svg")).unwrap_or_default();
     assert!(text.contains("id=\"cobblestones\"") && text.contains("--voronoi"));
     usvg::Tree::from_str(&text, &usvg::Options::default()).unwrap_or_else(|e| panic!("{e}"));
-    let (code, err) = run(dir.path(), &["fill", "--count", "50", "--voronoi", "-o", "c.json"]);
+    let Out { code, stderr: err, .. } = zf(dir.path(), &["fill", "--count", "50", "--voronoi", "-o", "c.json"]);
     assert_eq!(code, 2);
     assert!(err.contains("--voronoi"), "{err}");
     assert!(!dir.path().join("c.json").exists());

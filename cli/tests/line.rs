@@ -6,53 +6,10 @@
 // The checks are written `!(a < b)` on purpose: a NaN must fail them.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
+mod common;
+
+use common::{line_to, parse_json, read, tmp, zf, zf_ok};
 use serde_json::Value;
-use std::path::Path;
-use std::process::Command;
-
-struct Out {
-    code: i32,
-    stdout: Vec<u8>,
-    stderr: String,
-}
-
-fn zf(dir: &Path, args: &[&str]) -> Out {
-    let o = Command::new(env!("CARGO_BIN_EXE_zetafill"))
-        .args(args)
-        .current_dir(dir)
-        .output()
-        .unwrap_or_else(|e| panic!("cannot run: {e}"));
-    Out {
-        code: o.status.code().unwrap_or(-1),
-        stdout: o.stdout,
-        stderr: String::from_utf8_lossy(&o.stderr).into_owned(),
-    }
-}
-
-fn ok(dir: &Path, args: &[&str]) -> Out {
-    let o = zf(dir, args);
-    assert_eq!(o.code, 0, "zetafill {args:?}: {}", o.stderr);
-    o
-}
-
-fn tmp() -> tempfile::TempDir {
-    tempfile::Builder::new()
-        .prefix("zetafill-line-test-")
-        .tempdir()
-        .unwrap_or_else(|e| panic!("{e}"))
-}
-
-fn line(dir: &Path, name: &str, args: &[&str]) -> Vec<u8> {
-    let mut a = vec!["line"];
-    a.extend_from_slice(args);
-    a.extend_from_slice(&["-o", name]);
-    ok(dir, &a);
-    std::fs::read(dir.join(name)).unwrap_or_else(|e| panic!("{e}"))
-}
-
-fn json(bytes: &[u8]) -> Value {
-    serde_json::from_slice(bytes).unwrap_or_else(|e| panic!("bad JSON: {e}"))
-}
 
 /// `(start, length)` of every segment of a line document.
 fn segments(doc: &Value) -> Vec<(f64, f64)> {
@@ -115,7 +72,7 @@ fn json_follows_the_design_and_passes_the_checker() {
         if periodic {
             args.push("--periodic");
         }
-        let doc = json(&line(d.path(), "a.json", &args));
+        let doc = parse_json(&line_to(d.path(), "a.json", &args));
         assert_eq!(doc["version"], 1);
         assert_eq!(doc["mode"], "line");
         assert_eq!(doc["region"]["kind"], "interval");
@@ -143,13 +100,13 @@ fn json_follows_the_design_and_passes_the_checker() {
 #[test]
 fn periodic_fills_wrap_and_thirty_thousand_segments_are_routine() {
     let d = tmp();
-    let doc = json(&line(d.path(), "p.json", &["--c", "1.4", "--count", "30000", "--periodic"]));
+    let doc = parse_json(&line_to(d.path(), "p.json", &["--c", "1.4", "--count", "30000", "--periodic"]));
     check_line(&doc).unwrap_or_else(|e| panic!("{e}"));
     let l = 200.0;
     let mut wrapped = segments(&doc).iter().filter(|s| s.0 + s.1 > l).count();
     for seed in 2..30 {
         let s = seed.to_string();
-        let doc = json(&line(
+        let doc = parse_json(&line_to(
             d.path(),
             "q.json",
             &["--c", "1.2", "--count", "200", "--periodic", "--seed", &s],
@@ -164,14 +121,14 @@ fn periodic_fills_wrap_and_thirty_thousand_segments_are_routine() {
 fn reruns_are_byte_identical_and_prefixes_stable() {
     let d = tmp();
     for name in ["a.svg", "a.json", "a.csv"] {
-        let one = line(d.path(), name, &["--count", "800", "--seed", "9", "--periodic"]);
-        let two = line(d.path(), name, &["--count", "800", "--seed", "9", "--periodic"]);
+        let one = line_to(d.path(), name, &["--count", "800", "--seed", "9", "--periodic"]);
+        let two = line_to(d.path(), name, &["--count", "800", "--seed", "9", "--periodic"]);
         assert_eq!(one, two, "{name} differs between runs");
     }
-    let short = segments(&json(&line(d.path(), "s.json", &["--count", "300", "--seed", "4"])));
-    let long = segments(&json(&line(d.path(), "l.json", &["--count", "900", "--seed", "4"])));
+    let short = segments(&parse_json(&line_to(d.path(), "s.json", &["--count", "300", "--seed", "4"])));
+    let long = segments(&parse_json(&line_to(d.path(), "l.json", &["--count", "900", "--seed", "4"])));
     assert_eq!(&long[..300], &short[..]);
-    let other = segments(&json(&line(d.path(), "o.json", &["--count", "300", "--seed", "5"])));
+    let other = segments(&parse_json(&line_to(d.path(), "o.json", &["--count", "300", "--seed", "5"])));
     assert_ne!(other, short);
 }
 
@@ -179,8 +136,8 @@ fn reruns_are_byte_identical_and_prefixes_stable() {
 fn csv_and_digest_agree_with_json_and_the_core() {
     let d = tmp();
     let args = ["--c", "1.5", "--count", "400", "--seed", "3", "--periodic"];
-    let doc = json(&line(d.path(), "a.json", &args));
-    let csv = String::from_utf8(line(d.path(), "a.csv", &args)).unwrap_or_default();
+    let doc = parse_json(&line_to(d.path(), "a.json", &args));
+    let csv = String::from_utf8(line_to(d.path(), "a.csv", &args)).unwrap_or_default();
     let mut rows = csv.lines();
     assert_eq!(rows.next(), Some("index,kind,start,end,length,trials"));
     for (row, s) in rows.zip(doc["shapes"].as_array().cloned().unwrap_or_default()) {
@@ -194,7 +151,7 @@ fn csv_and_digest_agree_with_json_and_the_core() {
     // The digest equals the core's own digest of the same run.
     let mut a = vec!["line", "--format", "digest", "-o", "-"];
     a.extend_from_slice(&args);
-    let out = String::from_utf8(ok(d.path(), &a).stdout).unwrap_or_default();
+    let out = String::from_utf8(zf_ok(d.path(), &a).stdout).unwrap_or_default();
     let mut segs = vec![zetafill::Segment::<f64>::default(); 401];
     let mut index = vec![0u32; zetafill::line_index_words(401)];
     let storage = zetafill::LineStorage {
@@ -231,7 +188,7 @@ fn count(svg: &str, tag: &str) -> usize {
 fn every_render_is_valid_svg_in_mm() {
     let d = tmp();
     let base = ["--count", "300", "--seed", "2", "--c", "1.3"];
-    let doc = json(&line(d.path(), "a.json", &base));
+    let doc = parse_json(&line_to(d.path(), "a.json", &base));
     let segs = segments(&doc);
     for render in ["dashes", "circles", "bars", "zoom"] {
         for periodic in [false, true] {
@@ -240,7 +197,7 @@ fn every_render_is_valid_svg_in_mm() {
             if periodic {
                 args.push("--periodic");
             }
-            let bytes = line(d.path(), "a.svg", &args);
+            let bytes = line_to(d.path(), "a.svg", &args);
             let tree = usvg::Tree::from_data(&bytes, &usvg::Options::default()).unwrap_or_else(|e| panic!("{render}: {e}"));
             assert!(
                 (tree.size().width() - 200.0 / 25.4 * 96.0).abs() < 0.01,
@@ -261,7 +218,7 @@ fn every_render_is_valid_svg_in_mm() {
             }
         }
     }
-    let png = line(d.path(), "a.png", &base);
+    let png = line_to(d.path(), "a.png", &base);
     assert_eq!(&png[..8], b"\x89PNG\r\n\x1a\n");
 }
 
@@ -319,7 +276,7 @@ fn halting_exits_3_with_a_valid_partial_file() {
     );
     assert_eq!(o.code, 3, "{}", o.stderr);
     assert!(o.stderr.contains("halted at placement"), "{}", o.stderr);
-    let doc = json(&std::fs::read(d.path().join("h.json")).unwrap_or_default());
+    let doc = parse_json(&read(&d.path().join("h.json")));
     assert_eq!(doc["stats"]["halted"], true);
     assert_eq!(doc["stats"]["stop"], "halted");
     let placed = doc["stats"]["placed"].as_u64().unwrap_or(0);
@@ -331,13 +288,13 @@ fn halting_exits_3_with_a_valid_partial_file() {
 #[test]
 fn stop_conditions_and_dimension() {
     let d = tmp();
-    let doc = json(&line(d.path(), "f.json", &["--fill", "0.9"]));
+    let doc = parse_json(&line_to(d.path(), "f.json", &["--fill", "0.9"]));
     assert_eq!(doc["stats"]["stop"], "fill");
     assert!(doc["stats"]["fill_fraction"].as_f64().is_some_and(|f| f >= 0.9));
-    let doc = json(&line(d.path(), "m.json", &["--min-size", "0.2"]));
+    let doc = parse_json(&line_to(d.path(), "m.json", &["--min-size", "0.2"]));
     assert_eq!(doc["stats"]["stop"], "min-size");
     assert!(segments(&doc).iter().all(|s| s.1 >= 0.2));
-    let doc = json(&line(d.path(), "d.json", &["--dimension", "0.5", "--count", "50"]));
+    let doc = parse_json(&line_to(d.path(), "d.json", &["--dimension", "0.5", "--count", "50"]));
     assert_eq!(doc["params"]["c"], 2.0);
 }
 
@@ -377,7 +334,7 @@ fn the_checker_fails_on_broken_fills() {
     assert!(check_line(&wrong).is_err(), "wrong length not caught");
     // And on a real fill with one segment moved onto another.
     let d = tmp();
-    let mut doc = json(&line(d.path(), "a.json", &["--count", "50", "--periodic"]));
+    let mut doc = parse_json(&line_to(d.path(), "a.json", &["--count", "50", "--periodic"]));
     assert!(check_line(&doc).is_ok());
     doc["shapes"][2]["start"] = doc["shapes"][1]["start"].clone();
     assert!(check_line(&doc).is_err());
@@ -401,7 +358,7 @@ fn pages_and_layers_are_refused_the_same_way_in_every_format() {
         assert!(messages.windows(2).all(|w| w[0] == w[1]), "{flag}: {messages:?}");
     }
     assert_eq!(d.path().read_dir().map(|r| r.count()).unwrap_or(1), 0, "a file was written");
-    let help = String::from_utf8_lossy(&ok(d.path(), &["line", "--help"]).stdout).into_owned();
+    let help = String::from_utf8_lossy(&zf_ok(d.path(), &["line", "--help"]).stdout).into_owned();
     let plot = help
         .split("Plotters and lasers:")
         .nth(1)

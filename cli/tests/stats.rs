@@ -4,46 +4,10 @@
 //! box counting within 0.1 of the exact dimension (and the check failing on a wrong c), and
 //! bad input refused with exit 2.
 
+mod common;
+
+use common::{f, tmp, zf, zf_json};
 use serde_json::Value;
-use std::path::Path;
-use std::process::Command;
-
-struct Out {
-    code: i32,
-    stdout: Vec<u8>,
-    stderr: String,
-}
-
-fn zf(dir: &Path, args: &[&str]) -> Out {
-    let o = Command::new(env!("CARGO_BIN_EXE_zetafill"))
-        .args(args)
-        .current_dir(dir)
-        .output()
-        .unwrap_or_else(|e| panic!("cannot run: {e}"));
-    Out {
-        code: o.status.code().unwrap_or(-1),
-        stdout: o.stdout,
-        stderr: String::from_utf8_lossy(&o.stderr).into_owned(),
-    }
-}
-
-fn ok_json(dir: &Path, args: &[&str]) -> Value {
-    let o = zf(dir, args);
-    assert_eq!(o.code, 0, "zetafill {args:?}: {}", o.stderr);
-    serde_json::from_slice(&o.stdout)
-        .unwrap_or_else(|e| panic!("{args:?}: not one JSON object ({e}): {}", String::from_utf8_lossy(&o.stdout)))
-}
-
-fn tmp() -> tempfile::TempDir {
-    tempfile::Builder::new()
-        .prefix("zetafill-stats-test-")
-        .tempdir()
-        .unwrap_or_else(|e| panic!("{e}"))
-}
-
-fn f(v: &Value) -> f64 {
-    v.as_f64().unwrap_or(f64::NAN)
-}
 
 #[test]
 fn gasket_reproduces_table1_entries() {
@@ -54,8 +18,8 @@ fn gasket_reproduces_table1_entries() {
         ("1.48", "1000000", 0.1387),
         ("1.40", "1000", 0.2096),
     ] {
-        let v = ok_json(d.path(), &["stats", "gasket", "--c", c, "--n-offset", "1", "--n", n, "--json"]);
-        assert_eq!((f(&v["b"]) * 1e4).round(), (want * 1e4_f64).round(), "c={c} n={n}: {v}");
+        let v = zf_json(d.path(), &["stats", "gasket", "--c", c, "--n-offset", "1", "--n", n, "--json"]);
+        assert_eq!((f(&v, "b") * 1e4).round(), (want * 1e4_f64).round(), "c={c} n={n}: {v}");
     }
     let o = zf(d.path(), &["stats", "gasket", "--c", "1.3", "--n", "0"]);
     assert_eq!(o.code, 2);
@@ -68,12 +32,12 @@ fn gasket_reproduces_table1_entries() {
 #[test]
 fn trials_fits_an_exponent_near_c_and_writes_csv_and_svg() {
     let d = tmp();
-    let v = ok_json(
+    let v = zf_json(
         d.path(),
         &["stats", "trials", "--c", "1.3", "--count", "3000", "--json", "-o", "t.csv"],
     );
     assert_eq!(v["placed"], 3000);
-    let k = f(&v["exponent"]);
+    let k = f(&v, "exponent");
     assert!((k - 1.3).abs() < 0.15, "exponent {k} is not near c = 1.3");
     // The CSV: one row per placement, cumulative trials the running sum, ending at "trials".
     let csv = std::fs::read_to_string(d.path().join("t.csv")).unwrap_or_default();
@@ -91,7 +55,7 @@ fn trials_fits_an_exponent_near_c_and_writes_csv_and_svg() {
     assert_eq!(rows, 3000);
     assert_eq!(v["trials"], sum);
     // Several curves in one chart, a valid SVG.
-    let v = ok_json(
+    let v = zf_json(
         d.path(),
         &[
             "stats", "trials", "--c", "1.2,1.3", "--runs", "2", "--count", "500", "--json", "-o", "t.svg",
@@ -105,7 +69,7 @@ fn trials_fits_an_exponent_near_c_and_writes_csv_and_svg() {
     assert!(usvg::Tree::from_data(&svg, &usvg::Options::default()).is_ok());
     assert!(String::from_utf8_lossy(&svg).contains("c = 1.3, run 1"));
     // The same call again gives the same bytes.
-    ok_json(
+    zf_json(
         d.path(),
         &[
             "stats", "trials", "--c", "1.2,1.3", "--runs", "2", "--count", "500", "--json", "-o", "u.svg",
@@ -125,10 +89,10 @@ fn trials_estimated_by_the_cell_sampler_match_the_counted_ones() {
     // 40 runs of 1,000 circles a side: the means' standard errors are about 1%.
     let runs = |sampler: &'static str| {
         let args = format!("stats trials --c 1.3 --count 1000 --runs 40 --sampler {sampler} --json");
-        let v = ok_json(d.path(), &args.split(' ').collect::<Vec<_>>());
+        let v = zf_json(d.path(), &args.split(' ').collect::<Vec<_>>());
         let s = v["series"].as_array().cloned().unwrap_or_default();
         assert_eq!(s.len(), 40);
-        s.iter().map(|r| f(&r["trials"])).sum::<f64>() / 40.0
+        s.iter().map(|r| f(r, "trials")).sum::<f64>() / 40.0
     };
     let (e, c) = (runs("fast"), runs("reference"));
     assert!((e / c - 1.0).abs() < 0.05, "mean estimate {e} against mean count {c}");
@@ -136,10 +100,10 @@ fn trials_estimated_by_the_cell_sampler_match_the_counted_ones() {
     // ends at the JSON's total.
     let one = |out: &str| {
         let args = format!("stats trials --c 1.3 --count 3000 --sampler fast --json -o {out}");
-        ok_json(d.path(), &args.split(' ').collect::<Vec<_>>())
+        zf_json(d.path(), &args.split(' ').collect::<Vec<_>>())
     };
     let est = one("e.csv");
-    let k = f(&est["exponent"]);
+    let k = f(&est, "exponent");
     assert!((k - 1.3).abs() < 0.15, "estimated exponent {k} is not near c = 1.3");
     let csv = std::fs::read_to_string(d.path().join("e.csv")).unwrap_or_default();
     let mut sum = 0.0;
@@ -153,7 +117,7 @@ fn trials_estimated_by_the_cell_sampler_match_the_counted_ones() {
     }
     assert!(fractional > 2900, "only {fractional} of 3000 estimates are fractional");
     assert!(
-        (f(&est["trials"]) - sum).abs() <= 1e-3 * sum,
+        (f(&est, "trials") - sum).abs() <= 1e-3 * sum,
         "JSON total {} against {sum}",
         est["trials"]
     );
@@ -167,7 +131,7 @@ fn trials_estimated_by_the_cell_sampler_match_the_counted_ones() {
 #[test]
 fn squares_halt_in_every_run_above_1_5224() {
     let d = tmp();
-    let v = ok_json(
+    let v = zf_json(
         d.path(),
         &[
             "stats",
@@ -194,10 +158,10 @@ fn squares_halt_in_every_run_above_1_5224() {
     for p in &pts {
         assert_eq!(p["runs"], 6);
         assert_eq!(p["halted"], 6, "{p}");
-        assert_eq!(f(&p["fraction"]), 1.0);
+        assert_eq!(f(p, "fraction"), 1.0);
         assert_eq!(p["median_halt"], 1, "they halt at the second square: {p}");
     }
-    let v = ok_json(
+    let v = zf_json(
         d.path(),
         &[
             "stats",
@@ -227,7 +191,7 @@ fn halting_checker_fails_when_a_run_does_not_halt() {
     // The same assertion on a c below the limit with an easy trial budget finds runs that do not
     // halt: the check above is not vacuous.
     let d = tmp();
-    let v = ok_json(
+    let v = zf_json(
         d.path(),
         &[
             "stats",
@@ -274,15 +238,15 @@ fn halting_is_reproducible_whatever_the_threads_and_writes_csv_and_svg() {
     ];
     let mut one = args.to_vec();
     one.extend_from_slice(&["--threads", "1", "-o", "h.csv"]);
-    let a = ok_json(d.path(), &one);
+    let a = zf_json(d.path(), &one);
     let mut two = args.to_vec();
     two.extend_from_slice(&["--threads", "2", "-o", "h.svg"]);
-    let b = ok_json(d.path(), &two);
+    let b = zf_json(d.path(), &two);
     assert_eq!(a, b);
     let pts = a["points"].as_array().cloned().unwrap_or_default();
-    assert_eq!(pts.iter().map(|p| f(&p["c"])).collect::<Vec<_>>(), vec![1.44, 1.47, 1.5]);
+    assert_eq!(pts.iter().map(|p| f(p, "c")).collect::<Vec<_>>(), vec![1.44, 1.47, 1.5]);
     for p in &pts {
-        assert_eq!(f(&p["fraction"]), p["halted"].as_u64().unwrap_or(99) as f64 / 5.0);
+        assert_eq!(f(p, "fraction"), p["halted"].as_u64().unwrap_or(99) as f64 / 5.0);
     }
     let csv = std::fs::read_to_string(d.path().join("h.csv")).unwrap_or_default();
     assert_eq!(csv.lines().next(), Some("c,runs,halted,fraction"));
@@ -303,17 +267,17 @@ fn box_counting_is_within_0_1_of_the_exact_dimension() {
     ] {
         let o = zf(d.path(), &[cmd, "--c", c, "--count", n, "-o", "a.json"]);
         assert_eq!(o.code, 0, "{}", o.stderr);
-        let v = ok_json(d.path(), &["stats", "dimension", "a.json", "--json"]);
-        assert!((f(&v["exact"]) - exact).abs() < 1e-12);
-        let est = f(&v["box_counting"]);
+        let v = zf_json(d.path(), &["stats", "dimension", "a.json", "--json"]);
+        assert!((f(&v, "exact") - exact).abs() < 1e-12);
+        let est = f(&v, "box_counting");
         assert!((est - exact).abs() < 0.1, "{cmd} c={c}: box counting {est}, exact {exact}");
         // The check fails on a document whose c is wrong.
         let mut doc: Value = serde_json::from_slice(&std::fs::read(d.path().join("a.json")).unwrap_or_default()).unwrap_or(Value::Null);
         doc["params"]["c"] = Value::from(if cmd == "fill" { 1.1 } else { 1.2 });
         std::fs::write(d.path().join("b.json"), doc.to_string()).unwrap_or_default();
-        let w = ok_json(d.path(), &["stats", "dimension", "b.json", "--json"]);
+        let w = zf_json(d.path(), &["stats", "dimension", "b.json", "--json"]);
         assert!(
-            (f(&w["box_counting"]) - f(&w["exact"])).abs() >= 0.1,
+            (f(&w, "box_counting") - f(&w, "exact")).abs() >= 0.1,
             "the check did not fail on a wrong c: {w}"
         );
     }

@@ -8,47 +8,15 @@
 //! - density control concentrates points near the boundaries (against --uniform);
 //! - reruns are byte-identical; bad input exits 2 naming the flag, with no file.
 
+mod common;
+
+use common::voronoi::{segment_mismatch, segments, voronoi_cell, ON_BOX};
+use common::{parse_json, read, seg_dist, tmp, zf, zf_ok};
 use serde_json::Value;
 use spade::{DelaunayTriangulation, Point2, Triangulation};
-use std::path::Path;
-use std::process::Command;
 use zetafill_cli::cmd::territory::model::{Growth, Model};
 use zetafill_cli::cmd::territory::{colour, render};
 use zetafill_cli::geometry::voronoi::{Clip, Pt};
-
-struct Out {
-    code: i32,
-    stderr: String,
-}
-
-fn zf(dir: &Path, args: &[&str]) -> Out {
-    let o = Command::new(env!("CARGO_BIN_EXE_zetafill"))
-        .args(args)
-        .current_dir(dir)
-        .output()
-        .unwrap_or_else(|e| panic!("cannot run: {e}"));
-    Out {
-        code: o.status.code().unwrap_or(-1),
-        stderr: String::from_utf8_lossy(&o.stderr).into_owned(),
-    }
-}
-
-fn ok(dir: &Path, args: &[&str]) {
-    let o = zf(dir, args);
-    assert_eq!(o.code, 0, "zetafill {args:?}: {}", o.stderr);
-}
-
-fn tmp() -> tempfile::TempDir {
-    tempfile::Builder::new()
-        .prefix("zetafill-territory-test-")
-        .tempdir()
-        .unwrap_or_else(|e| panic!("{e}"))
-}
-
-fn json(path: &Path) -> Value {
-    let b = std::fs::read(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
-    serde_json::from_slice(&b).unwrap_or_else(|e| panic!("bad JSON: {e}"))
-}
 
 fn sites_of(doc: &Value) -> (Vec<Pt>, Vec<u32>, Vec<u32>, Vec<[f64; 3]>) {
     let arr = doc["sites"].as_array().unwrap_or_else(|| panic!("no sites"));
@@ -136,8 +104,8 @@ fn every_territory_is_connected_and_holds_its_seed() {
         let mut a = vec!["territory"];
         a.extend_from_slice(args);
         a.extend_from_slice(&["-o", &name]);
-        ok(dir.path(), &a);
-        let doc = json(&dir.path().join(&name));
+        zf_ok(dir.path(), &a);
+        let doc = parse_json(&read(&dir.path().join(&name)));
         let (pts, ter, _, _) = sites_of(&doc);
         let k = doc["seeds"].as_u64().unwrap_or(0) as usize;
         let problems = connectivity_problems(&delaunay_graph(&pts), &ter, k);
@@ -303,84 +271,20 @@ fn incremental_repair_equals_the_rule_recomputed_from_scratch() {
 // ---------------------------------------------------------------------------------------
 // Checker 2: boundaries against a brute-force Voronoi diagram.
 
-/// The cell of site i: the box cut by the bisector half-plane of every other site, each edge
-/// labelled with the site across it (usize::MAX for the box's sides).
-fn brute_cell(i: usize, pts: &[Pt], bbox: (f64, f64, f64, f64)) -> Vec<(Pt, usize)> {
-    let (x0, y0, x1, y1) = bbox;
-    let m = usize::MAX;
-    // (vertex, label of the edge from this vertex to the next)
-    let mut poly: Vec<(Pt, usize)> = vec![([x0, y0], m), ([x1, y0], m), ([x1, y1], m), ([x0, y1], m)];
-    let s = pts[i];
-    for (j, &o) in pts.iter().enumerate() {
-        if j == i {
-            continue;
-        }
-        let n = [o[0] - s[0], o[1] - s[1]];
-        let c = (o[0] * o[0] + o[1] * o[1] - s[0] * s[0] - s[1] * s[1]) / 2.0;
-        let side = |p: Pt| n[0] * p[0] + n[1] * p[1] - c; // <= 0: nearer to s
-        let mut out: Vec<(Pt, usize)> = Vec::new();
-        for k in 0..poly.len() {
-            let (a, la) = poly[k];
-            let (b, _) = poly[(k + 1) % poly.len()];
-            let (sa, sb) = (side(a), side(b));
-            if sa <= 0.0 {
-                out.push((a, la));
-            }
-            if (sa <= 0.0) != (sb <= 0.0) {
-                let t = sa / (sa - sb);
-                let p = [a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])];
-                // Entering: the edge from p on keeps a's label; leaving: p starts the cut.
-                if sa <= 0.0 {
-                    out.push((p, j));
-                } else {
-                    out.push((p, la));
-                }
-            }
-        }
-        poly = out;
-    }
-    poly
-}
-
 /// The Voronoi edges between sites of different territories, by brute force: (a, b) segments.
 fn brute_boundaries(pts: &[Pt], ter: &[u32], bbox: (f64, f64, f64, f64)) -> Vec<(Pt, Pt)> {
     let mut out = Vec::new();
     for i in 0..pts.len() {
-        let cell = brute_cell(i, pts, bbox);
+        let cell = voronoi_cell(i, pts, bbox);
         for k in 0..cell.len() {
             let (a, j) = cell[k];
             let (b, _) = cell[(k + 1) % cell.len()];
-            if j != usize::MAX && i < j && ter[i] != ter[j] && (a[0] - b[0]).hypot(a[1] - b[1]) > 1e-9 {
+            if j != ON_BOX && i < j && ter[i] != ter[j] && (a[0] - b[0]).hypot(a[1] - b[1]) > 1e-9 {
                 out.push((a, b));
             }
         }
     }
     out
-}
-
-/// Matches segments one to one (either direction) within `tol`. Returns the problems.
-fn segment_mismatch(got: &[(Pt, Pt)], want: &[(Pt, Pt)], tol: f64) -> Vec<String> {
-    let close = |p: Pt, q: Pt| (p[0] - q[0]).abs() <= tol && (p[1] - q[1]).abs() <= tol;
-    let mut used = vec![false; got.len()];
-    let mut problems = Vec::new();
-    for w in want {
-        let hit = (0..got.len())
-            .find(|&g| !used[g] && ((close(got[g].0, w.0) && close(got[g].1, w.1)) || (close(got[g].0, w.1) && close(got[g].1, w.0))));
-        match hit {
-            Some(g) => used[g] = true,
-            None => problems.push(format!("missing {w:?}")),
-        }
-    }
-    for (g, u) in used.iter().enumerate() {
-        if !u {
-            problems.push(format!("extra {:?}", got[g]));
-        }
-    }
-    problems
-}
-
-fn segments(lines: &[Vec<Pt>]) -> Vec<(Pt, Pt)> {
-    lines.iter().flat_map(|l| l.windows(2).map(|w| (w[0], w[1]))).collect()
 }
 
 #[test]
@@ -543,7 +447,7 @@ fn colours_wrap_the_hue_and_clamp_saturation_and_brightness() {
     let dir = tmp();
     // Territory 0 walks the hue up past 1 and saturation past 1; territory 1 walks the hue
     // below 0 and brightness below 0.
-    ok(
+    zf_ok(
         dir.path(),
         &[
             "territory",
@@ -559,7 +463,7 @@ fn colours_wrap_the_hue_and_clamp_saturation_and_brightness() {
             "c.json",
         ],
     );
-    let doc = json(&dir.path().join("c.json"));
+    let doc = parse_json(&read(&dir.path().join("c.json")));
     assert_eq!(colour_problems(&doc), 0);
     let (_, ter, dist, col) = sites_of(&doc);
     // The edges were reached: hue wrapped, saturation clamped at 1, brightness at 0.
@@ -596,17 +500,6 @@ fn colours_wrap_the_hue_and_clamp_saturation_and_brightness() {
 
 // ---------------------------------------------------------------------------------------
 // Checker 4: density control.
-
-fn seg_dist(p: Pt, a: Pt, b: Pt) -> f64 {
-    let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
-    let l2 = dx * dx + dy * dy;
-    let t = if l2 > 0.0 {
-        (((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / l2).clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
-    (p[0] - a[0] - t * dx).hypot(p[1] - a[1] - t * dy)
-}
 
 /// (Fraction of the sites within `delta` of a boundary) / (fraction of the area within it):
 /// about 1 for points spread evenly, more when they crowd the boundaries.
@@ -738,7 +631,7 @@ fn reruns_are_byte_identical_and_seeds_matter() {
         ("boundaries", "json"),
     ] {
         let run = |name: &str, seed: &str| {
-            ok(
+            zf_ok(
                 dir.path(),
                 &[
                     "territory",
@@ -768,7 +661,7 @@ fn reruns_are_byte_identical_and_seeds_matter() {
 #[test]
 fn json_has_the_documented_fields() {
     let dir = tmp();
-    ok(
+    zf_ok(
         dir.path(),
         &[
             "territory",
@@ -786,7 +679,7 @@ fn json_has_the_documented_fields() {
             "t.json",
         ],
     );
-    let doc = json(&dir.path().join("t.json"));
+    let doc = parse_json(&read(&dir.path().join("t.json")));
     assert_eq!(doc["version"], 1);
     assert_eq!(doc["mode"], "territory");
     assert_eq!(doc["seeds"], 3);
@@ -809,7 +702,7 @@ fn json_has_the_documented_fields() {
 #[test]
 fn svg_layers_parse_and_stay_on_the_page() {
     let dir = tmp();
-    ok(
+    zf_ok(
         dir.path(),
         &[
             "territory",
@@ -840,11 +733,11 @@ fn svg_layers_parse_and_stay_on_the_page() {
 #[test]
 fn sites_from_a_fill_colour_its_shapes() {
     let dir = tmp();
-    ok(
+    zf_ok(
         dir.path(),
         &["fill", "--count", "400", "--c", "1.25", "--seed", "2", "-o", "fill.json"],
     );
-    ok(
+    zf_ok(
         dir.path(),
         &[
             "territory",
@@ -858,7 +751,7 @@ fn sites_from_a_fill_colour_its_shapes() {
             "t.json",
         ],
     );
-    ok(
+    zf_ok(
         dir.path(),
         &[
             "territory",
@@ -874,7 +767,7 @@ fn sites_from_a_fill_colour_its_shapes() {
             "t.svg",
         ],
     );
-    ok(
+    zf_ok(
         dir.path(),
         &[
             "territory",
@@ -890,8 +783,8 @@ fn sites_from_a_fill_colour_its_shapes() {
             "f.svg",
         ],
     );
-    let fill = json(&dir.path().join("fill.json"));
-    let doc = json(&dir.path().join("t.json"));
+    let fill = parse_json(&read(&dir.path().join("fill.json")));
+    let doc = parse_json(&read(&dir.path().join("t.json")));
     let shapes = fill["shapes"].as_array().unwrap_or_else(|| panic!("shapes"));
     let sites = doc["sites"].as_array().unwrap_or_else(|| panic!("sites"));
     assert_eq!(sites.len(), shapes.len());
@@ -913,7 +806,7 @@ fn bad_input_exits_2_names_the_flag_and_writes_nothing() {
     let dir = tmp();
     std::fs::write(dir.path().join("notfill.json"), "{\"mode\": \"territory\"}").unwrap_or_else(|e| panic!("{e}"));
     std::fs::write(dir.path().join("small.json"), "").unwrap_or_default();
-    ok(dir.path(), &["fill", "--count", "5", "-o", "five.json"]);
+    zf_ok(dir.path(), &["fill", "--count", "5", "-o", "five.json"]);
     let cases: &[(&[&str], &str)] = &[
         (&["--sites", "1"], "--sites"),
         (&["--sites", "0"], "--sites"),
@@ -963,13 +856,13 @@ fn bad_input_exits_2_names_the_flag_and_writes_nothing() {
 #[test]
 fn gcode_draws_the_boundaries_safely_inside_the_bed() {
     let dir = tmp();
-    ok(
+    zf_ok(
         dir.path(),
         &["territory", "--points", "3000", "--seed", "2", "--boundary", "-q", "-o", "t.gcode"],
     );
-    ok(dir.path(), &["territory", "--points", "3000", "--seed", "2", "-o", "t.json"]);
+    zf_ok(dir.path(), &["territory", "--points", "3000", "--seed", "2", "-o", "t.json"]);
     let text = String::from_utf8(std::fs::read(dir.path().join("t.gcode")).unwrap_or_default()).unwrap_or_default();
-    let doc = json(&dir.path().join("t.json"));
+    let doc = parse_json(&read(&dir.path().join("t.json")));
     let drawn = gcode_check(&text).unwrap_or_else(|e| panic!("{e}"));
     // The checker fails on a rapid move with the pen down, and on a point off the bed.
     let pen_down_rapid = text.replacen("M3 S30\nG4 P0.15\nG0", "M3 S90\nG4 P0.15\nG0", 1);

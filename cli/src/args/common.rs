@@ -1,6 +1,7 @@
 //! Flag groups several commands share, each written once and flattened where it is used:
 //! the power law (`--c`, `--dimension`, `--n-offset`), the stop conditions (`--count`,
-//! `--fill`, `--min-size`), `--max-trials`, `--seed` and the output (`-o`, `--format`).
+//! `--fill`, `--min-size`), both inside the run of a fill with `--gap`, `--max-trials` and
+//! `--seed`; `--seed` alone; and the output (`-o`, `--format`).
 //!
 //! The help texts are the 2D fill's; a command whose pieces are other (the segments of
 //! `line`) or whose numbers differ rewords them with `mut_arg` where it flattens the group.
@@ -42,12 +43,25 @@ pub struct StopArgs {
     pub min_size: Option<f64>,
 }
 
-/// `--max-trials`: the trial limit of one placement.
+/// The power law, the stops, `--gap`, `--max-trials` and `--seed`: how a fill runs, the
+/// same for shapes in 2D and segments in 1D.
 #[derive(Debug, Clone, clap::Args)]
-pub struct MaxTrialsArgs {
+pub struct RunArgs {
+    /// The power law.
+    #[command(flatten)]
+    pub power: PowerLawArgs,
+    /// The stop conditions.
+    #[command(flatten)]
+    pub stop: StopArgs,
+    /// Minimum clearance between shapes and to the boundary, in mm.
+    #[arg(long, default_value_t = 0.0, value_parser = spec::non_negative, allow_negative_numbers = true)]
+    pub gap: f64,
     /// Trial limit per placement; reaching it halts the fill (exit 3).
     #[arg(long = "max-trials", default_value_t = DEFAULT_MAX_TRIALS, value_parser = clap::value_parser!(u64).range(1..))]
     pub max_trials: u64,
+    /// The seed.
+    #[command(flatten)]
+    pub seed: SeedArgs,
 }
 
 /// `--seed`: the seed of the run's random numbers.

@@ -2,7 +2,7 @@
 //! the plotter, colour and raster groups flattened in.
 
 use crate::args::colour::ColourArgs;
-use crate::args::common::{MaxTrialsArgs, OutputArgs, PowerLawArgs, SeedArgs, StopArgs};
+use crate::args::common::{OutputArgs, RunArgs};
 use crate::args::format::Format;
 use crate::args::plot::PlotArgs;
 use crate::args::raster::{RasterArgs, ReliefArg};
@@ -100,21 +100,9 @@ pub struct FillArgs {
     /// Periodic (toroidal) boundary: the fill tiles seamlessly (rect regions only).
     #[arg(long)]
     pub periodic: bool,
-    /// The power law.
+    /// The power law, stops, clearance, trial limit and seed.
     #[command(flatten)]
-    pub power: PowerLawArgs,
-    /// The stop conditions.
-    #[command(flatten)]
-    pub stop: StopArgs,
-    /// Minimum clearance between shapes and to the boundary, in mm.
-    #[arg(long, default_value_t = 0.0, value_parser = spec::non_negative, allow_negative_numbers = true)]
-    pub gap: f64,
-    /// The trial limit.
-    #[command(flatten)]
-    pub max_trials: MaxTrialsArgs,
-    /// The seed.
-    #[command(flatten)]
-    pub seed: SeedArgs,
+    pub run: RunArgs,
     /// Candidate sampler: fast (cells where the next shape could fit) or reference (the
     /// paper's uniform search); both give the same distribution of placements.
     #[arg(long, value_enum, default_value = "fast")]

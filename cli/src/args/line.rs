@@ -2,7 +2,7 @@
 //! segments, the drawing, and the plotter, colour and raster groups flattened in.
 
 use crate::args::colour::ColourArgs;
-use crate::args::common::{MaxTrialsArgs, OutputArgs, PowerLawArgs, SeedArgs, StopArgs};
+use crate::args::common::{OutputArgs, RunArgs};
 use crate::args::format::Format;
 use crate::args::plot::PlotArgs;
 use crate::args::raster::RasterArgs;
@@ -39,6 +39,7 @@ pub const MAX_SEGMENTS: u64 = 10_000_000;
         .value_parser(clap::value_parser!(u64).range(1..=MAX_SEGMENTS))),
     mut_arg("fill", |a| a.help("Stop once this fraction of the interval is filled, 0 < F < 1")),
     mut_arg("min_size", |a| a.help("Stop before the first segment shorter than MM")),
+    mut_arg("gap", |a| a.help("Minimum clearance between segments and to the ends, in mm")),
     mut_arg("page", |a| a.hide(true)),
     mut_arg("layers", |a| a.hide(true)),
     mut_arg("fit", |a| a.help("G-code: scale the drawing to fill the bed less --margin, centred")),
@@ -54,21 +55,9 @@ pub struct LineArgs {
     /// Periodic boundary: the interval is a circle, a segment running past L continues at 0.
     #[arg(long)]
     pub periodic: bool,
-    /// The power law (c = 1/D).
+    /// The power law (c = 1/D), stops, clearance, trial limit and seed.
     #[command(flatten)]
-    pub power: PowerLawArgs,
-    /// The stop conditions.
-    #[command(flatten)]
-    pub stop: StopArgs,
-    /// Minimum clearance between segments and to the ends, in mm.
-    #[arg(long, default_value_t = 0.0, value_parser = spec::non_negative, allow_negative_numbers = true)]
-    pub gap: f64,
-    /// The trial limit.
-    #[command(flatten)]
-    pub max_trials: MaxTrialsArgs,
-    /// The seed.
-    #[command(flatten)]
-    pub seed: SeedArgs,
+    pub run: RunArgs,
     /// Where the output goes.
     #[command(flatten)]
     pub output: OutputArgs<Format>,

@@ -1,5 +1,5 @@
 //! The flags of `zetafill stats` and its subcommands; `stats trials` and `stats halting`
-//! share the scene of their runs ([`SceneArgs`]).
+//! share the scene of their runs ([`SceneArgs`]) and their output ([`ChartArgs`]).
 
 use crate::args::spec;
 use clap::{Args, Subcommand, ValueEnum};
@@ -79,8 +79,21 @@ pub struct SceneArgs {
     pub periodic: bool,
 }
 
+/// `-o` and `--format` of `stats trials` and `stats halting`: the numbers as CSV or a chart
+/// as SVG. Each command says in its help what its CSV and chart hold.
+#[derive(Debug, Clone, Args)]
+pub struct ChartArgs {
+    /// Output: .csv or .svg; '-' is stdout.
+    #[arg(short = 'o', long)]
+    pub output: Option<PathBuf>,
+    /// Output format (overrides the extension): csv or svg.
+    #[arg(long, value_enum)]
+    pub format: Option<ChartFormat>,
+}
+
 /// Arguments of `stats trials`.
 #[derive(Debug, Args)]
+#[command(mut_arg("output", |a| a.help("Output: .csv (every placement of every run) or .svg (log-log chart); '-' is stdout")))]
 pub struct TrialsArgs {
     /// The shape, rotation and region of the runs.
     #[command(flatten)]
@@ -111,12 +124,9 @@ pub struct TrialsArgs {
     /// The fit uses placements n >= this (default: a tenth of --count).
     #[arg(long = "fit-from", value_parser = clap::value_parser!(u64).range(1..))]
     pub fit_from: Option<u64>,
-    /// Output: .csv (every placement of every run) or .svg (log-log chart); '-' is stdout.
-    #[arg(short = 'o', long)]
-    pub output: Option<PathBuf>,
-    /// Output format (overrides the extension): csv or svg.
-    #[arg(long, value_enum)]
-    pub format: Option<ChartFormat>,
+    /// Where the numbers or the chart go.
+    #[command(flatten)]
+    pub chart: ChartArgs,
     /// Print one JSON object: {"exponent", "placed", "trials", ...} of the first run, and
     /// every run under "series".
     #[arg(long)]
@@ -125,6 +135,7 @@ pub struct TrialsArgs {
 
 /// Arguments of `stats halting`.
 #[derive(Debug, Args)]
+#[command(mut_arg("output", |a| a.help("Output: .csv (c,runs,halted,fraction) or .svg (chart); '-' is stdout")))]
 pub struct HaltingArgs {
     /// The shape, rotation and region of the runs.
     #[command(flatten)]
@@ -156,12 +167,9 @@ pub struct HaltingArgs {
     /// Worker threads (0: one per core).
     #[arg(long, default_value_t = 0)]
     pub threads: usize,
-    /// Output: .csv (c,runs,halted,fraction) or .svg (chart); '-' is stdout.
-    #[arg(short = 'o', long)]
-    pub output: Option<PathBuf>,
-    /// Output format (overrides the extension): csv or svg.
-    #[arg(long, value_enum)]
-    pub format: Option<ChartFormat>,
+    /// Where the numbers or the chart go.
+    #[command(flatten)]
+    pub chart: ChartArgs,
     /// Print one JSON object: {"points": [{"c", "runs", "halted", "fraction"}, ...]}.
     #[arg(long)]
     pub json: bool,

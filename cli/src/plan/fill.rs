@@ -224,15 +224,15 @@ pub fn resolve_as(a: &FillArgs, format: Format) -> Result<(FillRun, FillDraw), C
             "cobblestones are drawn as SVG or PNG; write .svg or .png, or drop --voronoi",
         ));
     }
-    let seed = a.seed.seed;
+    let seed = a.run.seed.seed;
     let shapes = a.shape.list(mix_order(a.mix_order), seed);
     let params = Params {
-        c: crate::plan::exponent(&a.power, 1.3, Params::c_from_dimension),
-        n_offset: a.power.n_offset,
+        c: crate::plan::exponent(&a.run.power, 1.3, Params::c_from_dimension),
+        n_offset: a.run.power.n_offset,
         shape: shapes,
         rotate: a.rotate.map_or(a.shape.rotates(), |r| r == Rotate::Random),
-        gap: a.gap,
-        max_trials: a.max_trials.max_trials,
+        gap: a.run.gap,
+        max_trials: a.run.max_trials,
     };
     let names = FillNames {
         shape: a.shape.name(),
@@ -245,7 +245,7 @@ pub fn resolve_as(a: &FillArgs, format: Format) -> Result<(FillRun, FillDraw), C
         region: a.region.clone(),
         periodic: a.periodic,
         params,
-        stop: crate::plan::stop(&a.stop),
+        stop: crate::plan::stop(&a.run.stop),
         seed,
         reference_sampler: a.sampler == Sampler::Reference,
         fixed_point: a.scalar == ScalarArg::Fixed,

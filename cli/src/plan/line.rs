@@ -133,28 +133,28 @@ fn resolve_format(a: &LineArgs, format: Format) -> Result<(LineRun, LineDraw), C
         "write .svg or .png (or G-code with --layers colours, without --background)",
         true,
     )?;
-    if 2.0 * a.gap >= a.length {
+    if 2.0 * a.run.gap >= a.length {
         return Err(CliError::arg(
             "--gap",
             format!(
                 "{} mm leaves no room in a {} mm interval; it must be under half the length",
-                a.gap, a.length
+                a.run.gap, a.length
             ),
         ));
     }
     let run = LineRun {
         params: LineParams {
-            c: crate::plan::exponent(&a.power, 1.4, LineParams::c_from_dimension),
-            n_offset: a.power.n_offset,
-            gap: a.gap,
-            max_trials: a.max_trials.max_trials,
+            c: crate::plan::exponent(&a.run.power, 1.4, LineParams::c_from_dimension),
+            n_offset: a.run.power.n_offset,
+            gap: a.run.gap,
+            max_trials: a.run.max_trials,
         },
         interval: Interval {
             length: a.length,
             periodic: a.periodic,
         },
-        stop: crate::plan::stop(&a.stop),
-        seed: a.seed.seed,
+        stop: crate::plan::stop(&a.run.stop),
+        seed: a.run.seed.seed,
         quiet: a.quiet,
     };
     let draw = LineDraw {

@@ -6,6 +6,7 @@
 pub mod fill;
 pub mod line;
 pub mod plot;
+pub mod stats;
 pub mod territory;
 pub mod tile;
 

@@ -19,8 +19,8 @@
 //! the whole boxes inside it); the 2D count tests each box against the one shape that could
 //! hold it (circles by chords, polygons by corners and edges, rings as a disc minus a hole).
 
-use crate::args::stats::DimensionArgs;
 use crate::error::CliError;
+use crate::plan::stats::{input_error, BoxRange, DimensionPlan};
 use serde_json::Value;
 
 /// Finest 2D level: 2^12 boxes along the larger side.
@@ -115,15 +115,11 @@ pub enum FillSet {
     },
 }
 
-fn bad(what: impl std::fmt::Display) -> CliError {
-    CliError::arg("FILE", what)
-}
-
 fn num(v: &Value, key: &str) -> Result<f64, CliError> {
     v.get(key)
         .and_then(Value::as_f64)
         .filter(|x| x.is_finite())
-        .ok_or_else(|| bad(format!("'{key}' is missing or not a finite number")))
+        .ok_or_else(|| input_error(format!("'{key}' is missing or not a finite number")))
 }
 
 fn point(v: &Value) -> Option<[f64; 2]> {
@@ -136,12 +132,12 @@ pub fn read_set(doc: &Value) -> Result<(FillSet, f64), CliError> {
     match doc.get("mode").and_then(Value::as_str) {
         Some("fill" | "line") => {}
         Some(other) => {
-            return Err(bad(format!(
+            return Err(input_error(format!(
                 "this is a `zetafill {other}` JSON, not a fill or line JSON; give a JSON file written by zetafill fill or zetafill line"
             )))
         }
         None => {
-            return Err(bad(
+            return Err(input_error(
                 "not a fill or line JSON (it has no \"mode\"); give a JSON file written by zetafill fill or zetafill line",
             ))
         }
@@ -150,10 +146,13 @@ pub fn read_set(doc: &Value) -> Result<(FillSet, f64), CliError> {
         .get("params")
         .map(|p| num(p, "c"))
         .transpose()?
-        .ok_or_else(|| bad("no 'params' with 'c'"))?;
-    let region = doc.get("region").ok_or_else(|| bad("no 'region'"))?;
+        .ok_or_else(|| input_error("no 'params' with 'c'"))?;
+    let region = doc.get("region").ok_or_else(|| input_error("no 'region'"))?;
     let periodic = region.get("periodic").and_then(Value::as_bool).unwrap_or(false);
-    let shapes = doc.get("shapes").and_then(Value::as_array).ok_or_else(|| bad("no 'shapes' list"))?;
+    let shapes = doc
+        .get("shapes")
+        .and_then(Value::as_array)
+        .ok_or_else(|| input_error("no 'shapes' list"))?;
     match doc.get("mode").and_then(Value::as_str) {
         Some("line") => {
             let length = num(region, "length")?;
@@ -172,7 +171,7 @@ pub fn read_set(doc: &Value) -> Result<(FillSet, f64), CliError> {
         }
         Some("fill") => {
             if region.get("kind").and_then(Value::as_str) != Some("rect") {
-                return Err(bad("box counting needs a rect region"));
+                return Err(input_error("box counting needs a rect region"));
             }
             let (w, h) = (num(region, "width")?, num(region, "height")?);
             let mut out = Vec::with_capacity(shapes.len());
@@ -184,7 +183,7 @@ pub fn read_set(doc: &Value) -> Result<(FillSet, f64), CliError> {
                         .iter()
                         .map(point)
                         .collect::<Option<Vec<_>>>()
-                        .ok_or_else(|| bad("a vertex is not [x, y]"))?;
+                        .ok_or_else(|| input_error("a vertex is not [x, y]"))?;
                     Shape2::Poly { v }
                 } else if let (Some(c), Some(r)) = (centre, s.get("radius").and_then(Value::as_f64)) {
                     match s.get("inner_radius").and_then(Value::as_f64) {
@@ -192,7 +191,7 @@ pub fn read_set(doc: &Value) -> Result<(FillSet, f64), CliError> {
                         None => Shape2::Disc { c, r },
                     }
                 } else {
-                    return Err(bad(format!("shape kind '{kind}' has neither a radius nor vertices")));
+                    return Err(input_error(format!("shape kind '{kind}' has neither a radius nor vertices")));
                 };
                 out.push(shape);
             }
@@ -206,7 +205,7 @@ pub fn read_set(doc: &Value) -> Result<(FillSet, f64), CliError> {
                 c,
             ))
         }
-        other => Err(bad(format!(
+        other => Err(input_error(format!(
             "mode {other:?} is not a fill; give a JSON file written by zetafill fill or zetafill line"
         ))),
     }
@@ -379,8 +378,9 @@ pub struct BoxCount {
     pub used: bool,
 }
 
-/// Box-counts a fill between `max_box` and `min_box` (defaults in the module docs).
-pub fn estimate(set: &FillSet, c: f64, max_box: Option<f64>, min_box: Option<f64>) -> Result<DimensionDoc, CliError> {
+/// Box-counts a fill over the box sizes of `range` (defaults in the module docs).
+pub fn estimate(set: &FillSet, c: f64, range: &BoxRange) -> Result<DimensionDoc, CliError> {
+    let (max_box, min_box) = (range.max, range.min);
     let (side, smallest, max_level, mode, exact) = match set {
         FillSet::Line { length, segments, .. } => {
             let m = segments.iter().map(|s| s.1).fold(f64::INFINITY, f64::min);
@@ -392,7 +392,7 @@ pub fn estimate(set: &FillSet, c: f64, max_box: Option<f64>, min_box: Option<f64
         }
     };
     if !smallest.is_finite() {
-        return Err(bad("the fill has no shapes"));
+        return Err(input_error("the fill has no shapes"));
     }
     let hi = max_box.unwrap_or(side / 4.0);
     let lo = min_box.unwrap_or(2.0 * smallest);
@@ -438,12 +438,9 @@ pub fn estimate(set: &FillSet, c: f64, max_box: Option<f64>, min_box: Option<f64
         .filter(|b| b.used && b.count > 0)
         .map(|b| ((1.0 / b.size).ln(), (b.count as f64).ln()))
         .collect();
-    let d = zetafill::internals::stats::least_squares(&pts).map(|(k, _)| k).ok_or_else(|| {
-        CliError::arg(
-            "--min-box",
-            format!("box sizes from {hi} down to {lo} mm give fewer than two levels; place more shapes or widen the range"),
-        )
-    })?;
+    let d = zetafill::internals::stats::least_squares(&pts)
+        .map(|(k, _)| k)
+        .ok_or_else(|| BoxRange::too_few_levels(hi, lo))?;
     Ok(DimensionDoc {
         box_counting: d,
         exact,
@@ -454,17 +451,12 @@ pub fn estimate(set: &FillSet, c: f64, max_box: Option<f64>, min_box: Option<f64
 }
 
 /// `zetafill stats dimension`.
-pub fn run(a: &DimensionArgs) -> Result<(), CliError> {
-    let bytes = std::fs::read(&a.input).map_err(|e| CliError::arg("FILE", format!("cannot read '{}': {e}", a.input.display())))?;
-    let doc: Value =
-        serde_json::from_slice(&bytes).map_err(|e| CliError::arg("FILE", format!("'{}' is not JSON: {e}", a.input.display())))?;
+pub fn run(a: &DimensionPlan) -> Result<(), CliError> {
+    let bytes = std::fs::read(&a.input).map_err(|e| input_error(format!("cannot read '{}': {e}", a.input.display())))?;
+    let doc: Value = serde_json::from_slice(&bytes).map_err(|e| input_error(format!("'{}' is not JSON: {e}", a.input.display())))?;
     let (set, c) = read_set(&doc)?;
-    if let (Some(hi), Some(lo)) = (a.max_box, a.min_box) {
-        if lo >= hi {
-            return Err(CliError::arg("--min-box", format!("{lo} must be below --max-box {hi}")));
-        }
-    }
-    let d = estimate(&set, c, a.max_box, a.min_box)?;
+    a.boxes.check()?;
+    let d = estimate(&set, c, &a.boxes)?;
     if a.json {
         println!("{}", serde_json::to_string(&d).map_err(|e| CliError::Io(e.to_string()))?);
     } else {

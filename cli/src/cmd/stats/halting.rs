@@ -11,14 +11,12 @@
 
 use super::chart::{self, HaltingSeries};
 use super::trials::{run_2d, shape_label, RunSpec};
-use crate::args::stats::{HaltingArgs, Rotate};
+use crate::args::stats::ChartFormat;
 use crate::error::CliError;
+use crate::plan::stats::HaltingPlan;
 use rayon::prelude::*;
 use std::fmt::Write as _;
 use std::io::IsTerminal;
-
-/// Most values of c one call may scan.
-pub const MAX_POINTS: u64 = 1000;
 
 /// One value of c.
 #[derive(Debug, Clone, serde::Serialize)]
@@ -36,24 +34,9 @@ pub struct PointDoc {
     pub median_halt: Option<u64>,
 }
 
-/// The values of c scanned.
-pub fn c_values(from: f64, to: f64, step: f64) -> Result<Vec<f64>, CliError> {
-    if to < from {
-        return Err(CliError::arg("--c-to", format!("{to} is below --c-from {from}")));
-    }
-    let k = ((to - from) / step + 1e-9).floor();
-    if !(k.is_finite() && k < MAX_POINTS as f64) {
-        return Err(CliError::arg(
-            "--c-step",
-            format!("{step} gives more than {MAX_POINTS} values of c; raise it"),
-        ));
-    }
-    Ok((0..=k as u64).map(|i| from + i as f64 * step).collect())
-}
-
 /// Runs the scan: one point per value of c.
-pub fn scan(a: &HaltingArgs) -> Result<Vec<PointDoc>, CliError> {
-    let cs = c_values(a.c_from, a.c_to, a.c_step)?;
+pub fn scan(a: &HaltingPlan) -> Result<Vec<PointDoc>, CliError> {
+    let cs = &a.c;
     let jobs: Vec<(usize, RunSpec)> = cs
         .iter()
         .enumerate()
@@ -63,10 +46,7 @@ pub fn scan(a: &HaltingArgs) -> Result<Vec<PointDoc>, CliError> {
                 (
                     k,
                     RunSpec {
-                        shape: a.scene.shape,
-                        rotate: a.scene.rotate == Rotate::Random,
-                        size: a.scene.region,
-                        periodic: a.scene.periodic,
+                        scene: a.scene,
                         c,
                         n_offset: a.n_offset,
                         count: a.count,
@@ -122,12 +102,11 @@ pub fn scan(a: &HaltingArgs) -> Result<Vec<PointDoc>, CliError> {
 }
 
 /// `zetafill stats halting`.
-pub fn run(a: &HaltingArgs) -> Result<(), CliError> {
-    let out = super::chart_output(a.output.as_ref(), a.format, "stats halting")?;
+pub fn run(a: &HaltingPlan) -> Result<(), CliError> {
     let points = scan(a)?;
-    if let Some((dest, f)) = out {
+    if let Some((dest, f)) = &a.output {
         let bytes = match f {
-            super::ChartFormat::Svg => {
+            ChartFormat::Svg => {
                 let label = format!(
                     "{}{} N = {}",
                     if a.scene.periodic { "periodic, " } else { "inclusive, " },
@@ -144,7 +123,7 @@ pub fn run(a: &HaltingArgs) -> Result<(), CliError> {
                 );
                 chart::halting_chart(&series, &title)?
             }
-            super::ChartFormat::Csv => {
+            ChartFormat::Csv => {
                 let mut s = String::from("c,runs,halted,fraction\n");
                 for p in &points {
                     let _ = writeln!(s, "{},{},{},{}", p.c, p.runs, p.halted, p.fraction);

@@ -12,8 +12,9 @@
 //! spread over the cores with rayon and collected in order.
 
 use super::chart::{self, TrialsSeries};
-use crate::args::stats::{Rotate, TrialsArgs, TrialsFrom};
+use crate::args::stats::ChartFormat;
 use crate::error::CliError;
+use crate::plan::stats::{exponent_error, Scene, TrialsPlan};
 use rayon::prelude::*;
 use std::fmt::Write as _;
 use zetafill::StepError;
@@ -22,14 +23,8 @@ use zetafill::{cells_for, index_words, CellSampler, Engine, Params, Placed, Regi
 /// What one 2D run is.
 #[derive(Debug, Clone, Copy)]
 pub struct RunSpec {
-    /// Shape.
-    pub shape: ShapeKind,
-    /// Random rotation.
-    pub rotate: bool,
-    /// Region width and height (mm).
-    pub size: (f64, f64),
-    /// Periodic boundary.
-    pub periodic: bool,
+    /// Shape, rotation and region.
+    pub scene: Scene,
     /// Exponent c.
     pub c: f64,
     /// Offset N.
@@ -62,14 +57,15 @@ const COVERAGE_WORDS: usize = 1 << 15;
 
 /// Runs the core's 2D engine once.
 pub fn run_2d(r: &RunSpec) -> Result<RunResult, CliError> {
+    let scene = &r.scene;
     let mut params = Params::circles(r.c, r.n_offset);
-    params.shape = r.shape.into();
-    params.rotate = r.rotate && r.shape.rotates();
+    params.shape = scene.shape.into();
+    params.rotate = scene.rotate && scene.shape.rotates();
     params.max_trials = r.max_trials;
     let region = Region::Rect {
-        width: r.size.0,
-        height: r.size.1,
-        periodic: r.periodic,
+        width: scene.size.0,
+        height: scene.size.1,
+        periodic: scene.periodic,
     };
     let cap = r.count.saturating_add(1) as usize;
     let mut shapes = vec![Placed::<f64>::default(); cap];
@@ -80,7 +76,7 @@ pub fn run_2d(r: &RunSpec) -> Result<RunResult, CliError> {
         index: &mut index,
         coverage: &mut coverage,
     };
-    let mut engine = Engine::<f64>::new(params, region, storage).map_err(|e| CliError::arg("--c", e))?;
+    let mut engine = Engine::<f64>::new(params, region, storage).map_err(exponent_error)?;
     let mut rng = zetafill::rng_from_seed(r.seed);
     let mut trials = Vec::with_capacity(cap);
     let stop = Stop {
@@ -148,34 +144,22 @@ fn fit(cum: &[(f64, f64)], from: f64) -> Option<(f64, f64)> {
 }
 
 /// `zetafill stats trials`.
-pub fn run(a: &TrialsArgs) -> Result<(), CliError> {
-    let out = super::chart_output(a.output.as_ref(), a.format, "stats trials")?;
-    let (w, h) = a.scene.region;
-    let from = a.fit_from.unwrap_or((a.count / 10).max(1));
-    if from >= a.count {
-        return Err(CliError::arg(
-            "--fit-from",
-            format!("{from} leaves nothing to fit; it must be below --count {}", a.count),
-        ));
-    }
+pub fn run(a: &TrialsPlan) -> Result<(), CliError> {
+    let from = a.fit_from;
     let jobs: Vec<(usize, u64, RunSpec)> =
-        a.c.0
-            .iter()
+        a.c.iter()
             .enumerate()
             .flat_map(|(k, &c)| {
                 (0..a.runs).map(move |r| {
                     let seed = a.seed.wrapping_add((k as u64).wrapping_mul(a.runs)).wrapping_add(r);
                     let spec = RunSpec {
-                        shape: a.scene.shape,
-                        rotate: a.scene.rotate == Rotate::Random,
-                        size: (w, h),
-                        periodic: a.scene.periodic,
+                        scene: a.scene,
                         c,
                         n_offset: a.n_offset,
                         count: a.count,
                         max_trials: a.max_trials,
                         seed,
-                        estimate: a.sampler == TrialsFrom::Fast,
+                        estimate: a.estimate,
                     };
                     (k, r, spec)
                 })
@@ -219,13 +203,13 @@ pub fn run(a: &TrialsArgs) -> Result<(), CliError> {
             halted_at: res.halted_at,
         });
     }
-    if let Some((dest, f)) = out {
+    if let Some((dest, f)) = &a.output {
         let bytes = match f {
-            super::ChartFormat::Svg => {
+            ChartFormat::Svg => {
                 let title = format!("cumulative trials, {} N = {}", shape_label(&a.scene.shape), a.n_offset);
                 chart::trials_chart(&curves, &title)?
             }
-            super::ChartFormat::Csv => csv.into_bytes(),
+            ChartFormat::Csv => csv.into_bytes(),
         };
         dest.write(&bytes)?;
     }

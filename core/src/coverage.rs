@@ -146,9 +146,13 @@ impl<'a, S: Scalar> Coverage<'a, S> {
         if self.g == 0 {
             return;
         }
-        let solid = match *geo {
+        let disc;
+        let solid = match geo {
             Geo::Ring { .. } => return,
-            Geo::Poly { convex: false, .. } => Geo::Circle { c: centre, r: inscribed },
+            Geo::Poly { convex: false, .. } => {
+                disc = Geo::Circle { c: centre, r: inscribed };
+                &disc
+            }
             other => other,
         };
         let offsets: &[(i8, i8)] = match period {
@@ -167,8 +171,11 @@ impl<'a, S: Scalar> Coverage<'a, S> {
                 -1 => -ph,
                 _ => S::ZERO,
             };
-            let g = if ox == 0 && oy == 0 { solid } else { solid.shift(dx, dy) };
-            self.mark_one(&g);
+            if ox == 0 && oy == 0 {
+                self.mark_one(solid);
+            } else {
+                self.mark_one(&solid.shift(dx, dy));
+            }
         }
     }
 

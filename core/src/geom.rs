@@ -56,8 +56,14 @@ impl<S: Scalar> Point<S> {
 /// Most vertices a polygon may have (blobs use [`crate::shape::BLOB_VERTICES`]).
 pub const MAX_VERTS: usize = 32;
 
+/// A polygon's vertex list: at most [`MAX_VERTS`] points, kept in place (no heap).
+pub type Verts<S> = heapless::Vec<Point<S>, MAX_VERTS>;
+
 /// A concrete shape at its place, ready for exact tests and for drawing.
-#[derive(Clone, Copy, Debug, PartialEq)]
+///
+/// Not `Copy` (a polygon carries up to [`MAX_VERTS`] vertices): clone it where a copy is
+/// meant, and prefer [`crate::shape::ShapeKind::geo_into`] to rewrite one in place.
+#[derive(Clone, Debug, PartialEq)]
 pub enum Geo<S> {
     /// A disc.
     Circle {
@@ -75,12 +81,10 @@ pub enum Geo<S> {
         /// Inner radius (0 < inner < r).
         inner: S,
     },
-    /// A simple polygon, vertices counter-clockwise; only the first `n` are used.
+    /// A simple polygon, vertices counter-clockwise.
     Poly {
-        /// Vertices.
-        v: [Point<S>; MAX_VERTS],
-        /// Number of vertices used (3..=MAX_VERTS).
-        n: usize,
+        /// Vertices (3..=MAX_VERTS of them).
+        v: Verts<S>,
         /// Whether the polygon is convex (enables the faster separating-axis test).
         convex: bool,
     },
@@ -96,11 +100,12 @@ impl<S: Scalar> Geo<S> {
                 r,
                 inner,
             },
-            Geo::Poly { mut v, n, convex } => {
-                for p in v.iter_mut().take(n) {
+            Geo::Poly { ref v, convex } => {
+                let mut v = v.clone();
+                for p in v.iter_mut() {
                     *p = p.shift(dx, dy);
                 }
-                Geo::Poly { v, n, convex }
+                Geo::Poly { v, convex }
             }
         }
     }
@@ -108,7 +113,7 @@ impl<S: Scalar> Geo<S> {
     /// The vertices of a polygon (empty for circles and rings).
     pub fn vertices(&self) -> &[Point<S>] {
         match self {
-            Geo::Poly { v, n, .. } => v.get(..*n).unwrap_or(&[]),
+            Geo::Poly { v, .. } => v,
             _ => &[],
         }
     }
@@ -286,24 +291,20 @@ fn poly_poly<S: Scalar>(pa: &[Point<S>], ca: bool, pb: &[Point<S>], cb: bool, ga
     let reach = gap.max(S::ZERO) + m;
     // The edges of b that come near a's bounds (their first vertices' indices: a board's
     // stack has no room for more).
-    let mut near_b = [0u8; MAX_VERTS];
-    let mut nb = 0;
+    let mut near_b: heapless::Vec<u8, MAX_VERTS> = heapless::Vec::new();
     for (k, (b1, b2)) in edges(pb).enumerate() {
         if boxes_meet(seg_box(b1, b2), ba, reach) {
-            if let Some(e) = near_b.get_mut(nb) {
-                *e = k as u8;
-                nb += 1;
-            }
+            // Cannot fail: `pb` is a polygon's vertex list, so it has at most MAX_VERTS edges.
+            let _ = near_b.push(k as u8);
         }
     }
-    let near_b = near_b.get(..nb).unwrap_or(&[]);
     let g2 = gap * gap;
     for (a1, a2) in edges(pa) {
         let ea = seg_box(a1, a2);
         if !boxes_meet(ea, bb, reach) {
             continue;
         }
-        for &k in near_b {
+        for &k in &near_b {
             let k = usize::from(k);
             let (Some(&b1), Some(&b2)) = (pb.get(k), pb.get((k + 1) % pb.len())) else {
                 continue;
@@ -393,14 +394,13 @@ mod tests {
 
     fn sq(cx: f64, cy: f64, h: f64) -> Geo<f64> {
         let p = |x, y| Point::new(x, y);
-        let mut v = [Point::default(); MAX_VERTS];
-        v[..4].copy_from_slice(&[p(cx - h, cy - h), p(cx + h, cy - h), p(cx + h, cy + h), p(cx - h, cy + h)]);
-        Geo::Poly { v, n: 4, convex: true }
+        let v = Verts::from_slice(&[p(cx - h, cy - h), p(cx + h, cy - h), p(cx + h, cy + h), p(cx - h, cy + h)]).unwrap();
+        Geo::Poly { v, convex: true }
     }
 
     fn as_concave(g: Geo<f64>) -> Geo<f64> {
         match g {
-            Geo::Poly { v, n, .. } => Geo::Poly { v, n, convex: false },
+            Geo::Poly { v, .. } => Geo::Poly { v, convex: false },
             other => other,
         }
     }

@@ -106,7 +106,7 @@ pub use engine::{index_words, Engine, Placement, Stats, Storage};
 pub use feasibility::{
     check_first_two, first_shape, segment_capacity, shape_capacity, AreaSequence, CapacityError, FirstShape, FirstTwoError,
 };
-pub use geom::{Geo, Point};
+pub use geom::{Geo, Point, Verts};
 pub use line::{line_index_words, Interval, LineEngine, LineParams, LinePlacement, LineStorage, Segment};
 pub use params::{ParamError, Params, StepError, Stop, StopReason};
 pub use region::{PolygonRegion, Region, RegionError};

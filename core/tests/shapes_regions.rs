@@ -44,7 +44,8 @@ fn outline(g: &Geo<f64>, per_edge: usize) -> Vec<Point<f64>> {
             v.extend(circle(c, inner, per_edge * 16));
             v
         }
-        Geo::Poly { v, n, .. } => {
+        Geo::Poly { ref v, .. } => {
+            let n = v.len();
             let mut out = Vec::new();
             for i in 0..n {
                 let (a, b) = (v[i], v[(i + 1) % n]);
@@ -76,7 +77,7 @@ fn in_material(p: Point<f64>, g: &Geo<f64>) -> bool {
     match *g {
         Geo::Circle { c, r } => d(c) <= r,
         Geo::Ring { c, r, inner } => d(c) <= r && d(c) >= inner,
-        Geo::Poly { v, n, .. } => in_polygon(p, &v[..n]),
+        Geo::Poly { ref v, .. } => in_polygon(p, v),
     }
 }
 
@@ -453,8 +454,8 @@ fn the_fill_checker_can_fail() {
         c: Point::new(45.0, 30.0),
         r: 6.0,
     };
-    assert!(check(&[a, b], &region, 0.0, &[], &[]).is_err(), "overlap not found");
-    assert!(check(&[a, b.shift(2.0, 0.0)], &region, 0.0, &[], &[]).is_ok());
+    assert!(check(&[a.clone(), b.clone()], &region, 0.0, &[], &[]).is_err(), "overlap not found");
+    assert!(check(&[a.clone(), b.shift(2.0, 0.0)], &region, 0.0, &[], &[]).is_ok());
     assert!(check(&[a, b.shift(2.0, 0.0)], &region, 1.5, &[], &[]).is_err(), "gap not enforced");
     let out = Geo::Circle {
         c: Point::new(95.0, 50.0),
@@ -465,7 +466,7 @@ fn the_fill_checker_can_fail() {
         c: Point::new(93.0, 50.0),
         r: 6.0,
     };
-    assert!(check(&[near], &region, 0.0, &[], &[]).is_ok());
+    assert!(check(std::slice::from_ref(&near), &region, 0.0, &[], &[]).is_ok());
     assert!(check(&[near], &region, 1.5, &[], &[]).is_err(), "boundary gap not enforced");
     let torus = Region::Rect {
         width: 100.0,

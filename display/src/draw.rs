@@ -331,9 +331,8 @@ mod tests {
         );
         let mut f = Frame::new();
         let p = |x, y| Point::new(x, y);
-        let mut v = [p(0.0, 0.0); zetafill::internals::geom::MAX_VERTS];
-        v[..4].copy_from_slice(&[p(10.0, 10.0), p(20.0, 10.0), p(20.0, 20.0), p(10.0, 20.0)]);
-        let sq = Geo::Poly { v, n: 4, convex: true };
+        let v = [p(10.0, 10.0), p(20.0, 10.0), p(20.0, 20.0), p(10.0, 20.0)].into_iter().collect();
+        let sq = Geo::Poly { v, convex: true };
         view.draw(&sq, &mut f).unwrap();
         assert_eq!(ink(&f), 40);
         assert_eq!(f.pixel(Px::new(10, 53)), Some(BinaryColor::On));

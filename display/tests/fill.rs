@@ -219,11 +219,8 @@ proptest::proptest! {
             0 => Geo::Circle { c: p(c), r },
             1 => Geo::Ring { c: p(c), r, inner },
             _ => {
-                let mut v = [Point::new(0.0, 0.0); zetafill::internals::geom::MAX_VERTS];
-                for (slot, q) in v.iter_mut().zip(&vs) {
-                    *slot = p(*q);
-                }
-                Geo::Poly { v, n: vs.len(), convex: false }
+                let v = vs.iter().map(|q| p(*q)).collect();
+                Geo::Poly { v, convex: false }
             }
         };
         let region = Region::Rect { width: 120.0, height: 80.0, periodic };

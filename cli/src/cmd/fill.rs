@@ -63,12 +63,13 @@ fn geo_f64<S: zetafill::Scalar>(g: &Geo<S>) -> Geo<f64> {
             r: r.to_f64(),
             inner: inner.to_f64(),
         },
-        Geo::Poly { v, n, convex } => {
-            let mut out = [zetafill::Point::new(0.0, 0.0); zetafill::internals::geom::MAX_VERTS];
-            for (o, p) in out.iter_mut().zip(v.iter()) {
-                *o = pt(*p);
+        Geo::Poly { ref v, convex } => {
+            let mut out = zetafill::Verts::new();
+            for p in v {
+                // Cannot fail: both lists have the same capacity.
+                let _ = out.push(pt(*p));
             }
-            Geo::Poly { v: out, n, convex }
+            Geo::Poly { v: out, convex }
         }
     }
 }

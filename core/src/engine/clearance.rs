@@ -61,8 +61,11 @@ impl<S: Scalar> Engine<'_, S> {
                 test(level, reach, g, x, y);
             } else {
                 self.each_image(x, y, reach, |ox, oy| {
-                    let image = if ox == S::ZERO && oy == S::ZERO { *g } else { g.shift(ox, oy) };
-                    test(level, reach, &image, x + ox, y + oy);
+                    if ox == S::ZERO && oy == S::ZERO {
+                        test(level, reach, g, x + ox, y + oy);
+                    } else {
+                        test(level, reach, &g.shift(ox, oy), x + ox, y + oy);
+                    }
                     hit.get().is_none() || lowest
                 });
                 if hit.get().is_some() && !lowest {

@@ -13,11 +13,12 @@
 //! are never approximated: circles and rings are tested as true circles; a blob *is* its
 //! polygon of [`BLOB_VERTICES`] vertices (tested and drawn alike).
 
-use crate::geom::{Geo, Point, MAX_VERTS};
+use crate::geom::{Geo, Point, Verts, MAX_VERTS};
 use crate::scalar::Scalar;
 
 /// Vertices of a blob's polygon.
 pub const BLOB_VERTICES: usize = 32;
+const _: () = assert!(BLOB_VERTICES <= MAX_VERTS, "a blob must fit a polygon's vertex list");
 
 /// Most shapes in a mix.
 pub const MAX_MIX: usize = 8;
@@ -316,16 +317,17 @@ impl ShapeKind {
         g
     }
 
-    /// [`ShapeKind::geo`] written into `out`. When `out` already holds a polygon only the
-    /// vertices in use are written (slots past them keep old values, which nothing reads):
-    /// no 512-byte array is zeroed or copied, which is what most exact tests would spend.
+    /// [`ShapeKind::geo`] written into `out`. When `out` already holds a polygon its vertex
+    /// list is refilled in place: only the vertices in use are written, no 512-byte array is
+    /// zeroed or copied, which is what most exact tests would spend.
     pub fn geo_into<S: Scalar>(&self, out: &mut Geo<S>, c: Point<S>, scale: S, angle: S) {
         match *self {
             ShapeKind::Blob { delta } => {
                 let (u, _) = blob_unit(delta, angle);
-                set_poly(out, BLOB_VERTICES, false, |v| {
-                    for (d, p) in v.iter_mut().zip(u.iter()) {
-                        *d = Point::new(c.x + p.x * scale, c.y + p.y * scale);
+                set_poly(out, false, |v| {
+                    for p in u.iter() {
+                        // Cannot fail: BLOB_VERTICES <= MAX_VERTS (checked at compile time).
+                        let _ = v.push(Point::new(c.x + p.x * scale, c.y + p.y * scale));
                     }
                 });
             }
@@ -362,9 +364,10 @@ impl ShapeKind {
                     Point::new(c.x + dx * cos - dy * sin, c.y + dx * sin + dy * cos)
                 };
                 let (m, p) = (-S::ONE, S::ONE);
-                set_poly(out, 4, true, |v| {
-                    for (d, q) in v.iter_mut().zip([corner(m, m), corner(p, m), corner(p, p), corner(m, p)]) {
-                        *d = q;
+                set_poly(out, true, |v| {
+                    for q in [corner(m, m), corner(p, m), corner(p, p), corner(m, p)] {
+                        // Cannot fail: 4 <= MAX_VERTS.
+                        let _ = v.push(q);
                     }
                 });
             }
@@ -377,11 +380,12 @@ impl ShapeKind {
                 };
                 // First vertex straight up, then counter-clockwise by 2π/n (a recurrence:
                 // deterministic, and the drawn polygon is the tested one).
-                set_poly(out, n, self.convex(), |v| {
+                set_poly(out, self.convex(), |v| {
                     let mut dir = Point::new(-sin, cos);
-                    for (k, d) in v.iter_mut().take(n).enumerate() {
+                    for k in 0..n {
                         let rad = if k % 2 == 1 { scale * inner } else { scale };
-                        *d = Point::new(c.x + dir.x * rad, c.y + dir.y * rad);
+                        // Cannot fail: n <= MAX_VERTS (clamped above).
+                        let _ = v.push(Point::new(c.x + dir.x * rad, c.y + dir.y * rad));
                         dir = rot(dir, ss, cs);
                     }
                 });
@@ -391,18 +395,15 @@ impl ShapeKind {
     }
 }
 
-/// Makes `out` a polygon of `n` vertices (zeroing its vertex array only when it held another
-/// kind of shape) and lets `fill` write the vertices.
-fn set_poly<S: Scalar>(out: &mut Geo<S>, n: usize, convex: bool, fill: impl FnOnce(&mut [Point<S>; MAX_VERTS])) {
+/// Makes `out` a polygon with no vertices (keeping its vertex storage in place when it
+/// already held one) and lets `fill` push the vertices.
+fn set_poly<S: Scalar>(out: &mut Geo<S>, convex: bool, fill: impl FnOnce(&mut Verts<S>)) {
+    // The list is filled where it lies: building it aside and moving it in would copy it.
     if !matches!(out, Geo::Poly { .. }) {
-        *out = Geo::Poly {
-            v: [Point::default(); MAX_VERTS],
-            n,
-            convex,
-        };
+        *out = Geo::Poly { v: Verts::new(), convex };
     }
-    if let Geo::Poly { v, n: on, convex: oc } = out {
-        *on = n;
+    if let Geo::Poly { v, convex: oc } = out {
+        v.clear();
         *oc = convex;
         fill(v);
     }

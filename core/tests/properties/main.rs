@@ -39,7 +39,7 @@ mod checker {
     use super::*;
 
     /// A placed shape as the checker sees it: its stored centre and its concrete geometry.
-    #[derive(Clone, Copy, Debug)]
+    #[derive(Clone, Debug)]
     pub struct Item {
         pub centre: Point<f64>,
         pub geo: Geo<f64>,
@@ -49,8 +49,8 @@ mod checker {
     fn bbox(g: &Geo<f64>) -> (f64, f64, f64, f64) {
         match *g {
             Geo::Circle { c, r } | Geo::Ring { c, r, .. } => (c.x - r, c.y - r, c.x + r, c.y + r),
-            Geo::Poly { v, n, .. } => {
-                let vs = &v[..n.min(v.len())];
+            Geo::Poly { ref v, .. } => {
+                let vs = &v[..];
                 let mut b = (f64::INFINITY, f64::INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY);
                 for p in vs {
                     b = (b.0.min(p.x), b.1.min(p.y), b.2.max(p.x), b.3.max(p.y));
@@ -78,8 +78,9 @@ mod checker {
                     return Err(format!("circle centre {c:?} is not the stored centre {:?}", it.centre));
                 }
             }
-            Geo::Poly { v, n, convex } => {
-                if !(3..=v.len()).contains(&n) {
+            Geo::Poly { ref v, convex } => {
+                let n = v.len();
+                if n < 3 {
                     return Err(format!("polygon with {n} vertices"));
                 }
                 let vs = &v[..n];
@@ -159,7 +160,7 @@ mod checker {
                 let inside = |x: f64, y: f64| x >= gap && x <= w - gap && y >= gap && y <= h - gap;
                 let ok = match it.geo {
                     Geo::Circle { c, r } | Geo::Ring { c, r, .. } => inside(c.x - r, c.y - r) && inside(c.x + r, c.y + r),
-                    Geo::Poly { v, n, .. } => v[..n].iter().all(|p| inside(p.x, p.y)),
+                    Geo::Poly { ref v, .. } => v.iter().all(|p| inside(p.x, p.y)),
                 };
                 if !ok {
                     return Err(format!("shape {i} is not inside the region with gap {gap}: {:?}", it.geo));
@@ -167,25 +168,25 @@ mod checker {
             }
         }
         for j in 0..items.len() {
-            let gj = items[j].geo;
-            let bj = bbox(&gj);
+            let gj = &items[j].geo;
+            let bj = bbox(gj);
             for (i, it) in items.iter().enumerate().take(j) {
                 // The later shape is the moving one, as it was when it was placed.
-                let gi = it.geo;
-                if !separated(&gj, &gi, gap) {
+                let gi = &it.geo;
+                if !separated(gj, gi, gap) {
                     return Err(format!("shapes {i} and {j} are not separated by {gap}: {gi:?} / {gj:?}"));
                 }
                 if !periodic {
                     continue;
                 }
-                let bi = bbox(&gi);
+                let bi = bbox(gi);
                 for kx in k_range(bi.0, bi.2, bj.0, bj.2, gap, w) {
                     for ky in k_range(bi.1, bi.3, bj.1, bj.3, gap, h) {
                         if (kx, ky) == (0, 0) {
                             continue;
                         }
                         let img = gj.shift(kx as f64 * w, ky as f64 * h);
-                        if !separated(&img, &gi, gap) {
+                        if !separated(&img, gi, gap) {
                             return Err(format!(
                                 "shape {i} and image ({kx}, {ky}) of shape {j} are not separated by {gap}: {gi:?} / {gj:?}"
                             ));

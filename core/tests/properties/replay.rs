@@ -16,7 +16,7 @@ pub(super) fn brute_accepts(case: &Case, placed: &[Item], g: &Geo<f64>) -> bool 
         let inside = |x: f64, y: f64| x >= gap && x <= w - gap && y >= gap && y <= h - gap;
         let ok = match *g {
             Geo::Circle { c, r } | Geo::Ring { c, r, .. } => inside(c.x - r, c.y - r) && inside(c.x + r, c.y + r),
-            Geo::Poly { v, n, .. } => v[..n].iter().all(|p| inside(p.x, p.y)),
+            Geo::Poly { ref v, .. } => v.iter().all(|p| inside(p.x, p.y)),
         };
         if !ok {
             return false;
@@ -26,7 +26,11 @@ pub(super) fn brute_accepts(case: &Case, placed: &[Item], g: &Geo<f64>) -> bool 
     for p in placed {
         for &ky in offs {
             for &kx in offs {
-                let gi = if kx == 0.0 && ky == 0.0 { *g } else { g.shift(kx * w, ky * h) };
+                let gi = if kx == 0.0 && ky == 0.0 {
+                    g.clone()
+                } else {
+                    g.shift(kx * w, ky * h)
+                };
                 if !separated(&gi, &p.geo, gap) {
                     return false;
                 }

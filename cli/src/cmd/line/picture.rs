@@ -1,228 +1,14 @@
-//! `zetafill line`: the 1D fill, segments of length `L_i = L / (zeta(c, N) (i + N)^c)` in an
-//! interval of length `L` (Shier and Bourke, *An Algorithm for Random Fractal Filling of Space*, Figure 3), run by the core's [`zetafill::LineEngine`], and
-//! its outputs: SVG (dashes, circles, bars or zoom rows), PNG, JSON, CSV and the digest.
+//! How a 1D fill is drawn: its [`Picture`] for SVG and PNG (dashes, circles, bars or zoom
+//! rows), the plotter variant the G-code is written from (y up, one whole circle per
+//! wrapping segment, hatching, `--min-feature`), and the command line that reproduces them.
 
-use crate::args::format::Format;
-use crate::cmd::stopping::{self, Unit};
+use super::doc::{LineDoc, SegmentDoc};
+use super::Render;
 use crate::error::CliError;
 use crate::model::picture::ClipDef;
 use crate::model::{Item, Layer, Paint, Picture, Shape};
 use crate::output::svg::Style;
-use crate::plan::line::{first_segment_error, halt_advice, param_error, LineDraw, LinePlan, LineRun};
-use crate::plan::plot::GcodePlan;
-use serde::Serialize;
 use std::fmt::Write as _;
-use zetafill::StepError;
-use zetafill::{line_index_words, LineEngine, LineStorage, Segment, StopReason};
-
-pub use crate::args::line::MAX_SEGMENTS;
-
-/// What a 1D run places.
-const SEGMENTS: Unit = Unit {
-    plural: "segments",
-    max: MAX_SEGMENTS,
-};
-
-/// How segments are drawn in SVG and PNG.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Render {
-    /// Each segment a stroke along one line: one pen-down per segment.
-    Dashes,
-    /// Each segment a circle of diameter L_i centred on the line (the paper's Figure 3).
-    Circles,
-    /// Each segment a filled bar `--bar-height` tall (for engraving).
-    Bars,
-    /// Rows of circles, each zooming into the central `--zoom-fraction` of the row above.
-    Zoom,
-}
-
-impl Render {
-    /// The name `--render` takes.
-    pub fn name(self) -> &'static str {
-        match self {
-            Render::Dashes => "dashes",
-            Render::Circles => "circles",
-            Render::Bars => "bars",
-            Render::Zoom => "zoom",
-        }
-    }
-}
-
-/// A finished (or halted) 1D fill: DESIGN section 3's JSON with `"mode": "line"`.
-#[derive(Debug, Clone, Serialize)]
-pub struct LineDoc {
-    /// Format version (1).
-    pub version: u32,
-    /// `"line"`.
-    pub mode: &'static str,
-    /// Everything needed to reproduce the run.
-    pub params: LineParamsDoc,
-    /// `{ "kind": "interval", "length": L, "periodic": bool }`.
-    pub region: IntervalDoc,
-    /// zeta(c, N).
-    pub zeta: f64,
-    /// Segments in placement order.
-    pub shapes: Vec<SegmentDoc>,
-    /// Run statistics.
-    pub stats: LineStatsDoc,
-    /// The determinism digest (count, FNV-1a) of the engine's own bits.
-    #[serde(skip)]
-    pub digest: (u64, u64),
-}
-
-/// Run statistics of a 1D fill.
-#[derive(Debug, Clone, Serialize)]
-pub struct LineStatsDoc {
-    /// Segments placed.
-    pub placed: u64,
-    /// Trials in all.
-    pub trials: u64,
-    /// Placed length over L.
-    pub fill_fraction: f64,
-    /// Whether the run halted at the trial limit.
-    pub halted: bool,
-    /// Why the run stopped: `count`, `fill`, `min-size` or `halted`.
-    pub stop: &'static str,
-}
-
-/// The parameters of a 1D run.
-#[derive(Debug, Clone, Serialize)]
-pub struct LineParamsDoc {
-    /// Exponent c.
-    pub c: f64,
-    /// The paper's N.
-    pub n_offset: f64,
-    /// RNG seed.
-    pub seed: u64,
-    /// Clearance in mm.
-    pub gap: f64,
-    /// Stop after this many segments.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub count: Option<u64>,
-    /// Stop at this fill fraction.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub fill: Option<f64>,
-    /// Stop before the first segment shorter than this (mm).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub min_size: Option<f64>,
-    /// Trial limit per placement.
-    pub max_trials: u64,
-    /// The fractal dimension D = 1/c.
-    pub dimension: f64,
-}
-
-/// The interval.
-#[derive(Debug, Clone, Serialize)]
-pub struct IntervalDoc {
-    /// `"interval"`.
-    pub kind: &'static str,
-    /// Length L (mm).
-    pub length: f64,
-    /// Periodic boundary.
-    pub periodic: bool,
-}
-
-/// One placed segment `[start, start + length]`.
-#[derive(Debug, Clone, Serialize)]
-pub struct SegmentDoc {
-    /// Placement index.
-    pub index: u64,
-    /// `"segment"`.
-    pub kind: &'static str,
-    /// Left end (mm), in `[0, L)` when periodic (the segment may run past L and wrap).
-    pub start: f64,
-    /// Length L_i (mm).
-    pub length: f64,
-    /// Trials this placement took.
-    pub trials: u64,
-}
-
-/// Runs the fill and returns the document (and the halt, if any). Nothing is written.
-pub fn compute(a: &LineRun) -> Result<(LineDoc, Option<StepError>), CliError> {
-    let (params, interval, stop) = (a.params, a.interval, a.stop);
-    let sequence = stopping::sequence(interval.length, params.c, params.n_offset)?;
-    let cap = stopping::slots(zetafill::segment_capacity(&sequence, &stop, SEGMENTS.max), SEGMENTS)? as usize;
-    let mut segs = vec![Segment::<f64>::default(); cap];
-    let mut index = vec![0u32; line_index_words(cap)];
-    let mut engine = LineEngine::<f64>::new(
-        params,
-        interval,
-        LineStorage {
-            segments: &mut segs,
-            index: &mut index,
-        },
-    )
-    .map_err(param_error)?;
-    let mut rng = zetafill::rng_from_seed(a.seed);
-    let bar = stopping::progress_bar(a.quiet, stop.count, SEGMENTS);
-    let mut trials = Vec::with_capacity(cap);
-    let reason = engine.run(&mut rng, &stop, |p| {
-        trials.push(p.trials);
-        if let Some(b) = &bar {
-            b.inc(1);
-        }
-    });
-    if let Some(b) = &bar {
-        b.finish_and_clear();
-    }
-    let (stop_name, halt) = match reason {
-        StopReason::Count => ("count", None),
-        StopReason::Fill => ("fill", None),
-        StopReason::MinSize => ("min-size", None),
-        StopReason::Step(StepError::CannotFit { index: 0 }) => return Err(first_segment_error(a, engine.length_of(0))),
-        StopReason::Step(e @ (StepError::Halted { .. } | StepError::CannotFit { .. })) => ("halted", Some(e)),
-        #[allow(unreachable_patterns)]
-        r => return Err(CliError::Io(format!("internal: the fill stopped unexpectedly ({r:?})"))),
-    };
-    let shapes = engine
-        .placed()
-        .iter()
-        .enumerate()
-        .map(|(i, s)| SegmentDoc {
-            index: i as u64,
-            kind: "segment",
-            start: s.start,
-            length: s.length,
-            trials: trials.get(i).copied().unwrap_or(0),
-        })
-        .collect();
-    let st = engine.stats();
-    let doc = LineDoc {
-        version: 1,
-        mode: "line",
-        params: LineParamsDoc {
-            c: params.c,
-            n_offset: params.n_offset,
-            seed: a.seed,
-            gap: params.gap,
-            count: stop.count,
-            fill: stop.fill,
-            min_size: stop.min_size,
-            max_trials: params.max_trials,
-            dimension: 1.0 / params.c,
-        },
-        region: IntervalDoc {
-            kind: "interval",
-            length: interval.length,
-            periodic: interval.periodic,
-        },
-        zeta: engine.zeta(),
-        shapes,
-        stats: LineStatsDoc {
-            placed: st.placed,
-            trials: st.trials,
-            fill_fraction: st.fill_fraction,
-            halted: halt.is_some(),
-            stop: stop_name,
-        },
-        digest: zetafill::internals::line::line_digest(&engine),
-    };
-    Ok((doc, halt))
-}
-
-// ---------------------------------------------------------------------------------------------
-// Outputs
-// ---------------------------------------------------------------------------------------------
 
 /// Drawn sizes below this (mm) round to zero at four decimals and are left out of the SVG.
 const INVISIBLE: f64 = 0.5e-4;
@@ -271,7 +57,7 @@ fn pieces(s: &SegmentDoc, l: f64, periodic: bool) -> Vec<(f64, f64)> {
 
 /// The drawing flags of `opt` as command-line text (each with a leading space): with
 /// [`command_line`], the command that reproduces a drawing.
-fn drawing_flags(opt: &LineSvgOptions) -> String {
+pub(crate) fn drawing_flags(opt: &LineSvgOptions) -> String {
     let mut s = format!(" --render {} --style {}", opt.render.name(), opt.style.name());
     if opt.pen_width != 0.3 {
         let _ = write!(s, " --pen-width {}", opt.pen_width);
@@ -535,43 +321,6 @@ pub fn picture(doc: &LineDoc, opt: &LineSvgOptions) -> Picture {
     pic
 }
 
-/// Renders a 1D fill as SVG.
-pub fn render_svg(doc: &LineDoc, opt: &LineSvgOptions) -> Vec<u8> {
-    crate::output::svg::write(&picture(doc, opt))
-}
-
-/// JSON (version 1), numbers in shortest round-trip form, one line.
-pub fn render_json(doc: &LineDoc) -> Result<Vec<u8>, CliError> {
-    let mut v = serde_json::to_vec(doc).map_err(|e| CliError::Io(format!("cannot encode JSON: {e}")))?;
-    v.push(b'\n');
-    Ok(v)
-}
-
-/// CSV: `index,kind,start,end,length,trials`, full f64 precision (`end` = start + length, past
-/// L for a periodic segment that wraps).
-pub fn render_csv(doc: &LineDoc) -> Vec<u8> {
-    let mut s = String::from("index,kind,start,end,length,trials\n");
-    for sh in &doc.shapes {
-        let _ = writeln!(
-            s,
-            "{},{},{},{},{},{}",
-            sh.index,
-            sh.kind,
-            sh.start,
-            sh.start + sh.length,
-            sh.length,
-            sh.trials
-        );
-    }
-    s.into_bytes()
-}
-
-/// The digest line `COUNT HEX16`: the engine's own digest of every segment's bits.
-pub fn render_digest(doc: &LineDoc) -> Vec<u8> {
-    let (count, hash) = doc.digest;
-    format!("{count} {hash:016x}\n").into_bytes()
-}
-
 /// The plotter variant of the picture, what the G-code draws, in the frame of its SVG (x along
 /// the interval, y up, the line at mid height): `dashes` one open stroke per segment (per
 /// piece when a periodic segment wraps), `circles` one whole circle of diameter L_i per
@@ -664,54 +413,4 @@ pub fn plotter_picture(doc: &LineDoc, opt: &LineSvgOptions, build: &crate::model
     let mut pic = Picture::new(frame);
     pic.layers = layers;
     Ok(pic)
-}
-
-fn render_gcode(doc: &LineDoc, opt: &LineSvgOptions, gcode: &GcodePlan, quiet: bool) -> Result<Vec<u8>, CliError> {
-    let pic = plotter_picture(doc, opt, &gcode.build)?;
-    let header = vec![format!("{}{}{}", command_line(doc), drawing_flags(opt), gcode.flags)];
-    // With --layers colours, one pen per palette colour, each drawing its segments, placed as
-    // the whole.
-    crate::cmd::plot::pens_gcode(&pic.pens(), &pic.frame, gcode, header, quiet)
-}
-
-/// Renders a document in a format.
-pub fn render(doc: &LineDoc, format: Format, d: &LineDraw) -> Result<Vec<u8>, CliError> {
-    let opt = LineSvgOptions {
-        render: d.render,
-        style: d.style,
-        pen_width: d.pen_width,
-        bar_height: d.bar_height,
-        zoom_rows: d.zoom_rows,
-        zoom_fraction: d.zoom_fraction,
-        zoom_center: d.zoom_center,
-        boundary: d.boundary,
-        colours: d.palette.as_ref().map(|p| {
-            let items: Vec<(u64, f64)> = doc.shapes.iter().map(|s| (s.index, s.length)).collect();
-            crate::output::palette::assign_items(&p.0, d.color_by, doc.params.seed, &items, |_| 0)
-        }),
-        background: d.background.clone(),
-        colour_flags: d.colour_flags.clone(),
-        colour_layers: d.palette.as_ref().filter(|_| d.colour_layers).map(|p| p.0.clone()),
-    };
-    Ok(match format {
-        Format::Svg => render_svg(doc, &opt),
-        Format::Json => render_json(doc)?,
-        Format::Csv => render_csv(doc),
-        Format::Digest => render_digest(doc),
-        Format::Png => d.raster.render(&render_svg(doc, &opt))?,
-        Format::Gcode => render_gcode(doc, &opt, d.gcode.as_ref().ok_or_else(no_gcode)?, d.quiet)?,
-    })
-}
-
-/// The G-code plan of a drawing that has none (it was resolved for another format).
-fn no_gcode() -> CliError {
-    CliError::Io("internal: G-code asked of a plan resolved for another format".into())
-}
-
-/// `zetafill line`: runs the plan and writes its output.
-pub fn run(plan: &LinePlan) -> Result<(), CliError> {
-    let (doc, halt) = compute(&plan.run)?;
-    let bytes = render(&doc, plan.format, &plan.draw)?;
-    plan.dest.write(&bytes)?;
-    stopping::outcome(halt, SEGMENTS, halt_advice)
 }

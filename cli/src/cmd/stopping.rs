@@ -1,50 +1,12 @@
-//! What `zetafill fill` and `zetafill line` share about running to a stop: the stop
-//! conditions, the refusals of the slots they need (the core computes them), the progress
-//! bar, and the message of a halt.
+//! What `zetafill fill` and `zetafill line` share while they run: the progress bar, and the
+//! message of a halt. The stop conditions and the slots they need are resolved in
+//! [`crate::plan`].
+
+pub use crate::plan::{sequence, slots, stop, Unit};
 
 use crate::error::CliError;
 use std::io::IsTerminal;
-use zetafill::{AreaSequence, CapacityError, StepError, Stop};
-
-/// What a run places: `"shapes"` (2D) or `"segments"` (1D), with its limit per run.
-#[derive(Debug, Clone, Copy)]
-pub struct Unit {
-    /// The plural noun used in messages.
-    pub plural: &'static str,
-    /// The most one run may hold.
-    pub max: u64,
-}
-
-/// The stop conditions from `--count`, `--fill` and `--min-size`: 2000 pieces when none is
-/// given.
-pub fn stop(count: Option<u64>, fill: Option<f64>, min_size: Option<f64>) -> Stop {
-    let count = match (count, fill, min_size) {
-        (None, None, None) => Some(2000),
-        (c, _, _) => c,
-    };
-    Stop { count, fill, min_size }
-}
-
-/// The power-law sequence of a run over `total` (area or length), from the core; a bad
-/// offset is named as `--n-offset`.
-pub fn sequence(total: f64, c: f64, n: f64) -> Result<AreaSequence, CliError> {
-    AreaSequence::new(total, c, n).map_err(|e| CliError::arg("--n-offset", e))
-}
-
-/// The slots the stop conditions need, as the core found them ([`zetafill::shape_capacity`], [`zetafill::segment_capacity`]); a
-/// stop condition no run of the unit's size can meet is refused naming its flag.
-pub fn slots(found: Result<u64, CapacityError>, unit: Unit) -> Result<u64, CliError> {
-    found.map_err(|e| match e {
-        CapacityError::Fill { fill, max } => CliError::arg(
-            "--fill",
-            format!("{fill} needs more than {max} {} at this c; lower it or raise --c", unit.plural),
-        ),
-        CapacityError::MinSize { min_size, max } => CliError::arg(
-            "--min-size",
-            format!("{min_size} mm needs more than {max} {}; raise it", unit.plural),
-        ),
-    })
-}
+use zetafill::StepError;
 
 /// A progress bar on standard error when it is a terminal and `--quiet` is not given.
 pub fn progress_bar(quiet: bool, count: Option<u64>, unit: Unit) -> Option<indicatif::ProgressBar> {

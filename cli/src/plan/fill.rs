@@ -245,7 +245,7 @@ pub fn resolve_as(a: &FillArgs, format: Format) -> Result<(FillRun, FillDraw), C
         region: a.region.clone(),
         periodic: a.periodic,
         params,
-        stop: crate::plan::stop(&a.run.stop),
+        stop: crate::plan::stops(&a.run.stop),
         seed,
         reference_sampler: a.sampler == Sampler::Reference,
         fixed_point: a.scalar == ScalarArg::Fixed,

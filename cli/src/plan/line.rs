@@ -153,7 +153,7 @@ fn resolve_format(a: &LineArgs, format: Format) -> Result<(LineRun, LineDraw), C
             length: a.length,
             periodic: a.periodic,
         },
-        stop: crate::plan::stop(&a.run.stop),
+        stop: crate::plan::stops(&a.run.stop),
         seed: a.run.seed.seed,
         quiet: a.quiet,
     };

@@ -11,7 +11,8 @@ pub mod territory;
 pub mod tile;
 
 use crate::args::common::{PowerLawArgs, StopArgs};
-use zetafill::Stop;
+use crate::error::CliError;
+use zetafill::{AreaSequence, CapacityError, Stop};
 
 /// The exponent c: `--c`, or else `--dimension` through `from_dimension` (c = 2/D in 2D,
 /// 1/D in 1D), or else `default`.
@@ -24,6 +25,46 @@ pub fn exponent(p: &PowerLawArgs, default: f64, from_dimension: fn(f64) -> f64) 
 }
 
 /// The stop conditions: 2000 pieces when none is given.
-pub fn stop(s: &StopArgs) -> Stop {
-    crate::cmd::stopping::stop(s.count, s.fill, s.min_size)
+pub fn stops(s: &StopArgs) -> Stop {
+    stop(s.count, s.fill, s.min_size)
+}
+
+/// What a run places: `"shapes"` (2D) or `"segments"` (1D), with its limit per run.
+#[derive(Debug, Clone, Copy)]
+pub struct Unit {
+    /// The plural noun used in messages.
+    pub plural: &'static str,
+    /// The most one run may hold.
+    pub max: u64,
+}
+
+/// The stop conditions from `--count`, `--fill` and `--min-size`: 2000 pieces when none is
+/// given.
+pub fn stop(count: Option<u64>, fill: Option<f64>, min_size: Option<f64>) -> Stop {
+    let count = match (count, fill, min_size) {
+        (None, None, None) => Some(2000),
+        (c, _, _) => c,
+    };
+    Stop { count, fill, min_size }
+}
+
+/// The power-law sequence of a run over `total` (area or length), from the core; a bad
+/// offset is named as `--n-offset`.
+pub fn sequence(total: f64, c: f64, n: f64) -> Result<AreaSequence, CliError> {
+    AreaSequence::new(total, c, n).map_err(|e| CliError::arg("--n-offset", e))
+}
+
+/// The slots the stop conditions need, as the core found them ([`zetafill::shape_capacity`], [`zetafill::segment_capacity`]); a
+/// stop condition no run of the unit's size can meet is refused naming its flag.
+pub fn slots(found: Result<u64, CapacityError>, unit: Unit) -> Result<u64, CliError> {
+    found.map_err(|e| match e {
+        CapacityError::Fill { fill, max } => CliError::arg(
+            "--fill",
+            format!("{fill} needs more than {max} {} at this c; lower it or raise --c", unit.plural),
+        ),
+        CapacityError::MinSize { min_size, max } => CliError::arg(
+            "--min-size",
+            format!("{min_size} mm needs more than {max} {}; raise it", unit.plural),
+        ),
+    })
 }

@@ -89,7 +89,7 @@ pub fn picture(doc: &FillDoc, look: &Look) -> Result<Picture, CliError> {
     pic.title = format!(
         "zetafill: Voronoi cobblestones of {} {}, c = {}, N = {}, seed {}",
         doc.shapes.len(),
-        p.shape,
+        p.of.shape,
         p.c,
         p.n_offset,
         p.seed

@@ -7,7 +7,7 @@ use crate::args::format::Format;
 use crate::args::spec;
 use crate::cmd::stopping::{self, Unit};
 use crate::error::CliError;
-use crate::model::doc::{FillDoc, ParamsDoc, ShapeDoc, StatsDoc};
+use crate::model::doc::{FillDoc, ParamsDoc, ShapeDoc, ShapeParamsDoc, StatsDoc};
 use crate::output;
 use crate::plan::fill::{first_shape_error, first_two_error, halt_advice, param_error, FillDraw, FillPlan, FillRun};
 use region::RegionData;
@@ -189,11 +189,13 @@ pub fn compute(a: &FillRun) -> Result<(FillDoc, Option<StepError>), CliError> {
             c: params.c,
             n_offset: params.n_offset,
             seed: a.seed,
-            shape: a.names.shape.clone(),
-            rotate: a.names.rotate,
-            mix_order: a.names.mix_order,
-            sampler: a.names.sampler,
-            scalar: a.names.scalar,
+            of: ShapeParamsDoc {
+                shape: a.names.shape.clone(),
+                rotate: a.names.rotate,
+                mix_order: a.names.mix_order,
+                sampler: a.names.sampler,
+                scalar: a.names.scalar,
+            },
             gap: params.gap,
             count: stop.count,
             fill: stop.fill,

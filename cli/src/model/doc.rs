@@ -28,15 +28,43 @@ pub struct FillDoc {
     pub digest: Option<(u64, u64)>,
 }
 
-/// The parameters of the run.
+/// The parameters of a run, as its JSON writes them: the power law, the seed, the
+/// mode's own parameters `E` (in their place, after the seed), the gap and the stops. A fill's
+/// are [`ParamsDoc`]; a 1D fill has none of its own.
 #[derive(Debug, Clone, Serialize)]
-pub struct ParamsDoc {
+pub struct RunParamsDoc<E> {
     /// Exponent c.
     pub c: f64,
     /// The paper's N.
     pub n_offset: f64,
     /// RNG seed.
     pub seed: u64,
+    /// The mode's own parameters.
+    #[serde(flatten)]
+    pub of: E,
+    /// Clearance in mm.
+    pub gap: f64,
+    /// Stop after this many pieces.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub count: Option<u64>,
+    /// Stop at this fill fraction.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub fill: Option<f64>,
+    /// Stop before the first piece narrower (shorter) than this (mm).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub min_size: Option<f64>,
+    /// Trial limit per placement.
+    pub max_trials: u64,
+    /// The fractal dimension: D = 2/c for a fill, 1/c for a 1D fill.
+    pub dimension: f64,
+}
+
+/// The parameters of a fill.
+pub type ParamsDoc = RunParamsDoc<ShapeParamsDoc>;
+
+/// What only a 2D fill has: its shapes, rotation, sampler and scalar.
+#[derive(Debug, Clone, Serialize)]
+pub struct ShapeParamsDoc {
     /// Shape as written on the command line.
     pub shape: String,
     /// `none` or `random`.
@@ -48,21 +76,6 @@ pub struct ParamsDoc {
     pub sampler: &'static str,
     /// Engine number type: `f64` or `fixed`.
     pub scalar: &'static str,
-    /// Clearance in mm.
-    pub gap: f64,
-    /// Stop after this many shapes.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub count: Option<u64>,
-    /// Stop at this fill fraction.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub fill: Option<f64>,
-    /// Stop before the first shape narrower than this (mm).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub min_size: Option<f64>,
-    /// Trial limit per placement.
-    pub max_trials: u64,
-    /// The fractal dimension D = 2/c.
-    pub dimension: f64,
 }
 
 /// A region, in its own frame (mm, x right, y up).

@@ -231,9 +231,9 @@ pub fn command_line(doc: &FillDoc) -> String {
     let region = doc.region.arg();
     let mut s = format!(
         "zetafill fill --shape {}{} --rotate {} --region {}{} --c {} --n-offset {} --gap {} --max-trials {} --seed {} --sampler {}{}",
-        p.shape,
-        p.mix_order.map_or_else(String::new, |m| format!(" --mix-order {m}")),
-        p.rotate,
+        p.of.shape,
+        p.of.mix_order.map_or_else(String::new, |m| format!(" --mix-order {m}")),
+        p.of.rotate,
         region,
         if doc.periodic() { " --periodic" } else { "" },
         p.c,
@@ -241,8 +241,8 @@ pub fn command_line(doc: &FillDoc) -> String {
         p.gap,
         p.max_trials,
         p.seed,
-        p.sampler,
-        if p.scalar == "f64" { "" } else { " --scalar fixed" }
+        p.of.sampler,
+        if p.of.scalar == "f64" { "" } else { " --scalar fixed" }
     );
     if let Some(k) = p.count {
         s.push_str(&format!(" --count {k}"));
@@ -310,7 +310,7 @@ pub fn picture(doc: &FillDoc, opt: &SvgOptions) -> Picture {
     pic.title = format!(
         "zetafill: {} {}, c = {}, N = {}, seed {}",
         doc.shapes.len(),
-        p.shape,
+        p.of.shape,
         p.c,
         p.n_offset,
         p.seed

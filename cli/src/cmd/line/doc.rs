@@ -40,31 +40,13 @@ pub struct LineStatsDoc {
     pub stop: &'static str,
 }
 
-/// The parameters of a 1D run.
+/// The parameters of a 1D fill: the power law, the seed, the gap and the stops, nothing of
+/// its own.
+pub type LineParamsDoc = crate::model::doc::RunParamsDoc<NoParams>;
+
+/// A mode with no parameters of its own.
 #[derive(Debug, Clone, Serialize)]
-pub struct LineParamsDoc {
-    /// Exponent c.
-    pub c: f64,
-    /// The paper's N.
-    pub n_offset: f64,
-    /// RNG seed.
-    pub seed: u64,
-    /// Clearance in mm.
-    pub gap: f64,
-    /// Stop after this many segments.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub count: Option<u64>,
-    /// Stop at this fill fraction.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub fill: Option<f64>,
-    /// Stop before the first segment shorter than this (mm).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub min_size: Option<f64>,
-    /// Trial limit per placement.
-    pub max_trials: u64,
-    /// The fractal dimension D = 1/c.
-    pub dimension: f64,
-}
+pub struct NoParams {}
 
 /// The interval.
 #[derive(Debug, Clone, Serialize)]

@@ -107,6 +107,7 @@ pub fn compute(a: &LineRun) -> Result<(LineDoc, Option<StepError>), CliError> {
             c: params.c,
             n_offset: params.n_offset,
             seed: a.seed,
+            of: doc::NoParams {},
             gap: params.gap,
             count: stop.count,
             fill: stop.fill,

@@ -6,8 +6,9 @@
 
 use crate::shape::{ShapeKind, ShapeList};
 
-/// The parameters of a fill.
-#[derive(Clone, Copy, Debug, PartialEq)]
+/// The parameters of a fill. `Clone` but not `Copy` (its [`ShapeList`] holds up to
+/// [`crate::MAX_MIX`] kinds): the engine keeps the one it is given.
+#[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct Params {
     /// The power-law exponent c (> 1).

@@ -77,7 +77,7 @@ fn geo_f64<S: zetafill::Scalar>(g: &Geo<S>) -> Geo<f64> {
 /// Runs the engine on scalar `S` with the CLI's storage, progress bar and known-limit check.
 fn run_engine<S: zetafill::Scalar>(
     a: &FillRun,
-    params: Params,
+    params: &Params,
     region: Region<'_>,
     stop: &Stop,
     cap: usize,
@@ -91,8 +91,8 @@ fn run_engine<S: zetafill::Scalar>(
         index: &mut index,
         coverage: &mut coverage,
     };
-    let mut engine = Engine::<S>::new(params, region, storage).map_err(param_error)?;
-    zetafill::check_first_two(&params, &region).map_err(|e| first_two_error(e, &params))?;
+    let mut engine = Engine::<S>::new(params.clone(), region, storage).map_err(param_error)?;
+    zetafill::check_first_two(params, &region).map_err(|e| first_two_error(e, params))?;
     let mut rng = zetafill::rng_from_seed(a.seed);
     let bar = stopping::progress_bar(a.quiet, stop.count, SHAPES);
     let mut trials = Vec::with_capacity(cap);
@@ -147,7 +147,7 @@ fn run_engine<S: zetafill::Scalar>(
 pub fn compute(a: &FillRun) -> Result<(FillDoc, Option<StepError>), CliError> {
     let data = RegionData::load(&a.region)?;
     let region = data.region(a.periodic)?;
-    let params = a.params;
+    let params = &a.params;
     let stop = a.stop;
     let sequence = stopping::sequence(region.area(), params.c, params.n_offset)?;
     let cap = stopping::slots(zetafill::shape_capacity(&sequence, &params.shape, &stop, SHAPES.max), SHAPES)? as usize;
@@ -169,11 +169,11 @@ pub fn compute(a: &FillRun) -> Result<(FillDoc, Option<StepError>), CliError> {
         StopReason::Fill => ("fill", None),
         StopReason::MinSize => ("min-size", None),
         StopReason::Step(StepError::CannotFit { index: 0 }) => {
-            return Err(first_shape_error(&params, &zetafill::first_shape(&sequence, &params.shape), None))
+            return Err(first_shape_error(params, &zetafill::first_shape(&sequence, &params.shape), None))
         }
         StopReason::Step(StepError::Halted { index: 0, trials }) => {
             return Err(first_shape_error(
-                &params,
+                params,
                 &zetafill::first_shape(&sequence, &params.shape),
                 Some(trials),
             ))

@@ -229,7 +229,7 @@ pub fn resolve_as(a: &FillArgs, format: Format) -> Result<(FillRun, FillDraw), C
     let params = Params {
         c: crate::plan::exponent(&a.run.power, 1.3, Params::c_from_dimension),
         n_offset: a.run.power.n_offset,
-        shape: shapes,
+        shape: shapes.clone(),
         rotate: a.rotate.map_or(a.shape.rotates(), |r| r == Rotate::Random),
         gap: a.run.gap,
         max_trials: a.run.max_trials,

@@ -149,6 +149,7 @@ impl<'a, S: Scalar> Engine<'a, S> {
             S::from_f64(h),
         );
         coverage.mark_outside(&region);
+        let gap = S::from_f64(params.gap);
         Ok(Engine {
             params,
             region,
@@ -160,7 +161,7 @@ impl<'a, S: Scalar> Engine<'a, S> {
             area: region.area(),
             placed_area: 0.0,
             trials: 0,
-            gap: S::from_f64(params.gap),
+            gap,
             period: (S::from_f64(w), S::from_f64(h)),
         })
     }

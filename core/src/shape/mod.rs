@@ -88,67 +88,78 @@ pub enum MixOrder {
 }
 
 /// The shape, or mix of shapes, of a fill. The area sequence is the same whatever the mix.
-#[derive(Clone, Copy, Debug, PartialEq)]
-#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+///
+/// It holds 1..=[`MAX_MIX`] kinds in a fixed-capacity vector, so it is `Clone` but not `Copy`:
+/// the engine keeps one and lends it.
+#[derive(Clone, Debug, PartialEq)]
 pub struct ShapeList {
-    kinds: [ShapeKind; MAX_MIX],
-    len: u8,
+    kinds: heapless::Vec<ShapeKind, MAX_MIX>,
     /// How kinds are chosen per placement.
     pub order: MixOrder,
     /// Salt for [`MixOrder::Random`].
     pub salt: u64,
 }
 
+#[cfg(feature = "defmt")]
+impl defmt::Format for ShapeList {
+    fn format(&self, f: defmt::Formatter<'_>) {
+        defmt::write!(
+            f,
+            "ShapeList {{ kinds: {=[?]}, order: {}, salt: {=u64} }}",
+            self.kinds(),
+            self.order,
+            self.salt
+        );
+    }
+}
+
 impl From<ShapeKind> for ShapeList {
     fn from(k: ShapeKind) -> Self {
+        let mut kinds = heapless::Vec::new();
+        // Cannot fail: MAX_MIX >= 1 (checked at compile time).
+        let _ = kinds.push(k);
         ShapeList {
-            kinds: [k; MAX_MIX],
-            len: 1,
+            kinds,
             order: MixOrder::Cycle,
             salt: 0,
         }
     }
 }
+const _: () = assert!(MAX_MIX >= 1, "a list holds at least one kind");
 
 impl ShapeList {
     /// A mix of 1..=MAX_MIX kinds, or `None` for an empty or too long list.
     pub fn mix(kinds: &[ShapeKind], order: MixOrder, salt: u64) -> Option<Self> {
-        let first = *kinds.first()?;
-        if kinds.len() > MAX_MIX {
+        if kinds.is_empty() {
             return None;
         }
-        let mut all = [first; MAX_MIX];
-        for (d, k) in all.iter_mut().zip(kinds) {
-            *d = *k;
-        }
-        Some(ShapeList {
-            kinds: all,
-            len: kinds.len() as u8,
-            order,
-            salt,
-        })
+        let kinds = heapless::Vec::from_slice(kinds).ok()?;
+        Some(ShapeList { kinds, order, salt })
     }
 
     /// The kinds in the mix.
     pub fn kinds(&self) -> &[ShapeKind] {
-        self.kinds.get(..usize::from(self.len)).unwrap_or(&[])
+        &self.kinds
     }
 
     /// The kind of placement `i`.
     #[inline]
     pub fn kind_of(&self, i: u64) -> ShapeKind {
-        let n = u64::from(self.len.max(1));
-        let k = match self.order {
-            _ if n == 1 => 0,
-            MixOrder::Cycle => i % n,
-            MixOrder::Random => mix64(i ^ self.salt) % n,
+        // Asked for every neighbour a candidate is tested against: one kind returns at once,
+        // and a mix divides by a length known to be at least 2.
+        let kinds = self.kinds.as_slice();
+        let k = match (kinds, self.order) {
+            ([only], _) => return *only,
+            ([], _) => return ShapeKind::Circle,
+            (_, MixOrder::Cycle) => i % kinds.len() as u64,
+            (_, MixOrder::Random) => mix64(i ^ self.salt) % kinds.len() as u64,
         };
-        self.kinds.get(k as usize).copied().unwrap_or(ShapeKind::Circle)
+        kinds.get(k as usize).copied().unwrap_or(ShapeKind::Circle)
     }
 
     /// Whether every kind is valid and the list is not empty.
     pub fn is_valid(&self) -> bool {
-        self.len >= 1 && self.kinds().iter().all(ShapeKind::is_valid)
+        !self.kinds.is_empty() && self.kinds.iter().all(ShapeKind::is_valid)
     }
 }
 
@@ -510,6 +521,35 @@ mod tests {
         assert!(!ShapeKind::Blob { delta: 1.0 / 3.0 }.is_valid());
         assert!(!ShapeKind::Blob { delta: f64::NAN }.is_valid());
         assert!(!ShapeKind::Rect { aspect: 0.0 }.is_valid());
+    }
+
+    #[test]
+    fn a_mix_holds_one_to_max_mix_kinds_and_cycles_through_them() {
+        let (c, s, t) = (ShapeKind::Circle, ShapeKind::Square, ShapeKind::Triangle);
+        let eight = [c, s, t, c, c, s, t, c];
+        assert_eq!(ShapeList::mix(&[], MixOrder::Cycle, 0), None);
+        assert_eq!(ShapeList::mix(&[ShapeKind::Square; MAX_MIX + 1], MixOrder::Cycle, 0), None);
+        let Some(full) = ShapeList::mix(&eight, MixOrder::Cycle, 0) else {
+            panic!("eight kinds are a mix")
+        };
+        assert_eq!(full.kinds(), &eight);
+        assert!(full.is_valid());
+        assert_eq!(full.kind_of(9), ShapeKind::Square);
+        let one = ShapeList::from(ShapeKind::Triangle);
+        assert_eq!(one.kinds(), &[ShapeKind::Triangle]);
+        assert_eq!(one.kind_of(12_345), ShapeKind::Triangle);
+        // A random mix's choice is fixed by the salt and the index (SplitMix64's output mod n).
+        let Some(two) = ShapeList::mix(&[ShapeKind::Circle, ShapeKind::Square], MixOrder::Random, 7) else {
+            panic!("two kinds are a mix")
+        };
+        for i in 0..64 {
+            let want = if mix64(i ^ 7) % 2 == 0 {
+                ShapeKind::Circle
+            } else {
+                ShapeKind::Square
+            };
+            assert_eq!(two.kind_of(i), want);
+        }
     }
 
     #[test]

@@ -232,7 +232,7 @@ fn wild_run<S: Scalar>(w: &Wild, sampler: Sampler) -> Result<Option<(StopReason,
     let mut cov = vec![0u64; w.coverage];
     let mut pool = vec![[0u64; 4]; w.cells];
     let mut e = Engine::<S>::new(
-        w.params,
+        w.params.clone(),
         w.region,
         Storage {
             shapes: &mut shapes,

@@ -25,6 +25,7 @@ mod board;
 use core::ffi::CStr;
 use cortex_m_rt::entry;
 use defmt_semihosting as _;
+use heapless::String;
 use semihosting::io::Write as _;
 use semihosting::{eprintln, process};
 use zetafill::{Fixed, Placed, Scalar, Storage};
@@ -219,15 +220,12 @@ fn run_scene_fast<S: Scalar + Default>(scene: &Scene, board: &Board, cal: &Calib
 
 /// Writes `frame-NAME.pbm` through semihosting.
 fn write_frame(name: &str, frame: &Frame) -> bool {
-    let mut path = [0u8; 64];
-    let parts: [&[u8]; 4] = [b"frame-", name.as_bytes(), b".pbm", b"\0"];
-    let mut n = 0;
-    for part in parts {
-        let Some(dst) = path.get_mut(n..n + part.len()) else { return false };
-        dst.copy_from_slice(part);
-        n += part.len();
+    // The file name, then the NUL that semihosting wants; a name too long for it fails.
+    let mut path: String<64> = String::new();
+    if ["frame-", name, ".pbm", "\0"].iter().any(|part| path.push_str(part).is_err()) {
+        return false;
     }
-    let Some(Ok(cpath)) = path.get(..n).map(CStr::from_bytes_with_nul) else {
+    let Ok(cpath) = CStr::from_bytes_with_nul(path.as_bytes()) else {
         return false;
     };
     let written = semihosting::fs::File::create(cpath).and_then(|mut file| {
@@ -238,7 +236,6 @@ fn write_frame(name: &str, frame: &Frame) -> bool {
         eprintln!("error {}: cannot write the frame file", name);
         return false;
     }
-    let file_name = core::str::from_utf8(path.get(..n - 1).unwrap_or(&[])).unwrap_or("?");
-    eprintln!("frame {} {}", name, file_name);
+    eprintln!("frame {} {}", name, path.strip_suffix('\0').unwrap_or(&path));
     true
 }

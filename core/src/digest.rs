@@ -4,20 +4,28 @@
 //! Two runs agree bit for bit exactly when their digests and counts agree (up to FNV
 //! collisions). The host, the CLI (`--format digest`) and the firmware compute the same value.
 //!
+//! # Examples
+//!
+//! The digest of a run, twice the same: here the canonical `circles` scene (500 circles at
+//! c = 1.3, N = 1 in a 200 x 200 rectangle, seed 1), whose digest the golden test and the
+//! firmware check too. Another seed gives another fill.
+//!
 //! ```
 //! use zetafill::digest::engine_digest;
 //! use zetafill::{index_words, rng_from_seed, Engine, Params, Placed, Region, Stop, Storage};
 //!
-//! let mut shapes = [Placed::<f64>::default(); 10];
-//! let mut index = [0u32; index_words(10)];
-//! let storage = Storage { shapes: &mut shapes, index: &mut index, coverage: &mut [] };
-//! let region = Region::Rect { width: 200.0, height: 200.0, periodic: false };
-//! let mut engine = Engine::new(Params::circles(1.3, 1.0), region, storage)?;
-//! engine.run(&mut rng_from_seed(1), &Stop { count: Some(10), ..Stop::default() }, |_| {});
-//! let (count, hash) = engine_digest(&engine);
-//! assert_eq!(count, 10);
-//! # let _ = hash;
-//! # Ok::<(), zetafill::ParamError>(())
+//! fn digest(seed: u64) -> (u64, u64) {
+//!     let mut shapes = vec![Placed::<f64>::default(); 500];
+//!     let mut index = vec![0u32; index_words(500)];
+//!     let storage = Storage { shapes: &mut shapes, index: &mut index, coverage: &mut [] };
+//!     let region = Region::Rect { width: 200.0, height: 200.0, periodic: false };
+//!     let mut engine = Engine::new(Params::circles(1.3, 1.0), region, storage).expect("valid");
+//!     engine.run(&mut rng_from_seed(seed), &Stop { count: Some(500), ..Stop::default() }, |_| {});
+//!     engine_digest(&engine)
+//! }
+//! assert_eq!(digest(1), (500, 0x1406_6bbd_95f2_73d6));
+//! assert_eq!(digest(1), digest(1));
+//! assert_ne!(digest(2).1, digest(1).1);
 //! ```
 
 use crate::engine::Engine;
@@ -64,7 +72,7 @@ pub fn add_shape<S: Scalar>(h: &mut Fnv1a, x: S, y: S, area: f64, angle: S) {
     h.write_u64(angle.digest_bits());
 }
 
-/// The digest of every shape an engine has placed: `(count, hash)`.
+/// The digest of every shape an engine has placed: `(count, hash)` (see the module's example).
 pub fn engine_digest<S: Scalar>(e: &Engine<'_, S>) -> (u64, u64) {
     let mut h = Fnv1a::default();
     for (i, p) in e.placed().iter().enumerate() {

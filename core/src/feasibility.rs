@@ -15,7 +15,9 @@ use crate::zeta::{self, ZetaError};
 
 /// The power-law sequence of areas (lengths in 1D, volumes in 3D)
 /// `A_i = A / (zeta(c, N) (i + N)^c)`, `i = 0, 1, 2, ...`, whose sum is `A`; `zeta(c, N)` is
-/// computed once.
+/// computed once. Its areas are bit for bit the engine's ([`crate::Engine::area_of`]).
+///
+/// # Examples
 ///
 /// ```
 /// use zetafill::AreaSequence;
@@ -23,6 +25,9 @@ use crate::zeta::{self, ZetaError};
 /// assert!((seq.zeta() - 3.9319).abs() < 1e-4);
 /// assert_eq!(seq.area(0), 40_000.0 / seq.zeta());
 /// assert!(seq.area(1) < seq.area(0));
+/// // The first shape alone covers 1 / zeta(c, N) of the region; all of them cover it.
+/// assert!((seq.covered(1) - 1.0 / seq.zeta()).abs() < 1e-12);
+/// assert!(seq.covered(1_000_000) > 0.9);
 /// # Ok::<(), zetafill::ZetaError>(())
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -75,7 +80,22 @@ impl AreaSequence {
     }
 }
 
-/// Why no number of slots up to the limit serves a stop condition.
+/// Why no number of slots up to the limit serves a stop condition ([`shape_capacity`],
+/// [`segment_capacity`]).
+///
+/// # Examples
+///
+/// ```
+/// use zetafill::{shape_capacity, AreaSequence, CapacityError, ShapeKind, Stop};
+///
+/// // At c = 1.3 a million circles cover about 98.7% of the region: 99% needs more.
+/// let seq = AreaSequence::new(10_000.0, 1.3, 1.0)?;
+/// let stop = Stop { fill: Some(0.99), ..Stop::default() };
+/// let e = shape_capacity(&seq, &ShapeKind::Circle.into(), &stop, 1_000_000);
+/// assert_eq!(e, Err(CapacityError::Fill { fill: 0.99, max: 1_000_000 }));
+/// assert_eq!(e.map_err(|e| e.to_string()), Err("a fill of 0.99 needs more than 1000000 shapes at this c".to_string()));
+/// # Ok::<(), zetafill::ZetaError>(())
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub enum CapacityError {
@@ -140,6 +160,8 @@ pub fn capacity(seq: &AreaSequence, stop: &Stop, max: u64, width: impl Fn(u64) -
 /// [`capacity`] for 2D shapes: the width of shape `k` is its narrowest width
 /// ([`ShapeKind::min_width`]) at area `seq.area(k)`.
 ///
+/// # Examples
+///
 /// ```
 /// use zetafill::{shape_capacity, AreaSequence, ShapeKind, Stop};
 /// let seq = AreaSequence::new(40_000.0, 1.3, 1.0)?;
@@ -156,13 +178,27 @@ pub fn shape_capacity(seq: &AreaSequence, shapes: &ShapeList, stop: &Stop, max: 
 }
 
 /// [`capacity`] for the 1D fill: the width of segment `k` is its length `seq.area(k)`.
+///
+/// # Examples
+///
+/// ```
+/// use zetafill::{segment_capacity, AreaSequence, Stop};
+///
+/// let seq = AreaSequence::new(100.0, 1.4, 1.0)?;
+/// // A count needs its own number of slots, plus one to spare.
+/// assert_eq!(segment_capacity(&seq, &Stop { count: Some(50), ..Stop::default() }, 1_000), Ok(51));
+/// // Segments down to 0.5 long: every one of them has a slot.
+/// let slots = segment_capacity(&seq, &Stop { min_size: Some(0.5), ..Stop::default() }, 1_000)?;
+/// assert!(seq.area(slots - 1) < 0.5);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 pub fn segment_capacity(seq: &AreaSequence, stop: &Stop, max: u64) -> Result<u64, CapacityError> {
     capacity(seq, stop, max, |k| seq.area(k))
 }
 
 /// The first shape of a fill: its kind, area and narrowest width, for messages about a first
 /// shape that does not fit (the engine reports that as [`crate::StepError::CannotFit`] or a
-/// halt at placement 0).
+/// halt at placement 0). See [`first_shape`] for an example.
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct FirstShape {
@@ -175,6 +211,20 @@ pub struct FirstShape {
 }
 
 /// The first shape of `shapes` in the sequence `seq`.
+///
+/// # Examples
+///
+/// ```
+/// use zetafill::{first_shape, AreaSequence, FirstShape, ShapeKind};
+///
+/// // The first square of a 100 x 100 fill at c = 1.3, N = 1.
+/// let seq = AreaSequence::new(10_000.0, 1.3, 1.0)?;
+/// let FirstShape { kind, area, width } = first_shape(&seq, &ShapeKind::Square.into());
+/// assert_eq!(kind, ShapeKind::Square);
+/// assert_eq!(area, seq.area(0));
+/// assert!((width - area.sqrt()).abs() < 1e-9); // a square's narrowest width is its side
+/// # Ok::<(), zetafill::ZetaError>(())
+/// ```
 pub fn first_shape(seq: &AreaSequence, shapes: &ShapeList) -> FirstShape {
     let kind = shapes.kind_of(0);
     let area = seq.area(0);
@@ -208,7 +258,7 @@ pub fn first_two_fit(kind: &ShapeKind, a0: f64, a1: f64, width: f64, height: f64
 }
 
 /// Why the first two shapes of a fill certainly cannot both be placed (so every run would halt
-/// at placement 1), with the numbers a message needs.
+/// at placement 1), with the numbers a message needs. See [`check_first_two`] for an example.
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub enum FirstTwoError {
@@ -271,6 +321,8 @@ impl core::error::Error for FirstTwoError {}
 /// in an inclusive rectangle (see [`first_two_fit`]). Every other case is `Ok`: the engine
 /// then finds out by trials (or reports [`crate::StepError::CannotFit`] for a shape too large
 /// in any orientation).
+///
+/// # Examples
 ///
 /// ```
 /// use zetafill::{check_first_two, FirstTwoError, Params, Region, ShapeKind};

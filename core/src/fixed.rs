@@ -40,6 +40,37 @@ use ::fixed::types::I32F32;
 use core::ops::{Add, Div, Mul, Neg, Sub};
 
 /// A 32.32 fixed-point number (see the module documentation for range and resolution).
+///
+/// # Examples
+///
+/// A fill on the fixed-point scalar, as a core without an FPU runs it: chosen by type, the
+/// same code, integer arithmetic only; the same seed gives the same bits on every target.
+///
+/// ```
+/// use zetafill::digest::engine_digest;
+/// use zetafill::{index_words, rng_from_seed, Engine, Fixed, Params, Placed, Region, Scalar, Stop, StopReason, Storage};
+///
+/// fn fill(seed: u64) -> (StopReason, Vec<Placed<Fixed>>, (u64, u64)) {
+///     let mut shapes = [Placed::<Fixed>::default(); 100];
+///     let mut index = [0u32; index_words(100)];
+///     let storage = Storage { shapes: &mut shapes, index: &mut index, coverage: &mut [] };
+///     let region = Region::Rect { width: 200.0, height: 200.0, periodic: false };
+///     let mut engine = Engine::<Fixed>::new(Params::circles(1.3, 1.0), region, storage).expect("valid");
+///     let reason = engine.run(&mut rng_from_seed(seed), &Stop { count: Some(100), ..Stop::default() }, |_| {});
+///     (reason, engine.placed().to_vec(), engine_digest(&engine))
+/// }
+/// let (reason, circles, digest) = fill(1);
+/// assert_eq!(reason, StopReason::Count);
+/// assert_eq!(digest, fill(1).2);
+/// for c in &circles {
+///     let (x, y, r) = (c.x.to_f64(), c.y.to_f64(), c.scale.to_f64());
+///     assert!(x >= r && x <= 200.0 - r && y >= r && y <= 200.0 - r);
+/// }
+/// // Exact integer arithmetic: the square root is the floor of the exact one.
+/// let two = Fixed::from_f64(2.0);
+/// assert!((two.sqrt().to_f64() - 2f64.sqrt()).abs() < 1e-9);
+/// assert_eq!(Fixed::from_f64(0.5).to_bits(), 1 << 31);
+/// ```
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub struct Fixed(pub I32F32);
 

@@ -11,6 +11,18 @@
 use crate::scalar::Scalar;
 
 /// A point (or vector) in the plane, in the region's frame (x right, y up).
+///
+/// # Examples
+///
+/// ```
+/// use zetafill::Point;
+///
+/// let (a, b) = (Point::new(1.0, 2.0), Point::new(4.0, 6.0));
+/// assert_eq!(b.diff(a), Point::new(3.0, 4.0));
+/// assert_eq!(a.dist2(b), 25.0);
+/// assert_eq!(a.shift(1.0, -2.0), Point::new(2.0, 0.0));
+/// assert_eq!(Point::new(1.0, 0.0).cross(Point::new(0.0, 1.0)), 1.0); // counter-clockwise
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
 pub struct Point<S> {
     /// x coordinate.
@@ -57,12 +69,46 @@ impl<S: Scalar> Point<S> {
 pub const MAX_VERTS: usize = 32;
 
 /// A polygon's vertex list: at most [`MAX_VERTS`] points, kept in place (no heap).
+///
+/// # Examples
+///
+/// ```
+/// use zetafill::{Geo, Point, Verts};
+///
+/// let mut v: Verts<f64> = Verts::new();
+/// for (x, y) in [(0.0, 0.0), (4.0, 0.0), (0.0, 3.0)] {
+///     v.push(Point::new(x, y)).expect("room for 32 vertices");
+/// }
+/// let triangle = Geo::Poly { v, convex: true };
+/// assert_eq!(triangle.poly_area2(), 12.0);
+/// ```
 pub type Verts<S> = heapless::Vec<Point<S>, MAX_VERTS>;
 
 /// A concrete shape at its place, ready for exact tests and for drawing.
 ///
 /// Not `Copy` (a polygon carries up to [`MAX_VERTS`] vertices): clone it where a copy is
-/// meant, and prefer [`crate::shape::ShapeKind::geo_into`] to rewrite one in place.
+/// meant, and prefer [`crate::ShapeKind::geo_into`] to rewrite one in place.
+///
+/// # Examples
+///
+/// ```
+/// use zetafill::{Geo, Point, ShapeKind};
+///
+/// let c = Point::new(10.0, 10.0);
+/// // A unit square (half side 1) turned by 45 degrees: a diamond.
+/// let diamond = ShapeKind::Square.geo(c, 1.0, std::f64::consts::FRAC_PI_4);
+/// match &diamond {
+///     Geo::Poly { v, convex } => assert!(*convex && v.len() == 4),
+///     other => panic!("a square is a polygon, not {other:?}"),
+/// }
+/// let (x0, y0, x1, y1) = diamond.bounds();
+/// let half_diagonal = 2f64.sqrt();
+/// assert!((x1 - x0 - 2.0 * half_diagonal).abs() < 1e-12 && (y1 - y0 - 2.0 * half_diagonal).abs() < 1e-12);
+/// assert!((diamond.poly_area2() / 2.0 - 4.0).abs() < 1e-12);
+/// // A circle is a true circle.
+/// assert_eq!(ShapeKind::Circle.geo(c, 2.0, 0.0), Geo::Circle { c, r: 2.0 });
+/// assert_eq!(diamond.shift(1.0, 0.0).bounds().0, x0 + 1.0);
+/// ```
 #[derive(Clone, Debug, PartialEq)]
 pub enum Geo<S> {
     /// A disc.

@@ -25,18 +25,23 @@
 //! ```
 //!
 //! ## The public names
+//! Each has an example in its documentation (or in the one it links to).
 //! - A fill: [`Engine`] over caller-owned [`Storage`] (sized with [`index_words`]), set up by
 //!   [`Params`] and a [`Region`] ([`PolygonRegion`] for outlines, [`RegionError`]), with shapes
-//!   from [`ShapeKind`] / [`ShapeList`] (mixes, [`MixOrder`]); each step gives a [`Placement`]
-//!   of a [`Placed`] shape, whose exact outline is a [`Geo`] of [`Point`]s.
+//!   from [`ShapeKind`] / [`ShapeList`] (mixes of up to [`MAX_MIX`] kinds, [`MixOrder`]); each
+//!   step gives a [`Placement`] of a [`Placed`] shape, whose exact outline is a [`Geo`] of
+//!   [`Point`]s (a polygon's in [`Verts`]).
 //! - Stopping and failing: [`Stop`], [`StopReason`], [`StepError`], [`ParamError`], [`Stats`].
 //! - Samplers: the paper's uniform sampler is [`Engine::step`]; the cell sampler
-//!   [`CellSampler`] (storage [`CellWords`], sized with [`cells_for`]) draws from exactly the
-//!   same distribution with far fewer trials ([`Engine::step_fast`]).
-//! - Before a fill: [`AreaSequence`] (the areas, zeta computed once), [`shape_capacity`] /
-//!   [`segment_capacity`] (the slots a stop condition needs), [`check_first_two`] and
-//!   [`first_shape`] (first shapes that cannot fit, with the largest c that works).
-//! - 1D: [`LineEngine`], [`LineParams`], [`Interval`], [`LineStorage`], [`Segment`].
+//!   [`CellSampler`] (storage [`CellWords`], sized with [`cells_for`]; [`NoCells`] when there
+//!   is none) draws from exactly the same distribution with far fewer trials
+//!   ([`Engine::step_fast`]).
+//! - Before a fill: [`AreaSequence`] (the areas, zeta computed once; [`ZetaError`]),
+//!   [`shape_capacity`] / [`segment_capacity`] (the slots a stop condition needs, or a
+//!   [`CapacityError`]), [`check_first_two`] and [`first_shape`] (first shapes that cannot
+//!   fit, with the largest c that works: [`FirstTwoError`], [`FirstShape`]).
+//! - 1D: [`LineEngine`], [`LineParams`], [`Interval`], [`LineStorage`] (sized with
+//!   [`line_index_words`]), [`Segment`], [`LinePlacement`].
 //! - Numbers and randomness: [`Scalar`] (`f64`, or [`Fixed`] for cores without an FPU),
 //!   [`rng_from_seed`] / [`ZetaRng`], and [`digest`] (the determinism digest).
 //!
@@ -111,7 +116,7 @@ pub use line::{line_index_words, Interval, LineEngine, LineParams, LinePlacement
 pub use params::{ParamError, Params, StepError, Stop, StopReason};
 pub use region::{PolygonRegion, Region, RegionError};
 pub use rng::{rng_from_seed, ZetaRng};
-pub use sampler::{cells_for, CellSampler, CellStats, CellWords, NoCells};
+pub use sampler::{cells_for, CellSampler, CellWords, NoCells};
 pub use scalar::Scalar;
 pub use shape::{MixOrder, Placed, ShapeKind, ShapeList, MAX_MIX};
 pub use zeta::ZetaError;
@@ -146,7 +151,7 @@ pub mod internals {
     pub mod rng {
         pub use crate::rng::*;
     }
-    /// The cell sampler's constants and counters.
+    /// The cell sampler's constants and its counters ([`CellStats`](crate::internals::sampler::CellStats)).
     pub mod sampler {
         pub use crate::sampler::*;
     }

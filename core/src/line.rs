@@ -37,7 +37,17 @@ pub const LINE_LEVELS: usize = 48;
 /// The empty-list marker.
 const NIL: u32 = u32::MAX;
 
-/// The parameters of a 1D fill.
+/// The parameters of a 1D fill. See [`LineEngine`] for a fill.
+///
+/// # Examples
+///
+/// ```
+/// use zetafill::LineParams;
+///
+/// // Segments of fractal dimension 0.5, 0.1 apart.
+/// let params = LineParams { gap: 0.1, ..LineParams::new(LineParams::c_from_dimension(0.5), 1.0) };
+/// assert_eq!((params.c, params.n_offset, params.gap), (2.0, 1.0, 0.1));
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct LineParams {
@@ -69,6 +79,31 @@ impl LineParams {
 }
 
 /// The interval `[0, length]`, inclusive or periodic.
+///
+/// # Examples
+///
+/// On a circle of circumference 10 a segment may run past the end: it exists again from 0.
+///
+/// ```
+/// use zetafill::{line_index_words, rng_from_seed, Interval, LineEngine, LineParams, LineStorage, Segment, Stop};
+///
+/// let mut segments = [Segment::<f64>::default(); 200];
+/// let mut index = [0u32; line_index_words(200)];
+/// let storage = LineStorage { segments: &mut segments, index: &mut index };
+/// let circle = Interval { length: 10.0, periodic: true };
+/// let mut line = LineEngine::new(LineParams::new(1.3, 1.0), circle, storage)?;
+/// line.run(&mut rng_from_seed(6), &Stop { count: Some(200), ..Stop::default() }, |_| {});
+/// let placed = line.placed();
+/// assert!(placed.iter().all(|s| s.start >= 0.0 && s.start < 10.0));
+/// // No two segments meet, measured around the circle.
+/// for (i, a) in placed.iter().enumerate() {
+///     for b in &placed[i + 1..] {
+///         let (ab, ba) = ((b.start - a.start).rem_euclid(10.0), (a.start - b.start).rem_euclid(10.0));
+///         assert!(ab > a.length && ba > b.length);
+///     }
+/// }
+/// # Ok::<(), zetafill::ParamError>(())
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct Interval {
@@ -78,7 +113,17 @@ pub struct Interval {
     pub periodic: bool,
 }
 
-/// A placed segment `[start, start + length]`. `Segment::default()` is an empty slot.
+/// A placed segment `[start, start + length]`. `Segment::default()` is an empty slot (see
+/// [`LineStorage`]).
+///
+/// # Examples
+///
+/// ```
+/// use zetafill::Segment;
+///
+/// let s = Segment { start: 2.0, length: 0.5 };
+/// assert_eq!(s.end(), 2.5);
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
 pub struct Segment<S> {
     /// Left end; in `[0, L)` for a periodic interval.
@@ -94,7 +139,26 @@ impl<S: Scalar> Segment<S> {
     }
 }
 
-/// One placement: the segment, its nominal length and the trials it took.
+/// One placement: the segment, its nominal length and the trials it took
+/// ([`LineEngine::step`]).
+///
+/// # Examples
+///
+/// ```
+/// use zetafill::{line_index_words, rng_from_seed, Interval, LineEngine, LineParams, LineStorage, Segment};
+///
+/// let mut segments = [Segment::<f64>::default(); 10];
+/// let mut index = [0u32; line_index_words(10)];
+/// let storage = LineStorage { segments: &mut segments, index: &mut index };
+/// let interval = Interval { length: 100.0, periodic: false };
+/// let mut line = LineEngine::new(LineParams::new(1.4, 1.0), interval, storage)?;
+/// let mut rng = rng_from_seed(2);
+/// let first = line.step(&mut rng)?;
+/// assert_eq!((first.index, first.length), (0, line.length_of(0)));
+/// assert_eq!(first.segment.length, first.length);
+/// assert!(first.trials >= 1);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct LinePlacement<S> {
     /// Placement index i (0 for the longest segment).
@@ -107,12 +171,25 @@ pub struct LinePlacement<S> {
     pub trials: u64,
 }
 
-/// Index words needed for `capacity` segments: one link each plus `2 * capacity` buckets.
+/// Index words needed for `capacity` segments: one link each plus `2 * capacity` buckets (the
+/// length of [`LineStorage::index`]; see [`LineEngine`] for an example).
 pub const fn line_index_words(capacity: usize) -> usize {
     capacity * 3 + 1
 }
 
-/// The caller-owned storage of a [`LineEngine`].
+/// The caller-owned storage of a [`LineEngine`] (see its example). An index no longer than
+/// the segment slots is refused.
+///
+/// # Examples
+///
+/// ```
+/// use zetafill::{Interval, LineEngine, LineParams, LineStorage, ParamError, Segment};
+///
+/// let (mut segments, mut index) = ([Segment::<f64>::default(); 8], [0u32; 8]);
+/// let storage = LineStorage { segments: &mut segments, index: &mut index };
+/// let interval = Interval { length: 1.0, periodic: false };
+/// assert_eq!(LineEngine::new(LineParams::new(1.4, 1.0), interval, storage).err(), Some(ParamError::Storage));
+/// ```
 #[derive(Debug)]
 pub struct LineStorage<'a, S> {
     /// One slot per segment: its length is the capacity.
@@ -234,6 +311,8 @@ impl<'a, S: Scalar> LineHash<'a, S> {
 }
 
 /// The 1D fill engine over caller-provided storage.
+///
+/// # Examples
 ///
 /// ```
 /// use zetafill::{line_index_words, rng_from_seed, Interval, LineEngine, LineParams, LineStorage, Segment, Stop, StopReason};

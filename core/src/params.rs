@@ -8,6 +8,36 @@ use crate::shape::{ShapeKind, ShapeList};
 
 /// The parameters of a fill. `Clone` but not `Copy` (its [`ShapeList`] holds up to
 /// [`crate::MAX_MIX`] kinds): the engine keeps the one it is given.
+///
+/// Start from [`Params::circles`] and change the fields you need; give a fractal dimension
+/// instead of c with [`Params::c_from_dimension`]. [`crate::Engine::new`] checks them.
+///
+/// # Examples
+///
+/// ```
+/// use zetafill::{index_words, Engine, MixOrder, Params, Placed, Region, ShapeKind, ShapeList, Storage};
+///
+/// let circles = Params::circles(1.3, 1.0);
+/// assert_eq!((circles.c, circles.n_offset, circles.gap, circles.rotate), (1.3, 1.0, 0.0, false));
+/// assert_eq!(circles.shape.kinds(), &[ShapeKind::Circle]);
+///
+/// // Randomly rotated squares and triangles in turn, 0.5 apart, of fractal dimension 1.6.
+/// let mut params = Params::circles(Params::c_from_dimension(1.6), 2.0);
+/// assert_eq!(params.c, 1.25);
+/// params.shape = ShapeList::mix(&[ShapeKind::Square, ShapeKind::Triangle], MixOrder::Cycle, 0).expect("two kinds");
+/// params.rotate = true;
+/// params.gap = 0.5;
+/// params.max_trials = 1_000_000;
+///
+/// let mut shapes = [Placed::<f64>::default(); 10];
+/// let mut index = [0u32; index_words(10)];
+/// let storage = Storage { shapes: &mut shapes, index: &mut index, coverage: &mut [] };
+/// let region = Region::Rect { width: 100.0, height: 100.0, periodic: false };
+/// let engine = Engine::new(params.clone(), region, storage)?;
+/// assert_eq!(engine.params(), &params);
+/// assert_eq!(engine.kind_of(1), ShapeKind::Triangle);
+/// # Ok::<(), zetafill::ParamError>(())
+/// ```
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct Params {
@@ -44,7 +74,28 @@ impl Params {
     }
 }
 
-/// What was wrong with the parameters, region or storage.
+/// What was wrong with the parameters, region or storage: [`crate::Engine::new`] and
+/// [`crate::LineEngine::new`] check everything once and say which value to change.
+///
+/// # Examples
+///
+/// ```
+/// use zetafill::{index_words, Engine, ParamError, Params, Placed, Region, Storage};
+///
+/// fn start(params: Params) -> Result<(), ParamError> {
+///     let mut shapes = [Placed::<f64>::default(); 4];
+///     let mut index = [0u32; index_words(4)];
+///     let storage = Storage { shapes: &mut shapes, index: &mut index, coverage: &mut [] };
+///     Engine::new(params, Region::Circle { radius: 10.0 }, storage).map(|_| ())
+/// }
+/// assert_eq!(start(Params::circles(1.3, 1.0)), Ok(()));
+/// // c must be above 1: the areas would not add up to the region's.
+/// assert_eq!(start(Params::circles(0.9, 1.0)), Err(ParamError::Exponent));
+/// assert_eq!(start(Params::circles(f64::NAN, 1.0)), Err(ParamError::Exponent));
+/// assert_eq!(ParamError::Exponent.to_string(), "c must be a finite number greater than 1");
+/// assert_eq!(start(Params::circles(1.3, 0.0)), Err(ParamError::Offset));
+/// assert_eq!(start(Params { gap: 10.0, ..Params::circles(1.3, 1.0) }), Err(ParamError::Gap));
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub enum ParamError {
@@ -84,6 +135,32 @@ impl core::fmt::Display for ParamError {
 impl core::error::Error for ParamError {}
 
 /// Why a step placed nothing. The engine keeps every shape placed before.
+///
+/// # Examples
+///
+/// A trial limit so low that the fill soon halts: the error names the placement that found
+/// no place and the trials spent on it, and every shape before it stays placed.
+///
+/// ```
+/// use zetafill::{index_words, rng_from_seed, Engine, Params, Placed, Region, StepError, Stop, StopReason, Storage};
+///
+/// let mut shapes = [Placed::<f64>::default(); 500];
+/// let mut index = [0u32; index_words(500)];
+/// let storage = Storage { shapes: &mut shapes, index: &mut index, coverage: &mut [] };
+/// let region = Region::Rect { width: 100.0, height: 100.0, periodic: false };
+/// let params = Params { max_trials: 3, ..Params::circles(1.3, 1.0) };
+/// let mut engine = Engine::new(params, region, storage)?;
+/// let stop = Stop { count: Some(500), ..Stop::default() };
+/// match engine.run(&mut rng_from_seed(1), &stop, |_| {}) {
+///     StopReason::Step(e @ StepError::Halted { index, trials }) => {
+///         assert_eq!(trials, 3);
+///         assert_eq!(engine.placed().len() as u64, index);
+///         assert_eq!(e.to_string(), format!("halted at placement {index} after 3 trials"));
+///     }
+///     other => panic!("expected a halt, got {other:?}"),
+/// }
+/// # Ok::<(), zetafill::ParamError>(())
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub enum StepError {
@@ -120,6 +197,43 @@ impl core::fmt::Display for StepError {
 impl core::error::Error for StepError {}
 
 /// When [`crate::Engine::run`] stops: the first condition given that holds stops it.
+/// `Stop::default()` has none (the fill runs until its storage is full or it halts).
+///
+/// # Examples
+///
+/// ```
+/// use zetafill::{index_words, rng_from_seed, Engine, Params, Placed, Region, Stop, StopReason, Storage};
+///
+/// let mut shapes = [Placed::<f64>::default(); 100];
+/// let mut index = [0u32; index_words(100)];
+/// let storage = Storage { shapes: &mut shapes, index: &mut index, coverage: &mut [] };
+/// let region = Region::Rect { width: 100.0, height: 100.0, periodic: false };
+/// let mut engine = Engine::new(Params::circles(1.3, 1.0), region, storage)?;
+/// let mut rng = rng_from_seed(4);
+///
+/// // Half the region covered (a few large circles do that).
+/// let half = Stop { fill: Some(0.5), ..Stop::default() };
+/// assert_eq!(engine.run(&mut rng, &half, |_| {}), StopReason::Fill);
+/// assert!(engine.stats().fill_fraction >= 0.5);
+///
+/// // Then on, until the next circle would be less than 10 wide.
+/// let wide = Stop { min_size: Some(10.0), ..Stop::default() };
+/// assert_eq!(engine.run(&mut rng, &wide, |_| {}), StopReason::MinSize);
+/// assert!(engine.placed().iter().all(|c| 2.0 * c.scale >= 10.0));
+/// let next = engine.placed().len() as u64;
+/// assert!(2.0 * (engine.area_of(next) / std::f64::consts::PI).sqrt() < 10.0);
+///
+/// // The first condition that holds stops the run: half the region is still covered.
+/// let both = Stop { count: Some(next + 5), ..half };
+/// assert_eq!(engine.run(&mut rng, &both, |_| {}), StopReason::Fill);
+/// assert_eq!(engine.placed().len() as u64, next);
+///
+/// // A count counts every shape placed, those of earlier runs too.
+/// let five_more = Stop { count: Some(next + 5), ..Stop::default() };
+/// assert_eq!(engine.run(&mut rng, &five_more, |_| {}), StopReason::Count);
+/// assert_eq!(engine.placed().len() as u64, next + 5);
+/// # Ok::<(), zetafill::ParamError>(())
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct Stop {
@@ -131,7 +245,8 @@ pub struct Stop {
     pub min_size: Option<f64>,
 }
 
-/// Why [`crate::Engine::run`] stopped.
+/// Why [`crate::Engine::run`] stopped: one of the [`Stop`] conditions (see its example), or
+/// a [`StepError`] (see its example).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub enum StopReason {

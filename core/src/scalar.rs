@@ -9,9 +9,32 @@
 use core::fmt::Debug;
 use core::ops::{Add, Div, Mul, Neg, Sub};
 
-/// A deterministic number type for geometry.
+/// A deterministic number type for geometry: `f64`, or [`crate::Fixed`] for cores without an
+/// FPU. The engines are generic over it (`Engine::<S>`), so code written over `S: Scalar` runs
+/// on either.
 ///
 /// Implementations must give bit-identical results on every target for the same inputs.
+///
+/// # Examples
+///
+/// ```
+/// use zetafill::{index_words, rng_from_seed, Engine, Fixed, Params, Placed, Region, Scalar, Stop, Storage};
+///
+/// /// The largest circle's radius after a short fill, on scalar `S`.
+/// fn largest<S: Scalar>() -> f64 {
+///     let mut shapes = [Placed::<S>::default(); 20];
+///     let mut index = [0u32; index_words(20)];
+///     let storage = Storage { shapes: &mut shapes, index: &mut index, coverage: &mut [] };
+///     let region = Region::Circle { radius: 100.0 };
+///     let mut engine = Engine::<S>::new(Params::circles(1.3, 1.0), region, storage).expect("valid");
+///     engine.run(&mut rng_from_seed(3), &Stop { count: Some(20), ..Stop::default() }, |_| {});
+///     engine.placed()[0].scale.to_f64()
+/// }
+/// // The first circle's radius comes from its area, the same on both scalars to within the
+/// // fixed-point resolution; positions may differ between scalars.
+/// assert!((largest::<f64>() - largest::<Fixed>()).abs() < 1e-6);
+/// assert_eq!(f64::from_f64(0.25).sqrt(), 0.5);
+/// ```
 pub trait Scalar:
     Copy
     + Default

@@ -18,7 +18,18 @@ include!("zeta_math.rs");
 
 include!(concat!(env!("OUT_DIR"), "/zeta_table.rs"));
 
-/// What was wrong with the arguments of a zeta computation.
+/// What was wrong with the arguments of a zeta computation ([`crate::AreaSequence::new`]).
+///
+/// # Examples
+///
+/// ```
+/// use zetafill::{AreaSequence, ZetaError};
+///
+/// assert_eq!(AreaSequence::new(100.0, 1.0, 1.0).err(), Some(ZetaError::Exponent));
+/// assert_eq!(AreaSequence::new(100.0, 1.3, 0.0).err(), Some(ZetaError::Offset));
+/// assert_eq!(AreaSequence::new(100.0, 4.0, 1e-90).err(), Some(ZetaError::Overflow));
+/// assert_eq!(ZetaError::Exponent.to_string(), "the exponent must be a finite number greater than 1");
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub enum ZetaError {

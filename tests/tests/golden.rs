@@ -5,7 +5,8 @@
 //! mapping, libm, the zeta function or the placement rule. That is a version-level event.
 //! To re-mint after an intended change, run
 //! `cargo test -p zetafill-tests --release --test golden -- --nocapture` and copy the printed
-//! values into `GOLDEN`, and say why in the commit.
+//! values into `GOLDEN`, and say why in the commit. The `circles` digest is pinned in the
+//! example of `zetafill::digest` too (`core/src/digest.rs`).
 //! What it guards: the coverage bitmap and the spatial hash must never change a result
 //! (checked below by running with and without them).
 

@@ -224,6 +224,35 @@ impl<S: Scalar> Engine<'_, S> {
     /// placements as [`Engine::step`], far fewer trials late in a fill (see
     /// [`crate::CellSampler`]). Halts at the trial limit, or at once when no cell can hold the
     /// shape. Use one sampler per engine, for every step after the first that uses it.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use zetafill::{cells_for, index_words, rng_from_seed, CellSampler, Engine, Params, Placed, Region, Storage};
+    ///
+    /// let mut shapes = vec![Placed::<f64>::default(); 300];
+    /// let mut index = vec![0u32; index_words(300)];
+    /// let mut pool = vec![[0u64; 4]; cells_for(300)];
+    /// let storage = Storage { shapes: &mut shapes, index: &mut index, coverage: &mut [] };
+    /// let region = Region::Rect { width: 100.0, height: 100.0, periodic: true };
+    /// let mut engine = Engine::new(Params::circles(1.3, 1.0), region, storage)?;
+    /// let mut cells = CellSampler::new(&mut pool)?;
+    /// let mut rng = rng_from_seed(11);
+    /// for i in 0..300 {
+    ///     let p = engine.step_fast(&mut cells, &mut rng)?;
+    ///     assert_eq!(p.index, i);
+    /// }
+    /// // No two circles overlap or touch, across the torus's edges too.
+    /// let placed = engine.placed();
+    /// let wrap = |d: f64| d.abs().min(100.0 - d.abs());
+    /// for (i, a) in placed.iter().enumerate() {
+    ///     for b in &placed[i + 1..] {
+    ///         let (dx, dy) = (wrap(a.x - b.x), wrap(a.y - b.y));
+    ///         assert!(dx * dx + dy * dy > (a.scale + b.scale) * (a.scale + b.scale));
+    ///     }
+    /// }
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
     pub fn step_fast<R: RngCore + ?Sized>(&mut self, cells: &mut CellSampler<'_, S>, rng: &mut R) -> Result<Placement<S>, StepError> {
         let next = self.next_shape()?;
         let Some(clearance) = self.prepare_cells(&next, cells) else {

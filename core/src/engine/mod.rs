@@ -41,7 +41,30 @@ use crate::spatial::SpatialHash;
 use fit::NextShape;
 use rand_core::RngCore;
 
-/// One placement: the shape, its nominal area and the trials it took.
+/// One placement: the shape, its nominal area and the trials it took. [`Engine::step`]
+/// returns it, and [`Engine::run`] hands each one to its callback.
+///
+/// # Examples
+///
+/// ```
+/// use zetafill::{index_words, rng_from_seed, Engine, Params, Placed, Placement, Region, Stop, Storage};
+///
+/// let mut shapes = [Placed::<f64>::default(); 40];
+/// let mut index = [0u32; index_words(40)];
+/// let storage = Storage { shapes: &mut shapes, index: &mut index, coverage: &mut [] };
+/// let region = Region::Rect { width: 100.0, height: 100.0, periodic: false };
+/// let mut engine = Engine::new(Params::circles(1.3, 1.0), region, storage)?;
+/// let mut seen: Vec<Placement<f64>> = Vec::new();
+/// engine.run(&mut rng_from_seed(3), &Stop { count: Some(40), ..Stop::default() }, |p| seen.push(*p));
+/// // In placement order, each with the area of the power law and the trials it took.
+/// for (i, p) in seen.iter().enumerate() {
+///     assert_eq!(p.index, i as u64);
+///     assert_eq!(p.area, engine.area_of(p.index));
+///     assert_eq!(p.shape, engine.placed()[i]);
+/// }
+/// assert_eq!(seen.iter().map(|p| p.trials).sum::<u64>(), engine.stats().trials);
+/// # Ok::<(), zetafill::ParamError>(())
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Placement<S> {
     /// Placement index i (0 for the largest shape).
@@ -54,7 +77,29 @@ pub struct Placement<S> {
     pub trials: u64,
 }
 
-/// Statistics of a fill so far.
+/// Statistics of a fill so far ([`Engine::stats`]).
+///
+/// # Examples
+///
+/// ```
+/// use zetafill::{index_words, rng_from_seed, Engine, Params, Placed, Region, Stats, Stop, Storage};
+///
+/// let mut shapes = [Placed::<f64>::default(); 100];
+/// let mut index = [0u32; index_words(100)];
+/// let storage = Storage { shapes: &mut shapes, index: &mut index, coverage: &mut [] };
+/// let region = Region::Circle { radius: 50.0 };
+/// let mut engine = Engine::new(Params::circles(1.3, 1.0), region, storage)?;
+/// assert_eq!(engine.stats().trials_per_placement(), 0.0);
+/// engine.run(&mut rng_from_seed(5), &Stop { count: Some(100), ..Stop::default() }, |_| {});
+/// let Stats { placed, trials, fill_fraction } = engine.stats();
+/// assert_eq!(placed, 100);
+/// assert!(trials >= 100);
+/// assert_eq!(engine.stats().trials_per_placement(), trials as f64 / 100.0);
+/// // The nominal areas placed, over the region's area.
+/// let sum: f64 = (0..100).map(|i| engine.area_of(i)).sum();
+/// assert!((fill_fraction - sum / engine.total_area()).abs() < 1e-12);
+/// # Ok::<(), zetafill::ParamError>(())
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct Stats {
@@ -77,7 +122,35 @@ impl Stats {
     }
 }
 
-/// The fill engine over caller-provided storage.
+/// The fill engine over caller-provided storage: [`Engine::new`] checks the [`Params`] and
+/// the [`Region`] once, then each [`Engine::step`] places the next shape (a [`Placement`]) and
+/// [`Engine::run`] steps until a [`Stop`] condition holds. [`Engine::step_fast`] and
+/// [`Engine::run_fast`] do the same with the cell sampler ([`crate::CellSampler`]).
+///
+/// # Examples
+///
+/// ```
+/// use zetafill::{index_words, rng_from_seed, Engine, Params, Placed, Region, StepError, Storage};
+///
+/// // Room for 20 shapes, owned by the caller.
+/// let mut shapes = [Placed::<f64>::default(); 20];
+/// let mut index = [0u32; index_words(20)];
+/// let storage = Storage { shapes: &mut shapes, index: &mut index, coverage: &mut [] };
+/// let region = Region::Rect { width: 100.0, height: 100.0, periodic: false };
+/// let mut engine = Engine::new(Params::circles(1.3, 1.0), region, storage)?;
+/// let mut rng = rng_from_seed(7);
+/// for i in 0..20 {
+///     let p = engine.step(&mut rng)?;
+///     assert_eq!(p.index, i);
+///     // A circle's scale is its radius; it lies inside the region.
+///     let r = p.shape.scale;
+///     assert!(p.shape.x >= r && p.shape.x <= 100.0 - r && p.shape.y >= r && p.shape.y <= 100.0 - r);
+/// }
+/// // Every slot is used: the next step is an error, and the fill is intact.
+/// assert_eq!(engine.step(&mut rng), Err(StepError::Capacity { capacity: 20 }));
+/// assert_eq!(engine.placed().len(), 20);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 #[derive(Debug)]
 pub struct Engine<'a, S: Scalar> {
     params: Params,
@@ -94,12 +167,56 @@ pub struct Engine<'a, S: Scalar> {
     period: (S, S),
 }
 
-/// Index words needed for `capacity` shapes: one link each plus `2 * capacity` buckets.
+/// Index words needed for `capacity` shapes: one link each plus `2 * capacity` buckets (the
+/// length of [`Storage::index`]).
+///
+/// # Examples
+///
+/// ```
+/// use zetafill::{index_words, rng_from_seed, Engine, Params, Placed, Region, Stop, Storage};
+///
+/// assert_eq!(index_words(1000), 3001);
+/// // Any index longer than the shape slots works: fewer buckets only make queries slower.
+/// let fill = |index: &mut [u32]| {
+///     let mut shapes = [Placed::<f64>::default(); 50];
+///     let storage = Storage { shapes: &mut shapes, index, coverage: &mut [] };
+///     let region = Region::Rect { width: 100.0, height: 100.0, periodic: false };
+///     let mut engine = Engine::new(Params::circles(1.3, 1.0), region, storage).expect("valid");
+///     engine.run(&mut rng_from_seed(9), &Stop { count: Some(50), ..Stop::default() }, |_| {});
+///     engine.placed().to_vec()
+/// };
+/// assert_eq!(fill(&mut [0; index_words(50)]), fill(&mut [0; 51]));
+/// ```
 pub const fn index_words(capacity: usize) -> usize {
     capacity * 3 + 1
 }
 
-/// The caller-owned storage of an engine.
+/// The caller-owned storage of an engine: a static array on a microcontroller, a `Vec` on a
+/// host. The storage never changes a result, as long as it is large enough.
+///
+/// # Examples
+///
+/// ```
+/// use zetafill::{index_words, rng_from_seed, Engine, ParamError, Params, Placed, Region, Stop, Storage};
+///
+/// let region = Region::Rect { width: 100.0, height: 100.0, periodic: false };
+/// let fill = |coverage: &mut [u64]| {
+///     let mut shapes = vec![Placed::<f64>::default(); 200];
+///     let mut index = vec![0u32; index_words(200)];
+///     let storage = Storage { shapes: &mut shapes, index: &mut index, coverage };
+///     let mut engine = Engine::new(Params::circles(1.3, 1.0), region, storage)?;
+///     engine.run(&mut rng_from_seed(2), &Stop { count: Some(200), ..Stop::default() }, |_| {});
+///     Ok::<_, ParamError>(engine.placed().to_vec())
+/// };
+/// // The coverage bitmap speeds up rejections and changes nothing else.
+/// assert_eq!(fill(&mut [0u64; 4096])?, fill(&mut [])?);
+///
+/// // An index no longer than the shape slots is refused.
+/// let (mut shapes, mut index) = ([Placed::<f64>::default(); 8], [0u32; 8]);
+/// let storage = Storage { shapes: &mut shapes, index: &mut index, coverage: &mut [] };
+/// assert_eq!(Engine::new(Params::circles(1.3, 1.0), region, storage).err(), Some(ParamError::Storage));
+/// # Ok::<(), ParamError>(())
+/// ```
 #[derive(Debug)]
 pub struct Storage<'a, S> {
     /// One slot per shape: its length is the capacity.

@@ -15,7 +15,27 @@
 use crate::geom::{edges, point_in_poly, seg_dist2, seg_seg_dist2, segments_intersect, separated, Geo, Point};
 use crate::scalar::Scalar;
 
-/// What is wrong with a polygon region.
+/// What is wrong with a polygon region ([`PolygonRegion::new`]).
+///
+/// # Examples
+///
+/// ```
+/// use zetafill::{Point, PolygonRegion, RegionError};
+///
+/// let p = Point::new;
+/// // Two vertices are no outline; ring ends must cover every vertex.
+/// assert_eq!(PolygonRegion::new(&[p(0.0, 0.0), p(1.0, 0.0)], &[2]).err(), Some(RegionError::TooFewVertices));
+/// let square = [p(0.0, 0.0), p(1.0, 0.0), p(1.0, 1.0), p(0.0, 1.0)];
+/// assert_eq!(PolygonRegion::new(&square, &[3]).err(), Some(RegionError::TooFewVertices));
+/// assert!(PolygonRegion::new(&square, &[4]).is_ok());
+/// // A bow tie crosses itself.
+/// let bow_tie = [p(0.0, 0.0), p(10.0, 10.0), p(10.0, 0.0), p(0.0, 10.0)];
+/// let e = PolygonRegion::new(&bow_tie, &[4]).err();
+/// assert_eq!(e, Some(RegionError::SelfIntersecting));
+/// assert_eq!(e.map(|e| e.to_string()).as_deref(), Some("the outline crosses itself (or two outlines meet)"));
+/// let nan = [p(0.0, 0.0), p(f64::NAN, 0.0), p(0.0, 1.0)];
+/// assert_eq!(PolygonRegion::new(&nan, &[3]).err(), Some(RegionError::NotFinite));
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub enum RegionError {
@@ -42,17 +62,38 @@ impl core::fmt::Display for RegionError {
 
 impl core::error::Error for RegionError {}
 
-/// A validated polygonal region over caller-owned vertices.
+/// A validated polygonal region over caller-owned vertices: one or more simple rings that do
+/// not cross, filled by the even-odd rule (a ring inside another is a hole).
+///
+/// # Examples
 ///
 /// ```
+/// use std::f64::consts::{FRAC_PI_2, PI};
 /// use zetafill::{Point, PolygonRegion, Region};
 ///
-/// // An L: a 100 x 100 square without its 60 x 60 upper right corner.
+/// // A five-pointed star, outer radius 50, inner radius 20, centred at (50, 50).
+/// let star: Vec<Point<f64>> = (0..10)
+///     .map(|k| {
+///         let a = FRAC_PI_2 + k as f64 * PI / 5.0;
+///         let r = if k % 2 == 0 { 50.0 } else { 20.0 };
+///         Point::new(50.0 + r * a.cos(), 50.0 + r * a.sin())
+///     })
+///     .collect();
+/// let region = PolygonRegion::new(&star, &[10])?;
+/// assert!((region.area() - 5.0 * 50.0 * 20.0 * (PI / 5.0).sin()).abs() < 1e-9);
+///
+/// // A 100 x 100 square with a 20 x 20 hole: two rings, split at index 4.
 /// let p = Point::new;
-/// let points = [p(0.0, 0.0), p(100.0, 0.0), p(100.0, 40.0), p(40.0, 40.0), p(40.0, 100.0), p(0.0, 100.0)];
-/// let ends = [points.len()];
-/// let region = Region::Polygon(PolygonRegion::new(&points, &ends)?);
-/// assert!((region.area() - 6400.0).abs() < 1e-9);
+/// let points = [
+///     p(0.0, 0.0), p(100.0, 0.0), p(100.0, 100.0), p(0.0, 100.0),
+///     p(40.0, 40.0), p(60.0, 40.0), p(60.0, 60.0), p(40.0, 60.0),
+/// ];
+/// let holed = PolygonRegion::new(&points, &[4, 8])?;
+/// assert_eq!(holed.rings().count(), 2);
+/// assert_eq!(holed.area(), 9600.0);
+/// let region = Region::Polygon(holed);
+/// assert!(region.point_inside(p(20.0, 50.0)));
+/// assert!(!region.point_inside(p(50.0, 50.0)));
 /// # Ok::<(), zetafill::RegionError>(())
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -224,7 +265,42 @@ fn conv<S: Scalar>(p: Point<f64>) -> Point<S> {
     Point::new(S::from_f64(p.x), S::from_f64(p.y))
 }
 
-/// A region in its own frame (x right, y up).
+/// A region in its own frame (x right, y up). The power law's area `A` is the region's true
+/// area ([`Region::area`]).
+///
+/// # Examples
+///
+/// Every kind of region, each filled with 30 circles that all lie inside it (on a torus a
+/// circle may cross an edge: it exists again on the other side).
+///
+/// ```
+/// use std::f64::consts::PI;
+/// use zetafill::{index_words, rng_from_seed, Engine, Params, Placed, Point, PolygonRegion, Region, Stop, StopReason, Storage};
+///
+/// let p = Point::new;
+/// let outline = [
+///     p(0.0, 0.0), p(100.0, 0.0), p(100.0, 60.0), p(0.0, 60.0),
+///     p(40.0, 20.0), p(60.0, 20.0), p(60.0, 40.0), p(40.0, 40.0),
+/// ];
+/// let regions = [
+///     (Region::Rect { width: 100.0, height: 60.0, periodic: false }, 6000.0),
+///     (Region::Rect { width: 100.0, height: 60.0, periodic: true }, 6000.0),
+///     (Region::Circle { radius: 50.0 }, PI * 2500.0),
+///     (Region::Annulus { outer: 50.0, inner: 10.0 }, PI * 2400.0),
+///     (Region::Polygon(PolygonRegion::new(&outline, &[4, 8])?), 5600.0),
+/// ];
+/// for (region, area) in regions {
+///     assert!((region.area() - area).abs() < 1e-9);
+///     let mut shapes = [Placed::<f64>::default(); 30];
+///     let mut index = [0u32; index_words(30)];
+///     let storage = Storage { shapes: &mut shapes, index: &mut index, coverage: &mut [] };
+///     let mut engine = Engine::new(Params::circles(1.3, 3.0), region, storage)?;
+///     let stop = Stop { count: Some(30), ..Stop::default() };
+///     assert_eq!(engine.run(&mut rng_from_seed(1), &stop, |_| {}), StopReason::Count);
+///     assert!((0..30).all(|i| engine.geo(i).is_some_and(|g| region.contains(&g, 0.0))));
+/// }
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Region<'a> {
     /// The rectangle `[0, width] x [0, height]`.

@@ -80,7 +80,6 @@
 //! the first seven eighths, so a cell that wakes always has a place among the live ones (a
 //! cell with nowhere to go would take its valid centres out of the union). Nothing allocates
 //! or panics.
-
 //!
 //! ## Where things are
 //! This file holds the sampler and its public face; `cell` packs a cell into its four
@@ -133,6 +132,18 @@ const CELLS_BASE: usize = 4096;
 
 /// Cells to lend a sampler for fills of up to `shapes` shapes: enough that only the budget
 /// (see [`CELLS_PER_SHAPE`]) ever limits it.
+///
+/// # Examples
+///
+/// ```
+/// use zetafill::{cells_for, CellSampler, CellWords};
+///
+/// // 32 bytes a cell; zeroed memory, so the system maps only the cells the sampler writes.
+/// assert_eq!(core::mem::size_of::<CellWords>(), 32);
+/// assert!(cells_for(1000) > cells_for(100));
+/// let mut pool: Vec<CellWords> = vec![[0; 4]; cells_for(1000)];
+/// assert!(CellSampler::<f64>::new(&mut pool).is_ok());
+/// ```
 pub const fn cells_for(shapes: usize) -> usize {
     28 * (shapes + CELLS_BASE)
 }
@@ -144,7 +155,8 @@ const X_BITS: u32 = 27;
 /// The storage of one cell: four 64-bit words (grid position and level, the rejected-candidate
 /// count, the four shapes it knows of, the bound). All-zero words are an empty cell, so a pool
 /// can be zeroed memory, which the operating system maps only where the sampler writes:
-/// `vec![[0u64; 4]; cells_for(n)]` costs the cells used, not the cells lent.
+/// `vec![[0u64; 4]; cells_for(n)]` costs the cells used, not the cells lent. See
+/// [`cells_for`] for an example.
 pub type CellWords = [u64; 4];
 
 /// What the cells clearance to know of the fill: distances to the outside of the region and to
@@ -180,7 +192,7 @@ struct LevelGeom<S> {
     half_diag: S,
 }
 
-/// Counters of the cell sampler, for benchmarks and tests.
+/// Counters of the cell sampler ([`CellSampler::stats`]), for benchmarks and tests.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct CellStats {
@@ -212,22 +224,28 @@ pub struct CellStats {
 /// pass it to [`crate::Engine::step_fast`] or [`crate::Engine::run_fast`]; one sampler serves
 /// one engine.
 ///
+/// # Examples
+///
 /// ```
 /// use zetafill::{cells_for, index_words, rng_from_seed, CellSampler, CellWords, Engine, Params, Placed, Region, Stop, StopReason, Storage};
 ///
 /// let n = 1000;
-/// let mut shapes = vec![Placed::<f64>::default(); n];
-/// let mut index = vec![0u32; index_words(n)];
+/// // Room for n circles and the next one.
+/// let mut shapes = vec![Placed::<f64>::default(); n + 1];
+/// let mut index = vec![0u32; index_words(n + 1)];
 /// // Zeroed memory: the operating system maps only the cells the sampler writes.
-/// let mut pool: Vec<CellWords> = vec![[0; 4]; cells_for(n)];
+/// let mut pool: Vec<CellWords> = vec![[0; 4]; cells_for(n + 1)];
 /// let storage = Storage { shapes: &mut shapes, index: &mut index, coverage: &mut [] };
 /// let region = Region::Rect { width: 200.0, height: 200.0, periodic: false };
 /// let mut engine = Engine::new(Params::circles(1.3, 1.0), region, storage)?;
-/// let mut cells = CellSampler::new(&mut pool).expect("a non-empty pool");
+/// let mut cells = CellSampler::new(&mut pool)?;
 /// let stop = Stop { count: Some(n as u64), ..Stop::default() };
 /// let reason = engine.run_fast(&mut cells, &mut rng_from_seed(1), &stop, |_| {});
 /// assert_eq!(reason, StopReason::Count);
-/// # Ok::<(), zetafill::ParamError>(())
+/// // Every centre where circle n fits lies in a live cell: a small part of the region.
+/// assert!(engine.prepare_fast(&mut cells));
+/// assert!(cells.live_area() < 0.1 * engine.total_area());
+/// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 #[derive(Debug)]
 pub struct CellSampler<'c, S> {
@@ -273,9 +291,26 @@ pub struct CellSampler<'c, S> {
 }
 
 /// Why a cell sampler could not be set up: its storage is empty (or beyond `u32` indices).
+///
+/// # Examples
+///
+/// ```
+/// use zetafill::{CellSampler, NoCells};
+///
+/// assert_eq!(CellSampler::<f64>::new(&mut []).err(), Some(NoCells));
+/// assert_eq!(NoCells.to_string(), "the cell sampler needs at least one cell");
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct NoCells;
+
+impl core::fmt::Display for NoCells {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.write_str("the cell sampler needs at least one cell")
+    }
+}
+
+impl core::error::Error for NoCells {}
 
 impl<'c, S: Scalar> CellSampler<'c, S> {
     /// A sampler over `pool` (at least one cell; the README gives the cells a fill needs per
@@ -330,7 +365,8 @@ impl<'c, S: Scalar> CellSampler<'c, S> {
         self.weight as f64 * (g.w * g.h).to_f64()
     }
 
-    /// The counters so far.
+    /// The counters so far, for benchmarks and tests
+    /// ([`CellStats`](crate::internals::sampler::CellStats)).
     pub fn stats(&self) -> CellStats {
         let mut s = self.stats;
         s.live = self.live();

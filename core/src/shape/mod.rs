@@ -21,9 +21,41 @@ pub const BLOB_VERTICES: usize = 32;
 const _: () = assert!(BLOB_VERTICES <= MAX_VERTS, "a blob must fit a polygon's vertex list");
 
 /// Most shapes in a mix.
+///
+/// # Examples
+///
+/// ```
+/// use zetafill::{MixOrder, ShapeKind, ShapeList, MAX_MIX};
+///
+/// assert!(ShapeList::mix(&[ShapeKind::Circle; MAX_MIX], MixOrder::Cycle, 0).is_some());
+/// assert!(ShapeList::mix(&[ShapeKind::Circle; MAX_MIX + 1], MixOrder::Cycle, 0).is_none());
+/// ```
 pub const MAX_MIX: usize = 8;
 
-/// A kind of shape, with its fixed proportions.
+/// A kind of shape, with its fixed proportions. A fill places one kind, or a mix of them
+/// ([`ShapeList`]); the kind maps area to scale and back, and gives the exact outline.
+///
+/// # Examples
+///
+/// ```
+/// use zetafill::{Geo, Point, ShapeKind};
+///
+/// let star = ShapeKind::Star { points: 5, inner: 0.4 };
+/// assert!(star.is_valid());
+/// assert!(!ShapeKind::Star { points: 5, inner: 1.5 }.is_valid());
+/// // Scale (a star's circumradius) and area are each other's inverse.
+/// let scale = star.scale_for_area(50.0);
+/// assert!((star.area_for_scale(scale) - 50.0).abs() < 1e-12);
+/// // Its outline at a place and angle: 10 vertices, none beyond the bounding radius.
+/// let centre = Point::new(20.0, 30.0);
+/// let outline: Geo<f64> = star.geo(centre, scale, 0.3);
+/// assert_eq!(outline.vertices().len(), 10);
+/// let r = star.bounding_radius(scale);
+/// assert!(outline.vertices().iter().all(|v| v.dist2(centre) <= r * r * (1.0 + 1e-12)));
+/// // A ring is tested as two true circles, never a polygon.
+/// let ring = ShapeKind::Ring { inner: 0.5 }.geo(centre, 4.0, 0.0);
+/// assert_eq!(ring, Geo::Ring { c: centre, r: 4.0, inner: 2.0 });
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub enum ShapeKind {
@@ -64,6 +96,35 @@ pub enum ShapeKind {
 }
 
 /// A shape as stored by the engine. `Placed::default()` is an empty slot for storage.
+///
+/// Its kind is not stored: [`crate::Engine::kind_of`] gives it from the placement index, and
+/// [`crate::Engine::geo`] gives the exact outline, the one that was tested.
+///
+/// # Examples
+///
+/// ```
+/// use zetafill::{index_words, rng_from_seed, Engine, Geo, Params, Placed, Point, Region, ShapeKind, Stop, Storage};
+///
+/// let mut shapes = [Placed::<f64>::default(); 30];
+/// let mut index = [0u32; index_words(30)];
+/// let storage = Storage { shapes: &mut shapes, index: &mut index, coverage: &mut [] };
+/// let region = Region::Rect { width: 100.0, height: 100.0, periodic: false };
+/// let params = Params { shape: ShapeKind::Square.into(), rotate: true, ..Params::circles(1.3, 1.0) };
+/// let mut engine = Engine::new(params, region, storage)?;
+/// engine.run(&mut rng_from_seed(8), &Stop { count: Some(30), ..Stop::default() }, |_| {});
+/// for (i, p) in engine.placed().iter().enumerate() {
+///     let Some(Geo::Poly { v, convex: true }) = engine.geo(i) else { panic!("a square is a convex polygon") };
+///     // A square's scale is its half side: its corners lie scale * sqrt(2) from its centre.
+///     let centre = Point::new(p.x, p.y);
+///     assert_eq!(v.len(), 4);
+///     let corner2 = 2.0 * p.scale * p.scale;
+///     assert!(v.iter().all(|q| (q.dist2(centre) - corner2).abs() < 1e-12 * corner2));
+///     // The outline has the area of the power law.
+///     let area = engine.geo(i).map_or(0.0, |g| g.poly_area2() / 2.0);
+///     assert!((area - engine.area_of(i as u64)).abs() < 1e-9 * area);
+/// }
+/// # Ok::<(), zetafill::ParamError>(())
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
 pub struct Placed<S> {
     /// Centre x.
@@ -78,6 +139,21 @@ pub struct Placed<S> {
 }
 
 /// How a mix of shapes is taken.
+///
+/// # Examples
+///
+/// ```
+/// use zetafill::{MixOrder, ShapeKind, ShapeList};
+///
+/// let kinds = [ShapeKind::Circle, ShapeKind::Square, ShapeKind::Triangle];
+/// let cycle = ShapeList::mix(&kinds, MixOrder::Cycle, 0).expect("three kinds");
+/// assert_eq!(cycle.kind_of(4), ShapeKind::Square);
+/// // A random choice is fixed by the salt and the index, and takes every kind.
+/// let random = ShapeList::mix(&kinds, MixOrder::Random, 42).expect("three kinds");
+/// let again = random.clone();
+/// assert!((0..100).all(|i| random.kind_of(i) == again.kind_of(i)));
+/// assert!(kinds.iter().all(|k| (0..100).any(|i| random.kind_of(i) == *k)));
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub enum MixOrder {
@@ -90,7 +166,25 @@ pub enum MixOrder {
 /// The shape, or mix of shapes, of a fill. The area sequence is the same whatever the mix.
 ///
 /// It holds 1..=[`MAX_MIX`] kinds in a fixed-capacity vector, so it is `Clone` but not `Copy`:
-/// the engine keeps one and lends it.
+/// the engine keeps one and lends it. A single kind converts into a list.
+///
+/// # Examples
+///
+/// ```
+/// use zetafill::{MixOrder, ShapeKind, ShapeList};
+///
+/// let one: ShapeList = ShapeKind::Triangle.into();
+/// assert_eq!(one.kinds(), &[ShapeKind::Triangle]);
+/// assert_eq!(one.kind_of(1234), ShapeKind::Triangle);
+///
+/// // The paper's Figure 7: circles and squares in turn.
+/// let mix = ShapeList::mix(&[ShapeKind::Circle, ShapeKind::Square], MixOrder::Cycle, 0).expect("two kinds");
+/// assert_eq!([mix.kind_of(0), mix.kind_of(1), mix.kind_of(2)], [ShapeKind::Circle, ShapeKind::Square, ShapeKind::Circle]);
+/// assert!(mix.is_valid());
+/// // An empty list is no mix; neither is one with a bad proportion.
+/// assert!(ShapeList::mix(&[], MixOrder::Cycle, 0).is_none());
+/// assert!(!ShapeList::from(ShapeKind::Ring { inner: 1.0 }).is_valid());
+/// ```
 #[derive(Clone, Debug, PartialEq)]
 pub struct ShapeList {
     kinds: heapless::Vec<ShapeKind, MAX_MIX>,

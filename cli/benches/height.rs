@@ -42,7 +42,7 @@ fn main() {
                 dpi: 96.0,
                 pixels: Some(pixels),
             };
-            let size = grid(doc.extent(), &raster).unwrap_or_else(|e| panic!("{e}"));
+            let size = grid(doc.extent(), &raster).unwrap_or_else(|e| panic!("{e:?}"));
             // The fastest of three runs.
             let (mut best, mut bytes) = (f64::MAX, 0);
             for _ in 0..3 {

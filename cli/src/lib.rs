@@ -51,6 +51,6 @@ pub fn run(cli: Cli) -> Result<(), CliError> {
         Command::Territory(a) => cmd::territory::run(&plan::territory::resolve(&a)?),
         Command::Tile(a) => cmd::tile::run(&plan::tile::resolve(&a)?),
         Command::Stats(s) => cmd::stats::run(&plan::stats::resolve(&s)?),
-        Command::Machines(m) => cmd::machines::run(&m),
+        Command::Machines(m) => cmd::machines::run(&plan::machines::resolve(&m)),
     }
 }

@@ -10,6 +10,7 @@ use crate::error::CliError;
 use crate::model::doc::{FillDoc, ParamsDoc, ShapeDoc, ShapeParamsDoc, StatsDoc};
 use crate::output;
 use crate::plan::fill::{first_shape_error, first_two_error, halt_advice, param_error, FillDraw, FillPlan, FillRun};
+use crate::plan::raster::{height_map_error, png_error};
 use region::RegionData;
 use zetafill::StepError;
 use zetafill::{index_words, CellSampler, Engine, Geo, Params, Placed, Region, ShapeKind, Stop, StopReason, Storage};
@@ -291,7 +292,7 @@ pub fn render(doc: &FillDoc, format: Format, d: &FillDraw) -> Result<Vec<u8>, Cl
     if d.voronoi {
         let look = cobble_look(doc, d);
         return match format {
-            Format::Png => d.raster.render(&crate::cmd::cobble::svg(doc, &look)?),
+            Format::Png => d.raster.render(&crate::cmd::cobble::svg(doc, &look)?).map_err(png_error),
             _ => crate::cmd::cobble::svg(doc, &look),
         };
     }
@@ -313,11 +314,12 @@ pub fn render(doc: &FillDoc, format: Format, d: &FillDraw) -> Result<Vec<u8>, Cl
         Format::Png => match d.relief {
             Some(relief) => {
                 let command = format!("{} --relief {}{}", output::svg::command_line(doc), relief.name(), d.raster.flag());
-                output::height::render(doc, relief, output::height::grid(doc.extent(), &d.raster)?, &command)?
+                let size = output::height::grid(doc.extent(), &d.raster).map_err(height_map_error)?;
+                output::height::render(doc, relief, size, &command)?
             }
             None => {
                 let svg = output::svg::render(doc, &svg_options(doc, d)?);
-                d.raster.render(&svg)?
+                d.raster.render(&svg).map_err(png_error)?
             }
         },
     })

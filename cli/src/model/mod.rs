@@ -9,6 +9,8 @@
 //! - [`clip`]: exact clipping of paths to a rectangle (circles into arcs, polygons into open
 //!   polylines).
 //! - [`place`](mod@place): [`Placement`] scales and moves a drawing onto a bed or a page.
+//! - [`tile`]: the fractal tile's parameters and plane, and the layouts of copies of its
+//!   picture (mosaic, planet).
 //!
 //! [`fill::picture`] draws a fill as a [`Picture`], [`fill::from_fill`] as pen strokes; the writers of
 //! [`crate::output`] turn drawings into SVG or G-code. Any mode that produces lines can write
@@ -41,6 +43,7 @@ pub mod periodic;
 pub mod picture;
 pub mod place;
 pub mod shape;
+pub mod tile;
 
 pub use clip::{clip_path, clip_segment};
 pub use path::{arc_extremes, polar, Bounds, Drawing, Path, Pt};

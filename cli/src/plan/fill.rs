@@ -13,9 +13,10 @@ use crate::io::write::Dest;
 use crate::model::fill::BuildOptions;
 use crate::output::height::Relief;
 use crate::output::palette::{ColorBy, Colour, Palette};
-use crate::output::png::{only_png, Raster};
+use crate::output::png::Raster;
 use crate::output::svg::Style;
 use crate::plan::plot::{GcodePlan, PagePlan};
+use crate::plan::raster::{self, only_png};
 use zetafill::ParamError;
 use zetafill::{FirstShape, FirstTwoError, MixOrder, Params, ShapeList, Stop};
 
@@ -182,7 +183,7 @@ pub fn resolve_as(a: &FillArgs, format: Format) -> Result<(FillRun, FillDraw), C
     if format != Format::Png && a.relief.is_some() {
         return Err(only_png("--relief"));
     }
-    a.raster.check(format == Format::Png)?;
+    raster::check(&a.raster, format == Format::Png)?;
     // A palette also picks the pens of a G-code plot with --layers colours.
     let colour_layers = a.plot.layers == Layers::Colours;
     let pens = format == Format::Gcode && colour_layers && a.colour.background.is_none();

@@ -5,7 +5,10 @@
 
 pub mod fill;
 pub mod line;
+pub mod machines;
 pub mod plot;
+pub mod raster;
+pub mod region;
 pub mod stats;
 pub mod territory;
 pub mod tile;

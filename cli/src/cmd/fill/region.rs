@@ -4,6 +4,7 @@
 use crate::args::spec::RegionSpec;
 use crate::error::CliError;
 use crate::model::doc::RegionDoc;
+use crate::plan::region::{not_periodic, outline_error, polygon_error};
 use zetafill::{PolygonRegion, Region};
 
 /// A region resolved from its flag: owns the outline vertices the core borrows.
@@ -17,7 +18,7 @@ impl RegionData {
     pub fn load(spec: &RegionSpec) -> Result<Self, CliError> {
         let spec = match spec {
             RegionSpec::Svg(path) => {
-                let (points, ends) = crate::io::svgin::read_outline(path)?;
+                let (points, ends) = crate::io::svgin::read_outline(path).map_err(|e| outline_error(path, e))?;
                 outers_first(&points, &ends)
             }
             RegionSpec::Polygon { points, ends } => outers_first(points, ends),
@@ -29,10 +30,7 @@ impl RegionData {
     /// The core region (validating polygons).
     pub fn region(&self, periodic: bool) -> Result<Region<'_>, CliError> {
         if periodic && !matches!(self.spec, RegionSpec::Rect { .. }) {
-            return Err(CliError::arg(
-                "--periodic",
-                "only rect:W:H regions can be periodic; remove --periodic or use a rect region",
-            ));
+            return Err(not_periodic());
         }
         Ok(match &self.spec {
             RegionSpec::Rect { width, height } => Region::Rect {
@@ -45,9 +43,7 @@ impl RegionData {
                 outer: *outer,
                 inner: *inner,
             },
-            RegionSpec::Polygon { points, ends } => Region::Polygon(
-                PolygonRegion::new(points, ends).map_err(|e| CliError::arg("--region", format!("{e}; give a simple outline")))?,
-            ),
+            RegionSpec::Polygon { points, ends } => Region::Polygon(PolygonRegion::new(points, ends).map_err(polygon_error)?),
             RegionSpec::Svg(_) => return Err(CliError::Io("internal: SVG region not loaded".into())),
         })
     }

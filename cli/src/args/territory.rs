@@ -5,11 +5,11 @@ use crate::args::colour::ColourArgs;
 use crate::args::common::{OutputArgs, SeedArgs};
 use crate::args::plot::PlotArgs;
 use crate::args::raster::RasterArgs;
-use crate::args::spec::{self, RegionSpec};
-use crate::error::CliError;
+use crate::args::spec;
 use crate::geometry::voronoi::Pt;
+use crate::model::region::RegionSpec;
 use clap::{Args, ValueEnum};
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 /// Largest number of sites one run may hold.
 pub const MAX_POINTS: usize = 10_000_000;
@@ -29,7 +29,7 @@ pub enum RenderArg {
 
 /// Output formats of `zetafill territory`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum TerritoryFormat {
+pub enum TerritoryFormatArg {
     /// SVG drawing in mm.
     Svg,
     /// PNG preview (the SVG rendered).
@@ -38,15 +38,6 @@ pub enum TerritoryFormat {
     Json,
     /// G-code for a plotter or laser (the boundaries, or every edge with --render cells).
     Gcode,
-}
-
-impl TerritoryFormat {
-    /// The format: `--format`, or else the extension of `path` (SVG for `-`).
-    pub fn resolve(given: Option<TerritoryFormat>, path: &Path) -> Result<TerritoryFormat, CliError> {
-        use TerritoryFormat::*;
-        let known = [("svg", Svg), ("png", Png), ("json", Json), ("gcode", Gcode), ("nc", Gcode)];
-        crate::args::format::format_for(given, path, Svg, &known)
-    }
 }
 
 /// Arguments of `zetafill territory`. Territory drawings have no pages, size layers or
@@ -106,7 +97,7 @@ pub struct TerritoryArgs {
     pub colors: Vec<([f64; 3], Option<[f64; 3]>)>,
     /// Where the output goes.
     #[command(flatten)]
-    pub output: OutputArgs<TerritoryFormat>,
+    pub output: OutputArgs<TerritoryFormatArg>,
     /// SVG: stroke width of the boundaries in mm.
     #[arg(long = "pen-width", default_value_t = 0.3, value_parser = spec::positive)]
     pub pen_width: f64,

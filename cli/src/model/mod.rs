@@ -9,6 +9,7 @@
 //! - [`clip`]: exact clipping of paths to a rectangle (circles into arcs, polygons into open
 //!   polylines).
 //! - [`place`](mod@place): [`Placement`] scales and moves a drawing onto a bed or a page.
+//! - [`region`]: a region as given, before its outline is read.
 //! - [`tile`]: the fractal tile's parameters and plane, and the layouts of copies of its
 //!   picture (mosaic, planet).
 //!
@@ -42,6 +43,7 @@ pub mod path;
 pub mod periodic;
 pub mod picture;
 pub mod place;
+pub mod region;
 pub mod shape;
 pub mod tile;
 

@@ -4,17 +4,24 @@
 //! run's own outcomes that name a flag: a parameter the core refuses, a first segment that
 //! does not fit, a halt.
 
-use crate::args::format::Format;
-use crate::args::line::{LineArgs, RenderArg};
+use crate::args::line::{LineArgs, RenderArg, MAX_SEGMENTS};
 use crate::args::plot::{Layers, PlotArgs, FOR_GCODE};
 use crate::error::CliError;
 use crate::io::write::Dest;
 use crate::output::palette::{ColorBy, Colour, Palette};
 use crate::output::png::Raster;
 use crate::output::svg::Style;
+use crate::plan::format::Format;
 use crate::plan::plot::GcodePlan;
 use crate::plan::raster;
+use crate::plan::Unit;
 use zetafill::{Interval, LineParams, ParamError, Stop};
+
+/// What a 1D run places, and the most one run may hold.
+pub const SEGMENTS: Unit = Unit {
+    plural: "segments",
+    max: MAX_SEGMENTS,
+};
 
 /// A checked `zetafill line`: where it writes, what it runs and how it draws.
 #[derive(Debug, Clone)]

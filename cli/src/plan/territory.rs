@@ -8,14 +8,15 @@
 //! has, so the first error reported stays the same.
 
 use crate::args::plot::{Layers, PlotArgs, FOR_GCODE};
-use crate::args::spec::RegionSpec;
-use crate::args::territory::{RenderArg, TerritoryArgs, TerritoryFormat};
+use crate::args::territory::{RenderArg, TerritoryArgs};
 use crate::error::CliError;
 use crate::geometry::site::SiteError;
 use crate::geometry::voronoi::Pt;
 use crate::io::write::Dest;
+use crate::model::region::RegionSpec;
 use crate::output::palette::{ColorBy, Colour, Palette};
 use crate::output::png::Raster;
+use crate::plan::format::TerritoryFormat;
 use crate::plan::plot::GcodePlan;
 use crate::plan::raster;
 use std::path::{Path, PathBuf};

@@ -5,7 +5,7 @@
 //! drawing of too many pieces.
 
 use crate::args::plot::{Layers, PlotArgs, FOR_GCODE, GCODE_FLAGS};
-use crate::args::tile::{LayoutArg, RenderArg, StyleArg, TileArgs, TileFormat};
+use crate::args::tile::{LayoutArg, RenderArg, StyleArg, TileArgs};
 use crate::error::CliError;
 use crate::io::write::Dest;
 use crate::model::tile::{Arrangement, Layout, LayoutError, Render, SpecError, Style, TileSpec, MAX_DISCS};
@@ -13,6 +13,7 @@ use crate::output::height::Relief;
 use crate::output::num;
 use crate::output::palette::{ColorBy, Colour, Palette};
 use crate::output::png::Raster;
+use crate::plan::format::TileFormat;
 use crate::plan::plot::GcodePlan;
 use crate::plan::raster::{self, only_png};
 

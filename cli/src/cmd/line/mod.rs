@@ -2,10 +2,10 @@
 //! interval of length `L` (Shier and Bourke, *An Algorithm for Random Fractal Filling of Space*, Figure 3), run by the core's [`zetafill::LineEngine`], and
 //! its outputs: SVG (dashes, circles, bars or zoom rows), PNG, JSON, CSV and the digest.
 
-use crate::args::format::Format;
-use crate::cmd::stopping::{self, Unit};
+use crate::cmd::stopping;
 use crate::error::CliError;
-use crate::plan::line::{first_segment_error, halt_advice, param_error, LineDraw, LinePlan, LineRun};
+use crate::plan::format::Format;
+use crate::plan::line::{first_segment_error, halt_advice, param_error, LineDraw, LinePlan, LineRun, SEGMENTS};
 use crate::plan::plot::GcodePlan;
 use crate::plan::raster::png_error;
 use std::fmt::Write as _;
@@ -15,16 +15,9 @@ use zetafill::{line_index_words, LineEngine, LineStorage, Segment, StopReason};
 pub mod doc;
 pub mod picture;
 
-pub use crate::args::line::MAX_SEGMENTS;
 pub use doc::{IntervalDoc, LineDoc, LineParamsDoc, LineStatsDoc, SegmentDoc};
 use picture::drawing_flags;
 pub use picture::{command_line, picture, plotter_picture, LineSvgOptions};
-
-/// What a 1D run places.
-const SEGMENTS: Unit = Unit {
-    plural: "segments",
-    max: MAX_SEGMENTS,
-};
 
 /// Runs the fill and returns the document (and the halt, if any). Nothing is written.
 pub fn compute(a: &LineRun) -> Result<(LineDoc, Option<StepError>), CliError> {

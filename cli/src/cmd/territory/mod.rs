@@ -27,7 +27,7 @@ use source::load_source;
 use std::io::IsTerminal;
 use std::path::Path;
 
-pub use crate::args::territory::{TerritoryFormat, MAX_POINTS};
+use crate::plan::format::TerritoryFormat;
 
 /// The picture as G-code: its strokes (boundary polylines, with `cells` every other Voronoi
 /// edge, with `--boundary` the region's outline) placed on the machine's bed by the region's

@@ -8,12 +8,12 @@
 pub mod model;
 pub mod render;
 
-use crate::args::tile::TileFormat;
 use crate::error::CliError;
 use crate::model::picture::ClipDef;
 use crate::model::tile::{Layout, Render, Sheet, Style, TileSpec};
 use crate::model::{Bounds, Item, Layer, Paint, Path, Picture, Shape};
 use crate::output::num;
+use crate::plan::format::TileFormat;
 use crate::plan::raster::{height_map_error, png_error};
 use crate::plan::tile::{layout_name, seams_apart, too_many_pieces, TileDraw, TilePlan, TileRun};
 use model::Tile;

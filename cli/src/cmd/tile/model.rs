@@ -1,6 +1,7 @@
 //! The scale-periodic tile of the "Fractal Tiles" post: discs in a W x H tile that matches
 //! itself left and right, two half-scale copies of itself along its top, and (as one of the
-//! halves) a double-scale copy along its bottom.
+//! halves) a double-scale copy along its bottom. Its parameters and the copies of the plane
+//! around it are [`TileSpec`] ([`crate::model::tile`]); this module grows it.
 //!
 //! ## The plane the tile lives in
 //! Row 0 is the tile repeated with period W over `0 <= y < H`; row r is the tile scaled by

@@ -17,7 +17,7 @@ fn fill(args: &[&str]) -> zetafill_cli::model::doc::FillDoc {
         panic!("not fill")
     };
     zetafill_cli::cmd::fill::compute(
-        &zetafill_cli::plan::fill::resolve_as(&a, zetafill_cli::args::format::Format::Json)
+        &zetafill_cli::plan::fill::resolve_as(&a, zetafill_cli::plan::format::Format::Json)
             .unwrap_or_else(|e| panic!("{e}"))
             .0,
     )
@@ -42,7 +42,7 @@ fn main() {
                 dpi: 96.0,
                 pixels: Some(pixels),
             };
-            let size = grid(doc.extent(), &raster).unwrap_or_else(|e| panic!("{e}"));
+            let size = grid(doc.extent(), &raster).unwrap_or_else(|e| panic!("{e:?}"));
             // The fastest of three runs.
             let (mut best, mut bytes) = (f64::MAX, 0);
             for _ in 0..3 {

@@ -25,7 +25,7 @@ fn fill(args: &[&str]) -> zetafill_cli::model::doc::FillDoc {
         panic!("not fill")
     };
     match zetafill_cli::cmd::fill::compute(
-        &zetafill_cli::plan::fill::resolve_as(&a, zetafill_cli::args::format::Format::Json)
+        &zetafill_cli::plan::fill::resolve_as(&a, zetafill_cli::plan::format::Format::Json)
             .unwrap_or_else(|e| panic!("{e}"))
             .0,
     ) {

@@ -7,8 +7,9 @@
 //! README. Measures only; the test suite asserts nothing about time.
 
 use std::time::Instant;
-use zetafill_cli::cmd::tile::model::{grow, TileSpec};
-use zetafill_cli::cmd::tile::render::{tile_pieces, Render, Style};
+use zetafill_cli::cmd::tile::model::grow;
+use zetafill_cli::cmd::tile::render::tile_pieces;
+use zetafill_cli::model::tile::{Render, Style, TileSpec};
 
 fn main() {
     println!("| render | radius (mm) | tries | discs | twins | grow (ms) | tries/s | picture (ms) | pieces |");

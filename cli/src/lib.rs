@@ -1,7 +1,8 @@
-//! The `zetafill` command-line tool: argument parsing (clap, [`args`]), one module per
-//! subcommand ([`cmd`]), the drawing model ([`model`]), shared geometry ([`geometry`]), one
-//! writer per output format ([`output`]), the file system ([`io`]), and the single place where
-//! outcomes become exit codes ([`run_main`]).
+//! The `zetafill` command-line tool: argument parsing (clap, [`args`]), one checked plan per
+//! command ([`plan`]), one module per subcommand ([`cmd`]), the drawing model ([`model`]),
+//! shared geometry ([`geometry`]), one writer per output format ([`output`]), the file system
+//! ([`io`]), and the single place where outcomes become exit codes ([`run_main`]). Which of
+//! them may use which is in docs/architecture.md.
 
 #![deny(missing_docs)]
 
@@ -51,6 +52,6 @@ pub fn run(cli: Cli) -> Result<(), CliError> {
         Command::Territory(a) => cmd::territory::run(&plan::territory::resolve(&a)?),
         Command::Tile(a) => cmd::tile::run(&plan::tile::resolve(&a)?),
         Command::Stats(s) => cmd::stats::run(&plan::stats::resolve(&s)?),
-        Command::Machines(m) => cmd::machines::run(&m),
+        Command::Machines(m) => cmd::machines::run(&plan::machines::resolve(&m)),
     }
 }

@@ -23,7 +23,7 @@ fn fill_doc(args: &[&str]) -> FillDoc {
         panic!("not fill")
     };
     let (doc, halt) = fill::compute(
-        &zetafill_cli::plan::fill::resolve_as(&f, zetafill_cli::args::format::Format::Json)
+        &zetafill_cli::plan::fill::resolve_as(&f, zetafill_cli::plan::format::Format::Json)
             .unwrap_or_else(|e| panic!("{e}"))
             .0,
     )

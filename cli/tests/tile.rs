@@ -604,7 +604,7 @@ proptest::proptest! {
         let Ok(zetafill_cli::Cli { command: zetafill_cli::Command::Tile(a) }) = zetafill_cli::Cli::try_parse_from(&args) else {
             panic!("{args:?} does not parse")
         };
-        let json = zetafill_cli::args::tile::TileFormat::Json;
+        let json = zetafill_cli::plan::format::TileFormat::Json;
         match zetafill_cli::plan::tile::resolve_as(&a, json).and_then(|(run, draw)| zetafill_cli::cmd::tile::output(&run, &draw, json)) {
             Err(e) => proptest::prop_assert_eq!(e.exit_code(), 2, "{:?}: {}", args, e),
             Ok((_, bytes)) => {

@@ -106,7 +106,7 @@ pub fn run_scene(s: &Scene, coverage_words: usize) -> (u64, u64, Vec<Placed<f64>
 
 /// The `zetafill fill` arguments of a scene (without output).
 pub fn scene_args(s: &Scene) -> Vec<String> {
-    let shape = zetafill_cli::args::spec::shape_name(&s.shape);
+    let shape = zetafill_cli::model::doc::shape_name(&s.shape);
     let mut v: Vec<String> = vec![
         "zetafill".into(),
         "fill".into(),

@@ -10,11 +10,11 @@ fn json_round_trips_the_core_bits() {
         let mut args = scene_args(scene);
         args.extend(["-o".into(), "-".into()]);
         let a = parse_fill(&args);
-        let (run, draw) = zetafill_cli::plan::fill::resolve_as(&a, zetafill_cli::args::format::Format::Json)
+        let (run, draw) = zetafill_cli::plan::fill::resolve_as(&a, zetafill_cli::plan::format::Format::Json)
             .unwrap_or_else(|e| panic!("{}: {e}", scene.name));
         let (doc, halt) = zetafill_cli::cmd::fill::compute(&run).unwrap_or_else(|e| panic!("{}: {e}", scene.name));
         assert!(halt.is_none());
-        let bytes = zetafill_cli::cmd::fill::render(&doc, zetafill_cli::args::format::Format::Json, &draw).unwrap_or_default();
+        let bytes = zetafill_cli::cmd::fill::render(&doc, zetafill_cli::plan::format::Format::Json, &draw).unwrap_or_default();
         let v: serde_json::Value = serde_json::from_slice(&bytes).unwrap_or_default();
         let (_, _, core) = run_scene(scene, 0);
         let shapes = v["shapes"].as_array().cloned().unwrap_or_default();
@@ -28,7 +28,7 @@ fn json_round_trips_the_core_bits() {
                 assert_eq!(angle.to_bits(), p.angle.to_bits());
             }
         }
-        let digest = zetafill_cli::cmd::fill::render(&doc, zetafill_cli::args::format::Format::Digest, &draw).unwrap_or_default();
+        let digest = zetafill_cli::cmd::fill::render(&doc, zetafill_cli::plan::format::Format::Digest, &draw).unwrap_or_default();
         let (n, h, _) = run_scene(scene, 0);
         assert_eq!(String::from_utf8_lossy(&digest), format!("{n} {h:016x}\n"));
     }
@@ -44,9 +44,9 @@ fn fixed_point_digest_matches_the_core() {
     args.extend(["--scalar".into(), "fixed".into(), "-o".into(), "-".into()]);
     let a = parse_fill(&args);
     let (run, draw) =
-        zetafill_cli::plan::fill::resolve_as(&a, zetafill_cli::args::format::Format::Digest).unwrap_or_else(|e| panic!("{e}"));
+        zetafill_cli::plan::fill::resolve_as(&a, zetafill_cli::plan::format::Format::Digest).unwrap_or_else(|e| panic!("{e}"));
     let (doc, _) = zetafill_cli::cmd::fill::compute(&run).unwrap_or_else(|e| panic!("{e}"));
-    let line = zetafill_cli::cmd::fill::render(&doc, zetafill_cli::args::format::Format::Digest, &draw).unwrap_or_default();
+    let line = zetafill_cli::cmd::fill::render(&doc, zetafill_cli::plan::format::Format::Digest, &draw).unwrap_or_default();
     let cap = scene.count as usize;
     let mut shapes = vec![Placed::<Fixed>::default(); cap];
     let mut index = vec![0u32; index_words(cap)];

@@ -26,7 +26,7 @@ fn render(args_file: &Path) -> (PathBuf, Vec<u8>) {
         .unwrap_or_else(|e| panic!("{}: {e}", args_file.display()))
         .command;
     if let zetafill_cli::Command::Tile(t) = command {
-        let format = zetafill_cli::args::tile::TileFormat::resolve(t.output.format, &t.output.output)
+        let format = zetafill_cli::plan::format::TileFormat::resolve(t.output.format, &t.output.output)
             .unwrap_or_else(|e| panic!("{}: {e}", args_file.display()));
         let (_, bytes) = zetafill_cli::plan::tile::resolve_as(&t, format)
             .and_then(|(run, draw)| zetafill_cli::cmd::tile::output(&run, &draw, format))
@@ -34,7 +34,7 @@ fn render(args_file: &Path) -> (PathBuf, Vec<u8>) {
         return (gallery().join(&t.output.output), bytes);
     }
     if let zetafill_cli::Command::Territory(t) = command {
-        let format = zetafill_cli::args::territory::TerritoryFormat::resolve(t.output.format, &t.output.output)
+        let format = zetafill_cli::plan::format::TerritoryFormat::resolve(t.output.format, &t.output.output)
             .unwrap_or_else(|e| panic!("{}: {e}", args_file.display()));
         let bytes = zetafill_cli::plan::territory::resolve_as(&t, format)
             .and_then(|(run, draw)| zetafill_cli::cmd::territory::output(&run, &draw, format))
@@ -42,8 +42,8 @@ fn render(args_file: &Path) -> (PathBuf, Vec<u8>) {
         return (gallery().join(&t.output.output), bytes);
     }
     if let zetafill_cli::Command::Line(l) = command {
-        let format = zetafill_cli::args::format::Format::resolve(l.output.format, &l.output.output)
-            .unwrap_or(zetafill_cli::args::format::Format::Svg);
+        let format = zetafill_cli::plan::format::Format::resolve(l.output.format, &l.output.output)
+            .unwrap_or(zetafill_cli::plan::format::Format::Svg);
         let (run, draw) = zetafill_cli::plan::line::resolve_as(&l, format).unwrap_or_else(|e| panic!("{}: {e}", args_file.display()));
         let (doc, halt) = zetafill_cli::cmd::line::compute(&run).unwrap_or_else(|e| panic!("{}: {e}", args_file.display()));
         assert!(halt.is_none(), "{} halted", args_file.display());
@@ -52,7 +52,7 @@ fn render(args_file: &Path) -> (PathBuf, Vec<u8>) {
     }
     let a = parse_fill(&args);
     let format =
-        zetafill_cli::args::format::Format::resolve(a.output.format, &a.output.output).unwrap_or(zetafill_cli::args::format::Format::Svg);
+        zetafill_cli::plan::format::Format::resolve(a.output.format, &a.output.output).unwrap_or(zetafill_cli::plan::format::Format::Svg);
     let (run, draw) = zetafill_cli::plan::fill::resolve_as(&a, format).unwrap_or_else(|e| panic!("{}: {e}", args_file.display()));
     let (doc, halt) = zetafill_cli::cmd::fill::compute(&run).unwrap_or_else(|e| panic!("{}: {e}", args_file.display()));
     assert!(halt.is_none(), "{} halted", args_file.display());

@@ -3,11 +3,12 @@
 
 use crate::args::colour::ColourArgs;
 use crate::args::common::{OutputArgs, RunArgs};
-use crate::args::format::Format;
+use crate::args::format::FormatArg;
 use crate::args::plot::PlotArgs;
 use crate::args::raster::{RasterArgs, ReliefArg};
-use crate::args::spec::{self, RegionSpec};
+use crate::args::spec;
 use crate::args::style::StyleArg;
+use crate::model::region::RegionSpec;
 use clap::{Args, ValueEnum};
 
 pub use crate::args::common::{DEFAULT_MAX_TRIALS, MAX_SHAPES};
@@ -112,7 +113,7 @@ pub struct FillArgs {
     pub scalar: ScalarArg,
     /// Where the output goes.
     #[command(flatten)]
-    pub output: OutputArgs<Format>,
+    pub output: OutputArgs<FormatArg>,
     /// SVG: outline (plotters) or filled.
     #[arg(long, value_enum, default_value = "outline")]
     pub style: StyleArg,

@@ -3,7 +3,7 @@
 
 use crate::args::colour::ColourArgs;
 use crate::args::common::{OutputArgs, RunArgs};
-use crate::args::format::Format;
+use crate::args::format::FormatArg;
 use crate::args::plot::PlotArgs;
 use crate::args::raster::RasterArgs;
 use crate::args::spec;
@@ -60,7 +60,7 @@ pub struct LineArgs {
     pub run: RunArgs,
     /// Where the output goes.
     #[command(flatten)]
-    pub output: OutputArgs<Format>,
+    pub output: OutputArgs<FormatArg>,
     /// SVG: how segments are drawn.
     #[arg(long, value_enum, default_value = "circles")]
     pub render: RenderArg,

@@ -1,9 +1,8 @@
 //! The PNG flags: the size of a raster (`--dpi`, `--pixels`) and the height-map profile
 //! (`--relief`).
 
-use crate::error::CliError;
 use crate::output::height::Relief;
-use crate::output::png::{only_png, Raster};
+use crate::output::png::Raster;
 
 /// `--dpi` / `--pixels`: the size of a PNG.
 #[derive(Debug, Clone, clap::Args)]
@@ -22,14 +21,6 @@ impl RasterArgs {
         Raster {
             dpi: self.dpi,
             pixels: self.pixels,
-        }
-    }
-
-    /// Refuses `--pixels` when the output is not a PNG.
-    pub fn check(&self, png: bool) -> Result<(), CliError> {
-        match self.pixels {
-            Some(_) if !png => Err(only_png("--pixels")),
-            _ => Ok(()),
         }
     }
 }

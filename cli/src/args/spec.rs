@@ -2,6 +2,8 @@
 //! Each returns a message that says what is wrong and what to write instead; clap adds the
 //! flag's name and exits with code 2.
 
+use crate::model::doc::shape_name;
+use crate::model::region::RegionSpec;
 use zetafill::{MixOrder, Point, ShapeKind, ShapeList, MAX_MIX};
 
 /// A number that must be finite.
@@ -162,67 +164,6 @@ impl ShapeArg {
             many => format!("mix:{}", many.iter().map(shape_name).collect::<Vec<_>>().join(",")),
         }
     }
-}
-
-/// The name of a shape as written in JSON and on the command line.
-pub fn shape_name(k: &ShapeKind) -> String {
-    match k {
-        ShapeKind::Circle => "circle".into(),
-        ShapeKind::Square => "square".into(),
-        ShapeKind::Rect { aspect } => format!("rect:{aspect}"),
-        ShapeKind::Triangle => "triangle".into(),
-        ShapeKind::Polygon { sides } => format!("polygon:{sides}"),
-        ShapeKind::Star { points, inner } => format!("star:{points}:{inner}"),
-        ShapeKind::Ring { inner } => format!("ring:{inner}"),
-        ShapeKind::Blob { delta } => format!("blob:{delta}"),
-    }
-}
-
-/// The kind name of a shape in JSON (`"kind"`).
-pub fn kind_name(k: &ShapeKind) -> &'static str {
-    match k {
-        ShapeKind::Circle => "circle",
-        ShapeKind::Square => "square",
-        ShapeKind::Rect { .. } => "rect",
-        ShapeKind::Triangle => "triangle",
-        ShapeKind::Polygon { .. } => "polygon",
-        ShapeKind::Star { .. } => "star",
-        ShapeKind::Ring { .. } => "ring",
-        ShapeKind::Blob { .. } => "blob",
-    }
-}
-
-/// The region kinds accepted by `--region` (periodicity comes from `--periodic`).
-#[derive(Debug, Clone, PartialEq)]
-pub enum RegionSpec {
-    /// `rect:W:H`.
-    Rect {
-        /// Width in mm.
-        width: f64,
-        /// Height in mm.
-        height: f64,
-    },
-    /// `circle:R`: the disc centred at (R, R).
-    Circle {
-        /// Radius in mm.
-        radius: f64,
-    },
-    /// `annulus:R_OUTER:R_INNER`, centred at (R_OUTER, R_OUTER).
-    Annulus {
-        /// Outer radius.
-        outer: f64,
-        /// Inner radius.
-        inner: f64,
-    },
-    /// `polygon:X1,Y1,X2,Y2,...` or the outlines of `svg:FILE`: rings of vertices.
-    Polygon {
-        /// Vertices, ring after ring.
-        points: Vec<Point<f64>>,
-        /// Exclusive end of each ring.
-        ends: Vec<usize>,
-    },
-    /// `svg:FILE`, read later by [`crate::io::svgin`].
-    Svg(std::path::PathBuf),
 }
 
 /// `polygon:X1,Y1,X2,Y2,...[/X1,Y1,...]...`: one ring of vertices, or several separated by

@@ -54,7 +54,7 @@ pub struct GasketArgs {
 
 /// What `stats trials` and `stats halting` write.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
-pub enum ChartFormat {
+pub enum ChartFormatArg {
     /// The numbers, one row per point.
     Csv,
     /// A chart.
@@ -88,7 +88,7 @@ pub struct ChartArgs {
     pub output: Option<PathBuf>,
     /// Output format (overrides the extension): csv or svg.
     #[arg(long, value_enum)]
-    pub format: Option<ChartFormat>,
+    pub format: Option<ChartFormatArg>,
 }
 
 /// Arguments of `stats trials`.

@@ -5,11 +5,11 @@ use crate::args::colour::ColourArgs;
 use crate::args::common::{OutputArgs, SeedArgs};
 use crate::args::plot::PlotArgs;
 use crate::args::raster::RasterArgs;
-use crate::args::spec::{self, RegionSpec};
-use crate::error::CliError;
+use crate::args::spec;
 use crate::geometry::voronoi::Pt;
+use crate::model::region::RegionSpec;
 use clap::{Args, ValueEnum};
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 /// Largest number of sites one run may hold.
 pub const MAX_POINTS: usize = 10_000_000;
@@ -29,7 +29,7 @@ pub enum RenderArg {
 
 /// Output formats of `zetafill territory`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum TerritoryFormat {
+pub enum TerritoryFormatArg {
     /// SVG drawing in mm.
     Svg,
     /// PNG preview (the SVG rendered).
@@ -38,15 +38,6 @@ pub enum TerritoryFormat {
     Json,
     /// G-code for a plotter or laser (the boundaries, or every edge with --render cells).
     Gcode,
-}
-
-impl TerritoryFormat {
-    /// The format: `--format`, or else the extension of `path` (SVG for `-`).
-    pub fn resolve(given: Option<TerritoryFormat>, path: &Path) -> Result<TerritoryFormat, CliError> {
-        use TerritoryFormat::*;
-        let known = [("svg", Svg), ("png", Png), ("json", Json), ("gcode", Gcode), ("nc", Gcode)];
-        crate::args::format::format_for(given, path, Svg, &known)
-    }
 }
 
 /// Arguments of `zetafill territory`. Territory drawings have no pages, size layers or
@@ -102,11 +93,11 @@ pub struct TerritoryArgs {
     /// Colour of territory 0, 1, ... in turn: H,S,B (the seed's colour c^k, each in [0, 1])
     /// or H,S,B:DH,DS,DB (with the step d^k per unit of distance). Territories without one
     /// get random colours from the seed.
-    #[arg(long = "color", value_parser = crate::cmd::territory::colour::parse_rule, allow_hyphen_values = true)]
+    #[arg(long = "color", value_parser = colour_rule, allow_hyphen_values = true)]
     pub colors: Vec<([f64; 3], Option<[f64; 3]>)>,
     /// Where the output goes.
     #[command(flatten)]
-    pub output: OutputArgs<TerritoryFormat>,
+    pub output: OutputArgs<TerritoryFormatArg>,
     /// SVG: stroke width of the boundaries in mm.
     #[arg(long = "pen-width", default_value_t = 0.3, value_parser = spec::positive)]
     pub pen_width: f64,
@@ -158,5 +149,57 @@ pub fn boost(s: &str) -> Result<f64, String> {
         Err(format!(
             "must be 1 or more (got {s}); 1 means no preference, like --uniform after n0"
         ))
+    }
+}
+
+/// `--color`: a colour rule `H,S,B` or `H,S,B:DH,DS,DB`; without the step, `None` for d
+/// (drawn at random).
+pub fn colour_rule(s: &str) -> Result<(/* c */ [f64; 3], Option<[f64; 3]>), String> {
+    let triple = |part: &str, what: &str| -> Result<[f64; 3], String> {
+        let v: Vec<&str> = part.split(',').collect();
+        if v.len() != 3 {
+            return Err(format!(
+                "{what} needs three comma-separated numbers (got '{part}'); write H,S,B or H,S,B:DH,DS,DB"
+            ));
+        }
+        let mut out = [0.0; 3];
+        for (o, x) in out.iter_mut().zip(&v) {
+            let n: f64 = x.trim().parse().map_err(|_| format!("{what}: '{x}' is not a number"))?;
+            if !n.is_finite() {
+                return Err(format!("{what}: '{x}' is not a finite number"));
+            }
+            *o = n;
+        }
+        Ok(out)
+    };
+    let mut parts = s.split(':');
+    let c = triple(parts.next().unwrap_or(""), "the seed colour H,S,B")?;
+    if let Some(bad) = c.iter().find(|v| !(0.0..=1.0).contains(*v)) {
+        return Err(format!("the seed colour H,S,B must lie in [0, 1] each (got {bad})"));
+    }
+    let d = match parts.next() {
+        Some(p) => Some(triple(p, "the step DH,DS,DB")?),
+        None => None,
+    };
+    if parts.next().is_some() {
+        return Err(format!("'{s}' has more than one ':'; write H,S,B or H,S,B:DH,DS,DB"));
+    }
+    Ok((c, d))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn rules_parse_or_say_why() {
+        assert_eq!(colour_rule("0.1,0.2,0.3"), Ok(([0.1, 0.2, 0.3], None)));
+        assert_eq!(colour_rule("0,1,1:-0.01,0,0.02"), Ok(([0.0, 1.0, 1.0], Some([-0.01, 0.0, 0.02]))));
+        assert!(colour_rule("0.1,0.2").is_err());
+        assert!(colour_rule("0.1,0.2,1.5").is_err());
+        assert!(colour_rule("0.1,x,0.3").is_err());
+        assert!(colour_rule("0.1,0.2,0.3:1,2").is_err());
+        assert!(colour_rule("0.1,0.2,0.3:1,2,nan").is_err());
+        assert!(colour_rule("0.1,0.2,0.3:1,2,3:4").is_err());
     }
 }

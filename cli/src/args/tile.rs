@@ -6,9 +6,7 @@ use crate::args::common::{OutputArgs, SeedArgs};
 use crate::args::plot::PlotArgs;
 use crate::args::raster::{RasterArgs, ReliefArg};
 use crate::args::spec;
-use crate::error::CliError;
 use clap::{Args, ValueEnum};
-use std::path::Path;
 
 /// `--render`: what the tile shows.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -42,7 +40,7 @@ pub enum LayoutArg {
 
 /// Output formats of `zetafill tile`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum TileFormat {
+pub enum TileFormatArg {
     /// SVG drawing in mm.
     Svg,
     /// PNG preview (the SVG rendered).
@@ -51,15 +49,6 @@ pub enum TileFormat {
     Json,
     /// G-code for a plotter or laser (the drawing's outlines).
     Gcode,
-}
-
-impl TileFormat {
-    /// The format: `--format`, or else the extension of `path` (SVG for `-`).
-    pub fn resolve(given: Option<TileFormat>, path: &Path) -> Result<TileFormat, CliError> {
-        use TileFormat::*;
-        let known = [("svg", Svg), ("png", Png), ("json", Json), ("gcode", Gcode), ("nc", Gcode)];
-        crate::args::format::format_for(given, path, Svg, &known)
-    }
 }
 
 /// Arguments of `zetafill tile`. The tile draws its own outlines: pages and hatching are
@@ -114,7 +103,7 @@ pub struct TileArgs {
     pub planet_radius: Option<f64>,
     /// Where the output goes.
     #[command(flatten)]
-    pub output: OutputArgs<TileFormat>,
+    pub output: OutputArgs<TileFormatArg>,
     /// SVG: stroke width of the outlines in mm.
     #[arg(long = "pen-width", default_value_t = 0.3, value_parser = spec::positive, allow_negative_numbers = true)]
     pub pen_width: f64,

@@ -2,30 +2,23 @@
 
 pub mod region;
 
-use crate::args::fill::MAX_SHAPES;
-use crate::args::format::Format;
-use crate::args::spec;
-use crate::cmd::stopping::{self, Unit};
+use crate::cmd::stopping;
 use crate::error::CliError;
-use crate::model::doc::{FillDoc, ParamsDoc, ShapeDoc, ShapeParamsDoc, StatsDoc};
+use crate::model::doc::{kind_name, FillDoc, ParamsDoc, ShapeDoc, ShapeParamsDoc, StatsDoc};
 use crate::output;
-use crate::plan::fill::{first_shape_error, first_two_error, halt_advice, param_error, FillDraw, FillPlan, FillRun};
+use crate::plan::fill::{first_shape_error, first_two_error, halt_advice, param_error, FillDraw, FillPlan, FillRun, SHAPES};
+use crate::plan::format::Format;
+use crate::plan::raster::{height_map_error, png_error};
 use region::RegionData;
 use zetafill::StepError;
 use zetafill::{index_words, CellSampler, Engine, Geo, Params, Placed, Region, ShapeKind, Stop, StopReason, Storage};
-
-/// What a 2D run places.
-const SHAPES: Unit = Unit {
-    plural: "shapes",
-    max: MAX_SHAPES,
-};
 
 /// Words of the coverage bitmap (2 MiB): a 4096 x 4096 grid.
 const COVERAGE_WORDS: usize = 1 << 18;
 
 /// The concrete geometry of a placed shape as a [`ShapeDoc`].
 fn shape_doc(kind: &ShapeKind, geo: &Geo<f64>, p: &Placed<f64>, index: u64, area: f64, trials: u64) -> ShapeDoc {
-    let name = spec::kind_name(kind);
+    let name = kind_name(kind);
     let (radius, inner_radius, angle, vertices) = match geo {
         Geo::Circle { r, .. } => (Some(*r), None, None, None),
         Geo::Ring { r, inner, .. } => (Some(*r), Some(*inner), None, None),
@@ -291,7 +284,7 @@ pub fn render(doc: &FillDoc, format: Format, d: &FillDraw) -> Result<Vec<u8>, Cl
     if d.voronoi {
         let look = cobble_look(doc, d);
         return match format {
-            Format::Png => d.raster.render(&crate::cmd::cobble::svg(doc, &look)?),
+            Format::Png => d.raster.render(&crate::cmd::cobble::svg(doc, &look)?).map_err(png_error),
             _ => crate::cmd::cobble::svg(doc, &look),
         };
     }
@@ -313,11 +306,12 @@ pub fn render(doc: &FillDoc, format: Format, d: &FillDraw) -> Result<Vec<u8>, Cl
         Format::Png => match d.relief {
             Some(relief) => {
                 let command = format!("{} --relief {}{}", output::svg::command_line(doc), relief.name(), d.raster.flag());
-                output::height::render(doc, relief, output::height::grid(doc.extent(), &d.raster)?, &command)?
+                let size = output::height::grid(doc.extent(), &d.raster).map_err(height_map_error)?;
+                output::height::render(doc, relief, size, &command)?
             }
             None => {
                 let svg = output::svg::render(doc, &svg_options(doc, d)?);
-                d.raster.render(&svg)?
+                d.raster.render(&svg).map_err(png_error)?
             }
         },
     })

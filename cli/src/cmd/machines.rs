@@ -1,9 +1,9 @@
 //! `zetafill machines`: lists the built-in machine profiles; `zetafill machines show NAME`
 //! prints one as TOML, ready to copy, edit and pass back with `--machine FILE.toml`.
 
-use crate::args::machines::{MachinesArgs, MachinesCommand};
 use crate::error::CliError;
 use crate::output::machine::Machine;
+use crate::plan::machines::{profile_error, MachinesPlan};
 
 /// The listing: one line per built-in, name then description.
 pub fn listing() -> String {
@@ -18,14 +18,14 @@ pub fn listing() -> String {
 }
 
 /// `zetafill machines`.
-pub fn run(a: &MachinesArgs) -> Result<(), CliError> {
-    let text = match &a.command {
-        None | Some(MachinesCommand::List) => listing(),
-        Some(MachinesCommand::Show { name }) => match Machine::builtin_text(name) {
+pub fn run(plan: &MachinesPlan) -> Result<(), CliError> {
+    let text = match plan {
+        MachinesPlan::List => listing(),
+        MachinesPlan::Show(name) => match Machine::builtin_text(name) {
             Some(t) => t.to_string(),
             None => {
                 // A file: check it, then print it normalised.
-                let m = Machine::load(name).map_err(|e| CliError::arg("NAME", e))?;
+                let m = Machine::load(name).map_err(profile_error)?;
                 toml::to_string(&m).map_err(|e| CliError::Io(format!("cannot encode TOML: {e}")))?
             }
         },

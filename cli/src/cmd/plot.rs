@@ -6,7 +6,7 @@ use crate::model::doc::FillDoc;
 use crate::model::fill::{FillLook, LayerSpec};
 use crate::model::{Bounds, Drawing};
 use crate::output::gcode;
-use crate::plan::plot::GcodePlan;
+use crate::plan::plot::{gcode_error, GcodePlan};
 
 /// `--format gcode` of a fill: its drawing (outlines, hatching) placed on the bed by the
 /// region's box.
@@ -64,7 +64,7 @@ pub fn pens_gcode(
         "plot: machine {} order {:?} passes {} hatch {} min-feature {} scale {} shift {} {}",
         m.name, opts.order, opts.passes, a.hatch, a.min_feature, pl.scale, pl.dx, pl.dy
     ));
-    let out = gcode::write_pens(&pens, m, &opts).map_err(|e| CliError::arg("--machine", e))?;
+    let out = gcode::write_pens(&pens, m, &opts).map_err(gcode_error)?;
     if !quiet {
         eprintln!("{}", out.figures);
     }

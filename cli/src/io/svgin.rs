@@ -8,7 +8,6 @@
 //! curve. Rings inside other rings are holes (the even-odd rule). Subpaths that are not
 //! closed are ignored; a file with none is an error.
 
-use crate::error::CliError;
 use resvg::usvg;
 use std::path::Path;
 use zetafill::Point;
@@ -16,24 +15,27 @@ use zetafill::Point;
 const MM_PER_PX: f64 = 25.4 / 96.0;
 const MAX_CHORD_MM: f64 = 0.5;
 
+/// Why a file holds no outline. The caller says which flag named the file.
+#[derive(Debug)]
+pub enum OutlineError {
+    /// The file cannot be read.
+    Read(std::io::Error),
+    /// The file is not SVG that usvg can parse.
+    Svg(usvg::Error),
+    /// The file has no closed path.
+    NoClosedPath,
+}
+
 /// Rings of the outline: vertices, ring after ring, and the exclusive end of each ring.
-pub fn read_outline(path: &Path) -> Result<(Vec<Point<f64>>, Vec<usize>), CliError> {
-    let arg = "--region";
-    let data = std::fs::read(path).map_err(|e| CliError::arg(arg, format!("cannot read '{}': {e}", path.display())))?;
-    let tree = usvg::Tree::from_data(&data, &usvg::Options::default())
-        .map_err(|e| CliError::arg(arg, format!("'{}' is not a readable SVG file: {e}", path.display())))?;
+pub fn read_outline(path: &Path) -> Result<(Vec<Point<f64>>, Vec<usize>), OutlineError> {
+    let data = std::fs::read(path).map_err(OutlineError::Read)?;
+    let tree = usvg::Tree::from_data(&data, &usvg::Options::default()).map_err(OutlineError::Svg)?;
     let height = f64::from(tree.size().height());
     let mut rings: Vec<Vec<Point<f64>>> = Vec::new();
     collect(tree.root(), height, &mut rings);
     rings.retain(|r| r.len() >= 3);
     if rings.is_empty() {
-        return Err(CliError::arg(
-            arg,
-            format!(
-                "'{}' has no closed path; draw the outline as a closed path (ending in Z)",
-                path.display()
-            ),
-        ));
+        return Err(OutlineError::NoClosedPath);
     }
     let mut points = Vec::new();
     let mut ends = Vec::new();

@@ -3,6 +3,7 @@
 
 use super::Path;
 use serde::Serialize;
+use zetafill::ShapeKind;
 
 /// A finished (or halted) fill.
 #[derive(Debug, Clone, Serialize)]
@@ -233,5 +234,33 @@ impl FillDoc {
     /// Whether the region is periodic.
     pub fn periodic(&self) -> bool {
         matches!(self.region, RegionDoc::Rect { periodic: true, .. })
+    }
+}
+
+/// The name of a shape as written in JSON and on the command line.
+pub fn shape_name(k: &ShapeKind) -> String {
+    match k {
+        ShapeKind::Circle => "circle".into(),
+        ShapeKind::Square => "square".into(),
+        ShapeKind::Rect { aspect } => format!("rect:{aspect}"),
+        ShapeKind::Triangle => "triangle".into(),
+        ShapeKind::Polygon { sides } => format!("polygon:{sides}"),
+        ShapeKind::Star { points, inner } => format!("star:{points}:{inner}"),
+        ShapeKind::Ring { inner } => format!("ring:{inner}"),
+        ShapeKind::Blob { delta } => format!("blob:{delta}"),
+    }
+}
+
+/// The kind name of a shape in JSON (`"kind"`).
+pub fn kind_name(k: &ShapeKind) -> &'static str {
+    match k {
+        ShapeKind::Circle => "circle",
+        ShapeKind::Square => "square",
+        ShapeKind::Rect { .. } => "rect",
+        ShapeKind::Triangle => "triangle",
+        ShapeKind::Polygon { .. } => "polygon",
+        ShapeKind::Star { .. } => "star",
+        ShapeKind::Ring { .. } => "ring",
+        ShapeKind::Blob { .. } => "blob",
     }
 }

@@ -9,6 +9,9 @@
 //! - [`clip`]: exact clipping of paths to a rectangle (circles into arcs, polygons into open
 //!   polylines).
 //! - [`place`](mod@place): [`Placement`] scales and moves a drawing onto a bed or a page.
+//! - [`region`]: a region as given, before its outline is read.
+//! - [`tile`]: the fractal tile's parameters and plane, and the layouts of copies of its
+//!   picture (mosaic, planet).
 //!
 //! [`fill::picture`] draws a fill as a [`Picture`], [`fill::from_fill`] as pen strokes; the writers of
 //! [`crate::output`] turn drawings into SVG or G-code. Any mode that produces lines can write
@@ -25,8 +28,9 @@
 //! eprintln!("{}", out.figures);
 //! ```
 //!
-//! A mode with clap arguments can `#[command(flatten)]` [`crate::args::plot::PlotArgs`] and
-//! call [`crate::cmd::plot::drawing_gcode`], which adds placement on the bed (`--fit`,
+//! A mode with clap arguments can `#[command(flatten)]` [`crate::args::plot::PlotArgs`],
+//! resolve it into a [`crate::plan::plot::GcodePlan`] and call
+//! [`crate::cmd::plot::drawing_gcode`], which adds placement on the bed (`--fit`,
 //! `--center`, `--margin`) and every other flag, exactly as `zetafill fill` does.
 //!
 //! Nothing here prints, touches files or knows the command line; everything is
@@ -40,7 +44,9 @@ pub mod path;
 pub mod periodic;
 pub mod picture;
 pub mod place;
+pub mod region;
 pub mod shape;
+pub mod tile;
 
 pub use clip::{clip_path, clip_segment};
 pub use path::{arc_extremes, polar, Bounds, Drawing, Path, Pt};

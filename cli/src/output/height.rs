@@ -61,9 +61,22 @@ impl Relief {
     }
 }
 
-/// The pixel grid of a height map over a `w` x `h` box: the longer side `--pixels` long when
-/// given, otherwise `--dpi` pixels per inch.
-pub fn grid((w, h): (f64, f64), raster: &super::png::Raster) -> Result<(usize, usize), CliError> {
+/// A height map too large to make: `nx` x `ny` pixels, more than [`MAX_PIXELS`] (or not a
+/// finite number); `pixels` says its size was asked as the longer side in pixels, not as a
+/// resolution.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TooLarge {
+    /// Width in pixels.
+    pub nx: f64,
+    /// Height in pixels.
+    pub ny: f64,
+    /// The size was given in pixels (else in pixels per inch).
+    pub pixels: bool,
+}
+
+/// The pixel grid of a height map over a `w` x `h` box: the longer side `raster.pixels` long
+/// when given, otherwise `raster.dpi` pixels per inch.
+pub fn grid((w, h): (f64, f64), raster: &super::png::Raster) -> Result<(usize, usize), TooLarge> {
     let (nx, ny) = match raster.pixels {
         Some(n) => {
             let n = f64::from(n);
@@ -76,11 +89,11 @@ pub fn grid((w, h): (f64, f64), raster: &super::png::Raster) -> Result<(usize, u
         None => ((w / 25.4 * raster.dpi).round().max(1.0), (h / 25.4 * raster.dpi).round().max(1.0)),
     };
     if nx * ny > MAX_PIXELS as f64 || !(nx * ny).is_finite() {
-        let flag = if raster.pixels.is_some() { "--pixels" } else { "--dpi" };
-        return Err(CliError::arg(
-            flag,
-            format!("a {nx} x {ny} pixel height map is too large (at most {MAX_PIXELS} pixels); lower {flag}"),
-        ));
+        return Err(TooLarge {
+            nx,
+            ny,
+            pixels: raster.pixels.is_some(),
+        });
     }
     Ok((nx as usize, ny as usize))
 }

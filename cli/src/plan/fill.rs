@@ -3,21 +3,30 @@
 //! the drawing (the writers' plain options). Also the messages of the run's own outcomes
 //! that name a flag: a parameter the core refuses, a first shape that does not fit, a halt.
 
-use crate::args::fill::{FillArgs, MixArg, Rotate, Sampler, ScalarArg, DEFAULT_MAX_TRIALS};
-use crate::args::format::Format;
+use crate::args::fill::{FillArgs, MixArg, Rotate, Sampler, ScalarArg, DEFAULT_MAX_TRIALS, MAX_SHAPES};
 use crate::args::plot::{Layers, PlotArgs, FOR_GCODE, SVG_FLAGS};
-use crate::args::spec::{self, RegionSpec};
 use crate::args::style::StyleArg;
 use crate::error::CliError;
 use crate::io::write::Dest;
+use crate::model::doc::kind_name;
 use crate::model::fill::BuildOptions;
+use crate::model::region::RegionSpec;
 use crate::output::height::Relief;
 use crate::output::palette::{ColorBy, Colour, Palette};
-use crate::output::png::{only_png, Raster};
+use crate::output::png::Raster;
 use crate::output::svg::Style;
+use crate::plan::format::Format;
 use crate::plan::plot::{GcodePlan, PagePlan};
+use crate::plan::raster::{self, only_png};
+use crate::plan::Unit;
 use zetafill::ParamError;
 use zetafill::{FirstShape, FirstTwoError, MixOrder, Params, ShapeList, Stop};
+
+/// What a 2D run places, and the most one run may hold.
+pub const SHAPES: Unit = Unit {
+    plural: "shapes",
+    max: MAX_SHAPES,
+};
 
 /// A checked `zetafill fill`: where it writes, what it runs and how it draws.
 #[derive(Debug, Clone)]
@@ -149,10 +158,7 @@ fn check_plot(p: &PlotArgs, format: Format) -> Result<(), CliError> {
                 ));
             }
         }
-        other => {
-            let name = clap::ValueEnum::to_possible_value(&other).map_or_else(String::new, |v| v.get_name().to_string());
-            p.refuse_except(&[], |_| format!("is for drawings (svg, png, gcode), not {name} output"))?
-        }
+        other => p.refuse_except(&[], |_| format!("is for drawings (svg, png, gcode), not {} output", other.name()))?,
     }
     Ok(())
 }
@@ -182,7 +188,7 @@ pub fn resolve_as(a: &FillArgs, format: Format) -> Result<(FillRun, FillDraw), C
     if format != Format::Png && a.relief.is_some() {
         return Err(only_png("--relief"));
     }
-    a.raster.check(format == Format::Png)?;
+    raster::check(&a.raster, format == Format::Png)?;
     // A palette also picks the pens of a G-code plot with --layers colours.
     let colour_layers = a.plot.layers == Layers::Colours;
     let pens = format == Format::Gcode && colour_layers && a.colour.background.is_none();
@@ -334,7 +340,7 @@ pub fn first_shape_error(params: &Params, first: &FirstShape, halt: Option<u64>)
         "--c",
         format!(
             "the first {} ({width:.4} mm wide, area {first_area:.4} mm²) {what}; {advice}",
-            spec::kind_name(&kind)
+            kind_name(&kind)
         ),
     )
 }
@@ -354,14 +360,14 @@ pub fn first_two_error(e: FirstTwoError, params: &Params) -> CliError {
             "--gap",
             format!(
                 "{gap} mm leaves no room for two {}s in this {width} x {height} mm region, whatever --c and --n-offset; lower it below {max_gap:.4} mm or enlarge --region",
-                spec::kind_name(&kind),
+                kind_name(&kind),
             ),
         ),
         FirstTwoError::Offset { kind, n_offset: _ } => CliError::arg(
             "--n-offset",
             format!(
                 "the first two {}s cannot both fit this region for any c; raise --n-offset{} or enlarge --region",
-                spec::kind_name(&kind),
+                kind_name(&kind),
                 if params.gap > 0.0 { ", lower --gap" } else { "" }
             ),
         ),
@@ -369,7 +375,7 @@ pub fn first_two_error(e: FirstTwoError, params: &Params) -> CliError {
             "--c",
             format!(
                 "with N = {n_offset} the first two {}s cannot both fit in this region when c > {max_c:.4} (the paper's hard limit, section 3); lower --c or raise --n-offset",
-                spec::kind_name(&kind),
+                kind_name(&kind),
             ),
         ),
     }

@@ -4,17 +4,24 @@
 //! run's own outcomes that name a flag: a parameter the core refuses, a first segment that
 //! does not fit, a halt.
 
-use crate::args::format::Format;
-use crate::args::line::{LineArgs, RenderArg};
+use crate::args::line::{LineArgs, RenderArg, MAX_SEGMENTS};
 use crate::args::plot::{Layers, PlotArgs, FOR_GCODE};
-use crate::cmd::line::Render;
 use crate::error::CliError;
 use crate::io::write::Dest;
 use crate::output::palette::{ColorBy, Colour, Palette};
 use crate::output::png::Raster;
 use crate::output::svg::Style;
+use crate::plan::format::Format;
 use crate::plan::plot::GcodePlan;
+use crate::plan::raster;
+use crate::plan::Unit;
 use zetafill::{Interval, LineParams, ParamError, Stop};
+
+/// What a 1D run places, and the most one run may hold.
+pub const SEGMENTS: Unit = Unit {
+    plural: "segments",
+    max: MAX_SEGMENTS,
+};
 
 /// A checked `zetafill line`: where it writes, what it runs and how it draws.
 #[derive(Debug, Clone)]
@@ -81,6 +88,31 @@ pub struct LineDraw {
     pub quiet: bool,
 }
 
+/// How segments are drawn in SVG and PNG.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Render {
+    /// Each segment a stroke along one line: one pen-down per segment.
+    Dashes,
+    /// Each segment a circle of diameter L_i centred on the line (the paper's Figure 3).
+    Circles,
+    /// Each segment a filled bar `--bar-height` tall (for engraving).
+    Bars,
+    /// Rows of circles, each zooming into the central `--zoom-fraction` of the row above.
+    Zoom,
+}
+
+impl Render {
+    /// The name `--render` takes.
+    pub fn name(self) -> &'static str {
+        match self {
+            Render::Dashes => "dashes",
+            Render::Circles => "circles",
+            Render::Bars => "bars",
+            Render::Zoom => "zoom",
+        }
+    }
+}
+
 impl From<RenderArg> for Render {
     fn from(r: RenderArg) -> Render {
         match r {
@@ -124,7 +156,7 @@ fn check_zoom(a: &LineArgs) -> Result<(), CliError> {
 
 /// [`resolve_as`] after the zoom centre.
 fn resolve_format(a: &LineArgs, format: Format) -> Result<(LineRun, LineDraw), CliError> {
-    a.raster.check(format == Format::Png)?;
+    raster::check(&a.raster, format == Format::Png)?;
     check_plot(a, format)?;
     let colour_layers = a.plot.layers == Layers::Colours;
     let pens = format == Format::Gcode && colour_layers && a.colour.background.is_none();
@@ -259,4 +291,9 @@ pub fn halt_advice(index: u64) -> &'static str {
     } else {
         "raise --max-trials, lower --c, or ask for fewer segments"
     }
+}
+
+/// The refusal of `--render zoom` as G-code, met once the plotter drawing is made.
+pub fn no_zoom_gcode() -> CliError {
+    CliError::arg("--render", "zoom has no G-code form; use dashes, circles or bars")
 }

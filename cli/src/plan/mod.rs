@@ -4,8 +4,12 @@
 //! write what the plan says, and never look at a flag again.
 
 pub mod fill;
+pub mod format;
 pub mod line;
+pub mod machines;
 pub mod plot;
+pub mod raster;
+pub mod region;
 pub mod stats;
 pub mod territory;
 pub mod tile;

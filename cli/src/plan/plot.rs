@@ -30,6 +30,12 @@ pub struct GcodePlan {
     pub min_feature: f64,
 }
 
+/// A placed drawing the machine's G-code writer refuses (`why`, in the profile's terms), as a
+/// fault of `--machine`.
+pub fn gcode_error(why: String) -> CliError {
+    CliError::arg("--machine", why)
+}
+
 impl GcodePlan {
     /// The machine and options the plot flags ask for, every override checked against the
     /// profile (exit 2 naming the flag).

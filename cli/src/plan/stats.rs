@@ -7,10 +7,11 @@
 //! `stats dimension` reads its FILE before it checks `--min-box` against `--max-box` (a bad
 //! file is reported first): that check is a plan method the run calls after the read.
 
-use crate::args::stats::{ChartArgs, ChartFormat, DimensionArgs, GasketArgs, HaltingArgs, Rotate, SceneArgs, StatsCommand};
+use crate::args::stats::{ChartArgs, DimensionArgs, GasketArgs, HaltingArgs, Rotate, SceneArgs, StatsCommand};
 use crate::args::stats::{TrialsArgs, TrialsFrom, ZetaArgs};
 use crate::error::CliError;
 use crate::io::write::Dest;
+use crate::plan::format::ChartFormat;
 use std::fmt::Display;
 use std::path::PathBuf;
 use zetafill::ShapeKind;
@@ -242,7 +243,7 @@ fn dimension(a: &DimensionArgs) -> DimensionPlan {
 /// `None` without `--output`.
 pub fn chart_output(a: &ChartArgs, name: &str) -> Result<ChartOutput, CliError> {
     let Some(p) = &a.output else { return Ok(None) };
-    let format = a.format;
+    let format = a.format.map(ChartFormat::from);
     let dest = Dest::parse(p);
     let ext = p.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase);
     let f = match (format, ext.as_deref()) {

@@ -8,16 +8,17 @@
 //! has, so the first error reported stays the same.
 
 use crate::args::plot::{Layers, PlotArgs, FOR_GCODE};
-use crate::args::spec::RegionSpec;
-use crate::args::territory::{RenderArg, TerritoryArgs, TerritoryFormat};
-use crate::cmd::territory::model::ModelError;
-use crate::cmd::territory::render::Render;
+use crate::args::territory::{RenderArg, TerritoryArgs};
 use crate::error::CliError;
+use crate::geometry::site::SiteError;
 use crate::geometry::voronoi::Pt;
 use crate::io::write::Dest;
+use crate::model::region::RegionSpec;
 use crate::output::palette::{ColorBy, Colour, Palette};
 use crate::output::png::Raster;
+use crate::plan::format::TerritoryFormat;
 use crate::plan::plot::GcodePlan;
+use crate::plan::raster;
 use std::path::{Path, PathBuf};
 
 /// A checked `zetafill territory`: where it writes, what it grows and how it draws.
@@ -93,6 +94,31 @@ pub struct TerritoryDraw {
     pub quiet: bool,
 }
 
+/// What to draw.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Render {
+    /// Territory boundaries as merged polylines (plotters).
+    Boundaries,
+    /// All Voronoi edges: cells thin, boundaries at pen width (two layers).
+    Cells,
+    /// Cells filled with their HSB colours (screens, prints).
+    Filled,
+    /// The fill's own shapes filled with their site's colour (only with --sites-from).
+    Shapes,
+}
+
+impl Render {
+    /// The name as on the command line.
+    pub fn name(self) -> &'static str {
+        match self {
+            Render::Boundaries => "boundaries",
+            Render::Cells => "cells",
+            Render::Filled => "filled",
+            Render::Shapes => "shapes",
+        }
+    }
+}
+
 impl From<RenderArg> for Render {
     fn from(r: RenderArg) -> Render {
         match r {
@@ -127,7 +153,7 @@ pub fn resolve(a: &TerritoryArgs) -> Result<TerritoryPlan, CliError> {
 /// The run and the drawing of `a` written as `format`: every rule between the flags, but
 /// none about the output path (a library caller, such as a test, picks the format).
 pub fn resolve_as(a: &TerritoryArgs, format: TerritoryFormat) -> Result<(TerritoryRun, TerritoryDraw), CliError> {
-    a.raster.check(format == TerritoryFormat::Png)?;
+    raster::check(&a.raster, format == TerritoryFormat::Png)?;
     check_plot(a, format)?;
     check_colours(a, format)?;
     if a.site.len() == 1 {
@@ -308,16 +334,29 @@ pub fn no_seed_drawn() -> CliError {
 }
 
 /// The seeds given (`--site`) cannot start a pattern.
-pub fn seeds_error(e: ModelError) -> CliError {
+pub fn seeds_error(e: SiteError) -> CliError {
     CliError::arg("--site", e)
 }
 
 /// The seeds taken from the fill (`--sites-from`) cannot start a pattern.
-pub fn fill_seeds_error(e: ModelError) -> CliError {
+pub fn fill_seeds_error(e: SiteError) -> CliError {
     CliError::arg("--sites-from", e)
 }
 
 /// The pattern cannot grow in the region.
-pub fn growth_error(e: ModelError) -> CliError {
+pub fn growth_error(e: SiteError) -> CliError {
     CliError::arg("--region", e)
+}
+
+/// A `--sites-from` file (`path`) that cannot serve, and why.
+pub fn sites_from_error(path: &Path, why: impl std::fmt::Display) -> CliError {
+    CliError::arg("--sites-from", format!("'{}': {why}", path.display()))
+}
+
+/// The refusal of a `--sites-from` file (`path`) that is JSON but not a fill's.
+pub fn not_a_fill(path: &Path) -> CliError {
+    sites_from_error(
+        path,
+        "not a fill's JSON (no \"mode\": \"fill\"); write one with zetafill fill -o FILE.json",
+    )
 }

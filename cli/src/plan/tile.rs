@@ -5,16 +5,17 @@
 //! drawing of too many pieces.
 
 use crate::args::plot::{Layers, PlotArgs, FOR_GCODE, GCODE_FLAGS};
-use crate::args::tile::{LayoutArg, RenderArg, StyleArg, TileArgs, TileFormat};
-use crate::cmd::tile::model::TileSpec;
-use crate::cmd::tile::render::{Arrangement, Layout, Render, Style};
+use crate::args::tile::{LayoutArg, RenderArg, StyleArg, TileArgs};
 use crate::error::CliError;
 use crate::io::write::Dest;
+use crate::model::tile::{Arrangement, Layout, LayoutError, Render, SpecError, Style, TileSpec, MAX_DISCS};
 use crate::output::height::Relief;
 use crate::output::num;
 use crate::output::palette::{ColorBy, Colour, Palette};
-use crate::output::png::{only_png, Raster};
+use crate::output::png::Raster;
+use crate::plan::format::TileFormat;
 use crate::plan::plot::GcodePlan;
+use crate::plan::raster::{self, only_png};
 
 /// A checked `zetafill tile`: where it writes, the tile it grows and how it draws it.
 #[derive(Debug, Clone)]
@@ -114,7 +115,7 @@ pub fn resolve(a: &TileArgs) -> Result<TilePlan, CliError> {
 /// The tile and the drawing of `a` written as `format`: every rule between the flags, but
 /// none about the output path (a library caller, such as a test, picks the format).
 pub fn resolve_as(a: &TileArgs, format: TileFormat) -> Result<(TileRun, TileDraw), CliError> {
-    a.raster.check(format == TileFormat::Png)?;
+    raster::check(&a.raster, format == TileFormat::Png)?;
     if a.relief.is_some() && format != TileFormat::Png {
         return Err(only_png("--relief"));
     }
@@ -144,7 +145,7 @@ pub fn resolve_as(a: &TileArgs, format: TileFormat) -> Result<(TileRun, TileDraw
         seed: a.seed.seed,
         band: if render == Render::Voronoi { VORONOI_BAND } else { 0.0 },
     };
-    spec.check().map_err(|(flag, msg)| CliError::arg(flag, msg))?;
+    spec.check().map_err(|e| spec_error(&spec, e))?;
     let run = TileRun {
         spec,
         render,
@@ -207,8 +208,46 @@ fn arrangement(a: &TileArgs) -> Result<Arrangement, CliError> {
         columns: a.columns.unwrap_or(if layout == Layout::Planet { 16 } else { 2 }),
         radius: a.planet_radius.unwrap_or(100.0),
     };
-    arr.check(a.width, a.height).map_err(|(flag, msg)| CliError::arg(flag, msg))?;
+    arr.check(a.width, a.height)
+        .map_err(|e| layout_error(a.width, a.height, arr.columns, e))?;
     Ok(arr)
+}
+
+/// A tile spec that cannot make a tile, naming the flag to change.
+fn spec_error(spec: &TileSpec, e: SpecError) -> CliError {
+    match e {
+        SpecError::Reach { quarter } => CliError::arg(
+            "--radius",
+            format!(
+                "radius {} plus spacing {} is more than a quarter of the tile's smaller side ({}): a disc could reach two rows away; use a smaller --radius or --spacing, or a larger tile",
+                spec.radius, spec.spacing, quarter
+            ),
+        ),
+        SpecError::TooManyDiscs { most } => CliError::arg(
+            "--radius",
+            format!(
+                "a {} x {} mm tile could hold about {:.3e} discs of radius {:?} to {:?}, more than {MAX_DISCS}; use a larger --radius or a smaller tile",
+                spec.width,
+                spec.height,
+                most,
+                0.5 * spec.radius,
+                spec.radius
+            ),
+        ),
+    }
+}
+
+/// An arrangement of `w` x `h` mm tiles, `columns` in the first row or ring, that cannot be
+/// drawn, naming the flag to change.
+fn layout_error(w: f64, h: f64, columns: u32, e: LayoutError) -> CliError {
+    match e {
+        LayoutError::InnerRing { need } => CliError::arg(
+            "--columns",
+            format!(
+                "a planet of {w} x {h} mm tiles needs at least {need} tiles in its inner ring (got {columns}): with fewer the rings would cross the centre"
+            ),
+        ),
+    }
 }
 
 /// Refuses the plot flags that the output does not read, before any work.
@@ -284,4 +323,53 @@ pub fn too_many_pieces(layout: Layout, copies: u64, pieces: usize, max: u64) -> 
             "{copies} copies of a picture of {pieces} pieces make more than {max} pieces, too many to draw; lower --rows or --columns, or raise --radius"
         ),
     )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn spec(radius: f64) -> TileSpec {
+        TileSpec {
+            width: 100.0,
+            height: 80.0,
+            radius,
+            spacing: 1.0,
+            tries: 3000,
+            seed: 3,
+            band: 0.0,
+        }
+    }
+
+    fn message(s: TileSpec) -> String {
+        s.check().map_err(|e| spec_error(&s, e).to_string()).err().unwrap_or_default()
+    }
+
+    #[test]
+    fn oversized_and_tiny_discs_are_refused_naming_the_radius() {
+        assert_eq!(
+            message(spec(19.5)),
+            "--radius: radius 19.5 plus spacing 1 is more than a quarter of the tile's smaller side (20): a disc could reach two rows away; use a smaller --radius or --spacing, or a larger tile"
+        );
+        assert!(message(spec(0.04)).starts_with("--radius: a 100 x 80 mm tile could hold about 6.366e6 discs of radius 0.02 to 0.04"));
+        assert_eq!(message(spec(19.0)), "");
+    }
+
+    #[test]
+    fn a_planet_with_too_few_inner_tiles_is_refused_naming_the_columns() {
+        let arr = Arrangement {
+            layout: Layout::Planet,
+            rows: 4,
+            columns: 2,
+            radius: 100.0,
+        };
+        let e = arr
+            .check(100.0, 100.0)
+            .map_err(|e| layout_error(100.0, 100.0, arr.columns, e).to_string());
+        assert_eq!(
+            e,
+            Err("--columns: a planet of 100 x 100 mm tiles needs at least 13 tiles in its inner ring (got 2): with fewer the rings would cross the centre".to_string())
+        );
+        assert!(Arrangement { columns: 13, ..arr }.check(100.0, 100.0).is_ok());
+    }
 }

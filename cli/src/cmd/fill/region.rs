@@ -1,9 +1,10 @@
 //! `--region` resolved: the outline read from its file, the rings ordered as the JSON lists
 //! them, the core region it lends, and the region as written in JSON.
 
-use crate::args::spec::RegionSpec;
 use crate::error::CliError;
 use crate::model::doc::RegionDoc;
+use crate::model::region::RegionSpec;
+use crate::plan::region::{not_periodic, outline_error, polygon_error};
 use zetafill::{PolygonRegion, Region};
 
 /// A region resolved from its flag: owns the outline vertices the core borrows.
@@ -17,7 +18,7 @@ impl RegionData {
     pub fn load(spec: &RegionSpec) -> Result<Self, CliError> {
         let spec = match spec {
             RegionSpec::Svg(path) => {
-                let (points, ends) = crate::io::svgin::read_outline(path)?;
+                let (points, ends) = crate::io::svgin::read_outline(path).map_err(|e| outline_error(path, e))?;
                 outers_first(&points, &ends)
             }
             RegionSpec::Polygon { points, ends } => outers_first(points, ends),
@@ -29,10 +30,7 @@ impl RegionData {
     /// The core region (validating polygons).
     pub fn region(&self, periodic: bool) -> Result<Region<'_>, CliError> {
         if periodic && !matches!(self.spec, RegionSpec::Rect { .. }) {
-            return Err(CliError::arg(
-                "--periodic",
-                "only rect:W:H regions can be periodic; remove --periodic or use a rect region",
-            ));
+            return Err(not_periodic());
         }
         Ok(match &self.spec {
             RegionSpec::Rect { width, height } => Region::Rect {
@@ -45,9 +43,7 @@ impl RegionData {
                 outer: *outer,
                 inner: *inner,
             },
-            RegionSpec::Polygon { points, ends } => Region::Polygon(
-                PolygonRegion::new(points, ends).map_err(|e| CliError::arg("--region", format!("{e}; give a simple outline")))?,
-            ),
+            RegionSpec::Polygon { points, ends } => Region::Polygon(PolygonRegion::new(points, ends).map_err(polygon_error)?),
             RegionSpec::Svg(_) => return Err(CliError::Io("internal: SVG region not loaded".into())),
         })
     }
@@ -123,14 +119,14 @@ fn outers_first(points: &[zetafill::Point<f64>], ends: &[usize]) -> RegionSpec {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::args::spec;
+    use zetafill::Point;
 
     #[test]
     fn outlines_come_before_holes() {
         // A hole, the outline around it, and an island beside them.
-        let Ok(RegionSpec::Polygon { points, ends }) = spec::region("polygon:4,4,6,4,6,6/0,0,10,0,10,10,0,10/20,0,30,0,30,9") else {
-            panic!("rings refused");
-        };
+        let xy = [4, 4, 6, 4, 6, 6, 0, 0, 10, 0, 10, 10, 0, 10, 20, 0, 30, 0, 30, 9];
+        let points: Vec<Point<f64>> = xy.chunks(2).map(|c| Point::new(f64::from(c[0]), f64::from(c[1]))).collect();
+        let ends = [3, 7, 10];
         let RegionSpec::Polygon { points: p, ends: e } = outers_first(&points, &ends) else {
             panic!("not a polygon");
         };

@@ -2,11 +2,12 @@
 //! interval of length `L` (Shier and Bourke, *An Algorithm for Random Fractal Filling of Space*, Figure 3), run by the core's [`zetafill::LineEngine`], and
 //! its outputs: SVG (dashes, circles, bars or zoom rows), PNG, JSON, CSV and the digest.
 
-use crate::args::format::Format;
-use crate::cmd::stopping::{self, Unit};
+use crate::cmd::stopping;
 use crate::error::CliError;
-use crate::plan::line::{first_segment_error, halt_advice, param_error, LineDraw, LinePlan, LineRun};
+use crate::plan::format::Format;
+use crate::plan::line::{first_segment_error, halt_advice, param_error, LineDraw, LinePlan, LineRun, SEGMENTS};
 use crate::plan::plot::GcodePlan;
+use crate::plan::raster::png_error;
 use std::fmt::Write as _;
 use zetafill::StepError;
 use zetafill::{line_index_words, LineEngine, LineStorage, Segment, StopReason};
@@ -14,41 +15,9 @@ use zetafill::{line_index_words, LineEngine, LineStorage, Segment, StopReason};
 pub mod doc;
 pub mod picture;
 
-pub use crate::args::line::MAX_SEGMENTS;
 pub use doc::{IntervalDoc, LineDoc, LineParamsDoc, LineStatsDoc, SegmentDoc};
 use picture::drawing_flags;
 pub use picture::{command_line, picture, plotter_picture, LineSvgOptions};
-
-/// What a 1D run places.
-const SEGMENTS: Unit = Unit {
-    plural: "segments",
-    max: MAX_SEGMENTS,
-};
-
-/// How segments are drawn in SVG and PNG.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Render {
-    /// Each segment a stroke along one line: one pen-down per segment.
-    Dashes,
-    /// Each segment a circle of diameter L_i centred on the line (the paper's Figure 3).
-    Circles,
-    /// Each segment a filled bar `--bar-height` tall (for engraving).
-    Bars,
-    /// Rows of circles, each zooming into the central `--zoom-fraction` of the row above.
-    Zoom,
-}
-
-impl Render {
-    /// The name `--render` takes.
-    pub fn name(self) -> &'static str {
-        match self {
-            Render::Dashes => "dashes",
-            Render::Circles => "circles",
-            Render::Bars => "bars",
-            Render::Zoom => "zoom",
-        }
-    }
-}
 
 /// Runs the fill and returns the document (and the halt, if any). Nothing is written.
 pub fn compute(a: &LineRun) -> Result<(LineDoc, Option<StepError>), CliError> {
@@ -203,7 +172,7 @@ pub fn render(doc: &LineDoc, format: Format, d: &LineDraw) -> Result<Vec<u8>, Cl
         Format::Json => render_json(doc)?,
         Format::Csv => render_csv(doc),
         Format::Digest => render_digest(doc),
-        Format::Png => d.raster.render(&render_svg(doc, &opt))?,
+        Format::Png => d.raster.render(&render_svg(doc, &opt)).map_err(png_error)?,
         Format::Gcode => render_gcode(doc, &opt, d.gcode.as_ref().ok_or_else(no_gcode)?, d.quiet)?,
     })
 }

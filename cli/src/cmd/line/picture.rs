@@ -3,11 +3,11 @@
 //! wrapping segment, hatching, `--min-feature`), and the command line that reproduces them.
 
 use super::doc::{LineDoc, SegmentDoc};
-use super::Render;
 use crate::error::CliError;
 use crate::model::picture::ClipDef;
 use crate::model::{Item, Layer, Paint, Picture, Shape};
 use crate::output::svg::Style;
+use crate::plan::line::{no_zoom_gcode, Render};
 use std::fmt::Write as _;
 
 /// Drawn sizes below this (mm) round to zero at four decimals and are left out of the SVG.
@@ -386,7 +386,7 @@ pub fn plotter_picture(doc: &LineDoc, opt: &LineSvgOptions, build: &crate::model
             }
             h
         }
-        Render::Zoom => return Err(CliError::arg("--render", "zoom has no G-code form; use dashes, circles or bars")),
+        Render::Zoom => return Err(no_zoom_gcode()),
     };
     let (mut layers, of) = layered(Layer::default(), opt, doc.shapes.len());
     // Circles may reach past the ends of the interval: the frame holds them all.

@@ -11,8 +11,8 @@
 
 use super::chart::{self, HaltingSeries};
 use super::trials::{run_2d, shape_label, RunSpec};
-use crate::args::stats::ChartFormat;
 use crate::error::CliError;
+use crate::plan::format::ChartFormat;
 use crate::plan::stats::HaltingPlan;
 use rayon::prelude::*;
 use std::fmt::Write as _;

@@ -12,8 +12,8 @@
 //! spread over the cores with rayon and collected in order.
 
 use super::chart::{self, TrialsSeries};
-use crate::args::stats::ChartFormat;
 use crate::error::CliError;
+use crate::plan::format::ChartFormat;
 use crate::plan::stats::{exponent_error, Scene, TrialsPlan};
 use rayon::prelude::*;
 use std::fmt::Write as _;

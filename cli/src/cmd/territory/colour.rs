@@ -109,41 +109,6 @@ pub fn hex(hsb: [f64; 3]) -> String {
     format!("#{r:02x}{g:02x}{b:02x}")
 }
 
-/// Parses a colour rule `H,S,B` or `H,S,B:DH,DS,DB` (`--color`); without the step, `None`
-/// for d (drawn at random).
-pub fn parse_rule(s: &str) -> Result<(/* c */ [f64; 3], Option<[f64; 3]>), String> {
-    let triple = |part: &str, what: &str| -> Result<[f64; 3], String> {
-        let v: Vec<&str> = part.split(',').collect();
-        if v.len() != 3 {
-            return Err(format!(
-                "{what} needs three comma-separated numbers (got '{part}'); write H,S,B or H,S,B:DH,DS,DB"
-            ));
-        }
-        let mut out = [0.0; 3];
-        for (o, x) in out.iter_mut().zip(&v) {
-            let n: f64 = x.trim().parse().map_err(|_| format!("{what}: '{x}' is not a number"))?;
-            if !n.is_finite() {
-                return Err(format!("{what}: '{x}' is not a finite number"));
-            }
-            *o = n;
-        }
-        Ok(out)
-    };
-    let mut parts = s.split(':');
-    let c = triple(parts.next().unwrap_or(""), "the seed colour H,S,B")?;
-    if let Some(bad) = c.iter().find(|v| !(0.0..=1.0).contains(*v)) {
-        return Err(format!("the seed colour H,S,B must lie in [0, 1] each (got {bad})"));
-    }
-    let d = match parts.next() {
-        Some(p) => Some(triple(p, "the step DH,DS,DB")?),
-        None => None,
-    };
-    if parts.next().is_some() {
-        return Err(format!("'{s}' has more than one ':'; write H,S,B or H,S,B:DH,DS,DB"));
-    }
-    Ok((c, d))
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -178,17 +143,5 @@ mod tests {
         assert_eq!(hsb_to_rgb([1.0 / 3.0, 1.0, 1.0]), [0, 255, 0]);
         assert_eq!(hsb_to_rgb([2.0 / 3.0, 1.0, 0.5]), [0, 0, 128]);
         assert_eq!(hsb_to_rgb([0.5, 0.0, 1.0]), [255, 255, 255]);
-    }
-
-    #[test]
-    fn rules_parse_or_say_why() {
-        assert_eq!(parse_rule("0.1,0.2,0.3"), Ok(([0.1, 0.2, 0.3], None)));
-        assert_eq!(parse_rule("0,1,1:-0.01,0,0.02"), Ok(([0.0, 1.0, 1.0], Some([-0.01, 0.0, 0.02]))));
-        assert!(parse_rule("0.1,0.2").is_err());
-        assert!(parse_rule("0.1,0.2,1.5").is_err());
-        assert!(parse_rule("0.1,x,0.3").is_err());
-        assert!(parse_rule("0.1,0.2,0.3:1,2").is_err());
-        assert!(parse_rule("0.1,0.2,0.3:1,2,nan").is_err());
-        assert!(parse_rule("0.1,0.2,0.3:1,2,3:4").is_err());
     }
 }

@@ -14,18 +14,20 @@ pub mod source;
 
 use crate::cmd::fill::region::RegionData;
 use crate::error::CliError;
-use crate::plan::territory::{fill_seeds_error, growth_error, no_seed_drawn, same_centre, seeds_error};
+use crate::plan::raster::png_error;
+use crate::plan::territory::Render;
+use crate::plan::territory::{fill_seeds_error, growth_error, no_seed_drawn, same_centre, seeds_error, sites_from_error};
 use crate::plan::territory::{TerritoryDraw, TerritoryPlan, TerritoryRun};
 use colour::Rule;
 use doc::{RuleDoc, SiteDoc, StatsDoc, TerritoryDoc, TerritoryParamsDoc, TerritoryStatsDoc};
 use geom::{Clip, Pt};
 use model::{Growth, Model};
-use render::{FillShape, Render, Style};
-use source::{bad_from, load_source};
+use render::{FillShape, Style};
+use source::load_source;
 use std::io::IsTerminal;
 use std::path::Path;
 
-pub use crate::args::territory::{TerritoryFormat, MAX_POINTS};
+use crate::plan::format::TerritoryFormat;
 
 /// The picture as G-code: its strokes (boundary polylines, with `cells` every other Voronoi
 /// edge, with `--boundary` the region's outline) placed on the machine's bed by the region's
@@ -155,7 +157,7 @@ pub fn compute(a: &TerritoryRun) -> Result<Outcome, CliError> {
             let b = bar(n);
             for &i in &order[k..] {
                 m.add(src.centres[i].0)
-                    .map_err(|e| bad_from(Path::new(&src.name), format!("shape {}: {e}", src.centres[i].1)))?;
+                    .map_err(|e| sites_from_error(Path::new(&src.name), format!("shape {}: {e}", src.centres[i].1)))?;
                 if let Some(b) = &b {
                     b.inc(1);
                 }
@@ -323,7 +325,7 @@ pub fn render_bytes(o: &Outcome, run: &TerritoryRun, d: &TerritoryDraw, format: 
     Ok(match format {
         TerritoryFormat::Gcode => gcode(&picture(), d, desc.clone())?,
         TerritoryFormat::Svg => crate::output::svg::write(&picture()),
-        TerritoryFormat::Png => d.raster.render(&crate::output::svg::write(&picture()))?,
+        TerritoryFormat::Png => d.raster.render(&crate::output::svg::write(&picture())).map_err(png_error)?,
         TerritoryFormat::Json => {
             let mut v = serde_json::to_vec(&o.doc).map_err(|e| CliError::Io(format!("cannot encode JSON: {e}")))?;
             v.push(b'\n');

@@ -33,42 +33,16 @@
 //! bucket floor(t - boost B) (each class in its own maintained order); then x, y inside the
 //! bucket; a rejected draw starts again from u.
 
+use crate::geometry::site::SiteError;
 use crate::geometry::voronoi::{p2, Clip, Pt};
 use spade::handles::FixedVertexHandle;
 use spade::{DelaunayTriangulation, HierarchyHintGenerator, Point2, Triangulation};
 use std::collections::VecDeque;
-use std::fmt;
 use zetafill::internals::rng::uniform;
 use zetafill::ZetaRng;
 
 /// The triangulation: positions only, with an O(log n) point-location hierarchy.
 pub type Tri = DelaunayTriangulation<Point2<f64>, (), (), (), HierarchyHintGenerator<f64>>;
-
-/// Why a site could not be added.
-#[derive(Debug, Clone, PartialEq)]
-pub enum ModelError {
-    /// The point lies exactly on site `index`.
-    Coincident {
-        /// The existing site.
-        index: usize,
-    },
-    /// A coordinate spade cannot hold (not finite, or out of its range).
-    Coordinate(String),
-    /// Fewer than two seeds.
-    TooFewSeeds,
-}
-
-impl fmt::Display for ModelError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            ModelError::Coincident { index } => write!(f, "the point coincides with site {index}"),
-            ModelError::Coordinate(e) => write!(f, "a coordinate is out of range ({e})"),
-            ModelError::TooFewSeeds => f.write_str("at least 2 seeds are needed"),
-        }
-    }
-}
-
-impl std::error::Error for ModelError {}
 
 /// The growth parameters.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -137,9 +111,9 @@ pub struct Model {
 
 impl Model {
     /// The model with its seeds: seed t owns territory t.
-    pub fn new(seeds: &[Pt]) -> Result<Model, ModelError> {
+    pub fn new(seeds: &[Pt]) -> Result<Model, SiteError> {
         if seeds.len() < 2 {
-            return Err(ModelError::TooFewSeeds);
+            return Err(SiteError::TooFewSeeds);
         }
         let mut m = Model {
             tri: Tri::new(),
@@ -154,7 +128,7 @@ impl Model {
         };
         for (t, &p) in seeds.iter().enumerate() {
             if let Some(i) = m.sites.iter().position(|&q| q == p) {
-                return Err(ModelError::Coincident { index: i });
+                return Err(SiteError::Coincident { index: i });
             }
             m.push(p, t as u32)?;
         }
@@ -171,11 +145,11 @@ impl Model {
         self.sites.is_empty()
     }
 
-    fn push(&mut self, p: Pt, t: u32) -> Result<usize, ModelError> {
+    fn push(&mut self, p: Pt, t: u32) -> Result<usize, SiteError> {
         let i = self.sites.len();
-        let h = self.tri.insert(p2(p)).map_err(|e| ModelError::Coordinate(e.to_string()))?;
+        let h = self.tri.insert(p2(p)).map_err(|e| SiteError::Coordinate(e.to_string()))?;
         if h.index() != i {
-            return Err(ModelError::Coincident { index: h.index() });
+            return Err(SiteError::Coincident { index: h.index() });
         }
         self.sites.push(p);
         self.territory.push(t);
@@ -191,19 +165,19 @@ impl Model {
 
     /// Adds a point (Procedure 1, steps 4 and 5) and repairs connectivity (section 4.1).
     /// Returns the new site's index.
-    pub fn add(&mut self, p: Pt) -> Result<usize, ModelError> {
-        let near = self.nearest(p).ok_or(ModelError::TooFewSeeds)?;
+    pub fn add(&mut self, p: Pt) -> Result<usize, SiteError> {
+        let near = self.nearest(p).ok_or(SiteError::TooFewSeeds)?;
         if self.sites[near] == p {
-            return Err(ModelError::Coincident { index: near });
+            return Err(SiteError::Coincident { index: near });
         }
         let t = self.territory[near];
         let i = self.sites.len();
         let h = self
             .tri
             .insert_with_hint(p2(p), FixedVertexHandle::from_index(near))
-            .map_err(|e| ModelError::Coordinate(e.to_string()))?;
+            .map_err(|e| SiteError::Coordinate(e.to_string()))?;
         if h.index() != i {
-            return Err(ModelError::Coincident { index: h.index() });
+            return Err(SiteError::Coincident { index: h.index() });
         }
         self.sites.push(p);
         self.territory.push(t);
@@ -404,7 +378,7 @@ impl Model {
     }
 
     /// Draws one new point as section 4.2 says (or uniformly) and adds it.
-    pub fn grow_one(&mut self, clip: &Clip, g: &Growth, rng: &mut ZetaRng) -> Result<usize, ModelError> {
+    pub fn grow_one(&mut self, clip: &Clip, g: &Growth, rng: &mut ZetaRng) -> Result<usize, SiteError> {
         let i = self.sites.len() + 1; // the paper's i: this is P_i
         if !g.uniform && i >= g.n0 {
             let m = bucket_side(g.s, i);
@@ -425,15 +399,15 @@ impl Model {
                 continue;
             }
             match self.add(p) {
-                Err(ModelError::Coincident { .. }) => self.counters.rejected += 1,
+                Err(SiteError::Coincident { .. }) => self.counters.rejected += 1,
                 r => return r,
             }
         }
-        Err(ModelError::Coordinate("no point of the region could be drawn".into()))
+        Err(SiteError::Coordinate("no point of the region could be drawn".into()))
     }
 
     /// Grows the pattern until it has `g.points` sites; `tick` runs after each point.
-    pub fn grow(&mut self, clip: &Clip, g: &Growth, rng: &mut ZetaRng, mut tick: impl FnMut(usize)) -> Result<(), ModelError> {
+    pub fn grow(&mut self, clip: &Clip, g: &Growth, rng: &mut ZetaRng, mut tick: impl FnMut(usize)) -> Result<(), SiteError> {
         while self.sites.len() < g.points {
             let i = self.grow_one(clip, g, rng)?;
             tick(i);
@@ -587,11 +561,11 @@ mod tests {
     fn coincident_seeds_are_refused() {
         assert!(matches!(
             Model::new(&[[1.0, 1.0], [1.0, 1.0]]),
-            Err(ModelError::Coincident { index: 0 })
+            Err(SiteError::Coincident { index: 0 })
         ));
-        assert!(matches!(Model::new(&[[1.0, 1.0]]), Err(ModelError::TooFewSeeds)));
+        assert!(matches!(Model::new(&[[1.0, 1.0]]), Err(SiteError::TooFewSeeds)));
         let mut m = Model::new(&[[1.0, 1.0], [2.0, 2.0]]).unwrap_or_else(|e| panic!("{e}"));
-        assert!(matches!(m.add([2.0, 2.0]), Err(ModelError::Coincident { index: 1 })));
+        assert!(matches!(m.add([2.0, 2.0]), Err(SiteError::Coincident { index: 1 })));
         assert_eq!(m.len(), 2);
     }
 }

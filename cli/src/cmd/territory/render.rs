@@ -16,31 +16,7 @@ use super::Outcome;
 use crate::geometry::voronoi::{self as geom, Clip, Dual, Pt};
 use crate::model::picture::ClipDef;
 use crate::model::{Bounds, Item, Layer, Paint, Path, Picture, Shape};
-
-/// What to draw.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Render {
-    /// Territory boundaries as merged polylines (plotters).
-    Boundaries,
-    /// All Voronoi edges: cells thin, boundaries at pen width (two layers).
-    Cells,
-    /// Cells filled with their HSB colours (screens, prints).
-    Filled,
-    /// The fill's own shapes filled with their site's colour (only with --sites-from).
-    Shapes,
-}
-
-impl Render {
-    /// The name as on the command line.
-    pub fn name(self) -> &'static str {
-        match self {
-            Render::Boundaries => "boundaries",
-            Render::Cells => "cells",
-            Render::Filled => "filled",
-            Render::Shapes => "shapes",
-        }
-    }
-}
+use crate::plan::territory::Render;
 
 /// A shape of the fill the sites came from.
 #[derive(Debug, Clone, PartialEq)]

@@ -5,6 +5,7 @@ use super::geom::Pt;
 use super::render::FillShape;
 use crate::error::CliError;
 use crate::model::doc::RegionDoc;
+use crate::plan::territory::{not_a_fill, sites_from_error};
 use serde_json::Value;
 use std::path::Path;
 
@@ -18,11 +19,6 @@ pub struct Source {
     pub name: String,
 }
 
-/// A `--sites-from` file that cannot serve, and why.
-pub fn bad_from(path: &Path, msg: impl std::fmt::Display) -> CliError {
-    CliError::arg("--sites-from", format!("'{}': {msg}", path.display()))
-}
-
 fn num_pair(v: &Value) -> Option<Pt> {
     let a = v.as_array()?;
     match a.as_slice() {
@@ -33,15 +29,13 @@ fn num_pair(v: &Value) -> Option<Pt> {
 
 /// Reads a fill's JSON: its region and its shapes' centres, in fill order.
 pub fn load_source(path: &Path) -> Result<Source, CliError> {
-    let bytes = std::fs::read(path).map_err(|e| bad_from(path, format!("cannot read it ({e})")))?;
-    let v: Value = serde_json::from_slice(&bytes).map_err(|e| bad_from(path, format!("not JSON ({e}); give a fill's JSON output")))?;
+    let bytes = std::fs::read(path).map_err(|e| sites_from_error(path, format!("cannot read it ({e})")))?;
+    let v: Value =
+        serde_json::from_slice(&bytes).map_err(|e| sites_from_error(path, format!("not JSON ({e}); give a fill's JSON output")))?;
     if v.get("mode").and_then(Value::as_str) != Some("fill") {
-        return Err(bad_from(
-            path,
-            "not a fill's JSON (no \"mode\": \"fill\"); write one with zetafill fill -o FILE.json",
-        ));
+        return Err(not_a_fill(path));
     }
-    let r = v.get("region").ok_or_else(|| bad_from(path, "no region"))?;
+    let r = v.get("region").ok_or_else(|| sites_from_error(path, "no region"))?;
     let f = |k: &str| r.get(k).and_then(Value::as_f64).filter(|x| x.is_finite());
     let ring = |x: &Value| -> Option<Vec<Pt>> { x.as_array()?.iter().map(num_pair).collect() };
     let region = match r.get("kind").and_then(Value::as_str) {
@@ -73,18 +67,18 @@ pub fn load_source(path: &Path) -> Result<Source, CliError> {
         }
         _ => None,
     }
-    .ok_or_else(|| bad_from(path, "its region is malformed"))?;
+    .ok_or_else(|| sites_from_error(path, "its region is malformed"))?;
     let shapes = v
         .get("shapes")
         .and_then(Value::as_array)
-        .ok_or_else(|| bad_from(path, "no shapes"))?;
+        .ok_or_else(|| sites_from_error(path, "no shapes"))?;
     let mut centres = Vec::with_capacity(shapes.len());
     for (i, s) in shapes.iter().enumerate() {
         let c = s
             .get("center")
             .and_then(num_pair)
             .filter(|c| c[0].is_finite() && c[1].is_finite())
-            .ok_or_else(|| bad_from(path, format!("shape {i} has no centre")))?;
+            .ok_or_else(|| sites_from_error(path, format!("shape {i} has no centre")))?;
         let index = s.get("index").and_then(Value::as_u64).unwrap_or(i as u64);
         let radius = s.get("radius").and_then(Value::as_f64);
         let shape = match (

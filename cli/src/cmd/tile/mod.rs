@@ -1,20 +1,22 @@
 //! `zetafill tile`: the scale-periodic fractal tile of the "Fractal Tiles" post: a texture of
 //! discs (or Voronoi cobblestones of their centres) that matches itself left and right, two
 //! half-scale copies of itself along its top and a double-scale copy along its bottom. Drawn
-//! alone, as a mosaic of rows of copies, or as a planet of rings ([`render`]); the discs
-//! themselves as JSON. How the tile is grown is in [`model`].
+//! alone, as a mosaic of rows of copies, or as a planet of rings
+//! ([`crate::model::tile::layout`]); the discs themselves as JSON. How the tile is grown is in
+//! [`model`], its picture in [`render`].
 
 pub mod model;
 pub mod render;
 
-use crate::args::tile::TileFormat;
 use crate::error::CliError;
 use crate::model::picture::ClipDef;
+use crate::model::tile::{Layout, Render, Sheet, Style, TileSpec};
 use crate::model::{Bounds, Item, Layer, Paint, Path, Picture, Shape};
 use crate::output::num;
+use crate::plan::format::TileFormat;
+use crate::plan::raster::{height_map_error, png_error};
 use crate::plan::tile::{layout_name, seams_apart, too_many_pieces, TileDraw, TilePlan, TileRun};
-use model::{Tile, TileSpec};
-use render::{Layout, Render, Sheet, Style};
+use model::Tile;
 use serde::Serialize;
 use std::io::IsTerminal;
 
@@ -331,7 +333,7 @@ pub fn output(a: &TileRun, d: &TileDraw, format: TileFormat) -> Result<(Tile, Ve
     }
     if let (TileFormat::Png, Some(relief)) = (format, d.relief) {
         let command = format!("{} --relief {}{}", command_line(a, d), relief.name(), d.raster.flag());
-        let size = crate::output::height::grid((w, h), &d.raster)?;
+        let size = crate::output::height::grid((w, h), &d.raster).map_err(height_map_error)?;
         let stones = render::stones(&tile, a.render)?;
         let bytes = crate::output::height::render_shapes(&stones, (0.0, 0.0, w, h), false, relief, size, &command)?;
         return Ok((tile, bytes));
@@ -381,7 +383,7 @@ pub fn output(a: &TileRun, d: &TileDraw, format: TileFormat) -> Result<(Tile, Ve
             };
             let svg = svg(laid, arr.sheet(w, h), &look, &title, &command_line(a, d));
             if format == TileFormat::Png {
-                d.raster.render(&svg)?
+                d.raster.render(&svg).map_err(png_error)?
             } else {
                 svg
             }

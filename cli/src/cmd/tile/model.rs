@@ -1,6 +1,7 @@
 //! The scale-periodic tile of the "Fractal Tiles" post: discs in a W x H tile that matches
 //! itself left and right, two half-scale copies of itself along its top, and (as one of the
-//! halves) a double-scale copy along its bottom.
+//! halves) a double-scale copy along its bottom. Its parameters and the copies of the plane
+//! around it are [`TileSpec`] ([`crate::model::tile`]); this module grows it.
 //!
 //! ## The plane the tile lives in
 //! Row 0 is the tile repeated with period W over `0 <= y < H`; row r is the tile scaled by
@@ -33,25 +34,7 @@
 //! [`seam_gaps`](super::render::seam_gaps)).
 
 use crate::geometry::voronoi::Pt;
-
-/// The parameters of a tile.
-#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
-pub struct TileSpec {
-    /// Tile width (mm).
-    pub width: f64,
-    /// Tile height (mm).
-    pub height: f64,
-    /// Disc radius at the bottom edge (half of it at the top).
-    pub radius: f64,
-    /// Gap between discs at the bottom edge (half of it at the top).
-    pub spacing: f64,
-    /// Tries in all.
-    pub tries: u64,
-    /// RNG seed.
-    pub seed: u64,
-    /// Centres above `height * (1 - band)` get a twin whatever their disc does (0 for discs).
-    pub band: f64,
-}
+use crate::model::tile::{Map, TileSpec};
 
 /// One disc of the tile.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -74,108 +57,6 @@ pub struct Tile {
     /// Tries made.
     pub tries: u64,
 }
-
-/// A similarity of the plane: `p -> (s x + dx, s y + dy)`.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Map {
-    /// Scale.
-    pub s: f64,
-    /// Shift in x.
-    pub dx: f64,
-    /// Shift in y.
-    pub dy: f64,
-}
-
-impl Map {
-    /// The image of a point.
-    pub fn at(&self, p: Pt) -> Pt {
-        [self.s * p[0] + self.dx, self.s * p[1] + self.dy]
-    }
-}
-
-impl TileSpec {
-    /// `f(y) = 1 - y / 2H`: the factor on radius and spacing at height y of the plane.
-    pub fn factor(&self, y: f64) -> f64 {
-        1.0 - y / (2.0 * self.height)
-    }
-
-    /// The radius of a disc centred at height y.
-    pub fn radius_at(&self, y: f64) -> f64 {
-        self.radius * self.factor(y)
-    }
-
-    /// The gap two discs centred at heights `ya` and `yb` keep.
-    pub fn gap_between(&self, ya: f64, yb: f64) -> f64 {
-        self.spacing * self.factor(0.5 * (ya + yb))
-    }
-
-    /// Copies of the tile around it, the tile itself first: row 0 (shifted by -W, 0, W), row
-    /// 1 (half scale: the two above and those beyond each side), row -1 (double scale).
-    ///
-    /// For the tries (`picture` false), row -1 is shifted by every multiple of W that brings
-    /// it under the tile: the tile is the left half of one double-scale copy and the right
-    /// half of the next, and must fit both. For the picture (`picture` true), only the copies
-    /// of the plane around the tile at `[0, W]` (double-scale copies at `[-2W, 0]` and
-    /// `[0, 2W]`): with the doppelgangers, both halves see the same there.
-    pub fn maps(&self, picture: bool) -> Vec<Map> {
-        let (w, h) = (self.width, self.height);
-        let mut out = vec![
-            Map { s: 1.0, dx: 0.0, dy: 0.0 },
-            Map { s: 1.0, dx: -w, dy: 0.0 },
-            Map { s: 1.0, dx: w, dy: 0.0 },
-        ];
-        let above = if picture { -2..=3 } else { -1..=2 };
-        for a in above {
-            out.push(Map {
-                s: 0.5,
-                dx: f64::from(a) * 0.5 * w,
-                dy: h,
-            });
-        }
-        let below: &[i32] = if picture { &[-2, 0] } else { &[-3, -2, -1, 0, 1] };
-        for &j in below {
-            out.push(Map {
-                s: 2.0,
-                dx: f64::from(j) * w,
-                dy: -2.0 * h,
-            });
-        }
-        out
-    }
-
-    /// Why the parameters cannot make a tile, naming the flag to change.
-    pub fn check(&self) -> Result<(), (&'static str, String)> {
-        let quarter = 0.25 * self.width.min(self.height);
-        if self.radius + self.spacing > quarter {
-            return Err((
-                "--radius",
-                format!(
-                    "radius {} plus spacing {} is more than a quarter of the tile's smaller side ({}): a disc could reach two rows away; use a smaller --radius or --spacing, or a larger tile",
-                    self.radius, self.spacing, quarter
-                ),
-            ));
-        }
-        // Discs are at least R/2 in radius, so at most W H / (pi R^2 / 4) fit.
-        let most = (self.width / self.radius) * (self.height / self.radius) * 4.0 / core::f64::consts::PI;
-        if most.is_nan() || most > MAX_DISCS as f64 {
-            return Err((
-                "--radius",
-                format!(
-                    "a {} x {} mm tile could hold about {:.3e} discs of radius {:?} to {:?}, more than {MAX_DISCS}; use a larger --radius or a smaller tile",
-                    self.width,
-                    self.height,
-                    most,
-                    0.5 * self.radius,
-                    self.radius
-                ),
-            ));
-        }
-        Ok(())
-    }
-}
-
-/// The most discs a tile may be sized for (each costs up to a dozen copies in the tries).
-pub const MAX_DISCS: u64 = 4_000_000;
 
 /// A disc of the plane: an image of a tile disc.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -355,33 +236,6 @@ mod tests {
     }
 
     #[test]
-    fn the_size_law_matches_the_copies_above_and_below() {
-        let s = spec();
-        for y in [0.0, 10.0, 40.0, 79.9] {
-            // Half scale above: y -> H + y/2; double scale below: y -> 2y - 2H.
-            assert!((s.factor(s.height + 0.5 * y) - 0.5 * s.factor(y)).abs() < 1e-15);
-            assert!((s.factor(2.0 * y - 2.0 * s.height) - 2.0 * s.factor(y)).abs() < 1e-15);
-        }
-        assert_eq!(s.radius_at(0.0), 5.0);
-        assert_eq!(s.radius_at(s.height), 2.5);
-    }
-
-    #[test]
-    fn the_tries_see_both_configurations_below_and_the_picture_one() {
-        let s = spec();
-        let count = |maps: &[Map], scale: f64| maps.iter().filter(|m| m.s == scale).count();
-        let tries = s.maps(false);
-        let picture = s.maps(true);
-        assert_eq!(tries[0], Map { s: 1.0, dx: 0.0, dy: 0.0 }, "the tile itself first");
-        assert_eq!((count(&tries, 1.0), count(&tries, 0.5), count(&tries, 2.0)), (3, 4, 5));
-        // Row -1 under the tile as a left half (even multiples of W) and a right half (odd).
-        let shifts: Vec<f64> = tries.iter().filter(|m| m.s == 2.0).map(|m| m.dx / s.width).collect();
-        assert!(shifts.contains(&0.0) && shifts.contains(&-1.0));
-        let shifts: Vec<f64> = picture.iter().filter(|m| m.s == 2.0).map(|m| m.dx / s.width).collect();
-        assert_eq!(shifts, [-2.0, 0.0]);
-    }
-
-    #[test]
     fn growing_is_deterministic_and_twins_pair_up() {
         let a = grow(&spec());
         assert_eq!(a, grow(&spec()));
@@ -393,15 +247,5 @@ mod tests {
                 assert!(((a.discs[t].c[0] - d.c[0]).abs() - 50.0).abs() < 1e-12);
             }
         }
-    }
-
-    #[test]
-    fn oversized_discs_are_refused_naming_the_radius() {
-        let s = TileSpec { radius: 19.5, ..spec() };
-        assert_eq!(s.check().map_err(|e| e.0), Err("--radius"));
-        assert!(TileSpec { radius: 19.0, ..spec() }.check().is_ok());
-        // Discs so small that millions would fit.
-        assert_eq!(TileSpec { radius: 0.04, ..spec() }.check().map_err(|e| e.0), Err("--radius"));
-        assert!(TileSpec { radius: 0.06, ..spec() }.check().is_ok());
     }
 }

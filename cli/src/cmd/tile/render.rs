@@ -1,48 +1,17 @@
-//! Drawings of a tile: the tile's own picture (what a texture holds), and two layouts built from
-//! copies of that picture (the "Fractal Tiles" post): the `mosaic`, rows of tiles each half the size of the row
-//! below, and the `planet`, rings of tiles each holding twice as many as the ring inside it.
-//!
-//! The picture is made of model [`Path`]s in the tile's frame: whole circles, open polylines
-//! (arcs and Voronoi edges cut exactly at the tile's edges) and closed polylines (filled
-//! shapes cut to the tile). It shows every disc of the plane that reaches into the tile, copies from the
-//! neighbouring tiles and rows included, so copies of the picture meet without a seam.
+//! The tile's own picture (what a texture holds): model [`Path`]s in the tile's frame, whole
+//! circles, open polylines (arcs and Voronoi edges cut exactly at the tile's edges) and closed
+//! polylines (filled shapes cut to the tile). It shows every disc of the plane that reaches
+//! into the tile, copies from the neighbouring tiles and rows included, so copies of the
+//! picture meet without a seam. The mosaic and the planet lay copies of it out
+//! ([`crate::model::tile::layout`]).
 
 use super::model::{images, Image, Tile};
 use crate::error::CliError;
 use crate::geometry::voronoi::{self as geom, Clip, Pt};
+use crate::model::tile::{Render, Style, TOLERANCE};
 use crate::model::Path;
 use spade::{DelaunayTriangulation, Triangulation};
-use std::f64::consts::{PI, TAU};
-
-/// What the tile shows.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Render {
-    /// The discs.
-    Discs,
-    /// Voronoi "cobblestones" of the disc centres.
-    Voronoi,
-}
-
-/// How pieces are drawn.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Style {
-    /// Outlines, for plotters (Voronoi: the cell edges).
-    Outline,
-    /// Filled shapes, for screens (Voronoi: the cells, inset by half the local spacing).
-    Filled,
-}
-
-/// What is laid out.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Layout {
-    /// The tile alone (the texture).
-    Tile,
-    /// Rows of tiles, each row half the scale of the one below, showing how the tile meets its
-    /// copies.
-    Mosaic,
-    /// Rings of tiles around a disc, each ring with twice as many tiles as the one inside it.
-    Planet,
-}
+use std::f64::consts::TAU;
 
 /// Which disc of the tile a piece belongs to (a disc, part of one, or its cobblestone), and
 /// that disc's radius where the piece shows it (in the tile's frame: an image from the row
@@ -54,9 +23,6 @@ pub struct Tag {
     /// Its radius as drawn in the tile's frame.
     pub r: f64,
 }
-
-/// Largest distance between a circle and its polygon (mm, in the tile's frame).
-const TOLERANCE: f64 = 0.002;
 
 /// Points on the circle `(c, r)` from angle `a0` to `a1` (counter-clockwise), both ends
 /// included, with chords within [`TOLERANCE`] of the arc.
@@ -383,175 +349,6 @@ pub fn seam_gaps(e: &Ends, w: f64) -> f64 {
     let (lo, hi): (Vec<f64>, Vec<f64>) = e.top.iter().partition(|&&x| x < 0.5 * w);
     let hi: Vec<f64> = hi.iter().map(|x| x - 0.5 * w).collect();
     worst(&e.left, &e.right).max(worst(&half, &lo)).max(worst(&half, &hi))
-}
-
-/// The size (mm) of a layout's drawing.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Sheet {
-    /// Width.
-    pub width: f64,
-    /// Height.
-    pub height: f64,
-}
-
-/// How the copies are laid out.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Arrangement {
-    /// The layout.
-    pub layout: Layout,
-    /// Rows of tiles (mosaic, planet).
-    pub rows: u32,
-    /// Tiles in the bottom row (mosaic) or the innermost ring (planet).
-    pub columns: u32,
-    /// The planet's outer radius (mm): where the rings pile up.
-    pub radius: f64,
-}
-
-impl Arrangement {
-    /// The ring-0 thickness of the planet: rings are conformal at the surface, so a tile's
-    /// height over its width there is the tile's own.
-    pub fn ring_height(&self, w: f64, h: f64) -> f64 {
-        TAU * self.radius * h / (f64::from(self.columns) * w)
-    }
-
-    /// Why the arrangement cannot be drawn, naming the flag to change.
-    pub fn check(&self, w: f64, h: f64) -> Result<(), (&'static str, String)> {
-        if self.layout == Layout::Planet {
-            let need = (2.0 * TAU * h / w).floor() as u32 + 1;
-            if self.columns < need {
-                return Err((
-                    "--columns",
-                    format!(
-                        "a planet of {w} x {h} mm tiles needs at least {need} tiles in its inner ring (got {}): with fewer the rings would cross the centre",
-                        self.columns
-                    ),
-                ));
-            }
-        }
-        Ok(())
-    }
-
-    /// How many copies of the tile's picture the layout draws.
-    pub fn copies(&self) -> u64 {
-        match self.layout {
-            Layout::Tile => 1,
-            _ => u64::from(self.columns).saturating_mul((1u64 << self.rows) - 1),
-        }
-    }
-
-    /// The drawing's size.
-    pub fn sheet(&self, w: f64, h: f64) -> Sheet {
-        match self.layout {
-            Layout::Tile => Sheet { width: w, height: h },
-            Layout::Mosaic => Sheet {
-                width: f64::from(self.columns) * w,
-                height: 2.0 * h * (1.0 - 0.5f64.powi(self.rows as i32)),
-            },
-            Layout::Planet => Sheet {
-                width: 2.0 * self.radius,
-                height: 2.0 * self.radius,
-            },
-        }
-    }
-
-    /// The planet's map from the plane of rows to the sheet: x around, y outwards.
-    fn polar(&self, w: f64, h: f64, p: Pt) -> Pt {
-        let theta = TAU * p[0] / (f64::from(self.columns) * w);
-        let rho = self.radius - (2.0 * h - p[1]) * self.ring_height(w, h) / h;
-        [self.radius + rho * theta.cos(), self.radius + rho * theta.sin()]
-    }
-
-    /// The copies of the tile's picture, on the sheet.
-    ///
-    /// With `whole` (the tile's own shapes, whole: see [`own_pieces`]), a mosaic also lays out
-    /// the copies just outside the sheet (a column each side, a row below and above), whose
-    /// shapes reach in across its edges; the sheet's edge cuts them.
-    pub fn lay_out(&self, pieces: &[Path], w: f64, h: f64, whole: bool) -> Vec<Path> {
-        self.lay_out_scaled(pieces, w, h, whole).0
-    }
-
-    /// [`Arrangement::lay_out`], with the scale of the copy each laid-out piece is in (1 for
-    /// the bottom row, 1/2 for the next, ...). Piece `j` of the result is a copy of piece
-    /// `j mod pieces.len()`.
-    pub fn lay_out_scaled(&self, pieces: &[Path], w: f64, h: f64, whole: bool) -> (Vec<Path>, Vec<f64>) {
-        if self.layout == Layout::Tile {
-            return (pieces.to_vec(), vec![1.0; pieces.len()]);
-        }
-        let rim = whole && self.layout == Layout::Mosaic;
-        let rows: Vec<i32> = if rim {
-            (-1..=self.rows as i32).collect()
-        } else {
-            (0..self.rows as i32).collect()
-        };
-        let mut out = Vec::new();
-        let mut scales = Vec::new();
-        for k in rows {
-            let s = 0.5f64.powi(k);
-            let y0 = 2.0 * h * (1.0 - s);
-            // Tiles across the sheet in row k (a row below has half as many, rounded up).
-            let count = if k >= 0 {
-                i64::from(self.columns) << k
-            } else {
-                (i64::from(self.columns) + 1) / 2
-            };
-            let (first, last) = if rim { (-1, count) } else { (0, count - 1) };
-            for i in first..=last {
-                let x0 = i as f64 * w * s;
-                let plane = |p: Pt| [x0 + s * p[0], y0 + s * p[1]];
-                for piece in pieces {
-                    out.push(match self.layout {
-                        Layout::Planet => self.bend(piece, s, w, h, plane),
-                        _ => piece.transformed(s, s, x0, y0),
-                    });
-                }
-                scales.resize(out.len(), s);
-            }
-        }
-        (out, scales)
-    }
-
-    /// A piece through the planet's map: circles (the tile's only arcs) become polygons, and
-    /// straight segments are cut short enough to follow the curve.
-    fn bend(&self, piece: &Path, s: f64, w: f64, h: f64, plane: impl Fn(Pt) -> Pt) -> Path {
-        let map = |p: Pt| self.polar(w, h, plane(p));
-        // Segment length (tile frame) that keeps the bent chord within the tolerance.
-        let step = w / 64.0;
-        let dense = |l: &[Pt], closed: bool| -> Vec<Pt> {
-            let mut out = Vec::new();
-            let n = l.len();
-            let segs = if closed { n } else { n.saturating_sub(1) };
-            for i in 0..segs {
-                let (a, b) = (l[i], l[(i + 1) % n]);
-                let len = geom::dist2(a, b).sqrt();
-                let m = ((len / step).ceil() as usize).max(1);
-                for j in 0..m {
-                    let t = j as f64 / m as f64;
-                    out.push(map([a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])]));
-                }
-            }
-            if !closed {
-                if let Some(&last) = l.last() {
-                    out.push(map(last));
-                }
-            }
-            out
-        };
-        match piece {
-            Path::Arc { center: c, radius: r, .. } => {
-                // As many sides as the circle needs at its drawn size (at least 12).
-                let drawn = r * s * self.ring_height(w, h) / h;
-                let n = ((PI / (1.0 - (TOLERANCE / drawn).min(1.0)).acos()).ceil() as usize).clamp(12, 256);
-                let ring: Vec<Pt> = (0..n)
-                    .map(|k| {
-                        let a = TAU * k as f64 / n as f64;
-                        map([c[0] + r * a.cos(), c[1] + r * a.sin()])
-                    })
-                    .collect();
-                Path::polyline(ring, true)
-            }
-            Path::Polyline { points, closed } => Path::polyline(dense(points, *closed), *closed),
-        }
-    }
 }
 
 #[cfg(test)]

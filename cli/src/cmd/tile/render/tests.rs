@@ -1,6 +1,7 @@
 //! Unit tests of [`super`].
 
 use super::*;
+use std::f64::consts::PI;
 
 #[test]
 fn arcs_end_exactly_on_the_edges_they_cross() {

@@ -871,8 +871,30 @@ fn bad_input_names_the_flag_and_writes_nothing() {
     std::fs::write(d.join("wrong.toml"), servo.replace("draw = 3000.0", "draw = \"fast\"")).unwrap_or_else(|e| panic!("{e}"));
     std::fs::write(d.join("extra.toml"), servo.replace("arcs = true", "arcs = true\nspeed = 3")).unwrap_or_else(|e| panic!("{e}"));
     std::fs::write(d.join("negfeed.toml"), servo.replace("draw = 3000.0", "draw = 0.0")).unwrap_or_else(|e| panic!("{e}"));
+    let (_, laser) = builtin_profile(d, "grbl-laser");
+    let bad_laser = [
+        (
+            "laser-on.toml",
+            laser.replace("tool_off = \"\"\"\nM5 S0", "tool_off = \"\"\"\nM3 S1000"),
+        ),
+        (
+            "relative.toml",
+            laser.replace("start = \"\"\"\nM5 S0", "start = \"\"\"\nM5 S0\nG91"),
+        ),
+        ("home.toml", laser.replace("M2\n", "G28\nM2\n")),
+        ("tiny-feed.toml", laser.replace("draw = 1000.0", "draw = 1e-300")),
+    ];
+    for (name, text) in &bad_laser {
+        assert_ne!(text, &laser, "{name} differs from the built-in");
+        std::fs::write(d.join(name), text).unwrap_or_else(|e| panic!("{e}"));
+    }
     std::fs::create_dir(d.join("dir.gcode")).unwrap_or_else(|e| panic!("{e}"));
     let cases: &[(&[&str], &str, &str)] = &[
+        (&["--machine", "laser-on.toml"], "--machine", "tool_off: must turn the laser off"),
+        (&["--machine", "relative.toml"], "--machine", "start, line 2: 'G91'"),
+        (&["--machine", "home.toml"], "--machine", "'G28' is not allowed"),
+        (&["--machine", "tiny-feed.toml"], "--machine", "feed.draw"),
+        (&["--feed", "1e-300"], "--feed", "positive"),
         (&["--machine", "grbl-lazer"], "--machine", "unknown machine"),
         (&["--machine", "missing.toml"], "--machine", "tool_off"),
         (&["--machine", "wrong.toml"], "--machine", "draw"),

@@ -6,6 +6,7 @@ use crate::error::CliError;
 use crate::model::fill::BuildOptions;
 use crate::model::hatch;
 use crate::model::Fit;
+use crate::output::machine::{MAX_FEED, MIN_FEED};
 use crate::output::order::PathOrder;
 use crate::output::{gcode, machine};
 use clap::{Args, ValueEnum};
@@ -367,14 +368,20 @@ impl PlotArgs {
     pub fn gcode_options(&self, m: &machine::Machine) -> Result<gcode::GcodeOptions, CliError> {
         let mut o = gcode::GcodeOptions::new(m);
         if let Some(f) = self.feed {
-            if f <= 0.0 {
-                return Err(CliError::arg("--feed", format!("{f} mm/min: a feed must be positive")));
+            if !(MIN_FEED..=MAX_FEED).contains(&f) {
+                return Err(CliError::arg(
+                    "--feed",
+                    format!("{f} mm/min: a feed must be positive, from {MIN_FEED} to {MAX_FEED} mm/min"),
+                ));
             }
             o.feed = f;
         }
         if let Some(f) = self.travel_feed {
-            if f <= 0.0 {
-                return Err(CliError::arg("--travel-feed", format!("{f} mm/min: a feed must be positive")));
+            if !(MIN_FEED..=MAX_FEED).contains(&f) {
+                return Err(CliError::arg(
+                    "--travel-feed",
+                    format!("{f} mm/min: a feed must be positive, from {MIN_FEED} to {MAX_FEED} mm/min"),
+                ));
             }
             o.travel_feed = f;
         }

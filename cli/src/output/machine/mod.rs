@@ -7,14 +7,18 @@
 //! The bed frame has (0, 0) at the bed's front-left corner, x right, y away from the user;
 //! `origin` says where the machine's (0, 0) is and which way its y points.
 
+mod blocks;
+
 use crate::model::{Bounds, Pt};
+pub use blocks::{printable, MAX_FEED, MIN_FEED};
+use blocks::{Kind, Tool};
 use serde::{Deserialize, Serialize};
 
 /// The built-in profiles: name and TOML text.
 pub const BUILTINS: &[(&str, &str)] = &[
-    ("grbl-laser", include_str!("../../machines/grbl-laser.toml")),
-    ("grbl-servo-pen", include_str!("../../machines/grbl-servo-pen.toml")),
-    ("z-lift-pen", include_str!("../../machines/z-lift-pen.toml")),
+    ("grbl-laser", include_str!("../../../machines/grbl-laser.toml")),
+    ("grbl-servo-pen", include_str!("../../../machines/grbl-servo-pen.toml")),
+    ("z-lift-pen", include_str!("../../../machines/z-lift-pen.toml")),
 ];
 
 /// Units the G-code is written in.
@@ -145,9 +149,6 @@ fn default_pen_change() -> String {
     "M0\n".to_string()
 }
 
-/// Placeholders a block may hold.
-const PLACEHOLDERS: &[&str] = &["{power}", "{feed}", "{travel_feed}"];
-
 impl Machine {
     /// A built-in profile by name.
     pub fn builtin(name: &str) -> Option<Machine> {
@@ -169,7 +170,8 @@ impl Machine {
 
     /// Parses and checks a profile.
     pub fn parse(text: &str) -> Result<Machine, String> {
-        let m: Machine = toml::from_str(text).map_err(|e| e.to_string().trim_end().replace('\n', " "))?;
+        // A parse error quotes the file: control bytes in it are shown as escapes.
+        let m: Machine = toml::from_str(text).map_err(|e| printable(&e.to_string().trim_end().replace('\n', " ")))?;
         m.validate()?;
         Ok(m)
     }
@@ -205,8 +207,19 @@ impl Machine {
         };
         pos("bed.width", self.bed.width, 100_000.0)?;
         pos("bed.height", self.bed.height, 100_000.0)?;
-        pos("feed.draw", self.feed.draw, 1e6)?;
-        pos("feed.travel", self.feed.travel, 1e6)?;
+        let feed = |what: &str, v: f64| -> Result<(), String> {
+            if (blocks::MIN_FEED..=blocks::MAX_FEED).contains(&v) {
+                Ok(())
+            } else {
+                Err(format!(
+                    "{what} = {v}: must lie between {} and {} mm/min",
+                    blocks::MIN_FEED,
+                    blocks::MAX_FEED
+                ))
+            }
+        };
+        feed("feed.draw", self.feed.draw)?;
+        feed("feed.travel", self.feed.travel)?;
         if let Some(p) = &self.power {
             if !(p.min.is_finite() && p.max.is_finite() && p.min >= 0.0 && p.min < p.max && p.max <= 1e6) {
                 return Err(format!("power: min {} and max {} must be finite with 0 <= min < max", p.min, p.max));
@@ -227,17 +240,72 @@ impl Machine {
                 ));
             }
         }
-        for (field, text) in [
-            ("start", &self.start),
-            ("tool_on", &self.tool_on),
-            ("tool_off", &self.tool_off),
-            ("pen_change", &self.pen_change),
-            ("end", &self.end),
-        ] {
-            check_block(field, text, self.power.is_some())?;
+        self.check_blocks()
+    }
+
+    /// Checks every block's words, then runs the blocks in the writer's order on a model of
+    /// the tool: `tool_on` must put the pen down or fire the laser, `tool_off` must undo it
+    /// (a pen lifted higher than it was put down), and `pen_change` and `end` must leave the
+    /// tool off.
+    fn check_blocks(&self) -> Result<(), String> {
+        let power = self.power.as_ref().map(|p| (p.min, p.max));
+        let laser = power.is_some();
+        let all = [
+            (Kind::Start, &self.start),
+            (Kind::ToolOn, &self.tool_on),
+            (Kind::ToolOff, &self.tool_off),
+            (Kind::PenChange, &self.pen_change),
+            (Kind::End, &self.end),
+        ];
+        for (kind, text) in all {
+            blocks::run(kind, text, power, &mut Tool::default())?;
         }
         if self.tool_on.trim().is_empty() || self.tool_off.trim().is_empty() {
             return Err("tool_on and tool_off: must not be empty".into());
+        }
+        let mut t = Tool::default();
+        blocks::run(Kind::Start, &self.start, power, &mut t)?;
+        blocks::run(Kind::ToolOff, &self.tool_off, power, &mut t)?;
+        let off = t;
+        blocks::run(Kind::ToolOn, &self.tool_on, power, &mut t)?;
+        let on = t;
+        blocks::run(Kind::ToolOff, &self.tool_off, power, &mut t)?;
+        let lifted = t;
+        if laser && !on.laser_fires() {
+            return Err(format!(
+                "tool_on: must fire the laser (M3 or M4 with S above 0, or S{{power}}); it leaves {}",
+                on.describe()
+            ));
+        }
+        if !laser && off.pen_down(&on) {
+            return Err(format!(
+                "tool_on and tool_off: leave the tool the same ({}); tool_on must put the pen down (a Z or servo position) and tool_off lift it",
+                off.describe()
+            ));
+        }
+        let fires = |s: &Tool| if laser { s.laser_fires() } else { s.pen_down(&on) };
+        if fires(&lifted) {
+            return Err(format!(
+                "tool_off: must {} ; after it the tool is still on ({})",
+                if laser { "turn the laser off (M5, or S0)" } else { "lift the pen" },
+                lifted.describe()
+            ));
+        }
+        if let (false, Some(down), Some(up)) = (laser, on.z, lifted.z) {
+            if up <= down {
+                return Err(format!("tool_off: lifts the pen to Z{up}, which is not above tool_on's Z{down}"));
+            }
+        }
+        for (kind, text) in [(Kind::PenChange, &self.pen_change), (Kind::End, &self.end)] {
+            let mut s = lifted;
+            blocks::run(kind, text, power, &mut s)?;
+            if fires(&s) {
+                return Err(format!(
+                    "{}: must leave the tool off; it turns it on ({})",
+                    kind.key(),
+                    s.describe()
+                ));
+            }
         }
         Ok(())
     }
@@ -291,103 +359,10 @@ impl Machine {
         }
     }
 
-    /// Seconds of `G4 P` dwell in a block.
+    /// Seconds of `G4 P` dwell in a block (of a checked profile).
     pub fn dwell_seconds(block: &str) -> f64 {
-        block
-            .lines()
-            .map(strip_comment)
-            .filter(|l| words(l).iter().any(|(c, v)| *c == 'G' && v == "4"))
-            .filter_map(|l| {
-                words(l)
-                    .into_iter()
-                    .find(|(c, _)| *c == 'P')
-                    .and_then(|(_, v)| v.parse::<f64>().ok())
-            })
-            .sum()
+        blocks::dwell_seconds(block)
     }
-}
-
-fn strip_comment(line: &str) -> &str {
-    let line = line.split(';').next().unwrap_or("");
-    line.split('(').next().unwrap_or("")
-}
-
-/// The words of a G-code line (letter, number text), placeholders kept as numbers.
-fn words(line: &str) -> Vec<(char, String)> {
-    let mut out: Vec<(char, String)> = Vec::new();
-    let mut chars = line.chars().peekable();
-    while let Some(c) = chars.next() {
-        if c.is_ascii_alphabetic() {
-            let mut v = String::new();
-            while let Some(&d) = chars.peek() {
-                if d.is_ascii_digit()
-                    || d == '.'
-                    || d == '-'
-                    || d == '+'
-                    || d == '{'
-                    || d == '}'
-                    || d == '_'
-                    || d.is_ascii_lowercase() && v.starts_with('{')
-                {
-                    v.push(d);
-                    chars.next();
-                } else {
-                    break;
-                }
-            }
-            out.push((c.to_ascii_uppercase(), v));
-        }
-    }
-    out
-}
-
-fn check_block(field: &str, text: &str, has_power: bool) -> Result<(), String> {
-    for (n, raw) in text.lines().enumerate() {
-        let line = strip_comment(raw);
-        let mut rest = line.to_string();
-        for p in PLACEHOLDERS {
-            if *p == "{power}" && rest.contains(p) && !has_power {
-                return Err(format!("{field}, line {}: {{power}} needs a [power] range in the profile", n + 1));
-            }
-            rest = rest.replace(p, "0");
-        }
-        let b = rest.as_bytes();
-        if b.windows(2).any(|w| w[0].is_ascii_digit() && (w[1] == b'e' || w[1] == b'E')) {
-            return Err(format!(
-                "{field}, line {}: '{}': numbers must be plain decimals, not exponent notation",
-                n + 1,
-                raw.trim()
-            ));
-        }
-        if rest.contains('{') || rest.contains('}') {
-            return Err(format!(
-                "{field}, line {}: '{}': the only placeholders are {}",
-                n + 1,
-                raw.trim(),
-                PLACEHOLDERS.join(", ")
-            ));
-        }
-        for (c, v) in words(&rest) {
-            if matches!(c, 'X' | 'Y' | 'I' | 'J' | 'R') {
-                return Err(format!(
-                    "{field}, line {}: '{}': blocks may not move in X or Y (the writer keeps every X/Y move inside the bed; use `park` for an end position)",
-                    n + 1,
-                    raw.trim()
-                ));
-            }
-            let plain = !v.is_empty()
-                && v.trim_start_matches(['-', '+']).chars().all(|d| d.is_ascii_digit() || d == '.')
-                && v.matches('.').count() <= 1;
-            if !plain {
-                return Err(format!(
-                    "{field}, line {}: '{}': '{c}{v}' is not a plain decimal number",
-                    n + 1,
-                    raw.trim()
-                ));
-            }
-        }
-    }
-    Ok(())
 }
 
 #[cfg(test)]
@@ -429,6 +404,63 @@ mod tests {
             let e = Machine::parse(&text).err().unwrap_or_default();
             assert!(e.contains(want), "expected an error naming {want}, got '{e}'");
         }
+    }
+
+    /// Bug: `tool_off = "M3 S1000"` in a laser profile was accepted (every rapid with the laser
+    /// on, and the program ended with it on); so were `G91`, `G28` and a feed of 1e-300.
+    #[test]
+    fn profiles_that_leave_the_tool_on_or_leave_the_bed_are_refused() {
+        let laser = Machine::builtin_text("grbl-laser").unwrap_or("");
+        let servo = Machine::builtin_text("grbl-servo-pen").unwrap_or("");
+        let z = Machine::builtin_text("z-lift-pen").unwrap_or("");
+        let cases = [
+            (
+                laser.replace("tool_off = \"\"\"\nM5 S0", "tool_off = \"\"\"\nM3 S1000"),
+                "tool_off: must turn the laser off",
+            ),
+            (laser.replace("M4 S{power}", "M5"), "tool_on: must fire the laser"),
+            (
+                laser.replace("end = \"\"\"\nM5 S0", "end = \"\"\"\nM4 S500"),
+                "end: must leave the tool off",
+            ),
+            (
+                laser.replace("start = \"\"\"\nM5 S0", "start = \"\"\"\nG91"),
+                "start, line 1: 'G91'",
+            ),
+            (laser.replace("draw = 1000.0", "draw = 1e-300"), "feed.draw"),
+            (laser.replace("travel = 3000.0", "travel = 1e300"), "feed.travel"),
+            (
+                servo.replace("M3 S30\nG4 P0.15", "M3 S90\nG4 P0.15"),
+                "tool_on and tool_off: leave the tool the same",
+            ),
+            (
+                servo.replace("pen_change = \"\"\"\nM0", "pen_change = \"\"\"\nM3 S90"),
+                "pen_change: must leave the tool off",
+            ),
+            (servo.replace("M2\n", "G28\nM2\n"), "end, line 1: 'G28'"),
+            (
+                z.replace("tool_off = \"\"\"\nG0 Z3.000", "tool_off = \"\"\"\nG0 Z-1.000"),
+                "not above tool_on's Z0",
+            ),
+            (
+                z.replace("tool_on = \"\"\"\nG1 Z0.000 F600", "tool_on = \"\"\"\nG4 P0.1"),
+                "tool_on and tool_off: leave the tool the same",
+            ),
+            (z.replace("G0 Z3.000\nM2", "G1 Z0.000\nM2"), "end: must leave the tool off"),
+        ];
+        for (text, want) in cases {
+            assert_ne!(text, laser);
+            assert_ne!(text, servo);
+            assert_ne!(text, z);
+            let e = Machine::parse(&text).err().unwrap_or_default();
+            assert!(e.contains(want), "expected '{want}', got '{e}'");
+        }
+    }
+
+    #[test]
+    fn toml_errors_show_control_bytes_as_escapes() {
+        let e = Machine::parse("name = \"a\u{1b}[31m\nunits = ").err().unwrap_or_default();
+        assert!(!e.chars().any(|c| c.is_control()), "{e:?}");
     }
 
     #[test]

@@ -3,10 +3,103 @@
 //! `/dev/null`, or a named pipe), or standard output for `-`. A failure or Ctrl-C never leaves
 //! a truncated file and never destroys an existing one; a symbolic link is followed (the file
 //! it points to is replaced, the link stays), and a device or pipe is never replaced.
+//!
+//! Interrupts: every temporary file is listed, from the moment it is created until it is
+//! renamed into place or removed, in a list guarded by one lock. [`remove_temporaries_on_signal`]
+//! starts a thread that, on SIGINT, SIGTERM or SIGHUP, takes the lock, removes every listed
+//! file and ends the process by the same signal (so a shell sees an interrupted command). A
+//! file is created and listed under the lock, and renamed and unlisted under it, so a signal
+//! either finds it listed or finds it gone.
 
 use crate::error::CliError;
 use std::io::Write;
 use std::path::{Path, PathBuf};
+use std::sync::{Mutex, MutexGuard};
+
+/// The temporary files that exist now.
+static TEMPORARIES: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());
+
+fn temporaries() -> MutexGuard<'static, Vec<PathBuf>> {
+    // A thread that panicked while holding the lock left a valid list: use it.
+    TEMPORARIES.lock().unwrap_or_else(|e| e.into_inner())
+}
+
+/// On SIGINT, SIGTERM or SIGHUP, removes every temporary file of an output being written,
+/// then ends the process by that signal. Call once, from `main`; an existing output is never
+/// touched (the temporary file had not been renamed over it).
+pub fn remove_temporaries_on_signal() {
+    #[cfg(unix)]
+    {
+        use signal_hook::consts::{SIGHUP, SIGINT, SIGTERM};
+        let Ok(mut signals) = signal_hook::iterator::Signals::new([SIGINT, SIGTERM, SIGHUP]) else {
+            return;
+        };
+        std::thread::spawn(move || {
+            if let Some(sig) = signals.forever().next() {
+                // Held until the process ends: no new temporary file can appear meanwhile.
+                let list = temporaries();
+                for p in list.iter() {
+                    let _ = std::fs::remove_file(p);
+                }
+                let _ = signal_hook::low_level::emulate_default_handler(sig);
+                std::process::exit(128 + sig);
+            }
+        });
+    }
+}
+
+/// A temporary file beside an output, listed while it exists.
+struct Temporary {
+    file: Option<tempfile::NamedTempFile>,
+    path: PathBuf,
+}
+
+impl Temporary {
+    /// Creates a private (0600) temporary file in `dir` and lists it, under the lock.
+    fn new_in(dir: &Path) -> std::io::Result<Temporary> {
+        let mut list = temporaries();
+        let file = tempfile::Builder::new().prefix(".zetafill-").suffix(".tmp").make_in(dir, |p| {
+            let mut o = std::fs::OpenOptions::new();
+            o.write(true).create_new(true);
+            #[cfg(unix)]
+            std::os::unix::fs::OpenOptionsExt::mode(&mut o, 0o600);
+            let f = o.open(p)?;
+            list.push(p.to_path_buf());
+            Ok(f)
+        })?;
+        let path = file.path().to_path_buf();
+        Ok(Temporary { file: Some(file), path })
+    }
+
+    fn file(&mut self) -> std::io::Result<&mut std::fs::File> {
+        self.file
+            .as_mut()
+            .map(|f| f.as_file_mut())
+            .ok_or_else(|| std::io::Error::other("the temporary file is gone"))
+    }
+
+    /// Renames the file over `path` and unlists it, under the lock.
+    fn persist(mut self, path: &Path) -> std::io::Result<()> {
+        let mut list = temporaries();
+        let file = self
+            .file
+            .take()
+            .ok_or_else(|| std::io::Error::other("the temporary file is gone"))?;
+        let done = file.persist(path).map(drop).map_err(|e| e.error);
+        // Renamed, or removed when the failed persist dropped it: either way no longer there.
+        list.retain(|p| *p != self.path);
+        done
+    }
+}
+
+impl Drop for Temporary {
+    fn drop(&mut self) {
+        let mut list = temporaries();
+        // Removes the file (NamedTempFile's drop), then unlists it.
+        self.file = None;
+        list.retain(|p| *p != self.path);
+    }
+}
 
 /// Where output goes.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -182,8 +275,8 @@ fn link_target(p: &Path) -> std::io::Result<PathBuf> {
     Err(std::io::Error::other("too many levels of symbolic links"))
 }
 
-fn temp_in(dir: &Path) -> std::io::Result<tempfile::NamedTempFile> {
-    tempfile::Builder::new().prefix(".zetafill-").suffix(".tmp").tempfile_in(dir)
+fn temp_in(dir: &Path) -> std::io::Result<Temporary> {
+    Temporary::new_in(dir)
 }
 
 /// Writes `bytes` into a character device or a named pipe (opened for writing, never
@@ -204,18 +297,17 @@ pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), CliError> {
     let dir = parent_dir(path);
     let io = |what: &str, e: std::io::Error| CliError::Io(format!("{what} '{}': {e}", path.display()));
     let mut tmp = temp_in(&dir).map_err(|e| io("cannot create a temporary file for", e))?;
-    tmp.write_all(bytes).map_err(|e| io("cannot write", e))?;
+    tmp.file().and_then(|f| f.write_all(bytes)).map_err(|e| io("cannot write", e))?;
     // Temporary files are private (0600); the output gets the mode a new file would get
     // (0644 here) or keeps the mode of the file it replaces.
     #[cfg(unix)]
     {
         use std::os::unix::fs::PermissionsExt;
         let mode = std::fs::metadata(path).map(|m| m.permissions().mode() & 0o7777).unwrap_or(0o644);
-        std::fs::set_permissions(tmp.path(), std::fs::Permissions::from_mode(mode)).map_err(|e| io("cannot set permissions of", e))?;
+        std::fs::set_permissions(&tmp.path, std::fs::Permissions::from_mode(mode)).map_err(|e| io("cannot set permissions of", e))?;
     }
-    tmp.as_file().sync_all().map_err(|e| io("cannot sync", e))?;
-    tmp.persist(path).map_err(|e| io("cannot rename into", e.error))?;
-    Ok(())
+    tmp.file().and_then(|f| f.sync_all()).map_err(|e| io("cannot sync", e))?;
+    tmp.persist(path).map_err(|e| io("cannot rename into", e))
 }
 
 #[cfg(test)]

@@ -683,3 +683,50 @@ fn output_ending_in_a_slash_is_refused() {
     assert_eq!(o.code, 2, "{}", o.stderr);
     assert!(o.stderr.contains("--output") && o.stderr.contains("slash"), "{}", o.stderr);
 }
+
+/// Bug: after a proven halt (the cell sampler found no place left for the shape) the message
+/// said "raise --max-trials", which cannot help. The twin, a halt at the trial limit, must
+/// still say it, so the check below can tell the two apart.
+#[test]
+fn a_proven_halt_does_not_ask_for_more_trials() {
+    let dir = tmp();
+    let d = dir.path();
+    let proven = zf(d, &["fill", "--gap", "1", "--count", "5000", "-o", "p.json"]);
+    assert_eq!(proven.code, 3, "{}", proven.stderr);
+    assert!(halt_index(&proven.stderr) >= 100, "{}", proven.stderr);
+    assert!(proven.stderr.contains("more trials cannot help"), "{}", proven.stderr);
+    assert!(!proven.stderr.contains("--max-trials"), "{}", proven.stderr);
+    let limit = zf(
+        d,
+        &[
+            "fill",
+            "--count",
+            "3000",
+            "--sampler",
+            "reference",
+            "--max-trials",
+            "1000",
+            "-o",
+            "l.json",
+        ],
+    );
+    assert_eq!(limit.code, 3, "{}", limit.stderr);
+    assert!(halt_index(&limit.stderr) >= 100, "{}", limit.stderr);
+    assert!(limit.stderr.contains("raise --max-trials"), "{}", limit.stderr);
+    assert!(!limit.stderr.contains("cannot help"), "{}", limit.stderr);
+}
+
+/// Bug: `--c 1e100` named the limit 1.0000 (a bisection from 1e100 never left 1).
+#[test]
+fn a_huge_exponent_names_the_true_limit() {
+    let o = bad(&["--c", "1e100"], &["--c"]);
+    let limit = o.stderr.split("when c > ").nth(1).and_then(|t| t.get(..6)).unwrap_or_default();
+    let small = bad(&["--c", "1.7"], &["--c"]);
+    assert!(
+        small.stderr.contains(&format!("when c > {limit}")),
+        "{} / {}",
+        o.stderr,
+        small.stderr
+    );
+    assert_ne!(limit, "1.0000", "{}", o.stderr);
+}

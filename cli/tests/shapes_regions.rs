@@ -228,3 +228,35 @@ fn bad_shapes_and_regions_exit_2_naming_the_flag() {
     assert!(names_flag(&o.stderr, "--output"), "{}", o.stderr);
     assert_eq!(read(&dir.path().join("shape.svg")), OUTLINE.as_bytes());
 }
+
+/// Bug: an outline that repeats its first vertex at the end (as exports of closed paths do)
+/// was refused as "crosses itself". It is the same outline as without the repeat, so it
+/// gives the same file; the twin, a repeat in the middle, is still refused.
+#[test]
+fn a_closed_polygon_repeating_its_first_vertex_is_the_same_outline() {
+    let dir = tmp();
+    let d = dir.path();
+    let open = fill_to(d, "open.json", &["--region", "polygon:0,0,100,0,100,100,0,100", "--count", "40"]);
+    let closed = fill_to(
+        d,
+        "closed.json",
+        &["--region", "polygon:0,0,100,0,100,100,0,100,0,0", "--count", "40"],
+    );
+    assert_eq!(open, closed);
+    let holes = fill_to(
+        d,
+        "holes.json",
+        &[
+            "--region",
+            "polygon:0,0,100,0,100,100,0,100,0,0/70,70,90,70,90,90,70,90,70,70",
+            "--n-offset",
+            "4",
+            "--count",
+            "40",
+        ],
+    );
+    assert!(!holes.is_empty());
+    let o = zf(d, &["fill", "--region", "polygon:0,0,100,0,0,0,100,100,0,100", "-o", "bad.json"]);
+    assert_eq!(o.code, 2, "{}", o.stderr);
+    assert!(names_flag(&o.stderr, "--region"), "{}", o.stderr);
+}

@@ -9,7 +9,7 @@
 
 use crate::params::{Params, Stop};
 use crate::region::Region;
-use crate::scalar::powf;
+use crate::scalar::{powf, sqrtf};
 use crate::shape::{ShapeKind, ShapeList};
 use crate::zeta::{self, ZetaError};
 
@@ -382,8 +382,27 @@ pub fn check_first_two(params: &Params, region: &Region<'_>) -> Result<(), First
         kind,
         n_offset,
         c: params.c,
-        max_c: bisect(lowest, params.c, fits),
+        // c - 1 is bisected on a ratio scale, so a c of any size gives the limit to full
+        // precision (an arithmetic bisection from c = 1e100 never left 1).
+        max_c: 1.0 + bisect_ratio(lowest - 1.0, params.c - 1.0, |t| fits(1.0 + t)),
     })
+}
+
+/// [`bisect`] for positive `ok < bad` far apart: each step halves `bad / ok` on a log scale
+/// (the geometric mean), then 60 arithmetic halvings finish.
+fn bisect_ratio(mut ok: f64, mut bad: f64, works: impl Fn(f64) -> bool) -> f64 {
+    while bad > 2.0 * ok {
+        let mid = sqrtf(ok * bad);
+        if !(mid > ok && mid < bad) {
+            break;
+        }
+        if works(mid) {
+            ok = mid;
+        } else {
+            bad = mid;
+        }
+    }
+    bisect(ok, bad, works)
 }
 
 /// Where `works` turns false between `ok` (where it holds) and `bad` (where it does not): the

@@ -26,6 +26,10 @@ fn rect(width: f64, height: f64) -> Region<'static> {
 const EXPONENT_LIMITS: &[(ShapeKind, f64, f64, f64, f64, f64, &str)] = &[
     (ShapeKind::Square, 1.6, 1.0, 0.0, 200.0, 200.0, "1.5224"),
     (ShapeKind::Square, 1.53, 1.0, 0.0, 200.0, 200.0, "1.5224"),
+    // Bug: from a huge c the bisection never left 1 and the message named the limit 1.0000.
+    (ShapeKind::Square, 1e100, 1.0, 0.0, 200.0, 200.0, "1.5224"),
+    (ShapeKind::Square, 40.0, 1.0, 0.0, 200.0, 200.0, "1.5224"),
+    (ShapeKind::Square, f64::MAX, 3.0, 0.0, 200.0, 200.0, "2.2439"),
     (ShapeKind::Square, 2.5, 3.0, 0.0, 200.0, 200.0, "2.2439"),
     (ShapeKind::Ring { inner: 0.5 }, 1.5, 1.0, 0.0, 200.0, 200.0, "1.3784"),
     (ShapeKind::Square, 1.3, 1.0, 60.0, 200.0, 200.0, "1.0034"),

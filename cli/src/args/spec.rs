@@ -183,10 +183,16 @@ fn polygon(list: &str) -> Result<RegionSpec, String> {
         if nums.len() % 2 != 0 {
             return Err(format!("{FORM}{which}: give an even count of numbers (x,y pairs)"));
         }
-        if nums.len() < 6 {
+        let mut ring: Vec<Point<f64>> = nums.chunks(2).map(|c| Point::new(c[0], c.get(1).copied().unwrap_or(0.0))).collect();
+        // A closed ring may repeat its first vertex at the end, as SVG paths and most
+        // exports do: the repeat is dropped (it was refused as an outline that crosses itself).
+        if ring.len() > 3 && ring.first() == ring.last() {
+            ring.pop();
+        }
+        if ring.len() < 3 {
             return Err(format!("{FORM}{which}: a ring needs at least 3 vertices"));
         }
-        points.extend(nums.chunks(2).map(|c| Point::new(c[0], c.get(1).copied().unwrap_or(0.0))));
+        points.extend(ring);
         ends.push(points.len());
     }
     Ok(RegionSpec::Polygon { points, ends })

@@ -322,5 +322,6 @@ pub fn run(plan: &FillPlan) -> Result<(), CliError> {
     let (doc, halt) = compute(&plan.run)?;
     let bytes = render(&doc, plan.format, &plan.draw)?;
     plan.dest.write(&bytes)?;
-    stopping::outcome(halt, SHAPES, halt_advice)
+    let max_trials = plan.run.params.max_trials;
+    stopping::outcome(halt, SHAPES, |index, trials| halt_advice(index, trials < max_trials))
 }

@@ -25,13 +25,13 @@ pub fn progress_bar(quiet: bool, count: Option<u64>, unit: Unit) -> Option<indic
 }
 
 /// The outcome of a run whose output is written: a halt becomes [`CliError::Halted`], naming
-/// how many pieces the output holds and, for a trial-limit halt, `advice(index)`.
-pub fn outcome(halt: Option<StepError>, unit: Unit, advice: impl Fn(u64) -> &'static str) -> Result<(), CliError> {
+/// how many pieces the output holds and, for a halt, `advice(index, trials)`.
+pub fn outcome(halt: Option<StepError>, unit: Unit, advice: impl Fn(u64, u64) -> &'static str) -> Result<(), CliError> {
     match halt {
         Some(StepError::Halted { index, trials }) => Err(CliError::Halted(format!(
             "halted at placement {index} after {trials} trials (the output holds the {index} {} placed before it): {}",
             unit.plural,
-            advice(index)
+            advice(index, trials)
         ))),
         Some(e) => Err(CliError::Halted(format!(
             "{e}; the output holds every {} placed before it",
@@ -80,8 +80,8 @@ mod tests {
 
     #[test]
     fn a_halt_names_the_pieces_kept() {
-        assert!(outcome(None, UNIT, |_| "").is_ok());
-        let e = outcome(Some(StepError::Halted { index: 12, trials: 3 }), UNIT, |_| "try again").expect_err("a halt");
+        assert!(outcome(None, UNIT, |_, _| "").is_ok());
+        let e = outcome(Some(StepError::Halted { index: 12, trials: 3 }), UNIT, |_, _| "try again").expect_err("a halt");
         let m = e.to_string();
         assert!(
             m.contains("placement 12") && m.contains("holds the 12 pieces") && m.ends_with("try again"),

@@ -304,12 +304,16 @@ pub fn param_error(e: ParamError) -> CliError {
 }
 
 /// Advice for a halt at placement `index` (at least 1: a halt at the first placement is
-/// [`first_shape_error`]).
-pub fn halt_advice(index: u64) -> &'static str {
-    if index < 100 {
-        "the first shapes left no room for this one: lower --c, raise --n-offset, or try another --seed"
-    } else {
-        "raise --max-trials, lower --c, or ask for fewer shapes"
+/// [`first_shape_error`]). A `proven` halt came before the trial limit: the cell sampler
+/// found no place left, so more trials cannot help.
+pub fn halt_advice(index: u64, proven: bool) -> &'static str {
+    match (index < 100, proven) {
+        (true, false) => "the first shapes left no room for this one: lower --c, raise --n-offset, or try another --seed",
+        (true, true) => {
+            "the first shapes left no room for this one, so more trials cannot help: lower --c, raise --n-offset, or try another --seed"
+        }
+        (false, false) => "raise --max-trials, lower --c, or ask for fewer shapes",
+        (false, true) => "no place is left for a shape of this size, so more trials cannot help: lower --c, or ask for fewer shapes",
     }
 }
 

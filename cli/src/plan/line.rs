@@ -284,12 +284,16 @@ pub fn first_segment_error(run: &LineRun, length: f64) -> CliError {
     )
 }
 
-/// Advice for a halt at placement `index`.
-pub fn halt_advice(index: u64) -> &'static str {
-    if index < 100 {
-        "the first segments left no room for this one: lower --c, raise --n-offset, or try another --seed"
-    } else {
-        "raise --max-trials, lower --c, or ask for fewer segments"
+/// Advice for a halt at placement `index`; a `proven` halt came before the trial limit (no
+/// gap is left that can hold the segment), so more trials cannot help.
+pub fn halt_advice(index: u64, proven: bool) -> &'static str {
+    match (index < 100, proven) {
+        (true, false) => "the first segments left no room for this one: lower --c, raise --n-offset, or try another --seed",
+        (true, true) => {
+            "the first segments left no room for this one, so more trials cannot help: lower --c, raise --n-offset, or try another --seed"
+        }
+        (false, false) => "raise --max-trials, lower --c, or ask for fewer segments",
+        (false, true) => "no gap is left for a segment of this length, so more trials cannot help: lower --c, or ask for fewer segments",
     }
 }
 

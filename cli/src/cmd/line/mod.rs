@@ -187,5 +187,6 @@ pub fn run(plan: &LinePlan) -> Result<(), CliError> {
     let (doc, halt) = compute(&plan.run)?;
     let bytes = render(&doc, plan.format, &plan.draw)?;
     plan.dest.write(&bytes)?;
-    stopping::outcome(halt, SEGMENTS, halt_advice)
+    let max_trials = plan.run.params.max_trials;
+    stopping::outcome(halt, SEGMENTS, |index, trials| halt_advice(index, trials < max_trials))
 }

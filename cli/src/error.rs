@@ -32,6 +32,16 @@ impl CliError {
     }
 }
 
+/// A number as a message shows it: as Rust writes it in the usual range, in exponent form when
+/// its size is extreme (so that 1e-300 is not written with three hundred digits).
+pub fn num(v: f64) -> String {
+    if v != 0.0 && v.is_finite() && !(1e-6..1e15).contains(&v.abs()) {
+        format!("{v:e}")
+    } else {
+        format!("{v}")
+    }
+}
+
 impl fmt::Display for CliError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
@@ -41,3 +51,18 @@ impl fmt::Display for CliError {
 }
 
 impl std::error::Error for CliError {}
+
+#[cfg(test)]
+mod tests {
+    use super::num;
+
+    #[test]
+    fn extreme_numbers_are_written_short() {
+        assert_eq!(num(1e-300), "1e-300");
+        assert_eq!(num(-2.5e300), "-2.5e300");
+        assert_eq!(num(0.001), "0.001");
+        assert_eq!(num(1300.5), "1300.5");
+        assert_eq!(num(0.0), "0");
+        assert_eq!(num(f64::INFINITY), "inf");
+    }
+}

@@ -730,3 +730,42 @@ fn a_huge_exponent_names_the_true_limit() {
     );
     assert_ne!(limit, "1.0000", "{}", o.stderr);
 }
+
+/// Bug: `--region svg:/dev/zero` read until the memory ran out, and `--chord-tolerance
+/// 1e-300` asked for gigabytes of G-code. Every input file is read up to a documented limit,
+/// and the tolerance has a floor; each refusal is exit 2, names the flag, and writes nothing.
+#[test]
+fn unbounded_inputs_are_refused_at_their_limits() {
+    let dir = tmp();
+    let d = dir.path();
+    let cases: &[(&[&str], &str, &str)] = &[
+        (&["fill", "--region", "svg:/dev/zero", "-o", "out.svg"], "--region", "64 MiB"),
+        (&["fill", "--machine", "/dev/zero", "-o", "out.gcode"], "--machine", "1 MiB"),
+        (
+            &["fill", "--no-arcs", "--chord-tolerance", "1e-300", "-o", "out.gcode"],
+            "--chord-tolerance",
+            "1e-300 mm is below 0.001",
+        ),
+        (
+            &["fill", "--no-arcs", "--chord-tolerance", "0.0009", "-o", "out.gcode"],
+            "--chord-tolerance",
+            "0.001",
+        ),
+    ];
+    for (args, flag, what) in cases {
+        let out = d.join(args.last().copied().unwrap_or_default());
+        std::fs::write(&out, KEEP).unwrap_or_else(|e| panic!("{e}"));
+        let o = zf(d, args);
+        assert_eq!(o.code, 2, "{args:?}: {}", o.stderr);
+        assert!(names_flag(&o.stderr, flag), "{args:?}: {}", o.stderr);
+        assert!(o.stderr.contains(what), "{args:?}: {}", o.stderr);
+        assert!(o.stderr.len() < 400, "{args:?}: a short message: {}", o.stderr);
+        assert_eq!(read(&out), KEEP, "{args:?}: the old output is untouched");
+    }
+    // The twin: at the floor the tolerance is accepted.
+    let o = zf(
+        d,
+        &["fill", "--count", "20", "--no-arcs", "--chord-tolerance", "0.001", "-o", "ok.gcode"],
+    );
+    assert_eq!(o.code, 0, "{}", o.stderr);
+}

@@ -414,7 +414,22 @@ impl PlotArgs {
         } else {
             m.arcs
         };
-        o.chord_tolerance = self.chord_tolerance.unwrap_or(o.chord_tolerance);
+        if let Some(t) = self.chord_tolerance {
+            // Below the G-code's resolution (3 decimals of mm) finer chords only add lines: a
+            // tolerance of 1e-300 mm asked for gigabytes.
+            if t < gcode::MIN_CHORD_TOLERANCE {
+                return Err(CliError::arg(
+                    "--chord-tolerance",
+                    format!(
+                        "{} mm is below {} mm, the G-code's resolution; give at least {}",
+                        crate::error::num(t),
+                        gcode::MIN_CHORD_TOLERANCE,
+                        gcode::MIN_CHORD_TOLERANCE
+                    ),
+                ));
+            }
+            o.chord_tolerance = t;
+        }
         o.order = self.order.map_or(o.order, PathOrder::from);
         o.margin = self.margin.unwrap_or(0.0);
         let short = m.bed.width.min(m.bed.height);

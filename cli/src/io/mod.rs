@@ -1,4 +1,6 @@
-//! The file system: atomic writes of outputs, and reading the inputs (SVG outlines).
+//! The file system: atomic writes of outputs, and reading the inputs (SVG outlines, with a
+//! size limit for every input file).
 
+pub mod read;
 pub mod svgin;
 pub mod write;

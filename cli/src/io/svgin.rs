@@ -28,7 +28,7 @@ pub enum OutlineError {
 
 /// Rings of the outline: vertices, ring after ring, and the exclusive end of each ring.
 pub fn read_outline(path: &Path) -> Result<(Vec<Point<f64>>, Vec<usize>), OutlineError> {
-    let data = std::fs::read(path).map_err(OutlineError::Read)?;
+    let data = crate::io::read::read_limited(path, crate::io::read::MAX_SVG_BYTES, "an SVG outline").map_err(OutlineError::Read)?;
     let tree = usvg::Tree::from_data(&data, &usvg::Options::default()).map_err(OutlineError::Svg)?;
     let height = f64::from(tree.size().height());
     let mut rings: Vec<Vec<Point<f64>>> = Vec::new();

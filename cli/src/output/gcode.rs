@@ -22,6 +22,10 @@ use crate::output::order::PathOrder;
 use std::f64::consts::TAU;
 use std::fmt::{self, Write as _};
 
+/// The smallest chord tolerance (mm): the resolution of G-code written in mm (3 decimals).
+/// Finer chords would only add lines, up to gigabytes of them.
+pub const MIN_CHORD_TOLERANCE: f64 = 0.001;
+
 /// What to write besides the drawing.
 #[derive(Debug, Clone, PartialEq)]
 pub struct GcodeOptions {
@@ -377,8 +381,8 @@ fn check_options(m: &Machine, o: &GcodeOptions) -> Result<(), String> {
     if o.passes == 0 {
         return Err("passes must be at least 1".into());
     }
-    if !(o.chord_tolerance.is_finite() && o.chord_tolerance > 0.0) {
-        return Err("the chord tolerance must be positive".into());
+    if !(o.chord_tolerance.is_finite() && o.chord_tolerance >= MIN_CHORD_TOLERANCE) {
+        return Err(format!("the chord tolerance must be at least {MIN_CHORD_TOLERANCE} mm"));
     }
     if !(o.margin.is_finite() && o.margin >= 0.0 && 2.0 * o.margin < m.bed.width.min(m.bed.height)) {
         return Err(format!("margin {} mm leaves no room on the bed", o.margin));

@@ -452,7 +452,8 @@ pub fn estimate(set: &FillSet, c: f64, range: &BoxRange) -> Result<DimensionDoc,
 
 /// `zetafill stats dimension`.
 pub fn run(a: &DimensionPlan) -> Result<(), CliError> {
-    let bytes = std::fs::read(&a.input).map_err(|e| input_error(format!("cannot read '{}': {e}", a.input.display())))?;
+    let bytes = crate::io::read::read_limited(&a.input, crate::io::read::MAX_JSON_BYTES, "a JSON input")
+        .map_err(|e| input_error(format!("cannot read '{}': {e}", a.input.display())))?;
     let doc: Value = serde_json::from_slice(&bytes).map_err(|e| input_error(format!("'{}' is not JSON: {e}", a.input.display())))?;
     let (set, c) = read_set(&doc)?;
     a.boxes.check()?;

@@ -29,7 +29,8 @@ fn num_pair(v: &Value) -> Option<Pt> {
 
 /// Reads a fill's JSON: its region and its shapes' centres, in fill order.
 pub fn load_source(path: &Path) -> Result<Source, CliError> {
-    let bytes = std::fs::read(path).map_err(|e| sites_from_error(path, format!("cannot read it ({e})")))?;
+    let bytes = crate::io::read::read_limited(path, crate::io::read::MAX_JSON_BYTES, "a fill's JSON")
+        .map_err(|e| sites_from_error(path, format!("cannot read it ({e})")))?;
     let v: Value =
         serde_json::from_slice(&bytes).map_err(|e| sites_from_error(path, format!("not JSON ({e}); give a fill's JSON output")))?;
     if v.get("mode").and_then(Value::as_str) != Some("fill") {

@@ -189,7 +189,9 @@ impl Machine {
                 Machine::builtin_names().join(", ")
             ));
         }
-        let text = std::fs::read_to_string(path).map_err(|e| format!("cannot read '{spec}': {e}"))?;
+        let bytes = crate::io::read::read_limited(path, crate::io::read::MAX_PROFILE_BYTES, "a machine profile")
+            .map_err(|e| format!("cannot read '{spec}': {e}"))?;
+        let text = String::from_utf8(bytes).map_err(|_| format!("cannot read '{spec}': it is not UTF-8 text"))?;
         Machine::parse(&text).map_err(|e| format!("'{spec}': {e}"))
     }
 

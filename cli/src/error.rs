@@ -35,7 +35,9 @@ impl CliError {
 /// A number as a message shows it: as Rust writes it in the usual range, in exponent form when
 /// its size is extreme (so that 1e-300 is not written with three hundred digits).
 pub fn num(v: f64) -> String {
-    if v != 0.0 && v.is_finite() && !(1e-6..1e15).contains(&v.abs()) {
+    if v.is_nan() {
+        "nan".into()
+    } else if v != 0.0 && v.is_finite() && !(1e-6..1e15).contains(&v.abs()) {
         format!("{v:e}")
     } else {
         format!("{v}")
@@ -64,5 +66,6 @@ mod tests {
         assert_eq!(num(1300.5), "1300.5");
         assert_eq!(num(0.0), "0");
         assert_eq!(num(f64::INFINITY), "inf");
+        assert_eq!(num(f64::NAN), "nan");
     }
 }

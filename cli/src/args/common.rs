@@ -19,13 +19,13 @@ pub const DEFAULT_MAX_TRIALS: u64 = 10_000_000;
 #[derive(Debug, Clone, clap::Args)]
 pub struct PowerLawArgs {
     /// Power-law exponent c > 1 (default 1.3).
-    #[arg(long, value_parser = spec::exponent, conflicts_with = "dimension", allow_negative_numbers = true)]
+    #[arg(long, value_parser = spec::exponent, conflicts_with = "dimension", allow_hyphen_values = true)]
     pub c: Option<f64>,
     /// Fractal dimension D in (0, 2) instead of c (c = 2/D).
-    #[arg(long, value_parser = spec::dimension, allow_negative_numbers = true)]
+    #[arg(long, value_parser = spec::dimension, allow_hyphen_values = true)]
     pub dimension: Option<f64>,
     /// The paper's N > 0: larger N makes the first shapes smaller.
-    #[arg(long = "n-offset", default_value_t = 1.0, value_parser = spec::positive, allow_negative_numbers = true)]
+    #[arg(long = "n-offset", default_value_t = 1.0, value_parser = spec::n_offset, allow_hyphen_values = true)]
     pub n_offset: f64,
 }
 
@@ -33,13 +33,13 @@ pub struct PowerLawArgs {
 #[derive(Debug, Clone, clap::Args)]
 pub struct StopArgs {
     /// Stop after K shapes (default 2000 when no stop condition is given).
-    #[arg(long, value_parser = clap::value_parser!(u64).range(1..=MAX_SHAPES))]
+    #[arg(long, value_parser = clap::value_parser!(u64).range(1..=MAX_SHAPES), allow_hyphen_values = true)]
     pub count: Option<u64>,
     /// Stop once this fraction of the region is filled, 0 < F < 1.
-    #[arg(long, value_parser = spec::fraction, allow_negative_numbers = true)]
+    #[arg(long, value_parser = spec::fraction, allow_hyphen_values = true)]
     pub fill: Option<f64>,
     /// Stop before the first shape narrower than MM.
-    #[arg(long = "min-size", value_parser = spec::positive, allow_negative_numbers = true)]
+    #[arg(long = "min-size", value_parser = spec::length, allow_hyphen_values = true)]
     pub min_size: Option<f64>,
 }
 
@@ -54,10 +54,10 @@ pub struct RunArgs {
     #[command(flatten)]
     pub stop: StopArgs,
     /// Minimum clearance between shapes and to the boundary, in mm.
-    #[arg(long, default_value_t = 0.0, value_parser = spec::non_negative, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = 0.0, value_parser = spec::length_or_zero, allow_hyphen_values = true)]
     pub gap: f64,
     /// Trial limit per placement; reaching it halts the fill (exit 3).
-    #[arg(long = "max-trials", default_value_t = DEFAULT_MAX_TRIALS, value_parser = clap::value_parser!(u64).range(1..))]
+    #[arg(long = "max-trials", default_value_t = DEFAULT_MAX_TRIALS, value_parser = clap::value_parser!(u64).range(1..), allow_hyphen_values = true)]
     pub max_trials: u64,
     /// The seed.
     #[command(flatten)]
@@ -68,7 +68,7 @@ pub struct RunArgs {
 #[derive(Debug, Clone, clap::Args)]
 pub struct SeedArgs {
     /// RNG seed.
-    #[arg(long, default_value_t = 1)]
+    #[arg(long, default_value_t = 1, allow_hyphen_values = true)]
     pub seed: u64,
 }
 

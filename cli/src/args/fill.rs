@@ -118,7 +118,7 @@ pub struct FillArgs {
     #[arg(long, value_enum, default_value = "outline")]
     pub style: StyleArg,
     /// SVG: stroke width in mm.
-    #[arg(long = "pen-width", default_value_t = 0.3, value_parser = spec::positive)]
+    #[arg(long = "pen-width", default_value_t = 0.3, value_parser = spec::length, allow_hyphen_values = true)]
     pub pen_width: f64,
     /// SVG: also draw the region's outline.
     #[arg(long)]

@@ -50,7 +50,7 @@ pub const MAX_SEGMENTS: u64 = 10_000_000;
 )]
 pub struct LineArgs {
     /// Length L of the interval in mm.
-    #[arg(long, default_value_t = 200.0, value_parser = spec::positive, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = 200.0, value_parser = spec::length, allow_hyphen_values = true)]
     pub length: f64,
     /// Periodic boundary: the interval is a circle, a segment running past L continues at 0.
     #[arg(long)]
@@ -68,19 +68,19 @@ pub struct LineArgs {
     #[arg(long, value_enum, default_value = "outline")]
     pub style: StyleArg,
     /// SVG: stroke width in mm (dashes and outlines).
-    #[arg(long = "pen-width", default_value_t = 0.3, value_parser = spec::positive, allow_negative_numbers = true)]
+    #[arg(long = "pen-width", default_value_t = 0.3, value_parser = spec::length, allow_hyphen_values = true)]
     pub pen_width: f64,
     /// SVG `bars`: bar height in mm.
-    #[arg(long = "bar-height", default_value_t = 10.0, value_parser = spec::positive, allow_negative_numbers = true)]
+    #[arg(long = "bar-height", default_value_t = 10.0, value_parser = spec::length, allow_hyphen_values = true)]
     pub bar_height: f64,
     /// SVG `zoom`: number of rows (the first shows the whole interval).
-    #[arg(long = "zoom-rows", default_value_t = 4, value_parser = clap::value_parser!(u32).range(1..=12))]
+    #[arg(long = "zoom-rows", default_value_t = 4, value_parser = clap::value_parser!(u32).range(1..=12), allow_hyphen_values = true)]
     pub zoom_rows: u32,
     /// SVG `zoom`: each row shows this central fraction of the row above (Figure 3: 0.05).
-    #[arg(long = "zoom-fraction", default_value_t = 0.05, value_parser = spec::fraction, allow_negative_numbers = true)]
+    #[arg(long = "zoom-fraction", default_value_t = 0.05, value_parser = spec::fraction, allow_hyphen_values = true)]
     pub zoom_fraction: f64,
     /// SVG `zoom`: the point (mm from the left end) the rows zoom into (default: the middle).
-    #[arg(long = "zoom-center", value_parser = spec::non_negative, allow_negative_numbers = true)]
+    #[arg(long = "zoom-center", value_parser = spec::length_or_zero, allow_hyphen_values = true)]
     pub zoom_center: Option<f64>,
     /// SVG: also mark the ends of the interval.
     #[arg(long)]

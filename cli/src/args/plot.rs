@@ -2,6 +2,7 @@
 //! group flattened into every command that draws lines, and their conversion into the plain
 //! options of the writers ([`gcode::GcodeOptions`], [`BuildOptions`]).
 
+use crate::args::spec;
 use crate::error::CliError;
 use crate::model::fill::BuildOptions;
 use crate::model::hatch;
@@ -112,13 +113,6 @@ fn positive(s: &str) -> Result<f64, String> {
     }
 }
 
-fn non_negative(s: &str) -> Result<f64, String> {
-    match s.parse::<f64>() {
-        Ok(v) if v.is_finite() && v >= 0.0 => Ok(v),
-        _ => Err(format!("'{s}' must be a number >= 0")),
-    }
-}
-
 fn finite(s: &str) -> Result<f64, String> {
     match s.parse::<f64>() {
         Ok(v) if v.is_finite() => Ok(v),
@@ -134,16 +128,16 @@ pub struct PlotArgs {
     #[arg(long, help_heading = "Plotters and lasers")]
     pub machine: Option<String>,
     /// G-code: drawing feed in mm/min (default: the profile's).
-    #[arg(long, value_parser = finite, allow_negative_numbers = true, help_heading = "Plotters and lasers")]
+    #[arg(long, value_parser = finite, allow_hyphen_values = true, help_heading = "Plotters and lasers")]
     pub feed: Option<f64>,
     /// G-code: travel feed in mm/min (G1 travel, and the time estimate of G0 travel).
-    #[arg(long = "travel-feed", value_parser = finite, allow_negative_numbers = true, help_heading = "Plotters and lasers")]
+    #[arg(long = "travel-feed", value_parser = finite, allow_hyphen_values = true, help_heading = "Plotters and lasers")]
     pub travel_feed: Option<f64>,
     /// G-code: laser power (S value) within the profile's range.
-    #[arg(long, value_parser = finite, allow_negative_numbers = true, help_heading = "Plotters and lasers")]
+    #[arg(long, value_parser = finite, allow_hyphen_values = true, help_heading = "Plotters and lasers")]
     pub power: Option<f64>,
     /// G-code: draw everything this many times (laser cutting) [default: 1].
-    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=100), help_heading = "Plotters and lasers")]
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=100), help_heading = "Plotters and lasers", allow_hyphen_values = true)]
     pub passes: Option<u32>,
     /// G-code: circles as G2/G3 arcs (default: if the profile allows them).
     #[arg(long, conflicts_with = "no_arcs", help_heading = "Plotters and lasers")]
@@ -153,7 +147,7 @@ pub struct PlotArgs {
     pub no_arcs: bool,
     /// G-code: largest distance between a circle and the chords that replace it (mm)
     /// [default: 0.01].
-    #[arg(long = "chord-tolerance", value_parser = positive, help_heading = "Plotters and lasers")]
+    #[arg(long = "chord-tolerance", value_parser = positive, help_heading = "Plotters and lasers", allow_hyphen_values = true)]
     pub chord_tolerance: Option<f64>,
     /// Hatch every shape: SPACING or SPACING:ANGLE, in mm and degrees (default angle 45).
     #[arg(long, allow_hyphen_values = true, help_heading = "Plotters and lasers")]
@@ -168,7 +162,7 @@ pub struct PlotArgs {
     #[arg(long, value_enum, help_heading = "Plotters and lasers")]
     pub order: Option<OrderArg>,
     /// Leave out shapes (and ring holes) narrower than MM: the pen's or beam's width.
-    #[arg(long = "min-feature", default_value_t = 0.0, value_parser = non_negative, allow_negative_numbers = true, help_heading = "Plotters and lasers")]
+    #[arg(long = "min-feature", default_value_t = 0.0, value_parser = spec::length_or_zero, allow_hyphen_values = true, help_heading = "Plotters and lasers")]
     pub min_feature: f64,
     /// Scale the drawing to fill the bed (G-code) or the page (SVG) less margins, centred.
     #[arg(long, help_heading = "Plotters and lasers")]
@@ -177,10 +171,10 @@ pub struct PlotArgs {
     #[arg(long, help_heading = "Plotters and lasers")]
     pub center: bool,
     /// SVG: page a4 | a3 | a5 | letter (portrait; add -landscape) | WxH in mm.
-    #[arg(long, value_parser = parse_page, help_heading = "Plotters and lasers")]
+    #[arg(long, value_parser = parse_page, allow_hyphen_values = true, help_heading = "Plotters and lasers")]
     pub page: Option<Page>,
     /// Margin in mm: SVG pages (default 10), G-code bed (default 0).
-    #[arg(long, value_parser = non_negative, allow_negative_numbers = true, help_heading = "Plotters and lasers")]
+    #[arg(long, value_parser = spec::length_or_zero, allow_hyphen_values = true, help_heading = "Plotters and lasers")]
     pub margin: Option<f64>,
     /// SVG: none | size-bands:K (K Inkscape layers by shape size, largest first) | colours
     /// (one layer per --palette colour, a pen each).
@@ -371,7 +365,10 @@ impl PlotArgs {
             if !(MIN_FEED..=MAX_FEED).contains(&f) {
                 return Err(CliError::arg(
                     "--feed",
-                    format!("{f} mm/min: a feed must be positive, from {MIN_FEED} to {MAX_FEED} mm/min"),
+                    format!(
+                        "{} mm/min: a feed must be positive, from {MIN_FEED} to {MAX_FEED} mm/min",
+                        crate::error::num(f)
+                    ),
                 ));
             }
             o.feed = f;
@@ -380,7 +377,10 @@ impl PlotArgs {
             if !(MIN_FEED..=MAX_FEED).contains(&f) {
                 return Err(CliError::arg(
                     "--travel-feed",
-                    format!("{f} mm/min: a feed must be positive, from {MIN_FEED} to {MAX_FEED} mm/min"),
+                    format!(
+                        "{} mm/min: a feed must be positive, from {MIN_FEED} to {MAX_FEED} mm/min",
+                        crate::error::num(f)
+                    ),
                 ));
             }
             o.travel_feed = f;
@@ -395,7 +395,12 @@ impl PlotArgs {
             if p < range.min || p > range.max {
                 return Err(CliError::arg(
                     "--power",
-                    format!("{p} is outside the profile's range {} to {}", range.min, range.max),
+                    format!(
+                        "{} is outside the profile's range {} to {}",
+                        crate::error::num(p),
+                        range.min,
+                        range.max
+                    ),
                 ));
             }
             o.power = Some(p);

@@ -8,10 +8,10 @@ use crate::output::png::Raster;
 #[derive(Debug, Clone, clap::Args)]
 pub struct RasterArgs {
     /// PNG: resolution in pixels per inch.
-    #[arg(long, default_value_t = 96.0, value_parser = crate::args::spec::positive, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = 96.0, value_parser = crate::args::spec::positive, allow_hyphen_values = true)]
     pub dpi: f64,
     /// PNG: the image's longer side in pixels (instead of --dpi).
-    #[arg(long, conflicts_with = "dpi", value_parser = clap::value_parser!(u32).range(1..=100_000))]
+    #[arg(long, conflicts_with = "dpi", value_parser = clap::value_parser!(u32).range(1..=100_000), allow_hyphen_values = true)]
     pub pixels: Option<u32>,
 }
 

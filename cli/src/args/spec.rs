@@ -26,6 +26,45 @@ pub fn positive(s: &str) -> Result<f64, String> {
     }
 }
 
+/// The largest length in mm any flag takes: a kilometre, larger than any sheet, bed or
+/// region a tool draws, and small enough that areas and coordinates stay exact.
+pub const MAX_MM: f64 = 1_000_000.0;
+
+/// A length in mm: finite, > 0, at most [`MAX_MM`].
+pub fn length(s: &str) -> Result<f64, String> {
+    let v = positive(s)?;
+    if v <= MAX_MM {
+        Ok(v)
+    } else {
+        Err(format!("must be at most {MAX_MM} mm, a kilometre (got {s})"))
+    }
+}
+
+/// A length in mm that may be 0: finite, >= 0, at most [`MAX_MM`].
+pub fn length_or_zero(s: &str) -> Result<f64, String> {
+    let v = non_negative(s)?;
+    if v <= MAX_MM {
+        Ok(v)
+    } else {
+        Err(format!("must be at most {MAX_MM} mm, a kilometre (got {s})"))
+    }
+}
+
+/// The largest N: the core computes zeta(c, N) to full precision up to there.
+pub const MAX_N_OFFSET: f64 = 1_000_000.0;
+
+/// The paper's N: finite, > 0, at most [`MAX_N_OFFSET`].
+pub fn n_offset(s: &str) -> Result<f64, String> {
+    let v = positive(s)?;
+    if v <= MAX_N_OFFSET {
+        Ok(v)
+    } else {
+        Err(format!(
+            "N must be at most {MAX_N_OFFSET}, where zeta(c, N) is computed to full precision (got {s})"
+        ))
+    }
+}
+
 /// A finite number >= 0.
 pub fn non_negative(s: &str) -> Result<f64, String> {
     let v = finite(s)?;
@@ -99,6 +138,9 @@ pub fn one_shape(s: &str) -> Result<ShapeKind, String> {
         ("triangle", []) => ShapeKind::Triangle,
         ("rect", [a]) => {
             let aspect = positive(a).map_err(|e| format!("rect:ASPECT: the aspect ratio {e}"))?;
+            if !(1e-3..=1e3).contains(&aspect) {
+                return Err(format!("rect:ASPECT: the aspect ratio must lie between 0.001 and 1000 (got {a})"));
+            }
             ShapeKind::Rect { aspect }
         }
         ("polygon", [n]) => ShapeKind::Polygon {
@@ -177,7 +219,14 @@ fn polygon(list: &str) -> Result<RegionSpec, String> {
         let which = if several { format!(" (ring {})", k + 1) } else { String::new() };
         let nums = ring
             .split(',')
-            .map(finite)
+            .map(|v| {
+                let x = finite(v)?;
+                if x.abs() <= MAX_MM {
+                    Ok(x)
+                } else {
+                    Err(format!("the coordinate {v} is beyond {MAX_MM} mm, a kilometre"))
+                }
+            })
             .collect::<Result<Vec<f64>, _>>()
             .map_err(|e| format!("{FORM}{which}: {e}"))?;
         if nums.len() % 2 != 0 {
@@ -209,18 +258,18 @@ pub fn region(s: &str) -> Result<RegionSpec, String> {
     let parts: Vec<&str> = s.split(':').collect();
     match parts.as_slice() {
         ["rect", w, h] => {
-            let width = positive(w).map_err(|e| format!("rect:W:H: the width {e}"))?;
-            let height = positive(h).map_err(|e| format!("rect:W:H: the height {e}"))?;
+            let width = length(w).map_err(|e| format!("rect:W:H: the width {e}"))?;
+            let height = length(h).map_err(|e| format!("rect:W:H: the height {e}"))?;
             Ok(RegionSpec::Rect { width, height })
         }
         ["rect", ..] => Err("write rect:W:H with sizes in mm, for example rect:200:150".into()),
         ["circle", r] => Ok(RegionSpec::Circle {
-            radius: positive(r).map_err(|e| format!("circle:R: the radius {e}"))?,
+            radius: length(r).map_err(|e| format!("circle:R: the radius {e}"))?,
         }),
         ["circle", ..] => Err("write circle:R with the radius in mm, for example circle:100".into()),
         ["annulus", ro, ri] => {
-            let outer = positive(ro).map_err(|e| format!("annulus:R_OUTER:R_INNER: R_OUTER {e}"))?;
-            let inner = positive(ri).map_err(|e| format!("annulus:R_OUTER:R_INNER: R_INNER {e}"))?;
+            let outer = length(ro).map_err(|e| format!("annulus:R_OUTER:R_INNER: R_OUTER {e}"))?;
+            let inner = length(ri).map_err(|e| format!("annulus:R_OUTER:R_INNER: R_INNER {e}"))?;
             if inner >= outer {
                 return Err(format!(
                     "annulus:R_OUTER:R_INNER: R_INNER ({ri}) must be smaller than R_OUTER ({ro})"

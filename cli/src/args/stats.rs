@@ -25,10 +25,10 @@ pub enum StatsCommand {
 #[derive(Debug, Args)]
 pub struct ZetaArgs {
     /// Exponent c (> 1).
-    #[arg(long, value_parser = spec::exponent, allow_negative_numbers = true)]
+    #[arg(long, value_parser = spec::exponent, allow_hyphen_values = true)]
     pub c: f64,
     /// Offset N (> 0).
-    #[arg(long = "n-offset", default_value_t = 1.0, value_parser = spec::positive, allow_negative_numbers = true)]
+    #[arg(long = "n-offset", default_value_t = 1.0, value_parser = spec::n_offset, allow_hyphen_values = true)]
     pub n_offset: f64,
     /// Print one JSON object.
     #[arg(long)]
@@ -39,13 +39,13 @@ pub struct ZetaArgs {
 #[derive(Debug, Args)]
 pub struct GasketArgs {
     /// Exponent c (> 1).
-    #[arg(long, value_parser = spec::exponent, allow_negative_numbers = true)]
+    #[arg(long, value_parser = spec::exponent, allow_hyphen_values = true)]
     pub c: f64,
     /// Offset N (> 0).
-    #[arg(long = "n-offset", default_value_t = 1.0, value_parser = spec::positive, allow_negative_numbers = true)]
+    #[arg(long = "n-offset", default_value_t = 1.0, value_parser = spec::n_offset, allow_hyphen_values = true)]
     pub n_offset: f64,
     /// Number of placements done, n >= 1 (the next circle is number n, counted from 0).
-    #[arg(long, value_parser = clap::value_parser!(u64).range(1..))]
+    #[arg(long, value_parser = clap::value_parser!(u64).range(1..), allow_hyphen_values = true)]
     pub n: u64,
     /// Print one JSON object.
     #[arg(long)]
@@ -72,7 +72,7 @@ pub struct SceneArgs {
     #[arg(long, value_enum, default_value = "none")]
     pub rotate: Rotate,
     /// rect:W:H, sizes in mm.
-    #[arg(long, default_value = "rect:200:200", value_parser = rect_2d, allow_negative_numbers = true)]
+    #[arg(long, default_value = "rect:200:200", value_parser = rect_2d, allow_hyphen_values = true)]
     pub region: (f64, f64),
     /// Periodic (toroidal) boundary.
     #[arg(long)]
@@ -99,13 +99,13 @@ pub struct TrialsArgs {
     #[command(flatten)]
     pub scene: SceneArgs,
     /// Exponent c > 1, or several separated by commas (one curve each).
-    #[arg(long, default_value = "1.3", value_parser = exponents, allow_negative_numbers = true)]
+    #[arg(long, default_value = "1.3", value_parser = exponents, allow_hyphen_values = true)]
     pub c: Exponents,
     /// The paper's N > 0.
-    #[arg(long = "n-offset", default_value_t = 1.0, value_parser = spec::positive, allow_negative_numbers = true)]
+    #[arg(long = "n-offset", default_value_t = 1.0, value_parser = spec::n_offset, allow_hyphen_values = true)]
     pub n_offset: f64,
     /// Shapes per run.
-    #[arg(long, default_value_t = 10_000, value_parser = clap::value_parser!(u64).range(10..=10_000_000))]
+    #[arg(long, default_value_t = 10_000, value_parser = clap::value_parser!(u64).range(10..=10_000_000), allow_hyphen_values = true)]
     pub count: u64,
     /// reference: run the paper's sampler and count its trials; fast: place with the cell
     /// sampler and estimate the paper's trials (unbiased; seconds where the paper's sampler
@@ -113,16 +113,16 @@ pub struct TrialsArgs {
     #[arg(long, value_enum, default_value = "reference")]
     pub sampler: TrialsFrom,
     /// Runs per value of c (seeds seed + k * runs + r).
-    #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u64).range(1..=100))]
+    #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u64).range(1..=100), allow_hyphen_values = true)]
     pub runs: u64,
     /// Base seed.
-    #[arg(long, default_value_t = 1)]
+    #[arg(long, default_value_t = 1, allow_hyphen_values = true)]
     pub seed: u64,
     /// Trial limit per placement.
-    #[arg(long = "max-trials", default_value_t = 10_000_000, value_parser = clap::value_parser!(u64).range(1..))]
+    #[arg(long = "max-trials", default_value_t = 10_000_000, value_parser = clap::value_parser!(u64).range(1..), allow_hyphen_values = true)]
     pub max_trials: u64,
     /// The fit uses placements n >= this (default: a tenth of --count).
-    #[arg(long = "fit-from", value_parser = clap::value_parser!(u64).range(1..))]
+    #[arg(long = "fit-from", value_parser = clap::value_parser!(u64).range(1..), allow_hyphen_values = true)]
     pub fit_from: Option<u64>,
     /// Where the numbers or the chart go.
     #[command(flatten)]
@@ -141,31 +141,31 @@ pub struct HaltingArgs {
     #[command(flatten)]
     pub scene: SceneArgs,
     /// First c (> 1).
-    #[arg(long = "c-from", value_parser = spec::exponent, allow_negative_numbers = true)]
+    #[arg(long = "c-from", value_parser = spec::exponent, allow_hyphen_values = true)]
     pub c_from: f64,
     /// Last c (>= --c-from).
-    #[arg(long = "c-to", value_parser = spec::exponent, allow_negative_numbers = true)]
+    #[arg(long = "c-to", value_parser = spec::exponent, allow_hyphen_values = true)]
     pub c_to: f64,
     /// Step between values of c (> 0).
-    #[arg(long = "c-step", value_parser = spec::positive, allow_negative_numbers = true)]
+    #[arg(long = "c-step", value_parser = spec::positive, allow_hyphen_values = true)]
     pub c_step: f64,
     /// The paper's N > 0.
-    #[arg(long = "n-offset", default_value_t = 1.0, value_parser = spec::positive, allow_negative_numbers = true)]
+    #[arg(long = "n-offset", default_value_t = 1.0, value_parser = spec::n_offset, allow_hyphen_values = true)]
     pub n_offset: f64,
     /// Runs per value of c.
-    #[arg(long, default_value_t = 20, value_parser = clap::value_parser!(u64).range(1..=1_000_000))]
+    #[arg(long, default_value_t = 20, value_parser = clap::value_parser!(u64).range(1..=1_000_000), allow_hyphen_values = true)]
     pub runs: u64,
     /// Shapes per run: a run that places them all did not halt.
-    #[arg(long, default_value_t = 100, value_parser = clap::value_parser!(u64).range(1..=1_000_000))]
+    #[arg(long, default_value_t = 100, value_parser = clap::value_parser!(u64).range(1..=1_000_000), allow_hyphen_values = true)]
     pub count: u64,
     /// Trial limit per placement: reaching it is a halt.
-    #[arg(long = "max-trials", default_value_t = 1_000_000, value_parser = clap::value_parser!(u64).range(1..))]
+    #[arg(long = "max-trials", default_value_t = 1_000_000, value_parser = clap::value_parser!(u64).range(1..), allow_hyphen_values = true)]
     pub max_trials: u64,
     /// Base seed.
-    #[arg(long, default_value_t = 1)]
+    #[arg(long, default_value_t = 1, allow_hyphen_values = true)]
     pub seed: u64,
     /// Worker threads (0: one per core).
-    #[arg(long, default_value_t = 0)]
+    #[arg(long, default_value_t = 0, allow_hyphen_values = true)]
     pub threads: usize,
     /// Where the numbers or the chart go.
     #[command(flatten)]
@@ -184,10 +184,10 @@ pub struct DimensionArgs {
     /// A JSON file written by `zetafill fill` or `zetafill line`.
     pub input: PathBuf,
     /// Largest box size in mm for the fit (default: see the module docs).
-    #[arg(long = "max-box", value_parser = spec::positive, allow_negative_numbers = true)]
+    #[arg(long = "max-box", value_parser = spec::length, allow_hyphen_values = true)]
     pub max_box: Option<f64>,
     /// Smallest box size in mm for the fit (default: twice the smallest shape's size).
-    #[arg(long = "min-box", value_parser = spec::positive, allow_negative_numbers = true)]
+    #[arg(long = "min-box", value_parser = spec::length, allow_hyphen_values = true)]
     pub min_box: Option<f64>,
     /// Print one JSON object: {"box_counting": ..., "exact": ..., ...}.
     #[arg(long)]

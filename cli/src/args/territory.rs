@@ -55,7 +55,7 @@ pub enum TerritoryFormatArg {
 pub struct TerritoryArgs {
     /// K random seed sites (territories 0..K-1), K >= 2 (default 3); with --sites-from, K of
     /// the fill's centres chosen at random.
-    #[arg(long, value_parser = seed_count, conflicts_with = "site")]
+    #[arg(long, value_parser = seed_count, conflicts_with = "site", allow_hyphen_values = true)]
     pub sites: Option<usize>,
     /// A seed site X,Y in mm (repeat for each; at least two). With --sites-from, the fill's
     /// centre nearest to X,Y.
@@ -66,7 +66,7 @@ pub struct TerritoryArgs {
     #[arg(long = "sites-from", conflicts_with_all = ["points", "region"])]
     pub sites_from: Option<PathBuf>,
     /// Total number of sites, seeds included (the paper's pictures use about 7,000).
-    #[arg(long, value_parser = clap::value_parser!(u64).range(2..=MAX_POINTS as u64))]
+    #[arg(long, value_parser = clap::value_parser!(u64).range(2..=MAX_POINTS as u64), allow_hyphen_values = true)]
     pub points: Option<u64>,
     /// rect:W:H | circle:R | annulus:R_OUTER:R_INNER | polygon:X1,Y1,X2,Y2,...[/X1,Y1,...] (rings,
     /// even-odd) | svg:FILE (mm).
@@ -82,13 +82,13 @@ pub struct TerritoryArgs {
     #[arg(long)]
     pub uniform: bool,
     /// Density control starts at the n0-th point (the paper's n0).
-    #[arg(long, default_value_t = 1000, value_parser = clap::value_parser!(u64).range(1..))]
+    #[arg(long, default_value_t = 1000, value_parser = clap::value_parser!(u64).range(1..), allow_hyphen_values = true)]
     pub n0: u64,
     /// The paper's s: floor(log2(s i)) x floor(log2(s i)) buckets for the i-th point.
-    #[arg(long, default_value_t = 0.1, value_parser = spec::positive, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = 0.1, value_parser = bucket_scale, allow_hyphen_values = true)]
     pub s: f64,
     /// How much more likely a new point lands in a boundary bucket than in another (>= 1).
-    #[arg(long, default_value_t = 8.0, value_parser = boost, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = 8.0, value_parser = boost, allow_hyphen_values = true)]
     pub boost: f64,
     /// Colour of territory 0, 1, ... in turn: H,S,B (the seed's colour c^k, each in [0, 1])
     /// or H,S,B:DH,DS,DB (with the step d^k per unit of distance). Territories without one
@@ -99,10 +99,10 @@ pub struct TerritoryArgs {
     #[command(flatten)]
     pub output: OutputArgs<TerritoryFormatArg>,
     /// SVG: stroke width of the boundaries in mm.
-    #[arg(long = "pen-width", default_value_t = 0.3, value_parser = spec::positive)]
+    #[arg(long = "pen-width", default_value_t = 0.3, value_parser = spec::length, allow_hyphen_values = true)]
     pub pen_width: f64,
     /// SVG: stroke width of the thin cell edges in mm.
-    #[arg(long = "thin-width", default_value_t = 0.1, value_parser = spec::positive)]
+    #[arg(long = "thin-width", default_value_t = 0.1, value_parser = spec::length, allow_hyphen_values = true)]
     pub thin_width: f64,
     /// SVG: also draw the region's outline.
     #[arg(long)]
@@ -140,11 +140,24 @@ pub fn point(s: &str) -> Result<Pt, String> {
     Ok([spec::finite(v[0])?, spec::finite(v[1])?])
 }
 
-/// `--boost`: a weight of 1 or more.
+/// `--s`: the bucket scale, > 0 and at most a million (beyond, every point has its own
+/// bucket row long before the run ends).
+pub fn bucket_scale(s: &str) -> Result<f64, String> {
+    let v = spec::positive(s)?;
+    if v <= 1e6 {
+        Ok(v)
+    } else {
+        Err(format!("must be at most 1000000 (got {s}); the paper uses 0.1"))
+    }
+}
+
+/// `--boost`: a weight of 1 or more (at most a million).
 pub fn boost(s: &str) -> Result<f64, String> {
     let v = spec::finite(s)?;
-    if v >= 1.0 {
+    if (1.0..=1e6).contains(&v) {
         Ok(v)
+    } else if v > 1e6 {
+        Err(format!("must be at most 1000000 (got {s})"))
     } else {
         Err(format!(
             "must be 1 or more (got {s}); 1 means no preference, like --uniform after n0"

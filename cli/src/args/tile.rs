@@ -64,19 +64,19 @@ pub enum TileFormatArg {
 )]
 pub struct TileArgs {
     /// Tile width in mm.
-    #[arg(long, default_value_t = 100.0, value_parser = spec::positive, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = 100.0, value_parser = spec::length, allow_hyphen_values = true)]
     pub width: f64,
     /// Tile height in mm.
-    #[arg(long, default_value_t = 100.0, value_parser = spec::positive, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = 100.0, value_parser = spec::length, allow_hyphen_values = true)]
     pub height: f64,
     /// Disc radius at the tile's bottom edge in mm (half of it at the top edge).
-    #[arg(long, default_value_t = 5.0, value_parser = spec::positive, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = 5.0, value_parser = spec::length, allow_hyphen_values = true)]
     pub radius: f64,
     /// Gap between discs at the bottom edge in mm (half of it at the top edge).
-    #[arg(long, default_value_t = 1.0, value_parser = spec::non_negative, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = 1.0, value_parser = spec::length_or_zero, allow_hyphen_values = true)]
     pub spacing: f64,
     /// Random tries in all (each places a disc where it fits).
-    #[arg(long, default_value_t = 20_000, value_parser = clap::value_parser!(u64).range(1..=100_000_000))]
+    #[arg(long, default_value_t = 20_000, value_parser = clap::value_parser!(u64).range(1..=100_000_000), allow_hyphen_values = true)]
     pub tries: u64,
     /// The seed.
     #[command(flatten)]
@@ -92,20 +92,20 @@ pub struct TileArgs {
     #[arg(long, value_enum, default_value = "tile")]
     pub layout: LayoutArg,
     /// Mosaic and planet: rows (rings) of tiles.
-    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=10))]
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=10), allow_hyphen_values = true)]
     pub rows: Option<u32>,
     /// Mosaic: tiles in the bottom row (default 2); planet: tiles in the inner ring (default
     /// 16).
-    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=4096))]
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=4096), allow_hyphen_values = true)]
     pub columns: Option<u32>,
     /// Planet: its outer radius in mm, where the rings pile up.
-    #[arg(long = "planet-radius", value_parser = spec::positive, allow_negative_numbers = true)]
+    #[arg(long = "planet-radius", value_parser = spec::length, allow_hyphen_values = true)]
     pub planet_radius: Option<f64>,
     /// Where the output goes.
     #[command(flatten)]
     pub output: OutputArgs<TileFormatArg>,
     /// SVG: stroke width of the outlines in mm.
-    #[arg(long = "pen-width", default_value_t = 0.3, value_parser = spec::positive, allow_negative_numbers = true)]
+    #[arg(long = "pen-width", default_value_t = 0.3, value_parser = spec::length, allow_hyphen_values = true)]
     pub pen_width: f64,
     /// Colours (SVG/PNG).
     #[command(flatten)]

@@ -143,6 +143,7 @@ pub fn compute(a: &FillRun) -> Result<(FillDoc, Option<StepError>), CliError> {
     let params = &a.params;
     let stop = a.stop;
     let sequence = stopping::sequence(region.area(), params.c, params.n_offset)?;
+    stopping::check_min_size(&stop, zetafill::first_shape(&sequence, &params.shape).width, SHAPES)?;
     let cap = stopping::slots(zetafill::shape_capacity(&sequence, &params.shape, &stop, SHAPES.max), SHAPES)? as usize;
     let run = if a.fixed_point {
         run_engine::<zetafill::Fixed>(a, params, region, &stop, cap)?

@@ -2,7 +2,7 @@
 //! message of a halt. The stop conditions and the slots they need are resolved in
 //! [`crate::plan`].
 
-pub use crate::plan::{sequence, slots, stop, Unit};
+pub use crate::plan::{check_min_size, sequence, slots, stop, Unit};
 
 use crate::error::CliError;
 use std::io::IsTerminal;

@@ -1,6 +1,7 @@
 //! Reading input files with a size limit, so that a device or an endless pipe given as an
 //! input (`--region svg:/dev/zero`) is refused after a bounded read instead of filling the
-//! memory. The limits are documented in docs/cli.md.
+//! memory. The limits are documented in docs/cli.md (machine profiles, which the profile
+//! module reads itself, stop at 1 MiB).
 
 use std::io::Read;
 use std::path::Path;
@@ -10,8 +11,6 @@ pub const MAX_SVG_BYTES: u64 = 64 << 20;
 /// Largest JSON input (`territory --sites-from`, `stats dimension`): a fill of a million
 /// shapes writes about 150 MiB.
 pub const MAX_JSON_BYTES: u64 = 1 << 30;
-/// Largest machine profile (`--machine FILE.toml`).
-pub const MAX_PROFILE_BYTES: u64 = 1 << 20;
 
 /// The bytes of `path`, or an error if it cannot be read or holds more than `limit` bytes
 /// (`what` names the input in that error). Reads at most `limit + 1` bytes.

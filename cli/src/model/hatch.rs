@@ -30,11 +30,14 @@ impl Hatch {
             .trim()
             .parse::<f64>()
             .map_err(|_| format!("'{sp}' is not a number of mm (SPACING[:ANGLE])"))?;
-        if !(spacing.is_finite() && spacing > 0.0) {
+        if !spacing.is_finite() {
+            return Err(format!("'{}' is not a finite number of mm (SPACING[:ANGLE])", sp.trim()));
+        }
+        if spacing <= 0.0 {
             return Err(format!("spacing {spacing} mm must be positive"));
         }
         if spacing < 1e-3 {
-            return Err(format!("spacing {spacing} mm is below 0.001 mm"));
+            return Err(format!("spacing {} mm is below 0.001 mm", crate::error::num(spacing)));
         }
         let angle = match an {
             Some(a) => a

@@ -55,7 +55,38 @@ pub fn stop(count: Option<u64>, fill: Option<f64>, min_size: Option<f64>) -> Sto
 /// The power-law sequence of a run over `total` (area or length), from the core; a bad
 /// offset is named as `--n-offset`.
 pub fn sequence(total: f64, c: f64, n: f64) -> Result<AreaSequence, CliError> {
-    AreaSequence::new(total, c, n).map_err(|e| CliError::arg("--n-offset", e))
+    let seq = AreaSequence::new(total, c, n).map_err(|e| CliError::arg("--n-offset", e))?;
+    // A huge c (or N) sends the second size below the smallest number there is: the run
+    // would place one shape and then pieces of size 0.
+    let second = seq.area(1);
+    if !(seq.area(0).is_finite() && second.is_finite() && second >= f64::MIN_POSITIVE) {
+        return Err(CliError::arg(
+            "--c",
+            format!(
+                "with c = {} and N = {}, the second size ({}) is not a usable number; lower --c",
+                crate::error::num(c),
+                crate::error::num(n),
+                crate::error::num(second)
+            ),
+        ));
+    }
+    Ok(seq)
+}
+
+/// Refuses a `--min-size` above the first piece's size (`first`, its narrowest width or its
+/// length): the run would place nothing.
+pub fn check_min_size(stop: &Stop, first: f64, unit: Unit) -> Result<(), CliError> {
+    match stop.min_size {
+        Some(m) if m > first => Err(CliError::arg(
+            "--min-size",
+            format!(
+                "{} mm is above the size of the first of the {} ({first:.4} mm), so none would be placed; give a smaller --min-size",
+                crate::error::num(m),
+                unit.plural
+            ),
+        )),
+        _ => Ok(()),
+    }
 }
 
 /// The slots the stop conditions need, as the core found them ([`zetafill::shape_capacity`], [`zetafill::segment_capacity`]); a

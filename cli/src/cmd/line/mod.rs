@@ -23,6 +23,7 @@ pub use picture::{command_line, picture, plotter_picture, LineSvgOptions};
 pub fn compute(a: &LineRun) -> Result<(LineDoc, Option<StepError>), CliError> {
     let (params, interval, stop) = (a.params, a.interval, a.stop);
     let sequence = stopping::sequence(interval.length, params.c, params.n_offset)?;
+    stopping::check_min_size(&stop, sequence.area(0), SEGMENTS)?;
     let cap = stopping::slots(zetafill::segment_capacity(&sequence, &stop, SEGMENTS.max), SEGMENTS)? as usize;
     let mut segs = vec![Segment::<f64>::default(); cap];
     let mut index = vec![0u32; line_index_words(cap)];

@@ -14,6 +14,9 @@ pub use blocks::{printable, MAX_FEED, MIN_FEED};
 use blocks::{Kind, Tool};
 use serde::{Deserialize, Serialize};
 
+/// Largest machine profile file (bytes).
+pub const MAX_PROFILE_BYTES: u64 = 1 << 20;
+
 /// The built-in profiles: name and TOML text.
 pub const BUILTINS: &[(&str, &str)] = &[
     ("grbl-laser", include_str!("../../../machines/grbl-laser.toml")),
@@ -189,8 +192,18 @@ impl Machine {
                 Machine::builtin_names().join(", ")
             ));
         }
-        let bytes = crate::io::read::read_limited(path, crate::io::read::MAX_PROFILE_BYTES, "a machine profile")
+        // Read at most one byte past the limit, so that a device or an endless pipe given as
+        // a profile is refused after 1 MiB.
+        let mut bytes = Vec::new();
+        std::fs::File::open(path)
+            .and_then(|f| std::io::Read::read_to_end(&mut std::io::Read::take(f, MAX_PROFILE_BYTES + 1), &mut bytes))
             .map_err(|e| format!("cannot read '{spec}': {e}"))?;
+        if bytes.len() as u64 > MAX_PROFILE_BYTES {
+            return Err(format!(
+                "cannot read '{spec}': it holds more than {} MiB, the most a machine profile may be",
+                MAX_PROFILE_BYTES >> 20
+            ));
+        }
         let text = String::from_utf8(bytes).map_err(|_| format!("cannot read '{spec}': it is not UTF-8 text"))?;
         Machine::parse(&text).map_err(|e| format!("'{spec}': {e}"))
     }
@@ -204,7 +217,7 @@ impl Machine {
             if v.is_finite() && v > 0.0 && v <= max {
                 Ok(())
             } else {
-                Err(format!("{what} = {v}: must be positive (at most {max})"))
+                Err(format!("{what} = {}: must be positive (at most {max})", crate::error::num(v)))
             }
         };
         pos("bed.width", self.bed.width, 100_000.0)?;
@@ -214,7 +227,8 @@ impl Machine {
                 Ok(())
             } else {
                 Err(format!(
-                    "{what} = {v}: must lie between {} and {} mm/min",
+                    "{what} = {}: must lie between {} and {} mm/min",
+                    crate::error::num(v),
                     blocks::MIN_FEED,
                     blocks::MAX_FEED
                 ))
@@ -224,12 +238,18 @@ impl Machine {
         feed("feed.travel", self.feed.travel)?;
         if let Some(p) = &self.power {
             if !(p.min.is_finite() && p.max.is_finite() && p.min >= 0.0 && p.min < p.max && p.max <= 1e6) {
-                return Err(format!("power: min {} and max {} must be finite with 0 <= min < max", p.min, p.max));
+                return Err(format!(
+                    "power: min {} and max {} must be finite with 0 <= min < max (at most 1000000)",
+                    crate::error::num(p.min),
+                    crate::error::num(p.max)
+                ));
             }
             if !(p.default >= p.min && p.default <= p.max) {
                 return Err(format!(
                     "power.default = {}: must be within min {} and max {}",
-                    p.default, p.min, p.max
+                    crate::error::num(p.default),
+                    p.min,
+                    p.max
                 ));
             }
         }

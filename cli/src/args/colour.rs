@@ -1,7 +1,6 @@
 //! The colour flags (`--palette`, `--color-by`, `--background`), one group flattened into
 //! every command that paints a picture.
 
-use crate::error::CliError;
 use crate::output::palette::{self, ColorBy, Colour, Palette};
 
 /// `--color-by`: how shapes take their colours from a palette.
@@ -53,28 +52,6 @@ impl ColourArgs {
         } else {
             self.background.as_ref().map(|_| "--background")
         }
-    }
-
-    /// Refuses colour flags where they would show nothing: unless `shown` (the output is a
-    /// picture that shows them; `what` says what to change), and `--color-by kind` when the
-    /// picture has `one_kind` of shape.
-    pub fn check(&self, shown: bool, what: &str, one_kind: bool) -> Result<(), CliError> {
-        let Some(flag) = self.given() else {
-            return Ok(());
-        };
-        if !shown {
-            return Err(CliError::arg(
-                flag,
-                format!("colours the shapes of an SVG or PNG picture: {what}, or drop it"),
-            ));
-        }
-        if one_kind && self.color_by == Some(ColorByArg::Kind) {
-            return Err(CliError::arg(
-                "--color-by",
-                "there is one kind of shape here; use size, random or cycle",
-            ));
-        }
-        Ok(())
     }
 
     /// The rule that gives out the colours (`size` unless given).

@@ -4,7 +4,7 @@
 //! that name a flag: a parameter the core refuses, a first shape that does not fit, a halt.
 
 use crate::args::fill::{FillArgs, MixArg, Rotate, Sampler, ScalarArg, DEFAULT_MAX_TRIALS, MAX_SHAPES};
-use crate::args::plot::{Layers, PlotArgs, FOR_GCODE, SVG_FLAGS};
+use crate::args::plot::{Layers, PlotArgs, SVG_FLAGS};
 use crate::args::style::StyleArg;
 use crate::error::CliError;
 use crate::io::write::Dest;
@@ -16,6 +16,7 @@ use crate::output::palette::{ColorBy, Colour, Palette};
 use crate::output::png::Raster;
 use crate::output::svg::Style;
 use crate::plan::format::Format;
+use crate::plan::plot::FOR_GCODE;
 use crate::plan::plot::{GcodePlan, PagePlan};
 use crate::plan::raster::{self, only_png};
 use crate::plan::Unit;

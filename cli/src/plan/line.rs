@@ -5,7 +5,7 @@
 //! does not fit, a halt.
 
 use crate::args::line::{LineArgs, RenderArg, MAX_SEGMENTS};
-use crate::args::plot::{Layers, PlotArgs, FOR_GCODE};
+use crate::args::plot::{Layers, PlotArgs};
 use crate::error::CliError;
 use crate::io::write::Dest;
 use crate::output::palette::{ColorBy, Colour, Palette};
@@ -13,6 +13,7 @@ use crate::output::png::Raster;
 use crate::output::svg::Style;
 use crate::plan::format::Format;
 use crate::plan::plot::GcodePlan;
+use crate::plan::plot::FOR_GCODE;
 use crate::plan::raster;
 use crate::plan::Unit;
 use zetafill::{Interval, LineParams, ParamError, Stop};

@@ -3,6 +3,7 @@
 //! message that names a flag, lives here; the commands of [`crate::cmd`] then compute and
 //! write what the plan says, and never look at a flag again.
 
+pub mod colour;
 pub mod fill;
 pub mod format;
 pub mod line;

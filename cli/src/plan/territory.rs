@@ -7,7 +7,7 @@
 //! than territories): their messages live here too, and the run checks them where it always
 //! has, so the first error reported stays the same.
 
-use crate::args::plot::{Layers, PlotArgs, FOR_GCODE};
+use crate::args::plot::{Layers, PlotArgs};
 use crate::args::territory::{RenderArg, TerritoryArgs};
 use crate::error::CliError;
 use crate::geometry::site::SiteError;
@@ -18,6 +18,7 @@ use crate::output::palette::{ColorBy, Colour, Palette};
 use crate::output::png::Raster;
 use crate::plan::format::TerritoryFormat;
 use crate::plan::plot::GcodePlan;
+use crate::plan::plot::FOR_GCODE;
 use crate::plan::raster;
 use std::path::{Path, PathBuf};
 

@@ -4,7 +4,7 @@
 //! the run's own outcomes that name a flag: cobblestones that never meet their copies, a
 //! drawing of too many pieces.
 
-use crate::args::plot::{Layers, PlotArgs, FOR_GCODE, GCODE_FLAGS};
+use crate::args::plot::{Layers, PlotArgs, GCODE_FLAGS};
 use crate::args::tile::{LayoutArg, RenderArg, StyleArg, TileArgs};
 use crate::error::CliError;
 use crate::io::write::Dest;
@@ -15,6 +15,7 @@ use crate::output::palette::{ColorBy, Colour, Palette};
 use crate::output::png::Raster;
 use crate::plan::format::TileFormat;
 use crate::plan::plot::GcodePlan;
+use crate::plan::plot::FOR_GCODE;
 use crate::plan::raster::{self, only_png};
 
 /// A checked `zetafill tile`: where it writes, the tile it grows and how it draws it.

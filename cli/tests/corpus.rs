@@ -38,7 +38,7 @@ const CORPUS: &[(&str, i32, &str)] = &[
     ("fill --shape mix:square,ring:0.4 --count 200 -o mix.json", 0, "16bc938520d18c48beb7e47df2203494ab91a0123dbf1c526a475feb126312d5"),
     ("fill --region polygon:0,0,90,0,90,90,0,90/30,30,60,30,60,60 --c 1.25 --n-offset 3 --count 200 --gap 0.5 -o holed.json", 0, "a8edb52bdf8a5d4fbd4843867abe151ebe0abe57c851dacafb5b4a86449c4027"),
     ("fill --region svg:outline.svg --c 1.25 --n-offset 3 --count 200 -o svg-region.svg", 0, "9f6902274e2624a5920eadfc1cc7c12d8c4e38e7f3149eee8989729f913cd160"),
-    ("fill --shape square --periodic --region rect:150:150 --c 1.25 --n-offset 2 --count 300 -o periodic.svg", 0, "def2fce0e94e9b7e3bd1921632074d1fed142eea4b2530e2cdf921f5332a7183"),
+    ("fill --shape square --periodic --region rect:150:150 --c 1.25 --n-offset 2 --count 300 -o periodic.svg", 0, "5e662e07460646ad32b0d17022bd36d9864987583b1dead959dd30ae46a6bf31"),
     ("fill --periodic --count 300 --machine grbl-laser -o periodic.gcode", 0, "3b9f224949805172b58e57af33bdf5569ca946271c0fb7ec94505266a801becf"),
     ("fill --sampler reference --count 300 -o reference.json", 0, "7f30b4114aa80d3b13b40f10d29b33c87fc2ae7d659b08a66af54efff7ef9989"),
     ("fill --scalar fixed --shape square --count 300 --format digest -o fixed.txt", 0, "90b9563094b60b0456d2989cabfb523b374b934edd8c49d4a1113799f91e66f9"),

@@ -70,7 +70,7 @@ const CORPUS: &[(&str, i32, &str)] = &[
     ("line --count 300 -o line.svg", 0, "a881160f1beb750d3d62e6881415a7abbbd31310ac9e75f3e0b08df3c359a185"),
     ("line --render dashes --periodic --count 300 --boundary -o dashes.svg", 0, "ce891951f5d3a93879a66ee2bdb37b8d3509042831849d31eefdb25a5de78dea"),
     ("line --render bars --bar-height 40 --count 300 --palette {P5} --background fefae0 --pixels 300 -o bars.png", 0, "6b6488e7017b2f2d5ff09c57f0ad5ac2879933df6651b5bb18055b1c9b53fc09"),
-    ("line --c 1.4 --count 3000 --periodic --render zoom -o zoom.svg", 0, "ac84c66d39b851a47687de18a947145425146134efe880d613c6325db67e9b14"),
+    ("line --c 1.4 --count 3000 --periodic --render zoom -o zoom.svg", 0, "3b701c7fa8f42c95f4b2e3f94909970e4e42a3010bc500c06c56f90cc103f9ad"),
     ("line --count 300 --style filled --palette 1d3557,e63946 --color-by cycle -o line-filled.svg", 0, "f07af0ee599f6c3fa3e782fd053ed7a445eb40b149de3f98ec94b91b98f052ea"),
     ("line --count 300 -o line.json", 0, "21e2fcebf315751db65d1e499c81fc554d6388f39b934b77ee5e425dc445f1da"),
     ("line --dimension 0.7 --fill 0.6 --gap 0.1 -o line.csv", 0, "e0a1c30ec022dc97647d73dea32c70d102b43a11e2e863e2d8476cd3bc3cb975"),

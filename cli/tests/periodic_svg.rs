@@ -3,8 +3,9 @@
 //! with an independent reader (`common::svgread`): every drawn coordinate, arc extremes
 //! included, lies inside the tile; no clip path is left; an outline SVG draws the same
 //! pen-down length as the G-code of the same fill; filled shapes cover exactly the area of
-//! the shapes (on a torus the images of a shape add up to it). A twin shows that the reader
-//! reports an uncut image and a clip path.
+//! the shapes (on a torus the images of a shape add up to it). The same holds for the other
+//! drawings that used to lean on a clip path (1D circles and zoom rows, filled tile
+//! layouts), and a twin shows that the reader reports an uncut image and a clip path.
 
 mod common;
 
@@ -144,4 +145,65 @@ fn the_reader_reports_uncut_images_and_clip_paths() {
 </g></svg>
 "#;
     assert!(read_svg(cut, &[TILE], TOL, TOL_ARC).problems.is_empty());
+}
+
+/// The viewBox's width and height.
+fn view_box(svg: &[u8]) -> (f64, f64) {
+    let text = String::from_utf8_lossy(svg);
+    let v: Vec<f64> = text
+        .split("viewBox=\"")
+        .nth(1)
+        .and_then(|t| t.split('"').next())
+        .unwrap_or("")
+        .split_whitespace()
+        .filter_map(|n| n.parse().ok())
+        .collect();
+    assert_eq!(v.len(), 4, "a viewBox");
+    (v[2], v[3])
+}
+
+/// `zetafill line`: a wrapping segment's circles, and the zoom rows' magnified circles, are
+/// cut to the interval's box or their row (outlines and filled), with no clip path.
+#[test]
+fn line_circles_and_zoom_rows_are_cut_to_their_boxes() {
+    let dir = tmp();
+    let d = dir.path();
+    let base = ["--periodic", "--count", "300", "--seed", "3"];
+    for style in ["outline", "filled"] {
+        let svg = line_to(d, "c.svg", &[&base[..], &["--render", "circles", "--style", style]].concat());
+        let (w, h) = view_box(&svg);
+        // Numbers have four decimals, and these edges are not on that grid.
+        assert_clean(&format!("circles {style}"), &svg, &[[0.0, 0.0, w, h]], 1e-4);
+    }
+    let doc = parse_json(&line_to(d, "l.json", &base));
+    let d0 = f(&shapes(&doc)[0], "length");
+    let rows = 3;
+    let svg = line_to(d, "z.svg", &[&base[..], &["--render", "zoom", "--zoom-rows", "3"]].concat());
+    let (w, _) = view_box(&svg);
+    // Each row's box, and the gap below it (where the marks are).
+    let boxes: Vec<[f64; 4]> = (0..rows)
+        .flat_map(|k| {
+            let y0 = f64::from(k) * 1.25 * d0;
+            [[0.0, y0, w, y0 + d0], [0.0, y0 + d0, w, y0 + 1.25 * d0]]
+        })
+        .collect();
+    assert_clean("zoom", &svg, &boxes, 1e-4);
+}
+
+/// `zetafill tile` filled mosaics and planets draw each copy's shapes whole, cut exactly to
+/// the sheet (no clip path).
+#[test]
+fn filled_tile_layouts_are_cut_to_the_sheet() {
+    let dir = tmp();
+    let d = dir.path();
+    for layout in ["mosaic", "planet"] {
+        let svg = write_to(
+            d,
+            "tile",
+            "t.svg",
+            &["-q", "--tries", "1500", "--style", "filled", "--layout", layout, "--rows", "2"],
+        );
+        let (w, h) = view_box(&svg);
+        assert_clean(layout, &svg, &[[0.0, 0.0, w, h]], 1e-4);
+    }
 }

@@ -139,19 +139,20 @@ fn periodic_images_share_their_shape_colour_and_the_background_is_behind() {
     let Painted { centre, colour, .. } = &paths[0];
     assert_eq!(colour, "#fefae0");
     assert!((centre[0] - 100.0).abs() < 1e-3 && (centre[1] - 100.0).abs() < 1e-3, "{centre:?}");
-    // Every other path is a shape or one of its images: it is found by its centre, modulo
+    // Every other path is a shape or one of its images, cut to the tile: it is found by a
+    // point inside it (its box's centre: a disc, or a disc cut by the tile's edges), modulo
     // the period, and has the shape's colour.
-    let centres: Vec<[f64; 2]> = shapes(&doc).iter().map(|s| pt(&s["center"])).collect();
-    assert!(paths.len() > centres.len() + 1, "edge-crossing shapes have images");
+    let discs: Vec<([f64; 2], f64)> = shapes(&doc).iter().map(|s| (pt(&s["center"]), f(s, "radius"))).collect();
+    assert!(paths.len() > discs.len() + 1, "edge-crossing shapes have images");
     for Painted { centre: c, colour, .. } in &paths[1..] {
         // SVG y runs down from the top.
         let (x, y) = (c[0].rem_euclid(200.0), (200.0 - c[1]).rem_euclid(200.0));
-        let k = centres
+        let k = discs
             .iter()
-            .position(|s| {
+            .position(|(s, r)| {
                 let dx = (s[0] - x).abs();
                 let dy = (s[1] - y).abs();
-                dx.min(200.0 - dx) < 1e-3 && dy.min(200.0 - dy) < 1e-3
+                dx.min(200.0 - dx).hypot(dy.min(200.0 - dy)) < *r
             })
             .unwrap_or_else(|| panic!("a path at {c:?} is no shape's"));
         assert_eq!(colour, want[k], "shape {k} or its image");

@@ -873,6 +873,26 @@ fn pieces_take_the_colour_of_their_disc() {
     }
 }
 
+/// The radius of every disc of an SVG in document order: a `<circle>`'s `r`, or the radius
+/// of the first arc of a `<path>` (a disc cut by the sheet's edge).
+fn disc_radii(svg: &str) -> Vec<f64> {
+    let mut out = Vec::new();
+    let mut rest = svg;
+    while let Some(i) = [rest.find("<circle "), rest.find("<path ")].into_iter().flatten().min() {
+        let elem = &rest[i..];
+        let end = elem.find('>').unwrap_or(elem.len());
+        let e = &elem[..end];
+        let r = if e.starts_with("<circle ") {
+            e.split(" r=\"").nth(1).and_then(|t| t.split('"').next())
+        } else {
+            e.split(" A").nth(1).and_then(|t| t.split(',').next())
+        };
+        out.push(r.and_then(|t| t.parse().ok()).unwrap_or(f64::NAN));
+        rest = &elem[end..];
+    }
+    out
+}
+
 /// `--color-by size` (the default) bands the drawn discs by their drawn size: a mosaic's rows,
 /// each half the scale of the one below, run through the palette from the bottom up.
 #[test]
@@ -882,27 +902,28 @@ fn size_bands_follow_the_drawn_size() {
     let list = PALETTE.join(",");
     let args = words("tile --radius 8 --spacing 2 --tries 3000 --layout mosaic --rows 3 --style filled");
     zf_ok(d, &[&args[..], &["--palette", &list, "-o", "m.svg"]].concat());
-    let paths = painted(&read(&d.join("m.svg")), false);
-    // Every piece is a whole circle: its radius is half its box.
-    let tree = usvg::Tree::from_data(&read(&d.join("m.svg")), &usvg::Options::default()).unwrap_or_else(|e| panic!("{e}"));
-    let mut boxes = Vec::new();
-    fn walk(g: &usvg::Group, out: &mut Vec<f64>) {
-        for n in g.children() {
-            match n {
-                usvg::Node::Group(g) => walk(g, out),
-                usvg::Node::Path(p) => out.push(f64::from(p.abs_bounding_box().width()) * 25.4 / 96.0 / 2.0),
-                _ => {}
-            }
-        }
-    }
-    walk(tree.root(), &mut boxes);
-    assert_eq!(boxes.len(), paths.len());
-    let (rmax, rmin) = boxes.iter().fold((0.0f64, f64::INFINITY), |(a, b), &r| (a.max(r), b.min(r)));
+    let svg = read(&d.join("m.svg"));
+    let paths = painted(&svg, false);
+    // Every piece is a disc: a whole circle, or a disc cut by the sheet's edge (a path of
+    // arcs and edges); its radius is the circle's, or its arcs'.
+    let drawn = disc_radii(&String::from_utf8_lossy(&svg));
+    assert_eq!(drawn.len(), paths.len());
+    assert!(drawn.iter().all(|r| r.is_finite() && *r > 0.0), "a piece that is no disc");
+    // The bands span every laid-out copy, the rim rows outside the sheet included (a row
+    // below at twice the scale, one above at 1/2^3), even those whose discs miss the sheet.
+    let json = words("tile --radius 8 --spacing 2 --tries 3000 -o - --format json");
+    let tile = parse_json(&zf_ok(d, &json).stdout);
+    let radii: Vec<f64> = tile["discs"]
+        .as_array()
+        .map_or(vec![], |v| v.iter().map(|c| f(c, "radius")).collect());
+    let (rmax, rmin) = radii
+        .iter()
+        .fold((0.0f64, f64::INFINITY), |(a, b), &r| (a.max(2.0 * r), b.min(r / 8.0)));
     let k = PALETTE.len() as f64;
     let check = |shift: usize| {
         let mut bad = 0;
         let mut judged = 0;
-        for (p, &r) in paths.iter().zip(&boxes) {
+        for (p, &r) in paths.iter().zip(&drawn) {
             let t = k * (rmax / r).ln() / (rmax / rmin).ln();
             // Radii are written to 0.1 µm: a disc at a band's edge is not judged.
             if (t - t.round()).abs() < 1e-3 {

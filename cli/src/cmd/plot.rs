@@ -24,7 +24,6 @@ pub fn render_gcode_pens(
 ) -> Result<Vec<u8>, CliError> {
     let mut look = FillLook {
         build: a.build,
-        plotter: true,
         ..FillLook::default()
     };
     let (x0, y0, x1, y1) = doc.bbox();

@@ -1,6 +1,14 @@
-//! Exact clipping of paths to a rectangle: segments by Liang–Barsky, circles and arcs cut at
-//! their crossings into arcs, so that a periodic tile's images end exactly at its edges.
+//! Exact clipping to a rectangle, so that a periodic tile's images end exactly at its edges.
+//!
+//! - Strokes ([`clip_path`]): segments by Liang–Barsky, circles and arcs cut at their
+//!   crossings into arcs. This is what a pen draws.
+//! - Areas ([`clip_area`]): a polygon clipped polygon against rectangle (Sutherland–Hodgman),
+//!   a disc into one closed loop of arcs joined along the rectangle's edges. This is what a
+//!   filled shape covers.
+//!
+//! Cut points lie on the rectangle's edges (areas: exactly; strokes: up to rounding).
 
+use super::path::dist;
 use super::{polar, Bounds, Path, Pt};
 use std::f64::consts::{PI, TAU};
 
@@ -176,6 +184,150 @@ fn clip_arc(c: Pt, rad: f64, start: f64, sweep: f64, r: &Bounds) -> Vec<Path> {
         .collect()
 }
 
+/// The part of a closed path's area inside `r`, as closed loops, each a chain of pieces that
+/// meet end to start: a closed polyline clipped polygon against rectangle ([`clip_polygon`]),
+/// a full circle cut into arcs joined by pieces of the rectangle's edges (the intersection of
+/// two convex sets, so one loop, counter-clockwise like the circle). An open path has no area
+/// and gives nothing.
+pub fn clip_area(p: &Path, r: &Bounds) -> Vec<Vec<Path>> {
+    match p {
+        Path::Polyline { points, closed: true } => {
+            let poly = clip_polygon(points, r);
+            if poly.is_empty() {
+                vec![]
+            } else {
+                vec![vec![Path::polyline(poly, true)]]
+            }
+        }
+        Path::Arc { center, radius, sweep, .. } if sweep.abs() >= TAU => {
+            let lp = clip_disc(*center, *radius, r);
+            if lp.is_empty() {
+                vec![]
+            } else {
+                vec![lp]
+            }
+        }
+        _ => vec![],
+    }
+}
+
+/// A polygon clipped to `r` (Sutherland–Hodgman, against each edge line in turn): the
+/// vertices inside, and the crossings, which lie exactly on the edges. A concave polygon cut
+/// into several parts stays one polygon whose parts are joined along the edge by zero-width
+/// seams, which cover nothing. Empty when fewer than three vertices are left.
+pub fn clip_polygon(points: &[Pt], r: &Bounds) -> Vec<Pt> {
+    let mut poly: Vec<Pt> = points.to_vec();
+    // (axis, edge, keep the side above it)
+    for (axis, at, above) in [(0, r.x0, true), (0, r.x1, false), (1, r.y0, true), (1, r.y1, false)] {
+        let n = poly.len();
+        if n == 0 {
+            break;
+        }
+        let inside = |p: &Pt| if above { p[axis] >= at } else { p[axis] <= at };
+        let cross = |a: Pt, b: Pt| -> Pt {
+            let t = (at - a[axis]) / (b[axis] - a[axis]);
+            let other = 1 - axis;
+            let mut q = [0.0; 2];
+            q[axis] = at;
+            q[other] = a[other] + (b[other] - a[other]) * t;
+            q
+        };
+        let mut out = Vec::with_capacity(n + 4);
+        for i in 0..n {
+            let (a, b) = (poly[(i + n - 1) % n], poly[i]);
+            match (inside(&a), inside(&b)) {
+                (true, true) => out.push(b),
+                (true, false) => out.push(cross(a, b)),
+                (false, true) => {
+                    out.push(cross(a, b));
+                    out.push(b);
+                }
+                (false, false) => {}
+            }
+        }
+        out.dedup();
+        while out.len() > 1 && out.first() == out.last() {
+            out.pop();
+        }
+        poly = out;
+    }
+    if poly.len() < 3 {
+        poly.clear();
+    }
+    poly
+}
+
+/// Where `p` (on the rectangle's edge) is along its perimeter, counter-clockwise from the
+/// corner (x0, y0).
+fn perimeter_at(p: Pt, r: &Bounds) -> f64 {
+    let (w, h) = (r.width(), r.height());
+    let gaps = [(p[1] - r.y0).abs(), (r.x1 - p[0]).abs(), (r.y1 - p[1]).abs(), (p[0] - r.x0).abs()];
+    let edge = (0..4).fold(0, |best, k| if gaps[k] < gaps[best] { k } else { best });
+    match edge {
+        0 => (p[0] - r.x0).clamp(0.0, w),
+        1 => w + (p[1] - r.y0).clamp(0.0, h),
+        2 => w + h + (r.x1 - p[0]).clamp(0.0, w),
+        _ => 2.0 * w + h + (r.y1 - p[1]).clamp(0.0, h),
+    }
+}
+
+/// The rectangle's corners passed going counter-clockwise along its edge from `a` to `b`.
+fn corners_between(a: Pt, b: Pt, r: &Bounds) -> Vec<Pt> {
+    let (w, h) = (r.width(), r.height());
+    let perimeter = 2.0 * (w + h);
+    let corners = [
+        ([r.x0, r.y0], 0.0),
+        ([r.x1, r.y0], w),
+        ([r.x1, r.y1], w + h),
+        ([r.x0, r.y1], 2.0 * w + h),
+    ];
+    let t0 = perimeter_at(a, r);
+    let mut t1 = perimeter_at(b, r);
+    if t1 < t0 {
+        t1 += perimeter;
+    }
+    (0..8)
+        .map(|k| (corners[k % 4].0, corners[k % 4].1 + if k < 4 { 0.0 } else { perimeter }))
+        .filter(|&(_, t)| t > t0 && t < t1)
+        .map(|(c, _)| c)
+        .collect()
+}
+
+/// The disc of centre `c` and radius `rad` cut to `r`, as one closed loop: the circle's arcs
+/// inside, counter-clockwise, each joined to the next by the rectangle's edge (through its
+/// corners). The whole circle when it lies inside, the rectangle when the disc holds it, and
+/// nothing when they miss.
+fn clip_disc(c: Pt, rad: f64, r: &Bounds) -> Vec<Path> {
+    let arcs = clip_arc(c, rad, 0.0, TAU, r);
+    if arcs.is_empty() {
+        // The circle does not cross the inside: the disc holds the rectangle, or misses it.
+        let m = [0.5 * (r.x0 + r.x1), 0.5 * (r.y0 + r.y1)];
+        return if dist(m, c) < rad {
+            vec![Path::polyline(vec![[r.x0, r.y0], [r.x1, r.y0], [r.x1, r.y1], [r.x0, r.y1]], true)]
+        } else {
+            vec![]
+        };
+    }
+    if arcs.len() == 1 && arcs[0].is_closed() {
+        return arcs;
+    }
+    let touch = 1e-12 * (r.width() + r.height() + rad);
+    let mut out = Vec::with_capacity(2 * arcs.len());
+    for (i, arc) in arcs.iter().enumerate() {
+        out.push(arc.clone());
+        let (a, b) = (arc.end_point(), arcs[(i + 1) % arcs.len()].start_point());
+        let corners = if dist(a, b) <= touch { vec![] } else { corners_between(a, b, r) };
+        if !corners.is_empty() || dist(a, b) > touch {
+            let mut edge = Vec::with_capacity(corners.len() + 2);
+            edge.push(a);
+            edge.extend(corners);
+            edge.push(b);
+            out.push(Path::polyline(edge, false));
+        }
+    }
+    out
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -213,5 +365,96 @@ mod tests {
         assert_eq!(parts.len(), 1, "{parts:?}");
         assert!((parts[0].length() - 4.0).abs() < 1e-12, "1 + 2 + 1 mm inside");
         assert!(parts[0].bounds().inside(&unit(), 0.0));
+    }
+
+    /// The area inside a loop of pieces (Green's theorem: ½∮ x dy − y dx).
+    fn loop_area(pieces: &[Path]) -> f64 {
+        let mut a = 0.0;
+        for p in pieces {
+            match p {
+                Path::Polyline { points, closed } => {
+                    let n = points.len();
+                    let k = if *closed { n } else { n - 1 };
+                    for i in 0..k {
+                        let (p, q) = (points[i], points[(i + 1) % n]);
+                        a += 0.5 * (p[0] * q[1] - q[0] * p[1]);
+                    }
+                }
+                Path::Arc {
+                    center: c,
+                    radius: r,
+                    start,
+                    sweep,
+                } => {
+                    let (t0, t1) = (*start, start + sweep);
+                    a += 0.5 * (r * c[0] * (t1.sin() - t0.sin()) - r * c[1] * (t1.cos() - t0.cos()) + r * r * sweep);
+                }
+            }
+        }
+        a
+    }
+
+    /// Whether each piece starts where the one before it ends, around the loop.
+    fn chained(pieces: &[Path]) -> bool {
+        let n = pieces.len();
+        (0..n).all(|i| dist(pieces[i].end_point(), pieces[(i + 1) % n].start_point()) < 1e-12)
+    }
+
+    #[test]
+    fn disc_cut_by_the_rectangle_is_one_loop_of_arcs_and_edges() {
+        let r = unit();
+        // (centre, radius, area inside)
+        let cases = [
+            ([0.0, 5.0], 2.0, 0.5 * PI * 4.0),
+            ([0.0, 0.0], 3.0, 0.25 * PI * 9.0),
+            ([10.0, 10.0], 3.0, 0.25 * PI * 9.0),
+            ([5.0, 5.0], 1.0, PI),
+            ([5.0, 5.0], 20.0, 100.0),
+            ([20.0, 5.0], 1.0, 0.0),
+        ];
+        for (c, rad, want) in cases {
+            let loops = clip_area(&Path::circle(c, rad), &r);
+            let got: f64 = loops.iter().map(|l| loop_area(l)).sum();
+            assert!((got - want).abs() < 1e-9, "{c:?} {rad}: {got} != {want}");
+            assert!(loops.len() <= 1 && loops.iter().all(|l| chained(l)), "{loops:?}");
+            for p in loops.iter().flatten() {
+                assert!(p.bounds().inside(&r, 1e-12), "{p:?}");
+            }
+        }
+        // Across a corner and an edge at once: the area by a fine polygon of the circle.
+        let (c, rad) = ([1.0, 3.0], 4.0);
+        let ring: Vec<Pt> = (0..20000).map(|k| polar(c, rad, TAU * k as f64 / 20000.0)).collect();
+        let want = loop_area(&[Path::polyline(clip_polygon(&ring, &r), true)]);
+        let loops = clip_area(&Path::circle(c, rad), &r);
+        assert_eq!(loops.len(), 1);
+        assert!(chained(&loops[0]));
+        assert!((loop_area(&loops[0]) - want).abs() < 1e-3, "{} {want}", loop_area(&loops[0]));
+    }
+
+    #[test]
+    fn polygon_area_is_clipped_onto_the_edges() {
+        let r = unit();
+        let sq = [[-1.0, 4.0], [1.0, 4.0], [1.0, 6.0], [-1.0, 6.0]];
+        let cut = clip_polygon(&sq, &r);
+        assert_eq!(cut, vec![[0.0, 4.0], [1.0, 4.0], [1.0, 6.0], [0.0, 6.0]]);
+        // A concave star cut into two parts keeps the area of both.
+        let star: Vec<Pt> = (0..10)
+            .map(|k| polar([0.0, 5.0], if k % 2 == 0 { 4.0 } else { 1.5 }, 0.1 + PI * k as f64 / 5.0))
+            .collect();
+        let whole = loop_area(&[Path::polyline(star.clone(), true)]);
+        let right = clip_polygon(&star, &r);
+        let left = clip_polygon(
+            &star,
+            &Bounds {
+                x0: -10.0,
+                y0: 0.0,
+                x1: 0.0,
+                y1: 10.0,
+            },
+        );
+        let parts = loop_area(&[Path::polyline(right.clone(), true)]) + loop_area(&[Path::polyline(left, true)]);
+        assert!((parts - whole).abs() < 1e-12, "{parts} {whole}");
+        assert!(right.iter().all(|p| p[0] >= 0.0), "{right:?}");
+        assert!(clip_polygon(&[[20.0, 0.0], [21.0, 0.0], [21.0, 1.0]], &r).is_empty());
     }
 }

@@ -2,13 +2,14 @@
 //! the periodic images of an edge-crossing shape included, split into layers by size band or
 //! by colour. The same picture gives the SVG (and PNG) and, as strokes, the G-code.
 //!
-//! A periodic fill is cut to its tile one of two ways: by a clip path (screens), or exactly,
-//! each image that crosses the tile's edge cut into path pieces (plotters, whose tools ignore
-//! clip paths: always for G-code, and for an outline SVG on a page or in layers).
+//! A periodic fill is cut to its tile geometrically, never by a clip path (which vpype and
+//! plotter drivers ignore): each image that crosses the tile's edge is cut exactly, its
+//! outline and hatching into path pieces (the strokes the G-code draws, the same in every
+//! SVG), or, filled, its area into a polygon or a loop of arcs and edges.
 
 use super::doc::{FillDoc, ShapeDoc};
 use super::hatch;
-use super::picture::{ClipDef, Colour, Item, Layer, PageLayout, Paint, Picture, Shape};
+use super::picture::{Colour, Item, Layer, PageLayout, Paint, Picture, Shape};
 use super::{shape_bounds, shape_images, shape_width, Bounds, Drawing, Path};
 
 /// What goes into a drawing besides the outlines.
@@ -69,8 +70,6 @@ pub struct FillLook {
     pub layers: Vec<LayerSpec>,
     /// Each shape's layer among `layers`.
     pub layer_of: Vec<usize>,
-    /// Cut periodic images exactly to the tile, whatever the output (plotters).
-    pub plotter: bool,
 }
 
 /// The drawing of a fill in the region's frame: outlines (and hatching), shapes narrower
@@ -79,7 +78,6 @@ pub struct FillLook {
 pub fn from_fill(doc: &FillDoc, opt: &BuildOptions) -> Drawing {
     let look = FillLook {
         build: *opt,
-        plotter: true,
         ..FillLook::default()
     };
     let mut pens = picture(doc, &look).pens();
@@ -142,8 +140,6 @@ pub fn picture(doc: &FillDoc, look: &FillLook) -> Picture {
         x1: w,
         y1: h,
     };
-    let layered = !look.layers.is_empty();
-    let exact = periodic && (look.plotter || (!look.filled && (look.page.is_some() || layered)));
     let min_feature = look.build.min_feature;
     for (k, sh) in doc.shapes.iter().enumerate() {
         if min_feature > 0.0 && shape_width(sh) < min_feature {
@@ -154,7 +150,7 @@ pub fn picture(doc: &FillDoc, look: &FillLook) -> Picture {
         let offs = if periodic { shape_images(sh, w, h) } else { vec![(0.0, 0.0)] };
         let sb = shape_bounds(sh);
         for (dx, dy) in offs {
-            let cut = exact && {
+            let cut = periodic && {
                 let image = Bounds {
                     x0: sb.x0 + dx,
                     y0: sb.y0 + dy,
@@ -166,7 +162,11 @@ pub fn picture(doc: &FillDoc, look: &FillLook) -> Picture {
             let mut items = Vec::with_capacity(2);
             if !look.build.no_outline {
                 let o = outline(sh, (dx, dy), min_feature);
-                items.extend(if cut { o.clipped(&tile) } else { Some(o) });
+                items.extend(match (cut, look.filled) {
+                    (false, _) => Some(o),
+                    (true, false) => o.clipped(&tile),
+                    (true, true) => o.cut_area(&tile),
+                });
             }
             if let Some(hatch) = &look.build.hatch {
                 let lines: Vec<Path> = hatch
@@ -177,7 +177,7 @@ pub fn picture(doc: &FillDoc, look: &FillLook) -> Picture {
                 if !lines.is_empty() {
                     let mut item = Item::new(Shape::Path(lines));
                     item.class = Some("hatch");
-                    items.extend(if exact { item.clipped(&tile) } else { Some(item) });
+                    items.extend(if periodic { item.clipped(&tile) } else { Some(item) });
                 }
             }
             for mut item in items {
@@ -192,17 +192,6 @@ pub fn picture(doc: &FillDoc, look: &FillLook) -> Picture {
                     l.items.push(item);
                 }
             }
-        }
-    }
-    if periodic && !exact {
-        // Images of edge-crossing shapes tile seamlessly; the clip keeps the tile's bounds.
-        let corner = look.page.is_some().then_some([x0, y1]);
-        pic.clips.push(ClipDef {
-            id: "region".into(),
-            item: Item::new(Shape::Rect { corner, w, h }),
-        });
-        for l in &mut pic.layers {
-            l.clip = Some("region".into());
         }
     }
     if look.boundary {

@@ -6,8 +6,9 @@
 //!   full circle when its sweep is ±2π).
 //! - [`shape`]: the bounding box and width of one placed shape.
 //! - [`periodic`]: the images of a shape that show in a periodic tile, for every writer.
-//! - [`clip`]: exact clipping of paths to a rectangle (circles into arcs, polygons into open
-//!   polylines).
+//! - [`clip`]: exact clipping to a rectangle, of strokes (circles into arcs, polygons into
+//!   open polylines) and of areas (polygons clipped against it, discs into loops of arcs and
+//!   edges). A tile is cut this way in every output, never by a clip path.
 //! - [`place`](mod@place): [`Placement`] scales and moves a drawing onto a bed or a page.
 //! - [`region`]: a region as given, before its outline is read.
 //! - [`tile`]: the fractal tile's parameters and plane, and the layouts of copies of its
@@ -48,7 +49,7 @@ pub mod region;
 pub mod shape;
 pub mod tile;
 
-pub use clip::{clip_path, clip_segment};
+pub use clip::{clip_area, clip_path, clip_polygon, clip_segment};
 pub use path::{arc_extremes, polar, Bounds, Drawing, Path, Pt};
 pub use periodic::{periodic_images, shape_images};
 pub use picture::{Item, Layer, Paint, Picture, Shape};

@@ -7,11 +7,15 @@
 //! item is a circle, a polygon, a line, a rectangle, or path pieces (polylines and arcs), each
 //! with its own colour, class or fill rule when it has one.
 //!
+//! Cutting to a tile is geometry here, never a clip path (which plotter tools ignore):
+//! [`Item::cut`] cuts a drawn item's strokes (what a pen draws, and what the G-code writes)
+//! or a filled item's area, so every viewer and every plotter sees the same drawing.
+//!
 //! The SVG writer writes any picture; the G-code writer takes its strokes ([`Picture::pens`]),
 //! one drawing per pen colour; PNG is the SVG rendered. [`Frame`] is the one place where the
 //! region's frame becomes the page's (the y flip, the page placement).
 
-use super::{clip_path, Bounds, Drawing, Path, Pt};
+use super::{clip_area, clip_path, clip_polygon, Bounds, Drawing, Path, Pt};
 
 /// A colour as `#rrggbb`.
 pub type Colour = String;
@@ -82,6 +86,9 @@ pub enum Shape {
     Polygon(Vec<Pt>),
     /// Path pieces: polylines, arcs and full circles (one path, so a fill rule can make holes).
     Path(Vec<Path>),
+    /// Closed loops (one path, so a fill rule can make holes), each a chain of pieces that
+    /// meet end to start: the outline of an area cut to a tile.
+    Loops(Vec<Vec<Path>>),
     /// A straight line.
     Line(Pt, Pt),
     /// A `w` x `h` rectangle; `corner` is the corner that lands top-left on the page
@@ -141,6 +148,7 @@ impl Item {
             Shape::Polygon(vs) if vs.len() < 2 => vec![],
             Shape::Polygon(vs) => vec![Path::polyline(vs.clone(), true)],
             Shape::Path(pieces) => pieces.clone(),
+            Shape::Loops(loops) => loops.iter().flatten().cloned().collect(),
             Shape::Line(a, b) => vec![Path::polyline(vec![*a, *b], false)],
             Shape::Rect { corner, w, h } => {
                 let [x, y] = corner.unwrap_or([0.0, 0.0]);
@@ -149,8 +157,8 @@ impl Item {
         }
     }
 
-    /// The item cut exactly to `tile` (for plotter tools, which ignore clip paths): its
-    /// strokes clipped, as path pieces; `None` when nothing of it is left.
+    /// The item's strokes cut exactly to `tile`, as path pieces (what a pen draws of it
+    /// there); `None` when nothing of it is left.
     pub fn clipped(&self, tile: &Bounds) -> Option<Item> {
         let pieces: Vec<Path> = self.strokes().iter().flat_map(|p| clip_path(p, tile)).collect();
         (!pieces.is_empty()).then(|| Item {
@@ -158,6 +166,51 @@ impl Item {
             evenodd: false,
             ..self.clone()
         })
+    }
+
+    /// The item's area cut exactly to `tile` (a filled shape): a polygon or rectangle clipped
+    /// polygon against rectangle, a circle into arcs joined along the tile's edges, each
+    /// closed piece of a path cut on its own (which keeps a fill rule's holes right: the cut
+    /// of A xor B is the xor of the cuts). A line, which has no area, is cut as a stroke;
+    /// open path pieces are left out. `None` when nothing of it is left.
+    pub fn cut_area(&self, tile: &Bounds) -> Option<Item> {
+        let shape = match &self.shape {
+            Shape::Polygon(vs) => Shape::Polygon(clip_polygon(vs, tile)),
+            Shape::Rect { .. } => match self.strokes().first() {
+                Some(Path::Polyline { points, .. }) => Shape::Polygon(clip_polygon(points, tile)),
+                _ => return None,
+            },
+            Shape::Line(..) => return self.clipped(tile),
+            Shape::Circle { .. } | Shape::Path(_) | Shape::Loops(_) => {
+                let loops: Vec<Vec<Path>> = self.strokes().iter().flat_map(|p| clip_area(p, tile)).collect();
+                if loops.is_empty() {
+                    return None;
+                }
+                Shape::Loops(loops)
+            }
+        };
+        if matches!(&shape, Shape::Polygon(vs) if vs.is_empty()) {
+            return None;
+        }
+        Some(Item { shape, ..self.clone() })
+    }
+
+    /// The item as drawn inside `tile`: itself when it lies inside, otherwise cut exactly to
+    /// the tile, its area when `filled` ([`Item::cut_area`]) or its strokes
+    /// ([`Item::clipped`]); `None` when nothing of it is left.
+    pub fn cut(&self, tile: &Bounds, filled: bool) -> Option<Item> {
+        if self.bounds().inside(tile, 0.0) {
+            Some(self.clone())
+        } else if filled {
+            self.cut_area(tile)
+        } else {
+            self.clipped(tile)
+        }
+    }
+
+    /// The bounding box of its strokes.
+    pub fn bounds(&self) -> Bounds {
+        Drawing { paths: self.strokes() }.bounds()
     }
 }
 

@@ -100,18 +100,53 @@ fn path_d(paths: &[Path], f: &Frame) -> String {
             }
             Path::Arc { center, radius, sweep, .. } if sweep.abs() >= std::f64::consts::TAU => parts.push(circle_d(f, *center, *radius)),
             Path::Arc { radius, sweep, .. } => {
-                let (a, b) = (p.start_point(), p.end_point());
-                // When y is flipped on the page, a counter-clockwise arc has sweep-flag 0.
-                let large = u8::from(sweep.abs() > std::f64::consts::PI);
-                let flag = u8::from((*sweep < 0.0) == f.flips());
-                let rr = n(f.len(*radius));
+                let a = p.start_point();
                 parts.push(format!(
-                    "M{},{} A{rr},{rr} 0 {large} {flag} {},{}",
+                    "M{},{} {}",
                     n(f.x(a[0])),
                     n(f.y(a[1])),
-                    n(f.x(b[0])),
-                    n(f.y(b[1]))
+                    arc_to(f, *radius, *sweep, p.end_point())
                 ));
+            }
+        }
+    }
+    parts.join(" ")
+}
+
+/// An arc's path command from where the pen is to `end`.
+fn arc_to(f: &Frame, radius: f64, sweep: f64, end: Pt) -> String {
+    // When y is flipped on the page, a counter-clockwise arc has sweep-flag 0.
+    let large = u8::from(sweep.abs() > std::f64::consts::PI);
+    let flag = u8::from((sweep < 0.0) == f.flips());
+    let rr = n(f.len(radius));
+    format!("A{rr},{rr} 0 {large} {flag} {},{}", n(f.x(end[0])), n(f.y(end[1])))
+}
+
+/// Path data of closed loops, each a chain of pieces written as one closed subpath.
+fn loops_d(loops: &[Vec<Path>], f: &Frame) -> String {
+    let mut parts = Vec::with_capacity(loops.len());
+    for lp in loops {
+        match lp.as_slice() {
+            [] => {}
+            [one] if one.is_closed() => parts.push(path_d(lp, f)),
+            [first, ..] => {
+                let a = first.start_point();
+                let mut d = format!("M{},{}", n(f.x(a[0])), n(f.y(a[1])));
+                for p in lp {
+                    match p {
+                        Path::Polyline { points: pts, .. } => {
+                            for v in pts.iter().skip(1) {
+                                d.push_str(&format!(" L{},{}", n(f.x(v[0])), n(f.y(v[1]))));
+                            }
+                        }
+                        Path::Arc { radius, sweep, .. } => {
+                            d.push(' ');
+                            d.push_str(&arc_to(f, *radius, *sweep, p.end_point()));
+                        }
+                    }
+                }
+                d.push_str(" Z");
+                parts.push(d);
             }
         }
     }
@@ -148,6 +183,7 @@ fn element(item: &Item, f: &Frame, in_clip: bool) -> Element {
             .into(),
         Shape::Polygon(vs) => Polygon::new().set("points", points(f, vs, " ")).into(),
         Shape::Path(pieces) => SvgPath::new().set("d", path_d(pieces, f)).into(),
+        Shape::Loops(loops) => SvgPath::new().set("d", loops_d(loops, f)).into(),
         Shape::Line(a, b) => Line::new()
             .set("x1", n(f.x(a[0])))
             .set("y1", n(f.y(a[1])))
@@ -276,7 +312,7 @@ pub fn size_bands(doc: &FillDoc, k: u32) -> (Vec<usize>, Vec<Option<(f64, f64)>>
 }
 
 /// The fill's picture for these options: layers by size band or by colour, and the periodic
-/// images cut exactly to the tile for plotter output (a page or layers).
+/// images cut exactly to the tile.
 pub fn picture(doc: &FillDoc, opt: &SvgOptions) -> Picture {
     let (layers, layer_of) = match (&opt.colour_layers, opt.layers) {
         (Some(palette), _) => LayerSpec::colours(palette, opt.colours.as_deref().unwrap_or(&[])),
@@ -303,7 +339,6 @@ pub fn picture(doc: &FillDoc, opt: &SvgOptions) -> Picture {
         background: opt.background.clone(),
         layers,
         layer_of,
-        plotter: false,
     };
     let mut pic = crate::model::fill::picture(doc, &look);
     let p = &doc.params;

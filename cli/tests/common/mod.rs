@@ -1,10 +1,12 @@
 //! Shared helpers of the `zetafill` end-to-end tests: running the binary in a temporary
 //! folder, reading its JSON, and geometry checkers written independently of the core
-//! ([`geometry`] for fills, [`voronoi`] for cobblestones and territories).
+//! ([`geometry`] for fills, [`voronoi`] for cobblestones and territories, [`svgread`] for
+//! what a plotter draws from an SVG).
 
 #![allow(dead_code)]
 
 pub mod geometry;
+pub mod svgread;
 pub mod voronoi;
 
 // Each test uses a few of the checkers.

@@ -4,8 +4,7 @@
 
 use super::doc::{LineDoc, SegmentDoc};
 use crate::error::CliError;
-use crate::model::picture::ClipDef;
-use crate::model::{Item, Layer, Paint, Picture, Shape};
+use crate::model::{Bounds, Item, Layer, Paint, Picture, Shape};
 use crate::output::svg::Style;
 use crate::plan::line::{no_zoom_gcode, Render};
 use std::fmt::Write as _;
@@ -159,7 +158,6 @@ pub fn picture(doc: &LineDoc, opt: &LineSvgOptions) -> Picture {
     let l = doc.region.length;
     let periodic = doc.region.periodic;
     let d0 = doc.shapes.first().map_or(l / 10.0, |s| s.length);
-    let mut clips = Vec::new();
     let mut layers: Vec<Layer> = Vec::new();
     let n = doc.shapes.len();
     let mut add = |(mut ls, of): (Vec<Layer>, Vec<usize>), items: Vec<(usize, Item)>| {
@@ -209,18 +207,15 @@ pub fn picture(doc: &LineDoc, opt: &LineSvgOptions) -> Picture {
         }
         Render::Circles => {
             height = d0;
-            let mut base = circle_layer("segments", opt);
-            if periodic {
-                clips.push(ClipDef {
-                    id: "interval".into(),
-                    item: Item::new(Shape::Rect {
-                        corner: None,
-                        w: l,
-                        h: height,
-                    }),
-                });
-                base.clip = Some("interval".into());
-            }
+            let base = circle_layer("segments", opt);
+            // A wrapping segment's circle shows at both ends, each image cut exactly to the
+            // interval's box (its arcs, or its area when filled), never by a clip path.
+            let interval = Bounds {
+                x0: 0.0,
+                y0: 0.0,
+                x1: l,
+                y1: height,
+            };
             let mut items = Vec::new();
             for (k, s) in doc.shapes.iter().enumerate() {
                 let r = s.length / 2.0;
@@ -228,11 +223,15 @@ pub fn picture(doc: &LineDoc, opt: &LineSvgOptions) -> Picture {
                     continue;
                 }
                 let mid = s.start + r;
-                let c = [mid, height / 2.0];
-                items.push((k, painted(Item::new(Shape::Circle { c, r }), opt, k, filled_circles)));
-                if periodic && s.start + s.length > l {
-                    let c = [mid - l, height / 2.0];
-                    items.push((k, painted(Item::new(Shape::Circle { c, r }), opt, k, filled_circles)));
+                let wraps = periodic && s.start + s.length > l;
+                for x in if wraps { vec![mid, mid - l] } else { vec![mid] } {
+                    let circle = Item::new(Shape::Circle { c: [x, height / 2.0], r });
+                    let drawn = if periodic {
+                        circle.cut(&interval, filled_circles)
+                    } else {
+                        Some(circle)
+                    };
+                    items.extend(drawn.map(|item| (k, painted(item, opt, k, filled_circles))));
                 }
             }
             add(layered(base, opt, n), items);
@@ -252,16 +251,14 @@ pub fn picture(doc: &LineDoc, opt: &LineSvgOptions) -> Picture {
                 let y0 = k as f64 * (row_h + spacing);
                 let cy = y0 + row_h / 2.0;
                 let id = format!("row{k}");
-                clips.push(ClipDef {
-                    id: format!("clip-{id}"),
-                    item: Item::new(Shape::Rect {
-                        corner: Some([0.0, y0]),
-                        w: l,
-                        h: row_h,
-                    }),
-                });
+                // The row's circles cut exactly to its box, never by a clip path.
+                let bounds = Bounds {
+                    x0: 0.0,
+                    y0,
+                    x1: l,
+                    y1: y0 + row_h,
+                };
                 let mut row = circle_layer(&id, opt);
-                row.clip = Some(format!("clip-{id}"));
                 for (n, s) in doc.shapes.iter().enumerate() {
                     let r = s.length / 2.0 * scale;
                     if r < INVISIBLE {
@@ -273,7 +270,9 @@ pub fn picture(doc: &LineDoc, opt: &LineSvgOptions) -> Picture {
                             continue;
                         }
                         let c = [((s0 + s1) / 2.0 - a) * scale, cy];
-                        row.items.push(painted(Item::new(Shape::Circle { c, r }), opt, n, filled_circles));
+                        if let Some(item) = Item::new(Shape::Circle { c, r }).cut(&bounds, filled_circles) {
+                            row.items.push(painted(item, opt, n, filled_circles));
+                        }
                     }
                 }
                 layers.push(row);
@@ -293,7 +292,7 @@ pub fn picture(doc: &LineDoc, opt: &LineSvgOptions) -> Picture {
         let ends = [0.0, l].map(|x| Item::new(Shape::Line([x, 0.0], [x, height])));
         layers.push(stroke_layer("boundary", opt.pen_width, ends.to_vec()));
     }
-    let mut pic = Picture::new(crate::model::Bounds {
+    let mut pic = Picture::new(Bounds {
         x0: 0.0,
         y0: 0.0,
         x1: l,
@@ -316,7 +315,6 @@ pub fn picture(doc: &LineDoc, opt: &LineSvgOptions) -> Picture {
         if opt.colour_layers.is_some() { " --layers colours" } else { "" }
     );
     pic.background.clone_from(&opt.background);
-    pic.clips = clips;
     pic.layers = layers;
     pic
 }
@@ -330,7 +328,7 @@ pub fn picture(doc: &LineDoc, opt: &LineSvgOptions) -> Picture {
 /// `--min-feature` leaves out segments shorter than it. The picture's frame is the interval's
 /// box grown to hold every circle. `zoom` has no G-code form.
 pub fn plotter_picture(doc: &LineDoc, opt: &LineSvgOptions, build: &crate::model::fill::BuildOptions) -> Result<Picture, CliError> {
-    use crate::model::{Bounds, Path};
+    use crate::model::Path;
     let l = doc.region.length;
     let periodic = doc.region.periodic;
     let d0 = doc.shapes.first().map_or(l / 10.0, |s| s.length);

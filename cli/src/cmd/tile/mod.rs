@@ -9,7 +9,6 @@ pub mod model;
 pub mod render;
 
 use crate::error::CliError;
-use crate::model::picture::ClipDef;
 use crate::model::tile::{Layout, Render, Sheet, Style, TileSpec};
 use crate::model::{Bounds, Item, Layer, Paint, Path, Picture, Shape};
 use crate::output::num;
@@ -246,7 +245,7 @@ pub struct Look<'a> {
     pub style: Style,
     /// Stroke width of outlines (mm).
     pub pen_width: f64,
-    /// Clip the drawing to the sheet (whole shapes of copies reach past its edges).
+    /// Cut the drawing exactly to the sheet (whole shapes of copies reach past its edges).
     pub clip: bool,
     /// Each piece's colour (its fill, or its stroke for outlines); black without.
     pub colours: Option<&'a [crate::output::palette::Colour]>,
@@ -286,6 +285,13 @@ pub fn picture(pieces: Vec<Path>, sheet: Sheet, look: &Look<'_>) -> Picture {
             Path::Polyline { .. } => continue,
         };
         let mut item = Item::new(shape);
+        if look.clip {
+            // Cut exactly to the sheet (its area when filled), never by a clip path.
+            match item.cut(&pic.frame, filled) {
+                Some(cut) => item = cut,
+                None => continue,
+            }
+        }
         if let Some(c) = colours.get(j) {
             if filled {
                 item.paint.fill = Some(c.clone());
@@ -295,19 +301,6 @@ pub fn picture(pieces: Vec<Path>, sheet: Sheet, look: &Look<'_>) -> Picture {
         }
         if let Some(layer) = layers.get_mut(layer_of.get(j).copied().unwrap_or(0)) {
             layer.items.push(item);
-        }
-    }
-    if look.clip {
-        pic.clips.push(ClipDef {
-            id: "sheet".into(),
-            item: Item::new(Shape::Rect {
-                corner: None,
-                w: sheet.width,
-                h: sheet.height,
-            }),
-        });
-        for layer in &mut layers {
-            layer.clip = Some("sheet".into());
         }
     }
     pic.layers = layers;

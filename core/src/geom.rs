@@ -180,11 +180,13 @@ impl<S: Scalar> Geo<S> {
         }
     }
 
-    /// The largest squared distance from `p` to a point of the shape.
+    /// The largest squared distance from `p` to a point of the shape (for a circle, its
+    /// centre's distance rounded up: see [`Scalar::dist2_up`]).
     pub fn max_dist2(&self, p: Point<S>) -> S {
         match *self {
             Geo::Circle { c, r } | Geo::Ring { c, r, .. } => {
-                let d = c.dist2(p).sqrt() + r;
+                let e = c.diff(p);
+                let d = S::dist2_up(e.x, e.y).sqrt() + r;
                 d * d
             }
             Geo::Poly { .. } => self.vertices().iter().fold(S::ZERO, |m, v| m.max(v.dist2(p))),
@@ -197,7 +199,8 @@ impl<S: Scalar> Geo<S> {
     }
 }
 
-/// Squared distance from `p` to the segment `a`–`b`.
+/// Squared distance from `p` to the segment `a`–`b`. The cross product is squared with
+/// [`Scalar::mul_div`], so it never saturates while the distance itself fits.
 pub fn seg_dist2<S: Scalar>(p: Point<S>, a: Point<S>, b: Point<S>) -> S {
     let ab = b.diff(a);
     let ap = p.diff(a);
@@ -210,7 +213,7 @@ pub fn seg_dist2<S: Scalar>(p: Point<S>, a: Point<S>, b: Point<S>) -> S {
         return p.dist2(b);
     }
     let cr = ab.cross(ap);
-    cr * cr / len2
+    cr.mul_div(cr, len2)
 }
 
 /// Iterates the edges (a, b) of a closed polygon.

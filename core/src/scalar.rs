@@ -5,6 +5,10 @@
 //! deterministic across targets: `f64` uses IEEE-754 basic operations (which are exactly
 //! rounded everywhere) plus `libm`, a pure-Rust maths library whose results do not depend on
 //! the platform. No fused multiply-add, no intrinsics, no SIMD.
+//!
+//! A scalar also states what it cannot compute exactly: the largest region
+//! ([`Scalar::MAX_EXTENT`]) and the narrowest shape ([`Scalar::MIN_SIZE`]), which the engines
+//! refuse.
 
 use core::fmt::Debug;
 use core::ops::{Add, Div, Mul, Neg, Sub};
@@ -51,6 +55,15 @@ pub trait Scalar:
     const ZERO: Self;
     /// One.
     const ONE: Self;
+    /// The largest region the geometry is exact for, in mm: a region's bounding box must have
+    /// sides of at most this and lie within this of the origin on each axis (a 1D interval:
+    /// at most this long). [`crate::Engine::new`] and [`crate::LineEngine::new`] refuse a
+    /// larger one ([`crate::ParamError::Extent`]). `f64`: no limit.
+    const MAX_EXTENT: f64;
+    /// The narrowest shape (shortest segment) the geometry resolves, in mm: the engines place
+    /// none narrower ([`crate::StepError::TooSmall`]) and [`crate::check_smallest`] finds,
+    /// before a run, whether its stop conditions would reach one. `f64`: 0 (no limit).
+    const MIN_SIZE: f64;
     /// Converts from `f64` (rounding or saturating as the type requires).
     fn from_f64(v: f64) -> Self;
     /// Converts to `f64` (exactly where the type allows).
@@ -104,6 +117,18 @@ pub trait Scalar:
     fn half(self) -> Self {
         self / (Self::ONE + Self::ONE)
     }
+    /// `self * b / c` with the product kept exact where the type allows it, so that it cannot
+    /// saturate while the quotient fits (`f64`: `(self * b) / c`).
+    #[inline]
+    fn mul_div(self, b: Self, c: Self) -> Self {
+        self * b / c
+    }
+    /// `x² + y²` rounded up: never below the exact value (`f64`: `x * x + y * y`, rounded to
+    /// nearest like every `f64` operation).
+    #[inline]
+    fn dist2_up(x: Self, y: Self) -> Self {
+        x * x + y * y
+    }
 }
 
 /// 2^-53: the spacing of the 53-bit uniform grid used for `f64`.
@@ -122,6 +147,8 @@ impl Scalar for f64 {
 
     const ZERO: Self = 0.0;
     const ONE: Self = 1.0;
+    const MAX_EXTENT: f64 = f64::MAX;
+    const MIN_SIZE: f64 = 0.0;
     #[inline]
     fn from_f64(v: f64) -> Self {
         v

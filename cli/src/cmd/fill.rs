@@ -6,7 +6,9 @@ use crate::cmd::stopping;
 use crate::error::CliError;
 use crate::model::doc::{kind_name, FillDoc, ParamsDoc, ShapeDoc, ShapeParamsDoc, StatsDoc};
 use crate::output;
-use crate::plan::fill::{first_shape_error, first_two_error, halt_advice, param_error, too_small_error, FillDraw, FillPlan, FillRun, SHAPES};
+use crate::plan::fill::{
+    first_shape_error, first_two_error, halt_advice, param_error, too_small_error, FillDraw, FillPlan, FillRun, SHAPES,
+};
 use crate::plan::format::Format;
 use crate::plan::raster::{height_map_error, png_error};
 use region::RegionData;

@@ -1,6 +1,7 @@
 //! The plotter and laser flags (`--machine`, feeds, power, hatch, order, pages, layers), one
-//! group flattened into every command that draws lines, and their conversion into the plain
-//! options of the writers ([`gcode::GcodeOptions`], [`BuildOptions`]).
+//! group flattened into every command that draws lines. The plan turns them into the plain
+//! options of the writers ([`crate::output::gcode::GcodeOptions`],
+//! [`crate::model::fill::BuildOptions`]).
 
 use crate::args::spec;
 use crate::model::Fit;

@@ -107,7 +107,8 @@ impl<'a, S: Scalar> Coverage<'a, S> {
 
     /// Marks the cells lying entirely outside `region`, by recursive subdivision of the grid:
     /// a block whose centre is farther from the boundary than its half diagonal lies wholly
-    /// on one side. Cost: about the boundary's length in cells times the boundary's edges.
+    /// on one side. Cost: about the boundary's length in cells times the edges near a block
+    /// (every edge of a polygon without an edge tree).
     pub fn mark_outside(&mut self, region: &Region<'_>) {
         if self.g == 0 || matches!(region, Region::Rect { .. }) {
             return;
@@ -120,7 +121,7 @@ impl<'a, S: Scalar> Coverage<'a, S> {
         let (hw, hh) = (self.cw * half, self.ch * half);
         let centre = Point::new(self.cell_x(cx) + hw, self.cell_y(cy) + hh);
         let reach = (hw * hw + hh * hh).sqrt() + self.margin;
-        if region.boundary_dist2(centre) > reach * reach {
+        if region.boundary_beyond(centre, reach * reach) {
             if !region.point_inside(centre) {
                 for y in cy..cy + size {
                     for x in cx..cx + size {

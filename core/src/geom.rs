@@ -266,17 +266,32 @@ pub fn seg_seg_dist2<S: Scalar>(p1: Point<S>, p2: Point<S>, q1: Point<S>, q2: Po
 pub fn point_in_poly<S: Scalar>(p: Point<S>, vs: &[Point<S>]) -> bool {
     let mut inside = false;
     for (a, b) in edges(vs) {
-        if (a.y > p.y) != (b.y > p.y) {
-            // x of the edge at height p.y, compared without division.
-            let lhs = (p.x - a.x) * (b.y - a.y);
-            let rhs = (b.x - a.x) * (p.y - a.y);
-            let left = if b.y > a.y { lhs < rhs } else { lhs > rhs };
-            if left {
-                inside = !inside;
-            }
+        if ray_crosses(p, a, b) {
+            inside = !inside;
         }
     }
     inside
+}
+
+/// Whether the edge `a`–`b` crosses the ray from `p` towards +x, as the even-odd rule counts:
+/// one end above `p.y` and the other not, meeting that height to the right of `p` (x of the
+/// edge at height `p.y`, compared without division).
+///
+/// In any monotone rounding an edge with no point to the right of `p` (`a.x, b.x <= p.x`)
+/// never crosses: then `p.x - a.x >= max(b.x - a.x, 0)` and `|b.y - a.y| >= |p.y - a.y|`,
+/// so the two products compare the wrong way. A polygon region's edge tree relies on this.
+#[inline]
+pub fn ray_crosses<S: Scalar>(p: Point<S>, a: Point<S>, b: Point<S>) -> bool {
+    if (a.y > p.y) == (b.y > p.y) {
+        return false;
+    }
+    let lhs = (p.x - a.x) * (b.y - a.y);
+    let rhs = (b.x - a.x) * (p.y - a.y);
+    if b.y > a.y {
+        lhs < rhs
+    } else {
+        lhs > rhs
+    }
 }
 
 /// Whether `p` is inside or on a counter-clockwise convex polygon.
@@ -377,7 +392,7 @@ fn poly_poly<S: Scalar>(pa: &[Point<S>], ca: bool, pb: &[Point<S>], cb: bool, ga
 }
 
 /// Bounds of a vertex list: [min x, min y, max x, max y].
-fn vbox<S: Scalar>(vs: &[Point<S>]) -> [S; 4] {
+pub(crate) fn vbox<S: Scalar>(vs: &[Point<S>]) -> [S; 4] {
     let first = vs.first().copied().unwrap_or_default();
     vs.iter().fold([first.x, first.y, first.x, first.y], |b, v| {
         [b[0].min(v.x), b[1].min(v.y), b[2].max(v.x), b[3].max(v.y)]
@@ -385,17 +400,17 @@ fn vbox<S: Scalar>(vs: &[Point<S>]) -> [S; 4] {
 }
 
 /// Bounds of a segment.
-fn seg_box<S: Scalar>(a: Point<S>, b: Point<S>) -> [S; 4] {
+pub(crate) fn seg_box<S: Scalar>(a: Point<S>, b: Point<S>) -> [S; 4] {
     [a.x.min(b.x), a.y.min(b.y), a.x.max(b.x), a.y.max(b.y)]
 }
 
 /// Whether `p` is within `m` of the bounds `b`.
-fn in_box<S: Scalar>(p: Point<S>, b: [S; 4], m: S) -> bool {
+pub(crate) fn in_box<S: Scalar>(p: Point<S>, b: [S; 4], m: S) -> bool {
     p.x >= b[0] - m && p.x <= b[2] + m && p.y >= b[1] - m && p.y <= b[3] + m
 }
 
 /// Whether two bounds come within `d` of each other (per axis).
-fn boxes_meet<S: Scalar>(a: [S; 4], b: [S; 4], d: S) -> bool {
+pub(crate) fn boxes_meet<S: Scalar>(a: [S; 4], b: [S; 4], d: S) -> bool {
     a[0] <= b[2] + d && b[0] <= a[2] + d && a[1] <= b[3] + d && b[1] <= a[3] + d
 }
 

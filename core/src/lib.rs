@@ -85,7 +85,8 @@
 //! A placed shape takes `size_of::<Placed<f64>>()` = 32 bytes plus 12 bytes of index
 //! (one link and two buckets), 44 bytes in all with the recommended [`index_words`].
 //! The cell sampler borrows a slice of 32-byte [`CellWords`] besides; circle fills of c = 1.3
-//! hold at most about 15 of them per placed shape.
+//! hold at most about 15 of them per placed shape. A polygon region's edge tree borrows 24
+//! bytes a vertex ([`PolygonRegion::scratch_words`]), or nothing ([`PolygonRegion::new`]).
 
 #![no_std]
 #![deny(missing_docs, unsafe_code)]

@@ -64,6 +64,18 @@ pub trait Scalar:
     /// none narrower ([`crate::StepError::TooSmall`]) and [`crate::check_smallest`] finds,
     /// before a run, whether its stop conditions would reach one. `f64`: 0 (no limit).
     const MIN_SIZE: f64;
+    /// Whether the type is `f64` itself (IEEE-754 binary64, rounding to nearest). A polygon
+    /// region's edge tree answers queries on such a scalar by visiting only the edges near
+    /// the point or shape asked about: its proofs that the skipped edges change nothing bound
+    /// `f64` rounding. On any other scalar every query visits every edge (same answers,
+    /// slower). Other implementations leave it `false`.
+    ///
+    /// ```
+    /// use zetafill::{Fixed, Scalar};
+    ///
+    /// assert!(f64::IS_F64 && !Fixed::IS_F64);
+    /// ```
+    const IS_F64: bool = false;
     /// Converts from `f64` (rounding or saturating as the type requires).
     fn from_f64(v: f64) -> Self;
     /// Converts to `f64` (exactly where the type allows).
@@ -149,6 +161,7 @@ impl Scalar for f64 {
     const ONE: Self = 1.0;
     const MAX_EXTENT: f64 = f64::MAX;
     const MIN_SIZE: f64 = 0.0;
+    const IS_F64: bool = true;
     #[inline]
     fn from_f64(v: f64) -> Self {
         v

@@ -146,7 +146,8 @@ fn run_engine<S: zetafill::Scalar>(
 /// placement: a first shape that finds no place is a usage error). Nothing is written.
 pub fn compute(a: &FillRun) -> Result<(FillDoc, Option<StepError>), CliError> {
     let data = RegionData::load(&a.region)?;
-    let region = data.region(a.periodic)?;
+    let mut scratch = Vec::new();
+    let region = data.region(a.periodic, &mut scratch)?;
     let params = &a.params;
     let stop = a.stop;
     let sequence = stopping::sequence(region.area(), params.c, params.n_offset)?;

@@ -1,11 +1,13 @@
 //! `--region` resolved: the outline read from its file, the rings ordered as the JSON lists
-//! them, the core region it lends, and the region as written in JSON.
+//! them, the core region it lends (polygons validated over an edge grid in a scratch buffer
+//! the caller owns, so outlines of 10^5 vertices or 10^4 rings take milliseconds), and the
+//! region as written in JSON.
 
 use crate::error::CliError;
 use crate::model::doc::RegionDoc;
 use crate::model::region::RegionSpec;
 use crate::plan::region::{not_periodic, outline_error, polygon_error};
-use zetafill::{PolygonRegion, Region};
+use zetafill::{Point, PolygonRegion, Region};
 
 /// A region resolved from its flag: owns the outline vertices the core borrows.
 #[derive(Debug, Clone)]
@@ -27,8 +29,8 @@ impl RegionData {
         Ok(RegionData { spec })
     }
 
-    /// The core region (validating polygons).
-    pub fn region(&self, periodic: bool) -> Result<Region<'_>, CliError> {
+    /// The core region (validating polygons, whose edge grid lives in `scratch`).
+    pub fn region<'s>(&'s self, periodic: bool, scratch: &'s mut Vec<u32>) -> Result<Region<'s>, CliError> {
         if periodic && !matches!(self.spec, RegionSpec::Rect { .. }) {
             return Err(not_periodic());
         }
@@ -43,7 +45,7 @@ impl RegionData {
                 outer: *outer,
                 inner: *inner,
             },
-            RegionSpec::Polygon { points, ends } => Region::Polygon(PolygonRegion::new(points, ends).map_err(polygon_error)?),
+            RegionSpec::Polygon { points, ends } => Region::Polygon(polygon(points, ends, scratch).map_err(polygon_error)?),
             RegionSpec::Svg(_) => return Err(CliError::Io("internal: SVG region not loaded".into())),
         })
     }
@@ -62,11 +64,10 @@ impl RegionData {
                 radius_inner: inner,
             },
             Region::Polygon(p) => {
-                let rings: Vec<&[zetafill::Point<f64>]> = p.rings().collect();
-                let as_vec = |r: &[zetafill::Point<f64>]| r.iter().map(|q| [q.x, q.y]).collect::<Vec<_>>();
+                let as_vec = |r: &[Point<f64>]| r.iter().map(|q| [q.x, q.y]).collect::<Vec<_>>();
                 let (mut vertices, mut holes, mut outers) = (Vec::new(), Vec::new(), Vec::new());
-                for (r, hole) in rings.iter().zip(holes_of(&rings)) {
-                    if hole {
+                for (i, r) in p.rings().enumerate() {
+                    if p.is_hole(i) {
                         holes.push(as_vec(r));
                     } else if vertices.is_empty() {
                         vertices = as_vec(r);
@@ -80,29 +81,30 @@ impl RegionData {
     }
 }
 
-/// Whether each ring is a hole: inside an odd number of the others (the even-odd rule), judged
-/// by its first vertex.
-fn holes_of(rings: &[&[zetafill::Point<f64>]]) -> Vec<bool> {
-    (0..rings.len())
-        .map(|i| {
-            let probe = rings.get(i).and_then(|r| r.first()).copied().unwrap_or_default();
-            let depth = rings
-                .iter()
-                .enumerate()
-                .filter(|(j, o)| *j != i && zetafill::internals::geom::point_in_poly(probe, o))
-                .count();
-            depth % 2 == 1
-        })
-        .collect()
+/// The polygon region over `points`, its edge grid in `scratch` (resized to fit).
+fn polygon<'s>(points: &'s [Point<f64>], ends: &'s [usize], scratch: &'s mut Vec<u32>) -> Result<PolygonRegion<'s>, zetafill::RegionError> {
+    scratch.clear();
+    scratch.resize(PolygonRegion::scratch_words(points.len()), 0);
+    PolygonRegion::new_in(points, ends, scratch)
 }
 
 /// The rings reordered as the JSON lists them (the outer outlines, then the holes, each in
 /// their own order), so that the `--region polygon:` written from the JSON gives the core the
 /// same rings in the same order, and so the same bits.
-fn outers_first(points: &[zetafill::Point<f64>], ends: &[usize]) -> RegionSpec {
+///
+/// Rings that do not make a valid region are left in their order (validating them again
+/// gives the same error).
+fn outers_first(points: &[Point<f64>], ends: &[usize]) -> RegionSpec {
     let starts = std::iter::once(0).chain(ends.iter().copied());
-    let rings: Vec<&[zetafill::Point<f64>]> = starts.zip(ends).filter_map(|(a, &b)| points.get(a..b)).collect();
-    let holes = holes_of(&rings);
+    let rings: Vec<&[Point<f64>]> = starts.zip(ends).filter_map(|(a, &b)| points.get(a..b)).collect();
+    let mut scratch = Vec::new();
+    let Ok(region) = polygon(points, ends, &mut scratch) else {
+        return RegionSpec::Polygon {
+            points: points.to_vec(),
+            ends: ends.to_vec(),
+        };
+    };
+    let holes: Vec<bool> = (0..rings.len()).map(|i| region.is_hole(i)).collect();
     let (mut out, mut out_ends) = (Vec::with_capacity(points.len()), Vec::with_capacity(ends.len()));
     for want_hole in [false, true] {
         for (r, _) in rings.iter().zip(&holes).filter(|(_, h)| **h == want_hole) {
@@ -138,5 +140,29 @@ mod tests {
             panic!("not a polygon");
         };
         assert_eq!((again, e2), (p, e));
+    }
+
+    #[test]
+    fn rings_that_make_no_region_keep_their_order() {
+        // A hole listed first, crossing its outline: left as given, so that validating them
+        // reports the crossing.
+        let xy = [
+            (8.0, 2.0),
+            (12.0, 2.0),
+            (12.0, 6.0),
+            (8.0, 6.0),
+            (0.0, 0.0),
+            (10.0, 0.0),
+            (10.0, 10.0),
+            (0.0, 10.0),
+        ];
+        let points: Vec<Point<f64>> = xy.iter().map(|&(x, y)| Point::new(x, y)).collect();
+        let ends = vec![4, 8];
+        let RegionSpec::Polygon { points: p, ends: e } = outers_first(&points, &ends) else {
+            panic!("not a polygon");
+        };
+        assert_eq!((&p, &e), (&points, &ends));
+        let mut scratch = Vec::new();
+        assert_eq!(polygon(&p, &e, &mut scratch).err(), Some(zetafill::RegionError::SelfIntersecting));
     }
 }

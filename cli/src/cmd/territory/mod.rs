@@ -104,7 +104,8 @@ pub fn compute(a: &TerritoryRun) -> Result<Outcome, CliError> {
         }
         None => {
             let data = RegionData::load(&a.region)?;
-            let r = data.region(false)?;
+            let mut scratch = Vec::new();
+            let r = data.region(false, &mut scratch)?;
             (data.doc(&r), None)
         }
     };

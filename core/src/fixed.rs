@@ -8,19 +8,26 @@
 //! - Values: `[-2^31, 2^31 - 2^-32]`, about ±2.1e9 (mm); resolution `2^-32` ≈ 2.3e-10 mm.
 //! - The geometry squares lengths (squared distances, `reach²`), so lengths must stay below
 //!   `sqrt(2^31)` ≈ 46,000 mm for exact answers. **Supported regions: sides from about 1 mm up
-//!   to 10,000 mm** (a diagonal of 14,142 mm squares to 2e8, a tenth of the range). The
-//!   circle-against-polygon and gap tests square a cross product (a length to the fourth
-//!   power), exact while a polygon's half size stays below about 150 mm; beyond that the value
-//!   saturates, which makes the test *conservative* (a valid candidate may be rejected, an
-//!   overlap is never accepted).
+//!   to 10,000 mm** (a diagonal of 14,142 mm squares to 2e8, a tenth of the range). A point's
+//!   distance to a polygon's edge squares a cross product (a length to the fourth power): it is
+//!   formed exactly in 128 bits ([`Scalar::mul_div`]), so nothing saturates at that size (a
+//!   unit test counts saturated products through fills of every kind).
 //! - Small shapes: a squared length has an absolute resolution of `2^-32` mm², so touching
 //!   decisions are exact to about `1e-7` mm for 1 µm shapes; keep shapes above 10 µm.
+//! - The cell sampler's bounds on the clearance must never fall below the truth: their
+//!   distances are rounded up ([`Scalar::dist2_up`], [`Scalar::seg_dist2_up`]: exact
+//!   128-bit squares and cross products), its cells halve exactly ([`Scalar::grid_step`]), and
+//!   what remains (floors of `sqrt` and `half`, the outline's departure from the inscribed
+//!   radius) is covered by [`Scalar::BOUND_SLACK`].
 //!
 //! ## Arithmetic (deterministic on every target: integers only)
 //! - `+ - neg` saturate; `*` is the `fixed` crate's saturating multiply (exact 128-bit
 //!   product, rounded toward −∞); `/` is its saturating divide, and division by zero gives
 //!   the saturated value of the dividend's sign (0 / 0 = 0): nothing panics.
 //! - `sqrt`: the floor of the exact square root, `isqrt(raw << 32)` (0 for input <= 0).
+//! - `mul_div`: the exact 128-bit product divided, rounded toward −∞, saturating;
+//!   `dist2_up` and `seg_dist2_up`: exact squares and cross products in 128-bit integers,
+//!   rounded up; `grid_step`: rounded up to a multiple of `2^halvings` raw units.
 //! - `sin_cos`: the angle is reduced to a 32-bit phase in turns (`angle · 2^32 / 2π`, with a
 //!   64-bit constant, exact modulo one turn), folded to `[0, π/4]`, evaluated by Taylor
 //!   polynomials of degree 11 and 12 in 1.31 fixed point; error below 5e-9 (tested).
@@ -35,6 +42,7 @@
 //! Results on [`Fixed`] differ from those on `f64` (DESIGN: each scalar is deterministic on
 //! every target; results may differ between scalars).
 
+use crate::geom::Point;
 use crate::scalar::Scalar;
 use ::fixed::types::I32F32;
 use core::ops::{Add, Div, Mul, Neg, Sub};
@@ -84,6 +92,8 @@ impl Mul for Fixed {
     type Output = Fixed;
     #[inline]
     fn mul(self, o: Fixed) -> Fixed {
+        #[cfg(test)]
+        tally::note(self.0.checked_mul(o.0).is_none());
         Fixed(self.0.saturating_mul(o.0))
     }
 }
@@ -101,6 +111,8 @@ impl Div for Fixed {
                 Fixed(I32F32::ZERO)
             };
         }
+        #[cfg(test)]
+        tally::note(self.0.checked_div(o.0).is_none());
         Fixed(self.0.saturating_div(o.0))
     }
 }
@@ -158,6 +170,27 @@ fn sin_cos_octant(theta: i64) -> (i64, i64) {
     (sin.clamp(-Q31_ONE, Q31_ONE), cos.clamp(-Q31_ONE, Q31_ONE))
 }
 
+/// `x² + y²` of raw values (each squared exactly), in units of 2^-64, saturated to `u128`.
+#[inline]
+fn raw_sq_sum(x: i128, y: i128) -> u128 {
+    let sq = |v: i128| {
+        let a = v.unsigned_abs();
+        a.saturating_mul(a)
+    };
+    sq(x).saturating_add(sq(y))
+}
+
+/// A value in units of 2^-64 as a [`Fixed`] (units of 2^-32), rounded up and saturated.
+#[inline]
+fn from_wide_up(v: u128) -> Fixed {
+    let raw = (v >> 32) + u128::from(v & 0xffff_ffff != 0);
+    Fixed::from_bits(i64::try_from(raw).unwrap_or(i64::MAX))
+}
+
+/// Differences of raw coordinates at least this large (2^30 mm, far beyond any supported
+/// region) are not measured: the bound is then simply the largest value.
+const FAR: i128 = 1 << 62;
+
 impl Scalar for Fixed {
     #[inline]
     fn to_word(self) -> u64 {
@@ -171,6 +204,13 @@ impl Scalar for Fixed {
 
     const ZERO: Self = Fixed(I32F32::ZERO);
     const ONE: Self = Fixed(I32F32::ONE);
+    /// A millionth of a millimetre and more (2^-18 mm, ~3.8e-6): the floors of `sqrt` and
+    /// `half` and the cell corners' rounding (a few 2^-32 each), and the distance of a point to
+    /// a polygon's edge in the few cases not rounded up (a point inside a shape, whose edges at
+    /// the narrowest shape are at least 1e-3 mm long: below 1e-6 mm). And 1e-8 of the region:
+    /// a polygon's drawn outline departs from the inscribed radius by up to 4e-9 of its size
+    /// (the 1.31 sine and cosine).
+    const BOUND_SLACK: [f64; 2] = [1e-8, 1.0 / 262_144.0];
 
     #[inline]
     fn from_f64(v: f64) -> Self {
@@ -241,6 +281,98 @@ impl Scalar for Fixed {
     #[inline]
     fn half(self) -> Self {
         Fixed::from_bits(self.to_bits() >> 1)
+    }
+
+    /// The exact 128-bit product divided by `c`, rounded toward −∞ and saturated (`c = 0`
+    /// as in `/`).
+    fn mul_div(self, b: Self, c: Self) -> Self {
+        let (a, b, c) = (i128::from(self.to_bits()), i128::from(b.to_bits()), i128::from(c.to_bits()));
+        // |a|, |b| <= 2^63: the product fits.
+        let p = a * b;
+        if c == 0 {
+            return Fixed::from_bits(p.signum() as i64) / Fixed::ZERO;
+        }
+        let q = p / c;
+        let q = if p % c != 0 && ((p < 0) != (c < 0)) { q - 1 } else { q };
+        #[cfg(test)]
+        tally::note(i64::try_from(q).is_err());
+        Fixed::from_bits(q.clamp(i128::from(i64::MIN), i128::from(i64::MAX)) as i64)
+    }
+
+    /// Exact squares of the raw values, their sum rounded up.
+    fn dist2_up(x: Self, y: Self) -> Self {
+        from_wide_up(raw_sq_sum(i128::from(x.to_bits()), i128::from(y.to_bits())))
+    }
+
+    /// In exact integers: the projection's position decides the branch, the distance to the
+    /// line is `|cross| / |ab|` with the cross product exact, `|ab|` rounded down and the
+    /// quotient rounded up, and no bound exceeds the nearer endpoint's (so a very short edge,
+    /// whose line is poorly defined, is bounded by its endpoints).
+    fn seg_dist2_up(p: Point<Self>, a: Point<Self>, b: Point<Self>) -> Self {
+        let w = |v: Fixed| i128::from(v.to_bits());
+        let (abx, aby) = (w(b.x) - w(a.x), w(b.y) - w(a.y));
+        let (apx, apy) = (w(p.x) - w(a.x), w(p.y) - w(a.y));
+        let (bpx, bpy) = (w(p.x) - w(b.x), w(p.y) - w(b.y));
+        if [abx, aby, apx, apy, bpx, bpy].iter().any(|v| v.abs() >= FAR) {
+            return Fixed::MAX;
+        }
+        // Below 2^125 each: no overflow.
+        let (to_a, to_b) = (raw_sq_sum(apx, apy), raw_sq_sum(bpx, bpy));
+        let len2 = abx * abx + aby * aby;
+        let t = apx * abx + apy * aby;
+        if t <= 0 || len2 == 0 {
+            return from_wide_up(to_a);
+        }
+        if t >= len2 {
+            return from_wide_up(to_b);
+        }
+        let cross = (abx * apy - aby * apx).unsigned_abs();
+        // |ab| in units of 2^-32, rounded down: the root of len2 (units of 2^-64) cut to units
+        // of 2^-32, through `sqrt` (which floors too).
+        let Ok(len2) = i64::try_from(len2 >> 32) else {
+            return Fixed::MAX;
+        };
+        let len = Fixed::from_bits(len2).sqrt().to_bits().unsigned_abs();
+        // The distance to the line in units of 2^-32, rounded up.
+        let d = cross.div_ceil(u128::from(len.max(1)));
+        let line = if d >= 1 << 63 { u128::MAX } else { d * d };
+        from_wide_up(line.min(to_a).min(to_b))
+    }
+
+    /// The raw quotient rounded up, then up to a multiple of `2^halvings` (saturating; `n = 0`
+    /// counts as 1).
+    fn grid_step(self, n: u32, halvings: u32) -> Self {
+        let unit = 1i128 << halvings.min(62);
+        let q = i128::from(self.to_bits()).div_euclid(i128::from(n.max(1)));
+        let q = if q * i128::from(n.max(1)) < i128::from(self.to_bits()) {
+            q + 1
+        } else {
+            q
+        };
+        let up = (q + unit - 1).div_euclid(unit) * unit;
+        Fixed::from_bits(up.clamp(i128::from(i64::MIN), i128::from(i64::MAX)) as i64)
+    }
+}
+
+/// Counts, per thread, the products and quotients that saturated (unit tests only): the
+/// geometry must never saturate one within the supported range.
+#[cfg(test)]
+mod tally {
+    extern crate std;
+
+    std::thread_local! {
+        static SATURATED: core::cell::Cell<u64> = const { core::cell::Cell::new(0) };
+    }
+
+    pub(super) fn note(saturated: bool) {
+        if saturated {
+            SATURATED.with(|c| c.set(c.get() + 1));
+        }
+    }
+
+    /// The count so far, reset to zero.
+    pub(super) fn take() -> u64 {
+        SATURATED.with(|c| c.replace(0))
     }
 }
 
@@ -368,6 +500,216 @@ mod tests {
             for q in &placed[..i] {
                 let (dx, dy, r) = (p.x - q.x, p.y - q.y, p.scale + q.scale);
                 assert!(dx * dx + dy * dy > r * r, "{i} overlaps");
+            }
+        }
+    }
+
+    /// The exact quotient of two `i128` rationals rounded toward −∞, for checks.
+    fn floor_div(p: i128, c: i128) -> i128 {
+        p.div_euclid(c) - if c < 0 && p.rem_euclid(c) != 0 { 1 } else { 0 }
+    }
+
+    #[test]
+    fn mul_div_keeps_the_product_exact() {
+        // 10^6 x 10^6 / 10^6: the product alone would saturate.
+        assert_eq!(f(1e6).mul_div(f(1e6), f(1e6)), f(1e6));
+        assert_eq!(tally::take(), 0);
+        assert_eq!(f(1e6) * f(1e6) / f(1e6), Fixed::MAX / f(1e6));
+        assert_eq!(tally::take(), 1);
+        assert_eq!(f(3.0).mul_div(f(-5.0), f(2.0)), f(-7.5));
+        // Rounded toward −∞, like `*`.
+        assert_eq!(Fixed::DELTA.mul_div(Fixed::DELTA, Fixed::ONE), Fixed::ZERO);
+        assert_eq!((-Fixed::DELTA).mul_div(Fixed::DELTA, Fixed::ONE), -Fixed::DELTA);
+        assert_eq!(f(2.0).mul_div(f(3.0), Fixed::ZERO), Fixed::MAX);
+        assert_eq!(f(-2.0).mul_div(f(3.0), Fixed::ZERO), Fixed::MIN);
+        assert_eq!(Fixed::ZERO.mul_div(f(3.0), Fixed::ZERO), Fixed::ZERO);
+        assert_eq!(Fixed::MAX.mul_div(Fixed::MAX, Fixed::DELTA), Fixed::MAX);
+        let mut s = 0x2545_f491_4f6c_dd1du64;
+        let mut next = || {
+            s ^= s << 13;
+            s ^= s >> 7;
+            s ^= s << 17;
+            (s as i64) >> (s % 40)
+        };
+        for _ in 0..10_000 {
+            let (a, b, c) = (next(), next(), next());
+            if c == 0 {
+                continue;
+            }
+            let q = floor_div(i128::from(a) * i128::from(b), i128::from(c));
+            let want = q.clamp(i128::from(i64::MIN), i128::from(i64::MAX)) as i64;
+            let got = Fixed::from_bits(a).mul_div(Fixed::from_bits(b), Fixed::from_bits(c));
+            assert_eq!(got.to_bits(), want, "{a} {b} {c}");
+        }
+        tally::take();
+    }
+
+    /// Exact `x² + y²` in units of 2^-64.
+    fn exact_sq(x: Fixed, y: Fixed) -> i128 {
+        let (x, y) = (i128::from(x.to_bits()), i128::from(y.to_bits()));
+        x * x + y * y
+    }
+
+    #[test]
+    fn dist2_up_is_the_ceiling() {
+        for (x, y) in [(0.0, 0.0), (3.0, 4.0), (1e-9, 0.0), (-2.5e-5, 7e-6), (9999.123, -8765.4321)] {
+            let d = Fixed::dist2_up(f(x), f(y));
+            let exact = exact_sq(f(x), f(y));
+            let raw = i128::from(d.to_bits()) << 32;
+            assert!(raw >= exact && raw - exact < 1 << 32, "{x} {y}");
+        }
+        // The plain product rounds down: near zero its square root is far too small.
+        let tiny = Fixed::from_bits(40_000);
+        assert_eq!((tiny * tiny).sqrt(), Fixed::ZERO);
+        assert!(Fixed::dist2_up(tiny, Fixed::ZERO).sqrt().to_bits() >= 40_000 - 1);
+        assert_eq!(Fixed::dist2_up(Fixed::MAX, Fixed::MAX), Fixed::MAX);
+    }
+
+    #[test]
+    fn seg_dist2_up_never_falls_below_the_exact_distance() {
+        let mut s = 0x9e37_79b9_7f4a_7c15u64;
+        let mut next = |scale: f64| {
+            s ^= s << 13;
+            s ^= s >> 7;
+            s ^= s << 17;
+            ((s >> 11) as f64 / (1u64 << 53) as f64 - 0.5) * scale
+        };
+        let mut tight = 0;
+        for case in 0..20_000 {
+            // Long and very short edges, points near and far, up to the supported range.
+            let scale = [10_000.0, 100.0, 1e-3, 1e-7][case % 4];
+            let a = Point::new(f(5000.0 + next(10_000.0)), f(5000.0 + next(10_000.0)));
+            let b = Point::new(a.x + f(next(scale)), a.y + f(next(scale)));
+            let p = Point::new(a.x + f(next(2.0 * scale)), a.y + f(next(2.0 * scale)));
+            let up = Fixed::seg_dist2_up(p, a, b).to_f64();
+            // The exact squared distance, from the exact (f64) coordinates, in f64.
+            let g = |q: Point<Fixed>| (q.x.to_f64(), q.y.to_f64());
+            let ((px, py), (ax, ay), (bx, by)) = (g(p), g(a), g(b));
+            let (ex, ey) = (bx - ax, by - ay);
+            let len2 = ex * ex + ey * ey;
+            let t = if len2 > 0.0 {
+                (((px - ax) * ex + (py - ay) * ey) / len2).clamp(0.0, 1.0)
+            } else {
+                0.0
+            };
+            let (dx, dy) = (px - ax - t * ex, py - ay - t * ey);
+            let exact = dx * dx + dy * dy;
+            assert!(up >= exact * (1.0 - 1e-12), "case {case}: {up} < {exact}");
+            if up <= exact * (1.0 + 1e-6) + 1e-8 {
+                tight += 1;
+            }
+        }
+        assert!(tight > 19_000, "the bound is loose: {tight}");
+        // Beyond the range it is simply the largest value.
+        let far = Point::new(Fixed::MAX, Fixed::MAX);
+        let o = Point::new(Fixed::MIN, Fixed::MIN);
+        assert_eq!(Fixed::seg_dist2_up(far, o, o), Fixed::MAX);
+    }
+
+    #[test]
+    fn grid_steps_cover_and_halve_exactly() {
+        for (w, n) in [(200.0, 16), (123.456_789, 16), (9_876.543_21, 13), (0.02, 1), (10_000.0, 16)] {
+            let step = f(w).grid_step(n, 23);
+            assert!(step.to_bits() % (1 << 23) == 0, "{w}");
+            assert!(i128::from(step.to_bits()) * i128::from(n) >= i128::from(f(w).to_bits()), "{w}");
+            assert!(step.to_f64() * f64::from(n) - w < f64::from(n) * 2.0f64.powi(-9), "{w}");
+            let mut s = step;
+            for _ in 0..23 {
+                let h = s.half();
+                assert_eq!(h + h, s);
+                s = h;
+            }
+        }
+        // A step that is already exact stays.
+        assert_eq!(f(200.0).grid_step(16, 23), f(12.5));
+        assert_eq!(200.0f64.grid_step(16, 23), 12.5);
+    }
+
+    /// No product or quotient saturates in fills at the largest supported size: every kind,
+    /// in every kind of region 10,000 mm across, with and without a gap, with both samplers.
+    /// (Before, a circle's distance to a polygon's edge squared a cross product of up to
+    /// 10^8 mm², and it saturated.) The counter itself is seen to count above.
+    #[test]
+    fn nothing_saturates_within_the_supported_range() {
+        use crate::{
+            cells_for, index_words, rng_from_seed, CellSampler, Engine, Params, Placed, PolygonRegion, Region, ShapeKind, Stop, Storage,
+        };
+        extern crate std;
+        use std::vec;
+        let hex: std::vec::Vec<Point<f64>> = (0..6)
+            .map(|k| {
+                let t = f64::from(k) * core::f64::consts::FRAC_PI_3 + 0.1;
+                Point::new(5000.0 + 5000.0 * libm::cos(t), 5000.0 + 5000.0 * libm::sin(t))
+            })
+            .collect();
+        let ends = [6];
+        let poly = PolygonRegion::new(&hex, &ends).unwrap();
+        let regions = [
+            Region::Rect {
+                width: 10_000.0,
+                height: 10_000.0,
+                periodic: false,
+            },
+            Region::Rect {
+                width: 10_000.0,
+                height: 7_777.7,
+                periodic: true,
+            },
+            Region::Circle { radius: 5_000.0 },
+            Region::Annulus {
+                outer: 5_000.0,
+                inner: 1_500.0,
+            },
+            Region::Polygon(poly),
+        ];
+        let kinds = [
+            ShapeKind::Circle,
+            ShapeKind::Square,
+            ShapeKind::Rect { aspect: 3.0 },
+            ShapeKind::Triangle,
+            ShapeKind::Polygon { sides: 7 },
+            ShapeKind::Star { points: 5, inner: 0.45 },
+            ShapeKind::Ring { inner: 0.5 },
+            ShapeKind::Blob { delta: 0.2 },
+        ];
+        tally::take();
+        let n = 40;
+        for (ri, region) in regions.iter().enumerate() {
+            for (ki, &kind) in kinds.iter().enumerate() {
+                for (gap, fast) in [(0.0, false), (0.0, true), (20.0, true)] {
+                    let mut shapes = vec![Placed::<Fixed>::default(); n];
+                    let mut index = vec![0u32; index_words(n)];
+                    let mut coverage = vec![0u64; if fast { 0 } else { 4096 }];
+                    let mut params = Params::circles(1.2, 3.0);
+                    params.shape = kind.into();
+                    params.rotate = true;
+                    params.gap = gap;
+                    params.max_trials = 100_000;
+                    let storage = Storage {
+                        shapes: &mut shapes,
+                        index: &mut index,
+                        coverage: &mut coverage,
+                    };
+                    let mut e = Engine::<Fixed>::new(params, *region, storage).unwrap();
+                    let mut rng = rng_from_seed(ri as u64 * 10 + ki as u64);
+                    let stop = Stop {
+                        count: Some(n as u64),
+                        ..Stop::default()
+                    };
+                    if fast {
+                        let mut pool = vec![[0u64; 4]; cells_for(n)];
+                        let mut cells = CellSampler::new(&mut pool).unwrap();
+                        e.run_fast(&mut cells, &mut rng, &stop, |_| {});
+                    } else {
+                        e.run(&mut rng, &stop, |_| {});
+                    }
+                    assert!(e.placed().len() >= 10, "{kind:?} in region {ri}: {}", e.placed().len());
+                    assert_eq!(
+                        tally::take(),
+                        0,
+                        "{kind:?} in region {ri}, gap {gap}, cells {fast}: a value saturated"
+                    );
+                }
             }
         }
     }

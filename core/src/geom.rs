@@ -151,7 +151,8 @@ impl<S: Scalar> Geo<S> {
     }
 }
 
-/// Squared distance from `p` to the segment `a`–`b`.
+/// Squared distance from `p` to the segment `a`–`b`. The cross product is squared with
+/// [`Scalar::mul_div`], so it never saturates while the distance itself fits.
 pub fn seg_dist2<S: Scalar>(p: Point<S>, a: Point<S>, b: Point<S>) -> S {
     let ab = b.diff(a);
     let ap = p.diff(a);
@@ -164,7 +165,7 @@ pub fn seg_dist2<S: Scalar>(p: Point<S>, a: Point<S>, b: Point<S>) -> S {
         return p.dist2(b);
     }
     let cr = ab.cross(ap);
-    cr * cr / len2
+    cr.mul_div(cr, len2)
 }
 
 /// Iterates the edges (a, b) of a closed polygon.

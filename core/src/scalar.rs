@@ -5,7 +5,13 @@
 //! deterministic across targets: `f64` uses IEEE-754 basic operations (which are exactly
 //! rounded everywhere) plus `libm`, a pure-Rust maths library whose results do not depend on
 //! the platform. No fused multiply-add, no intrinsics, no SIMD.
+//!
+//! A scalar rounds the few computations whose direction matters upward ([`Scalar::dist2_up`],
+//! [`Scalar::seg_dist2_up`]: the cell sampler's bounds must never fall below the truth). For
+//! `f64` those are the plain formulas: its rounding is relative and far below the sampler's
+//! slack ([`Scalar::BOUND_SLACK`]).
 
+use crate::geom::{seg_dist2, Point};
 use core::fmt::Debug;
 use core::ops::{Add, Div, Mul, Neg, Sub};
 
@@ -28,6 +34,10 @@ pub trait Scalar:
     const ZERO: Self;
     /// One.
     const ONE: Self;
+    /// What the cell sampler adds to every bound on the clearance for the rounding of its own
+    /// arithmetic, `[relative, absolute]`: `relative` times the region's larger side plus
+    /// `absolute` mm (see [`crate::CellSampler`]).
+    const BOUND_SLACK: [f64; 2];
     /// Converts from `f64` (rounding or saturating as the type requires).
     fn from_f64(v: f64) -> Self;
     /// Converts to `f64` (exactly where the type allows).
@@ -81,6 +91,32 @@ pub trait Scalar:
     fn half(self) -> Self {
         self / (Self::ONE + Self::ONE)
     }
+    /// `self * b / c` with the product kept exact where the type allows it, so that it cannot
+    /// saturate while the quotient fits (`f64`: `(self * b) / c`).
+    #[inline]
+    fn mul_div(self, b: Self, c: Self) -> Self {
+        self * b / c
+    }
+    /// `x² + y²` rounded up: never below the exact value (`f64`: `x * x + y * y`, rounded to
+    /// nearest like every `f64` operation).
+    #[inline]
+    fn dist2_up(x: Self, y: Self) -> Self {
+        x * x + y * y
+    }
+    /// The squared distance from `p` to the closed segment `a`–`b` rounded up: never below
+    /// the exact value, whatever the segment's length (`f64`: [`seg_dist2`]).
+    #[inline]
+    fn seg_dist2_up(p: Point<Self>, a: Point<Self>, b: Point<Self>) -> Self {
+        seg_dist2(p, a, b)
+    }
+    /// A step at least `self / n` that can be halved `halvings` times without rounding, so
+    /// that `n` steps cover `self` and each step is exactly two of its halves (`f64`:
+    /// `self / n`, which halves exactly).
+    #[inline]
+    fn grid_step(self, n: u32, halvings: u32) -> Self {
+        let _ = halvings;
+        self / Self::from_f64(f64::from(n))
+    }
 }
 
 /// 2^-53: the spacing of the 53-bit uniform grid used for `f64`.
@@ -99,6 +135,7 @@ impl Scalar for f64 {
 
     const ZERO: Self = 0.0;
     const ONE: Self = 1.0;
+    const BOUND_SLACK: [f64; 2] = [1e-9, 1e-12];
     #[inline]
     fn from_f64(v: f64) -> Self {
         v

@@ -149,6 +149,9 @@ impl<'a, S: Scalar> SpatialHash<'a, S> {
     /// `[x0, x1] x [y0, y1]` given as `[x0, y0, x1, y1]` (and possibly others). Stops and returns `false` as soon as `f`
     /// does. When the box spans more cells than `total` shapes, calls `f` for every index in
     /// `0..total` instead, which is cheaper and still complete.
+    // Inlined into each caller's closure: left to itself the compiler sometimes keeps an
+    // out-of-line copy per caller, which costs a 20,000-circle fill 0.5% more instructions.
+    #[inline(always)]
     pub fn query(&self, level: usize, bbox: [S; 4], total: u32, mut f: impl FnMut(u32) -> bool) -> bool {
         let [x0, y0, x1, y1] = bbox;
         let Some(lv) = self.levels.get(level) else { return true };

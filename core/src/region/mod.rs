@@ -158,6 +158,23 @@ impl<'a> PolygonRegion<'a> {
         self.rings().flat_map(edges).map(|(a, b)| (conv(a), conv(b)))
     }
 
+    /// [`Region::signed_clearance`] of the polygon: its edges' distance rounded up inside,
+    /// down outside.
+    fn signed_clearance<S: Scalar>(&self, q: Point<S>) -> S {
+        let inside = self.inside(q);
+        let d = self
+            .edges_s::<S>()
+            .map(|(a, b)| if inside { S::seg_dist2_up(q, a, b) } else { seg_dist2(q, a, b) })
+            .fold(None, |m: Option<S>, d| Some(m.map_or(d, |m| m.min(d))))
+            .unwrap_or(S::ZERO)
+            .sqrt();
+        if inside {
+            d
+        } else {
+            -d
+        }
+    }
+
     fn inside<S: Scalar>(&self, p: Point<S>) -> bool {
         let mut inside = false;
         for ring in self.rings() {
@@ -386,7 +403,8 @@ impl Region<'_> {
     }
 
     /// The signed distance from a point to the outside of the region: positive inside,
-    /// negative outside; a periodic region has no outside (a distance larger than it).
+    /// negative outside; a periodic region has no outside (a distance larger than it). Rounded
+    /// up where the scalar rounds (an upper bound, as the cell sampler needs).
     pub fn signed_clearance<S: Scalar>(&self, q: Point<S>) -> S {
         match *self {
             Region::Rect {
@@ -395,19 +413,15 @@ impl Region<'_> {
                 height,
             } => S::from_f64(4.0 * width.max(height)),
             Region::Rect { width, height, .. } => q.x.min(S::from_f64(width) - q.x).min(q.y).min(S::from_f64(height) - q.y),
+            // The distance from the centre rounded down where it is subtracted, up where added.
             Region::Circle { radius } => S::from_f64(radius) - q.dist2(self.centre()).sqrt(),
             Region::Annulus { outer, inner } => {
-                let t = q.dist2(self.centre()).sqrt();
-                (S::from_f64(outer) - t).min(t - S::from_f64(inner))
+                let c = self.centre();
+                let d = q.diff(c);
+                let (near, far) = (q.dist2(c).sqrt(), S::dist2_up(d.x, d.y).sqrt());
+                (S::from_f64(outer) - near).min(far - S::from_f64(inner))
             }
-            Region::Polygon(p) => {
-                let d = self.boundary_dist2(q).sqrt();
-                if p.inside(q) {
-                    d
-                } else {
-                    -d
-                }
-            }
+            Region::Polygon(p) => p.signed_clearance(q),
         }
     }
 

@@ -133,6 +133,59 @@ fn bad_region() {
     bad(&["--region", "circle:50", "--periodic"], &["--periodic"]);
 }
 
+/// What `--scalar fixed` cannot compute exactly is refused, naming the flag (the issue
+/// "Hardening": 2,000 squares in a 500 m square came out overlapping by tens of metres, exit
+/// 3): a region beyond 10,000 mm a side, and stop conditions that reach shapes narrower than
+/// 10 µm (circles in the default 200 mm square do from shape 1,738,916 on).
+#[test]
+fn fixed_point_refuses_what_it_cannot_compute() {
+    let issue = [
+        "--shape",
+        "square",
+        "--region",
+        "rect:500000:500000",
+        "--scalar",
+        "fixed",
+        "--c",
+        "1.3",
+        "--n-offset",
+        "2",
+        "--count",
+        "2000",
+        "--seed",
+        "67",
+    ];
+    let o = bad(&issue, &["--region"]);
+    assert!(o.stderr.contains("10000 mm"), "{}", o.stderr);
+    bad(&["--scalar", "fixed", "--region", "rect:10000.5:100"], &["--region"]);
+    bad(&["--scalar", "fixed", "--region", "circle:5001"], &["--region"]);
+    let o = bad(&["--scalar", "fixed", "--count", "2000000"], &["--count"]);
+    assert!(o.stderr.contains("shape 1738916") && o.stderr.contains("0.01 mm"), "{}", o.stderr);
+    bad(&["--scalar", "fixed", "--min-size", "0.005"], &["--min-size"]);
+    bad(&["--scalar", "fixed", "--count", "2000000", "--fill", "0.99"], &["--count"]);
+    bad(&["--scalar", "fixed", "--fill", "0.99"], &["--fill"]);
+    // Within the limits the same flags run.
+    let dir = tmp();
+    zf_ok(
+        dir.path(),
+        &[
+            "fill",
+            "--scalar",
+            "fixed",
+            "--region",
+            "rect:10000:10000",
+            "--count",
+            "50",
+            "-o",
+            "a.json",
+        ],
+    );
+    zf_ok(
+        dir.path(),
+        &["fill", "--region", "rect:500000:500000", "--count", "50", "-o", "b.json"],
+    );
+}
+
 #[test]
 fn bad_shape() {
     bad(&["--shape", "hexagon"], &["--shape"]);

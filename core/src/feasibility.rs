@@ -1,6 +1,7 @@
 //! The numbers a program needs before it fills: the area of every shape ([`AreaSequence`]),
-//! the shape slots a stop condition can need ([`capacity`]), and whether the first shapes can
-//! fit at all ([`first_two_fit`], [`check_first_two`], [`first_shape`]).
+//! the shape slots a stop condition can need ([`capacity`]), whether the first shapes can
+//! fit at all ([`first_two_fit`], [`check_first_two`], [`first_shape`]), and whether the last
+//! ones are wide enough for the scalar ([`check_smallest`]).
 //!
 //! These are the checks a front end makes up front so that a hopeless run is refused with a
 //! message instead of halting after millions of trials. They use the same formulas, in the same
@@ -9,7 +10,7 @@
 
 use crate::params::{Params, Stop};
 use crate::region::Region;
-use crate::scalar::powf;
+use crate::scalar::{powf, Scalar};
 use crate::shape::{ShapeKind, ShapeList};
 use crate::zeta::{self, ZetaError};
 
@@ -158,6 +159,124 @@ pub fn shape_capacity(seq: &AreaSequence, shapes: &ShapeList, stop: &Stop, max: 
 /// [`capacity`] for the 1D fill: the width of segment `k` is its length `seq.area(k)`.
 pub fn segment_capacity(seq: &AreaSequence, stop: &Stop, max: u64) -> Result<u64, CapacityError> {
     capacity(seq, stop, max, |k| seq.area(k))
+}
+
+/// A run would place a shape narrower than its scalar resolves ([`Scalar::MIN_SIZE`]), where
+/// the exact tests are no longer exact: found by [`check_smallest`] before the run, which the
+/// engine would otherwise stop at ([`crate::StepError::TooSmall`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct TooSmall {
+    /// The first shape the run would reach that is too narrow (its placement index).
+    pub index: u64,
+    /// Its narrowest width ([`ShapeKind::min_width`]).
+    pub width: f64,
+    /// The narrowest width the scalar resolves, [`Scalar::MIN_SIZE`].
+    pub limit: f64,
+}
+
+impl core::fmt::Display for TooSmall {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        let TooSmall { index, width, limit } = self;
+        write!(
+            f,
+            "shape {index} would be {width} mm wide, narrower than the {limit} mm this number type resolves"
+        )
+    }
+}
+
+impl core::error::Error for TooSmall {}
+
+/// The smallest `i < max` for which `below(i)` holds, where `below` is false and then true as
+/// `i` grows (doubling, then halving the last step).
+fn first_where(max: u64, below: impl Fn(u64) -> bool) -> Option<u64> {
+    if max == 0 {
+        return None;
+    }
+    if below(0) {
+        return Some(0);
+    }
+    let (mut lo, mut hi) = (0u64, 1u64);
+    while hi < max && !below(hi) {
+        lo = hi;
+        hi = hi.saturating_mul(2);
+    }
+    if hi >= max {
+        hi = max - 1;
+        if hi == lo || !below(hi) {
+            return None;
+        }
+    }
+    // below(lo) is false, below(hi) true.
+    while hi - lo > 1 {
+        let mid = lo + (hi - lo) / 2;
+        if below(mid) {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+    }
+    Some(hi)
+}
+
+/// The first shape below `max` whose narrowest width is below `limit`. Each kind's widths
+/// shrink with the index; in a mix, a kind's first such shape is its first placement at or
+/// after the index where its width falls below `limit` (looked for over at most 2^16
+/// placements: past them the index itself is taken, which only errs early).
+fn first_narrower(seq: &AreaSequence, shapes: &ShapeList, limit: f64, max: u64) -> Option<u64> {
+    let mut first: Option<u64> = None;
+    for &kind in shapes.kinds() {
+        let below = |i: u64| kind.min_width(kind.scale_for_area(seq.area(i))) < limit;
+        let Some(from) = first_where(max, below) else { continue };
+        let placed = (from..max.min(from.saturating_add(1 << 16)))
+            .find(|&i| shapes.kind_of(i) == kind)
+            .unwrap_or(from);
+        first = Some(first.map_or(placed, |f| f.min(placed)));
+    }
+    first
+}
+
+/// Refuses a run whose stop conditions let it reach a shape narrower than its scalar resolves
+/// ([`Scalar::MIN_SIZE`]; `f64` has no limit), with the first such shape. `capacity` is the
+/// engine's number of shape slots. The run reaches shape `i` when `i` is below `capacity` and
+/// `stop.count`, the first `i` shapes cover less than `stop.fill`, and no shape up to `i` is
+/// narrower than `stop.min_size` (the engine's own rules, on the areas it uses).
+///
+/// ```
+/// use zetafill::{check_smallest, AreaSequence, Fixed, ShapeKind, Stop};
+/// let seq = AreaSequence::new(200.0 * 200.0, 1.3, 1.0)?;
+/// let circles = ShapeKind::Circle.into();
+/// let few = Stop { count: Some(2000), ..Stop::default() };
+/// assert_eq!(check_smallest::<Fixed>(&seq, &circles, &few, 1 << 24), Ok(()));
+/// let many = Stop { count: Some(10_000_000), ..Stop::default() };
+/// let err = check_smallest::<Fixed>(&seq, &circles, &many, 1 << 24).unwrap_err();
+/// assert!(err.width < 0.01 && err.index < 10_000_000);
+/// // Stopping at 0.01 mm keeps every shape resolved.
+/// let sized = Stop { min_size: Some(0.01), ..many };
+/// assert_eq!(check_smallest::<Fixed>(&seq, &circles, &sized, 1 << 24), Ok(()));
+/// assert_eq!(check_smallest::<f64>(&seq, &circles, &many, 1 << 24), Ok(()));
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn check_smallest<S: Scalar>(seq: &AreaSequence, shapes: &ShapeList, stop: &Stop, capacity: u64) -> Result<(), TooSmall> {
+    let limit = S::MIN_SIZE;
+    if limit <= 0.0 {
+        return Ok(());
+    }
+    let Some(index) = first_narrower(seq, shapes, limit, capacity) else {
+        return Ok(());
+    };
+    let stopped = stop.count.is_some_and(|k| index >= k)
+        || stop.fill.is_some_and(|f| seq.covered(index) >= f)
+        || stop.min_size.is_some_and(|m| first_narrower(seq, shapes, m, index + 1).is_some());
+    if stopped {
+        return Ok(());
+    }
+    let kind = shapes.kind_of(index);
+    Err(TooSmall {
+        index,
+        width: kind.min_width(kind.scale_for_area(seq.area(index))),
+        limit,
+    })
 }
 
 /// The first shape of a fill: its kind, area and narrowest width, for messages about a first

@@ -4,16 +4,23 @@
 //! The geometry is chosen by type: `Engine::<Fixed>` runs the same generic code as
 //! `Engine::<f64>` with every operation below in integer arithmetic. No f64 code path changes.
 //!
-//! ## Range, resolution and supported regions
+//! ## Range, resolution and the limits the engines enforce
 //! - Values: `[-2^31, 2^31 - 2^-32]`, about ±2.1e9 (mm); resolution `2^-32` ≈ 2.3e-10 mm.
-//! - The geometry squares lengths (squared distances, `reach²`), so lengths must stay below
-//!   `sqrt(2^31)` ≈ 46,000 mm for exact answers. **Supported regions: sides from about 1 mm up
-//!   to 10,000 mm** (a diagonal of 14,142 mm squares to 2e8, a tenth of the range). A point's
-//!   distance to a polygon's edge squares a cross product (a length to the fourth power): it is
-//!   formed exactly in 128 bits ([`Scalar::mul_div`]), so nothing saturates at that size (a
-//!   unit test counts saturated products through fills of every kind).
-//! - Small shapes: a squared length has an absolute resolution of `2^-32` mm², so touching
-//!   decisions are exact to about `1e-7` mm for 1 µm shapes; keep shapes above 10 µm.
+//! - **Regions: sides of at most 10,000 mm, lying within 10,000 mm of the origin**
+//!   ([`Scalar::MAX_EXTENT`]; [`crate::Engine::new`] and [`crate::LineEngine::new`] refuse
+//!   a larger one with [`crate::ParamError::Extent`]). The geometry squares lengths; across
+//!   such a region (with a torus's images one period away) every product the tests and the
+//!   cell sampler form stays below 10^9 mm², under half the range, so nothing saturates (a
+//!   unit test counts saturated products through fills of every kind at that size). The
+//!   squared cross product of a point's distance to an edge, a length to the fourth power, is
+//!   formed exactly in 128 bits ([`Scalar::mul_div`]). Beyond the limit squares saturate and
+//!   the tests stop being tests: 2,000 squares in a 500 m square overlapped by tens of metres.
+//! - **Shapes: at least 10 µm wide** ([`Scalar::MIN_SIZE`]; the engines stop at a narrower
+//!   one with [`crate::StepError::TooSmall`], and [`crate::check_smallest`] finds it before a
+//!   run). The exact tests compare squared lengths and cross products to a resolution of
+//!   `2^-32` mm²: they decide touching to within `2^-32 / w` mm for shapes `w` wide, 2.3e-8 mm
+//!   at 10 µm, and a point inside a polygon is placed to within 1e-6 mm of an edge at least
+//!   1e-3 mm long (the shortest of a 10 µm shape's edges).
 //! - The cell sampler's bounds on the clearance must never fall below the truth: their
 //!   distances are rounded up ([`Scalar::dist2_up`], [`Scalar::seg_dist2_up`]: exact
 //!   128-bit squares and cross products), its cells halve exactly ([`Scalar::grid_step`]), and
@@ -187,8 +194,8 @@ fn from_wide_up(v: u128) -> Fixed {
     Fixed::from_bits(i64::try_from(raw).unwrap_or(i64::MAX))
 }
 
-/// Differences of raw coordinates at least this large (2^30 mm, far beyond any supported
-/// region) are not measured: the bound is then simply the largest value.
+/// Differences of raw coordinates at least this large (2^30 mm, far beyond
+/// [`Scalar::MAX_EXTENT`]) are not measured: the bound is then simply the largest value.
 const FAR: i128 = 1 << 62;
 
 impl Scalar for Fixed {
@@ -204,6 +211,8 @@ impl Scalar for Fixed {
 
     const ZERO: Self = Fixed(I32F32::ZERO);
     const ONE: Self = Fixed(I32F32::ONE);
+    const MAX_EXTENT: f64 = 10_000.0;
+    const MIN_SIZE: f64 = 0.01;
     /// A millionth of a millimetre and more (2^-18 mm, ~3.8e-6): the floors of `sqrt` and
     /// `half` and the cell corners' rounding (a few 2^-32 each), and the distance of a point to
     /// a polygon's edge in the few cases not rounded up (a point inside a shape, whose edges at

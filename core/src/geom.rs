@@ -134,11 +134,13 @@ impl<S: Scalar> Geo<S> {
         }
     }
 
-    /// The largest squared distance from `p` to a point of the shape.
+    /// The largest squared distance from `p` to a point of the shape (for a circle, its
+    /// centre's distance rounded up: see [`Scalar::dist2_up`]).
     pub fn max_dist2(&self, p: Point<S>) -> S {
         match *self {
             Geo::Circle { c, r } | Geo::Ring { c, r, .. } => {
-                let d = c.dist2(p).sqrt() + r;
+                let e = c.diff(p);
+                let d = S::dist2_up(e.x, e.y).sqrt() + r;
                 d * d
             }
             Geo::Poly { .. } => self.vertices().iter().fold(S::ZERO, |m, v| m.max(v.dist2(p))),

@@ -35,7 +35,8 @@
 //!   same distribution with far fewer trials ([`Engine::step_fast`]).
 //! - Before a fill: [`AreaSequence`] (the areas, zeta computed once), [`shape_capacity`] /
 //!   [`segment_capacity`] (the slots a stop condition needs), [`check_first_two`] and
-//!   [`first_shape`] (first shapes that cannot fit, with the largest c that works).
+//!   [`first_shape`] (first shapes that cannot fit, with the largest c that works),
+//!   [`check_smallest`] (last shapes narrower than the scalar resolves, [`TooSmall`]).
 //! - 1D: [`LineEngine`], [`LineParams`], [`Interval`], [`LineStorage`], [`Segment`].
 //! - Numbers and randomness: [`Scalar`] (`f64`, or [`Fixed`] for cores without an FPU),
 //!   [`rng_from_seed`] / [`ZetaRng`], and [`digest`] (the determinism digest).
@@ -70,6 +71,9 @@
 //!   slice and an index slice; see [`index_words`]).
 //! - No public function panics on any input: invalid input is an error value; running out of
 //!   storage and halting are error values with everything placed so far intact.
+//! - What a scalar cannot compute exactly is refused: a region beyond
+//!   [`Scalar::MAX_EXTENT`] ([`ParamError::Extent`]) and a shape narrower than
+//!   [`Scalar::MIN_SIZE`] ([`StepError::TooSmall`]); both are limits of [`Fixed`] only.
 //! - With the `defmt` feature, the error types and key types derive `defmt::Format`.
 //!
 //! ## Memory
@@ -104,7 +108,8 @@ mod zeta;
 pub use self::fixed::Fixed;
 pub use engine::{index_words, Engine, Placement, Stats, Storage};
 pub use feasibility::{
-    check_first_two, first_shape, segment_capacity, shape_capacity, AreaSequence, CapacityError, FirstShape, FirstTwoError,
+    check_first_two, check_smallest, first_shape, segment_capacity, shape_capacity, AreaSequence, CapacityError, FirstShape, FirstTwoError,
+    TooSmall,
 };
 pub use geom::{Geo, Point, Verts};
 pub use line::{line_index_words, Interval, LineEngine, LineParams, LinePlacement, LineStorage, Segment};

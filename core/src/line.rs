@@ -265,7 +265,8 @@ pub struct LineEngine<'a, S: Scalar> {
 }
 
 impl<'a, S: Scalar> LineEngine<'a, S> {
-    /// Validates the parameters and builds an engine over the caller's storage.
+    /// Validates the parameters and builds an engine over the caller's storage. An interval
+    /// longer than the scalar computes exactly ([`Scalar::MAX_EXTENT`]) is refused.
     pub fn new(params: LineParams, interval: Interval, storage: LineStorage<'a, S>) -> Result<Self, ParamError> {
         let LineStorage { segments, index } = storage;
         if !(params.c.is_finite() && params.c > 1.0) {
@@ -277,6 +278,9 @@ impl<'a, S: Scalar> LineEngine<'a, S> {
         let l = interval.length;
         if !(l.is_finite() && l > 0.0) {
             return Err(ParamError::Region);
+        }
+        if l > S::MAX_EXTENT {
+            return Err(ParamError::Extent);
         }
         if !(params.gap.is_finite() && params.gap >= 0.0 && 2.0 * params.gap < l) {
             return Err(ParamError::Gap);
@@ -396,6 +400,9 @@ impl<'a, S: Scalar> LineEngine<'a, S> {
             });
         }
         let length = self.length_of(index);
+        if S::MIN_SIZE > 0.0 && length < S::MIN_SIZE {
+            return Err(StepError::TooSmall { index });
+        }
         let len = S::from_f64(length);
         if !(len > S::ZERO && len.is_finite() && self.can_fit(len)) {
             return Err(StepError::CannotFit { index });

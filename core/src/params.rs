@@ -57,6 +57,10 @@ pub enum ParamError {
     Shape,
     /// Region sizes must be finite and > 0.
     Region,
+    /// The region is larger than the scalar computes exactly: its bounding box must have sides
+    /// of at most [`crate::Scalar::MAX_EXTENT`] and lie within that of the origin on each axis
+    /// (an interval: be at most that long).
+    Extent,
     /// The gap must be finite and >= 0, and smaller than the region.
     Gap,
     /// The trial limit must be at least 1.
@@ -73,6 +77,7 @@ impl core::fmt::Display for ParamError {
             ParamError::Zeta => "zeta(c, N) overflows: raise N",
             ParamError::Shape => "a shape proportion is out of range",
             ParamError::Region => "region sizes must be finite and greater than 0",
+            ParamError::Extent => "the region is larger than this number type computes exactly (see its MAX_EXTENT)",
             ParamError::Gap => "the gap must be finite, at least 0, and smaller than the region",
             ParamError::MaxTrials => "the trial limit must be at least 1",
             ParamError::Storage => "the storage needs at least one shape slot and an index buffer longer than the shape buffer",
@@ -104,6 +109,12 @@ pub enum StepError {
         /// The shape that cannot fit.
         index: u64,
     },
+    /// Shape (segment) `index` is narrower than the scalar resolves
+    /// ([`crate::Scalar::MIN_SIZE`]); [`crate::check_smallest`] finds this before a run.
+    TooSmall {
+        /// The shape that is too small.
+        index: u64,
+    },
 }
 
 impl core::fmt::Display for StepError {
@@ -112,6 +123,7 @@ impl core::fmt::Display for StepError {
             StepError::Halted { index, trials } => write!(f, "halted at placement {index} after {trials} trials"),
             StepError::Capacity { capacity } => write!(f, "storage for {capacity} shapes is full"),
             StepError::CannotFit { index } => write!(f, "shape {index} is larger than the region allows"),
+            StepError::TooSmall { index } => write!(f, "shape {index} is narrower than this number type resolves"),
         }
     }
 }

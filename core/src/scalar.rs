@@ -6,10 +6,12 @@
 //! rounded everywhere) plus `libm`, a pure-Rust maths library whose results do not depend on
 //! the platform. No fused multiply-add, no intrinsics, no SIMD.
 //!
-//! A scalar rounds the few computations whose direction matters upward ([`Scalar::dist2_up`],
-//! [`Scalar::seg_dist2_up`]: the cell sampler's bounds must never fall below the truth). For
-//! `f64` those are the plain formulas: its rounding is relative and far below the sampler's
-//! slack ([`Scalar::BOUND_SLACK`]).
+//! A scalar also states what it cannot compute exactly: the largest region
+//! ([`Scalar::MAX_EXTENT`]) and the narrowest shape ([`Scalar::MIN_SIZE`]), which the engines
+//! refuse; and it rounds the few computations whose direction matters upward
+//! ([`Scalar::dist2_up`], [`Scalar::seg_dist2_up`]: the cell sampler's bounds must never fall
+//! below the truth). For `f64` those are the plain formulas: its rounding is relative and far
+//! below the sampler's slack ([`Scalar::BOUND_SLACK`]).
 
 use crate::geom::{seg_dist2, Point};
 use core::fmt::Debug;
@@ -34,6 +36,15 @@ pub trait Scalar:
     const ZERO: Self;
     /// One.
     const ONE: Self;
+    /// The largest region the geometry is exact for, in mm: a region's bounding box must have
+    /// sides of at most this and lie within this of the origin on each axis (a 1D interval:
+    /// at most this long). [`crate::Engine::new`] and [`crate::LineEngine::new`] refuse a
+    /// larger one ([`crate::ParamError::Extent`]). `f64`: no limit.
+    const MAX_EXTENT: f64;
+    /// The narrowest shape (shortest segment) the geometry resolves, in mm: the engines place
+    /// none narrower ([`crate::StepError::TooSmall`]) and [`crate::check_smallest`] finds,
+    /// before a run, whether its stop conditions would reach one. `f64`: 0 (no limit).
+    const MIN_SIZE: f64;
     /// What the cell sampler adds to every bound on the clearance for the rounding of its own
     /// arithmetic, `[relative, absolute]`: `relative` times the region's larger side plus
     /// `absolute` mm (see [`crate::CellSampler`]).
@@ -135,6 +146,8 @@ impl Scalar for f64 {
 
     const ZERO: Self = 0.0;
     const ONE: Self = 1.0;
+    const MAX_EXTENT: f64 = f64::MAX;
+    const MIN_SIZE: f64 = 0.0;
     const BOUND_SLACK: [f64; 2] = [1e-9, 1e-12];
     #[inline]
     fn from_f64(v: f64) -> Self {

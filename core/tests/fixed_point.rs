@@ -1,16 +1,19 @@
-//! The fixed-point scalar at the largest supported size (the issue "Hardening").
+//! The fixed-point scalar at the edges of its range (the issue "Hardening").
 //!
-//! With large shapes in a 10,000 mm region, both samplers, every pair of shapes keeps clear and
-//! every shape stays in its region, checked against geometry written here in f64 (the
-//! fixed-point coordinates convert exactly). And the cell sampler halts with certainty only
-//! where nothing fits: before, its bounds on the clearance fell far below the truth for large
-//! polygons (a squared cross product saturated), and it gave up on triangles at placement 9
-//! that the reference sampler places to 2,000.
+//! What it cannot compute exactly is refused: a region beyond `Fixed::MAX_EXTENT` (before,
+//! squares in a 500 m square overlapped by tens of metres) and a shape narrower than
+//! `Fixed::MIN_SIZE`. Inside the range its fills are exact: with large shapes in a 10,000 mm
+//! region, both samplers, every pair of shapes keeps clear and every shape stays in its region,
+//! checked against geometry written here in f64 (the fixed-point coordinates convert exactly).
+//! And the cell sampler halts with certainty only where nothing fits: before, its bounds on the
+//! clearance fell far below the truth for large polygons (a squared cross product saturated),
+//! and it gave up on triangles at placement 9 that the reference sampler places to 2,000.
 
 mod common;
 
 use zetafill::{
-    cells_for, rng_from_seed, CellSampler, Engine, Fixed, Geo, Params, Point, PolygonRegion, Region, Scalar, ShapeKind, Stop, StopReason,
+    cells_for, check_smallest, rng_from_seed, AreaSequence, CellSampler, Engine, Fixed, Geo, Interval, LineEngine, LineParams, LineStorage,
+    ParamError, Params, Placed, Point, PolygonRegion, Region, Scalar, Segment, ShapeKind, StepError, Stop, StopReason,
 };
 
 // ---------------------------------------------------------------------------------------------
@@ -375,4 +378,126 @@ fn the_cell_sampler_places_what_the_reference_places_on_fixed_point() {
             check(&geos, &region).unwrap_or_else(|e| panic!("{what}: {e}"));
         }
     }
+}
+
+// ---------------------------------------------------------------------------------------------
+// What fixed point cannot compute is refused.
+
+/// Regions beyond 10,000 mm a side, or farther than that from the origin, are refused by
+/// both engines on fixed point; f64 has no limit.
+#[test]
+fn regions_beyond_the_fixed_range_are_refused() {
+    let new = |region: Region<'_>| -> Result<(), ParamError> {
+        let mut b = common::Buffers::<Fixed>::new(10);
+        Engine::<Fixed>::new(Params::circles(1.3, 2.0), region, b.storage(&mut [])).map(|_| ())
+    };
+    let rect = |w: f64, h: f64| Region::Rect {
+        width: w,
+        height: h,
+        periodic: false,
+    };
+    let too_large = Err(ParamError::Extent);
+    assert_eq!(Fixed::MAX_EXTENT, 10_000.0);
+    assert_eq!(new(rect(500_000.0, 500_000.0)), too_large);
+    assert_eq!(new(rect(10_000.001, 100.0)), too_large);
+    assert_eq!(new(Region::Circle { radius: 5_000.001 }), too_large);
+    assert_eq!(new(rect(10_000.0, 10_000.0)), Ok(()));
+    assert_eq!(new(Region::Circle { radius: 5_000.0 }), Ok(()));
+    // A small outline far from the origin.
+    let far: Vec<Point<f64>> = [(20_000.0, 0.0), (20_100.0, 0.0), (20_100.0, 100.0)]
+        .iter()
+        .map(|&(x, y)| Point::new(x, y))
+        .collect();
+    let ends = [3];
+    assert_eq!(
+        new(Region::Polygon(PolygonRegion::new(&far, &ends).expect("a triangle"))),
+        too_large
+    );
+    // f64 takes them all.
+    let mut b = common::Buffers::<f64>::new(10);
+    assert!(Engine::<f64>::new(Params::circles(1.3, 2.0), rect(500_000.0, 500_000.0), b.storage(&mut [])).is_ok());
+    // The 1D engine: an interval of at most 10,000 mm.
+    let mut segs = [Segment::<Fixed>::default(); 4];
+    let mut index = [0u32; 64];
+    let line = |length: f64, segs: &mut [Segment<Fixed>], index: &mut [u32]| {
+        let storage = LineStorage { segments: segs, index };
+        LineEngine::<Fixed>::new(LineParams::new(1.3, 2.0), Interval { length, periodic: false }, storage).map(|_| ())
+    };
+    assert_eq!(line(20_000.0, &mut segs, &mut index), too_large);
+    assert_eq!(line(10_000.0, &mut segs, &mut index), Ok(()));
+}
+
+/// Shapes narrower than 10 µm are refused before a run (`check_smallest`, which names the
+/// first one the stop conditions reach) and by the engine itself, which stops there; f64 has
+/// no limit.
+#[test]
+fn shapes_below_the_fixed_resolution_are_refused() {
+    // Circles in a 1 mm square fall below 10 µm wide at about placement 500.
+    let region = Region::Rect {
+        width: 1.0,
+        height: 1.0,
+        periodic: false,
+    };
+    let seq = AreaSequence::new(1.0, 1.3, 1.0).expect("a sequence");
+    let circles = ShapeKind::Circle.into();
+    let width = |i: u64| ShapeKind::Circle.min_width(ShapeKind::Circle.scale_for_area(seq.area(i)));
+    let stop = |count: Option<u64>, fill: Option<f64>, min_size: Option<f64>| Stop { count, fill, min_size };
+    let err = check_smallest::<Fixed>(&seq, &circles, &stop(Some(2000), None, None), 4000).expect_err("too small");
+    let first = err.index;
+    assert!(width(first) < 0.01 && width(first - 1) >= 0.01, "{err:?}");
+    assert_eq!((err.width, err.limit), (width(first), 0.01));
+    // Stops (or storage) that end the run before it are fine.
+    for (ok, capacity) in [
+        (stop(Some(first), None, None), 4000),
+        (stop(Some(2000), None, Some(0.01)), 4000),
+        (stop(None, Some(seq.covered(first)), None), 4000),
+        (stop(Some(2000), None, None), first),
+    ] {
+        assert_eq!(check_smallest::<Fixed>(&seq, &circles, &ok, capacity), Ok(()), "{ok:?}");
+    }
+    assert!(check_smallest::<Fixed>(&seq, &circles, &stop(None, None, Some(0.009)), 4000).is_err());
+    assert_eq!(check_smallest::<f64>(&seq, &circles, &stop(Some(2000), None, None), 4000), Ok(()));
+    // A mix: the first shape of either kind that is too narrow (a ring's band is a fifth of
+    // its radius, narrower than a circle of its area).
+    let mix = zetafill::ShapeList::mix(&[ShapeKind::Circle, ShapeKind::Ring { inner: 0.8 }], zetafill::MixOrder::Cycle, 0).expect("a mix");
+    let err = check_smallest::<Fixed>(&seq, &mix, &stop(Some(2000), None, None), 4000).expect_err("too small");
+    assert!(err.index < first && err.index % 2 == 1, "{err:?}");
+
+    // The engine stops at the same shape, every shape placed before it at least 10 µm wide.
+    let mut b = common::Buffers::<Fixed>::new(2000);
+    let mut e = Engine::<Fixed>::new(Params::circles(1.3, 1.0), region, b.storage(&mut [])).expect("valid");
+    let reason = e.run(&mut rng_from_seed(3), &stop(Some(2000), None, None), |_| {});
+    match reason {
+        StopReason::Step(StepError::TooSmall { index }) => assert_eq!(index, first),
+        // A fill this small may halt earlier; it must not get past the limit.
+        StopReason::Step(StepError::Halted { index, .. }) => assert!(index <= first),
+        other => panic!("{other:?}"),
+    }
+    assert!(e.placed().iter().all(|p: &Placed<Fixed>| 2.0 * p.scale.to_f64() >= 0.01));
+    // f64 goes on.
+    let mut b = common::Buffers::<f64>::new(2000);
+    let mut e = Engine::<f64>::new(Params::circles(1.3, 1.0), region, b.storage(&mut [])).expect("valid");
+    let reason = e.run(&mut rng_from_seed(3), &stop(Some(first + 20), None, None), |_| {});
+    assert!(!matches!(reason, StopReason::Step(StepError::TooSmall { .. })), "{reason:?}");
+    // The 1D engine stops at its first segment shorter than 10 µm.
+    let mut segs = vec![Segment::<Fixed>::default(); 4000];
+    let mut index = vec![0u32; zetafill::line_index_words(4000)];
+    let storage = LineStorage {
+        segments: &mut segs,
+        index: &mut index,
+    };
+    let mut line = LineEngine::<Fixed>::new(
+        LineParams::new(1.3, 1.0),
+        Interval {
+            length: 1.0,
+            periodic: false,
+        },
+        storage,
+    )
+    .expect("valid");
+    let reason = line.run(&mut rng_from_seed(3), &stop(Some(4000), None, None), |_| {});
+    let StopReason::Step(StepError::TooSmall { index }) = reason else {
+        panic!("{reason:?}")
+    };
+    assert!(line.length_of(index) < 0.01 && line.length_of(index - 1) >= 0.01);
 }

@@ -9,10 +9,10 @@ use crate::cmd::stopping::{self, Unit};
 use crate::error::CliError;
 use crate::model::doc::{FillDoc, ParamsDoc, ShapeDoc, ShapeParamsDoc, StatsDoc};
 use crate::output;
-use crate::plan::fill::{first_shape_error, first_two_error, halt_advice, param_error, FillDraw, FillPlan, FillRun};
+use crate::plan::fill::{first_shape_error, first_two_error, halt_advice, param_error, too_small_error, FillDraw, FillPlan, FillRun};
 use region::RegionData;
 use zetafill::StepError;
-use zetafill::{index_words, CellSampler, Engine, Geo, Params, Placed, Region, ShapeKind, Stop, StopReason, Storage};
+use zetafill::{index_words, AreaSequence, CellSampler, Engine, Geo, Params, Placed, Region, ShapeKind, Stop, StopReason, Storage};
 
 /// What a 2D run places.
 const SHAPES: Unit = Unit {
@@ -74,14 +74,19 @@ fn geo_f64<S: zetafill::Scalar>(g: &Geo<S>) -> Geo<f64> {
     }
 }
 
-/// Runs the engine on scalar `S` with the CLI's storage, progress bar and known-limit check.
+/// Runs the engine on scalar `S` with the CLI's storage, progress bar and known-limit checks
+/// (the region and the smallest shape the scalar computes exactly, the first two shapes).
 fn run_engine<S: zetafill::Scalar>(
     a: &FillRun,
     params: Params,
     region: Region<'_>,
+    sequence: &AreaSequence,
     stop: &Stop,
     cap: usize,
 ) -> Result<EngineRun, CliError> {
+    // Before the storage is allocated: a run that reaches shapes the scalar cannot resolve
+    // may ask for millions.
+    zetafill::check_smallest::<S>(sequence, &params.shape, stop, cap as u64).map_err(|e| too_small_error(e, stop))?;
     let mut shapes = vec![Placed::<S>::default(); cap];
     let mut index = vec![0u32; index_words(cap)];
     // Only the paper's sampler asks the coverage bitmap (the cell sampler never does).
@@ -152,9 +157,9 @@ pub fn compute(a: &FillRun) -> Result<(FillDoc, Option<StepError>), CliError> {
     let sequence = stopping::sequence(region.area(), params.c, params.n_offset)?;
     let cap = stopping::slots(zetafill::shape_capacity(&sequence, &params.shape, &stop, SHAPES.max), SHAPES)? as usize;
     let run = if a.fixed_point {
-        run_engine::<zetafill::Fixed>(a, params, region, &stop, cap)?
+        run_engine::<zetafill::Fixed>(a, params, region, &sequence, &stop, cap)?
     } else {
-        run_engine::<f64>(a, params, region, &stop, cap)?
+        run_engine::<f64>(a, params, region, &sequence, &stop, cap)?
     };
     let EngineRun {
         shapes: shapes_doc,
@@ -179,7 +184,7 @@ pub fn compute(a: &FillRun) -> Result<(FillDoc, Option<StepError>), CliError> {
             ))
         }
         StopReason::Step(e @ StepError::Halted { .. }) => ("halted", Some(e)),
-        StopReason::Step(e @ StepError::CannotFit { .. }) => ("halted", Some(e)),
+        StopReason::Step(e @ (StepError::CannotFit { .. } | StepError::TooSmall { .. })) => ("halted", Some(e)),
         StopReason::Step(e @ StepError::Capacity { .. }) => return Err(CliError::Io(format!("internal: {e}"))),
     };
     let doc = FillDoc {

@@ -17,7 +17,7 @@ use crate::output::png::{only_png, Raster};
 use crate::output::svg::Style;
 use crate::plan::plot::{GcodePlan, PagePlan};
 use zetafill::ParamError;
-use zetafill::{FirstShape, FirstTwoError, MixOrder, Params, ShapeList, Stop};
+use zetafill::{FirstShape, FirstTwoError, MixOrder, Params, ShapeList, Stop, TooSmall};
 
 /// A checked `zetafill fill`: where it writes, what it runs and how it draws.
 #[derive(Debug, Clone)]
@@ -290,11 +290,45 @@ pub fn param_error(e: ParamError) -> CliError {
         ParamError::Offset | ParamError::Zeta => "--n-offset",
         ParamError::Shape => "--shape",
         ParamError::Region => "--region",
+        // Only the fixed-point scalar has a limit.
+        ParamError::Extent => {
+            let max = <zetafill::Fixed as zetafill::Scalar>::MAX_EXTENT;
+            return CliError::arg(
+                "--region",
+                format!(
+                    "--scalar fixed computes regions of at most {max} mm a side, lying within {max} mm of the origin, exactly; use a smaller region or --scalar f64"
+                ),
+            );
+        }
         ParamError::Gap => "--gap",
         ParamError::MaxTrials => "--max-trials",
         ParamError::Storage => "--count",
     };
     CliError::arg(flag, e)
+}
+
+/// The usage error of a run whose stop conditions reach a shape narrower than the scalar
+/// resolves (the core's [`zetafill::check_smallest`]; only `--scalar fixed` has a limit),
+/// naming the stop condition that lets it through.
+pub fn too_small_error(e: TooSmall, stop: &Stop) -> CliError {
+    let TooSmall { index, width, limit } = e;
+    let shape = format!("shape {index} ({width} mm wide) is narrower than the {limit} mm that --scalar fixed resolves");
+    let (flag, advice) = match (stop.count, stop.fill, stop.min_size) {
+        (Some(count), _, _) => (
+            "--count",
+            format!("of the {count} shapes asked for, {shape}; ask for at most {index}, add --min-size {limit}"),
+        ),
+        (None, Some(fill), _) => (
+            "--fill",
+            format!("covering {fill} of the region, {shape}; lower it, add --min-size {limit}"),
+        ),
+        (None, None, Some(m)) => ("--min-size", format!("stopping at {m} mm, {shape}; raise it to {limit}")),
+        (None, None, None) => ("--count", format!("{shape}; give --count or --min-size {limit}")),
+    };
+    CliError::arg(
+        flag,
+        format!("{advice}, lower --c or raise --n-offset (larger small shapes), or use --scalar f64"),
+    )
 }
 
 /// Advice for a halt at placement `index` (at least 1: a halt at the first placement is

@@ -232,7 +232,7 @@ pub fn param_error(e: ParamError) -> CliError {
     let flag = match e {
         ParamError::Exponent => "--c",
         ParamError::Offset | ParamError::Zeta => "--n-offset",
-        ParamError::Region => "--length",
+        ParamError::Region | ParamError::Extent => "--length",
         ParamError::Gap => "--gap",
         ParamError::MaxTrials => "--max-trials",
         _ => "--count",

@@ -104,6 +104,11 @@ impl<S: Scalar> Engine<'_, S> {
         }
         let kind = self.kind_of(index);
         let area = self.area_of(index);
+        // Below the scalar's resolution the exact tests are not exact (f64 has no limit: this
+        // is compiled out).
+        if S::MIN_SIZE > 0.0 && kind.min_width(kind.scale_for_area(area)) < S::MIN_SIZE {
+            return Err(StepError::TooSmall { index });
+        }
         let base_scale: S = kind.scale_for(area, S::ZERO);
         if !(base_scale > S::ZERO && base_scale.is_finite()) || self.cannot_fit(kind, area) {
             return Err(StepError::CannotFit { index });

@@ -113,7 +113,8 @@ pub struct Storage<'a, S> {
 }
 
 impl<'a, S: Scalar> Engine<'a, S> {
-    /// Validates the parameters and builds an engine over the caller's storage.
+    /// Validates the parameters and builds an engine over the caller's storage. A region
+    /// larger than the scalar computes exactly ([`Scalar::MAX_EXTENT`]) is refused.
     pub fn new(params: Params, region: Region<'a>, storage: Storage<'a, S>) -> Result<Self, ParamError> {
         let Storage { shapes, index, coverage } = storage;
         if !(params.c.is_finite() && params.c > 1.0) {
@@ -127,6 +128,9 @@ impl<'a, S: Scalar> Engine<'a, S> {
         }
         if !region.is_valid() {
             return Err(ParamError::Region);
+        }
+        if !region.within(S::MAX_EXTENT) {
+            return Err(ParamError::Extent);
         }
         let (w, h) = region.extent();
         if !(params.gap.is_finite() && params.gap >= 0.0 && 2.0 * params.gap < w.min(h)) {

@@ -306,6 +306,14 @@ impl Region<'_> {
         }
     }
 
+    /// Whether the bounding box has sides of at most `max` and lies within `max` of the
+    /// origin on each axis (see [`Scalar::MAX_EXTENT`]).
+    pub fn within(&self, max: f64) -> bool {
+        let (x0, y0, x1, y1) = self.bbox();
+        let (w, h) = self.extent();
+        w <= max && h <= max && [x0, y0, x1, y1].iter().all(|v| v.abs() <= max)
+    }
+
     /// Width and height of the bounding box (the period when periodic).
     pub fn extent(&self) -> (f64, f64) {
         let (x0, y0, x1, y1) = self.bbox();

@@ -45,6 +45,12 @@ pub trait Scalar:
     /// none narrower ([`crate::StepError::TooSmall`]) and [`crate::check_smallest`] finds,
     /// before a run, whether its stop conditions would reach one. `f64`: 0 (no limit).
     const MIN_SIZE: f64;
+    /// How far a polygon drawn in this arithmetic may lie outside its exact outline,
+    /// `[relative to its scale, absolute]` in mm: its sines, cosines and vertices are rounded.
+    /// Bounding radii grow by it ([`crate::ShapeKind::bounding_radius`]), so that the tests
+    /// that skip a pair whose bounding circles are apart never skip an overlap. `f64`: none
+    /// (its relative error, a few 1e-16, is below every tolerance).
+    const OUTLINE_SLACK: [f64; 2];
     /// What the cell sampler adds to every bound on the clearance for the rounding of its own
     /// arithmetic, `[relative, absolute]`: `relative` times the region's larger side plus
     /// `absolute` mm (see [`crate::CellSampler`]).
@@ -148,6 +154,7 @@ impl Scalar for f64 {
     const ONE: Self = 1.0;
     const MAX_EXTENT: f64 = f64::MAX;
     const MIN_SIZE: f64 = 0.0;
+    const OUTLINE_SLACK: [f64; 2] = [0.0, 0.0];
     const BOUND_SLACK: [f64; 2] = [1e-9, 1e-12];
     #[inline]
     fn from_f64(v: f64) -> Self {

@@ -41,7 +41,7 @@ const CORPUS: &[(&str, i32, &str)] = &[
     ("fill --shape square --periodic --region rect:150:150 --c 1.25 --n-offset 2 --count 300 -o periodic.svg", 0, "5e662e07460646ad32b0d17022bd36d9864987583b1dead959dd30ae46a6bf31"),
     ("fill --periodic --count 300 --machine grbl-laser -o periodic.gcode", 0, "3b9f224949805172b58e57af33bdf5569ca946271c0fb7ec94505266a801becf"),
     ("fill --sampler reference --count 300 -o reference.json", 0, "7f30b4114aa80d3b13b40f10d29b33c87fc2ae7d659b08a66af54efff7ef9989"),
-    ("fill --scalar fixed --shape square --count 300 --format digest -o fixed.txt", 0, "90b9563094b60b0456d2989cabfb523b374b934edd8c49d4a1113799f91e66f9"),
+    ("fill --scalar fixed --shape square --count 300 --format digest -o fixed.txt", 0, "4d7616a7e7363fd0f9afac90fa7b727fde7c7ea5473b3251163cb258d9bc2a6c"),
     ("fill --dimension 1.6 --fill 0.5 -o dimension.csv", 0, "9a7332eec57d983ac52be74bcb749bc3e7078061720586e2b7fd3cc35c3a9f8f"),
     ("fill --min-size 3 --shape polygon:5 --rotate none -o min-size.json", 0, "101f59886c5027c938998e315796ff7adf11c6b770cd5232e55e09a7e432c8bd"),
     ("fill --gap 1 --shape square --rotate none --c 1.25 --n-offset 2 --count 200 --boundary -o gap.svg", 0, "a1b8b0ec375df8ec9a97f85114616da8713d3d2852a881d2c95f462be6d8ac99"),

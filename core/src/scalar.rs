@@ -8,8 +8,12 @@
 //!
 //! A scalar also states what it cannot compute exactly: the largest region
 //! ([`Scalar::MAX_EXTENT`]) and the narrowest shape ([`Scalar::MIN_SIZE`]), which the engines
-//! refuse.
+//! refuse; and it rounds the few computations whose direction matters upward
+//! ([`Scalar::dist2_up`], [`Scalar::seg_dist2_up`]: the cell sampler's bounds must never fall
+//! below the truth). For `f64` those are the plain formulas: its rounding is relative and far
+//! below the sampler's slack ([`Scalar::BOUND_SLACK`]).
 
+use crate::geom::{seg_dist2, Point};
 use core::fmt::Debug;
 use core::ops::{Add, Div, Mul, Neg, Sub};
 
@@ -76,6 +80,16 @@ pub trait Scalar:
     /// assert!(f64::IS_F64 && !Fixed::IS_F64);
     /// ```
     const IS_F64: bool = false;
+    /// How far a polygon drawn in this arithmetic may lie outside its exact outline,
+    /// `[relative to its scale, absolute]` in mm: its sines, cosines and vertices are rounded.
+    /// Bounding radii grow by it ([`crate::ShapeKind::bounding_radius`]), so that the tests
+    /// that skip a pair whose bounding circles are apart never skip an overlap. `f64`: none
+    /// (its relative error, a few 1e-16, is below every tolerance).
+    const OUTLINE_SLACK: [f64; 2];
+    /// What the cell sampler adds to every bound on the clearance for the rounding of its own
+    /// arithmetic, `[relative, absolute]`: `relative` times the region's larger side plus
+    /// `absolute` mm (see [`crate::CellSampler`]).
+    const BOUND_SLACK: [f64; 2];
     /// Converts from `f64` (rounding or saturating as the type requires).
     fn from_f64(v: f64) -> Self;
     /// Converts to `f64` (exactly where the type allows).
@@ -141,6 +155,20 @@ pub trait Scalar:
     fn dist2_up(x: Self, y: Self) -> Self {
         x * x + y * y
     }
+    /// The squared distance from `p` to the closed segment `a`–`b` rounded up: never below
+    /// the exact value, whatever the segment's length (`f64`: [`seg_dist2`]).
+    #[inline]
+    fn seg_dist2_up(p: Point<Self>, a: Point<Self>, b: Point<Self>) -> Self {
+        seg_dist2(p, a, b)
+    }
+    /// A step at least `self / n` that can be halved `halvings` times without rounding, so
+    /// that `n` steps cover `self` and each step is exactly two of its halves (`f64`:
+    /// `self / n`, which halves exactly).
+    #[inline]
+    fn grid_step(self, n: u32, halvings: u32) -> Self {
+        let _ = halvings;
+        self / Self::from_f64(f64::from(n))
+    }
 }
 
 /// 2^-53: the spacing of the 53-bit uniform grid used for `f64`.
@@ -162,6 +190,8 @@ impl Scalar for f64 {
     const MAX_EXTENT: f64 = f64::MAX;
     const MIN_SIZE: f64 = 0.0;
     const IS_F64: bool = true;
+    const OUTLINE_SLACK: [f64; 2] = [0.0, 0.0];
+    const BOUND_SLACK: [f64; 2] = [1e-9, 1e-12];
     #[inline]
     fn from_f64(v: f64) -> Self {
         v

@@ -5,6 +5,9 @@
 //! `Fixed::MIN_SIZE`. Inside the range its fills are exact: with large shapes in a 10,000 mm
 //! region, both samplers, every pair of shapes keeps clear and every shape stays in its region,
 //! checked against geometry written here in f64 (the fixed-point coordinates convert exactly).
+//! And the cell sampler halts with certainty only where nothing fits: before, its bounds on the
+//! clearance fell far below the truth for large polygons (a squared cross product saturated),
+//! and it gave up on triangles at placement 9 that the reference sampler places to 2,000.
 
 mod common;
 
@@ -350,6 +353,31 @@ fn the_checker_can_fail() {
     let a = poly(&[[10.0, 49.0], [90.0, 49.0], [90.0, 51.0], [10.0, 51.0]]);
     let b = poly(&[[49.0, 10.0], [51.0, 10.0], [51.0, 90.0], [49.0, 90.0]]);
     assert!(check(&[a, b], &rect).is_err());
+}
+
+/// The second case: the cell sampler on fixed point halted at placement 9 (of 2,000
+/// triangles in a 5,000 mm square, c = 1.3, N = 2, seed 67), a halt it reports as certain,
+/// and at 27 for squares in a 10,000 mm square; the reference sampler places all 2,000. Both
+/// samplers must place all 2,000, without overlap.
+#[test]
+fn the_cell_sampler_places_what_the_reference_places_on_fixed_point() {
+    let cases = [(ShapeKind::Triangle, 5_000.0, 67), (ShapeKind::Square, 10_000.0, 67)];
+    for (kind, side, seed) in cases {
+        let region = Region::Rect {
+            width: side,
+            height: side,
+            periodic: false,
+        };
+        for fast in [true, false] {
+            let (geos, reason) = fill(kind, region, 1.3, 2.0, 2000, seed, fast);
+            let what = format!(
+                "{kind:?} in {side} mm, seed {seed}, {} sampler",
+                if fast { "cell" } else { "reference" }
+            );
+            assert_eq!(reason, StopReason::Count, "{what}: stopped after {} shapes", geos.len());
+            check(&geos, &region).unwrap_or_else(|e| panic!("{what}: {e}"));
+        }
+    }
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -264,3 +264,42 @@ fn live_cells_hold_every_valid_centre_on_fixed_point() {
         assert_invariant::<zetafill::Fixed>(&probe, least);
     }
 }
+
+/// The same invariant on fixed point at the largest supported size: triangles and rings in a
+/// rectangle and a torus nearly 10,000 mm across whose sides are no multiple of the grid.
+/// There the bounds square lengths up to 10^8 mm² (a squared cross product once saturated and
+/// put them far below the truth, and the sampler halted as if certain where shapes still
+/// fitted), and a grid cell's four children once missed a strip of it (its side did not halve
+/// exactly).
+#[test]
+fn live_cells_hold_every_valid_centre_on_fixed_point_at_full_size() {
+    let (w, h) = (9_876.543_21, 7_654.321);
+    let regions = [
+        Region::Rect {
+            width: w,
+            height: h,
+            periodic: false,
+        },
+        Region::Rect {
+            width: w,
+            height: h,
+            periodic: true,
+        },
+    ];
+    for kind in [ShapeKind::Triangle, ShapeKind::Ring { inner: 0.5 }] {
+        let least = Least {
+            checks: 20,
+            valid: 300,
+            caught_one_in: 6,
+        };
+        let probe = Probe {
+            kind,
+            regions: &regions,
+            configs: &[(0.0, cells_for(400))],
+            every: 48,
+            points: 400,
+            angles: 6,
+        };
+        assert_invariant::<zetafill::Fixed>(&probe, least);
+    }
+}

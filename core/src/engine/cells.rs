@@ -3,7 +3,7 @@
 //! the step that draws candidates from the sampler's live cells ([`Engine::step_fast`]).
 
 use super::{Engine, NextShape, Placement};
-use crate::geom::{edges, point_in_poly, seg_dist2, Point};
+use crate::geom::{edges, point_in_poly, seg_dist2, Geo, Point};
 use crate::params::{StepError, Stop, StopReason};
 use crate::region::Region;
 use crate::rng;
@@ -11,6 +11,29 @@ use crate::sampler::{CellSampler, Drawn, Field, Verdict, NEAR, NONE};
 use crate::scalar::Scalar;
 use crate::shape::{Placed, ShapeKind};
 use rand_core::RngCore;
+
+/// The signed distance from `q` to a polygon's material: its edges' distance rounded up
+/// outside, down inside (see [`Engine::shape_dist`]). Out of line: the circles' bounds stay
+/// lean.
+#[inline(never)]
+fn poly_dist<S: Scalar>(g: &Geo<S>, q: Point<S>) -> S {
+    let vs = g.vertices();
+    // The smallest of `dist2` over the edges (one loop for each rounding).
+    let nearest = |dist2: fn(Point<S>, Point<S>, Point<S>) -> S| {
+        edges(vs)
+            .fold(None, |m: Option<S>, (a, b)| {
+                let d = dist2(q, a, b);
+                Some(m.map_or(d, |m| m.min(d)))
+            })
+            .unwrap_or(S::ZERO)
+            .sqrt()
+    };
+    if point_in_poly(q, vs) {
+        -nearest(seg_dist2)
+    } else {
+        nearest(S::seg_dist2_up)
+    }
+}
 
 /// The engine as the cell sampler sees it.
 struct FieldOf<'e, 'a, S: Scalar>(&'e Engine<'a, S>);
@@ -160,7 +183,9 @@ impl<S: Scalar> Engine<'_, S> {
 
     /// The signed distance from `p` to the material of placed shape `j` (in a periodic region,
     /// to its image nearest to `p` by centre): negative inside. An upper bound of the distance
-    /// to the nearest image by material, which is all the cell sampler needs.
+    /// to the nearest image by material, which is all the cell sampler needs; so a distance
+    /// that counts positive is rounded up, one that counts negative down (in fixed point; `f64`
+    /// rounds to nearest, which the sampler's slack covers).
     pub(super) fn shape_dist(&self, j: u32, p: Point<S>) -> S {
         let Some(s) = self.shapes.get(j as usize) else {
             return S::from_f64(f64::MAX);
@@ -168,33 +193,25 @@ impl<S: Scalar> Engine<'_, S> {
         let kind = self.kind_of(u64::from(j));
         let q = self.image_near(p, s);
         let centre = Point::new(s.x, s.y);
-        let dist = centre.dist2(q).sqrt();
+        let d = centre.diff(q);
+        // The distance from the centre rounded up; rounded down is `centre.dist2(q).sqrt()`.
+        let far = S::dist2_up(d.x, d.y).sqrt();
         match kind {
-            ShapeKind::Circle => dist - s.scale,
+            ShapeKind::Circle => far - s.scale,
             ShapeKind::Ring { inner } => {
                 let hole = s.scale * S::from_f64(inner);
-                if dist >= s.scale {
-                    dist - s.scale
-                } else if dist <= hole {
-                    hole - dist
+                if far >= s.scale {
+                    far - s.scale
                 } else {
-                    -(dist - hole).min(s.scale - dist)
+                    let near = centre.dist2(q).sqrt();
+                    if near <= hole {
+                        hole - near
+                    } else {
+                        -(near - hole).min(s.scale - far)
+                    }
                 }
             }
-            _ => {
-                let g = kind.geo(centre, s.scale, s.angle);
-                let vs = g.vertices();
-                let m = edges(vs).fold(None, |m: Option<S>, (a, b)| {
-                    let d = seg_dist2(q, a, b);
-                    Some(m.map_or(d, |m| m.min(d)))
-                });
-                let d = m.unwrap_or(S::ZERO).sqrt();
-                if point_in_poly(q, vs) {
-                    -d
-                } else {
-                    d
-                }
-            }
+            _ => poly_dist(&kind.geo(centre, s.scale, s.angle), q),
         }
     }
 
@@ -213,7 +230,7 @@ impl<S: Scalar> Engine<'_, S> {
         if !cells.ready() {
             let (x0, y0, _, _) = self.region.bbox();
             let (w, h) = self.period;
-            cells.init(S::from_f64(x0), S::from_f64(y0), w, h, &FieldOf(self));
+            cells.init(S::from_f64(x0), S::from_f64(y0), w, h, self.region.periodic(), &FieldOf(self));
         }
         cells.wake(clearance, self.len);
         cells.begin_step();
@@ -279,6 +296,9 @@ impl<S: Scalar> Engine<'_, S> {
                 continue;
             };
             let angle = if next.rotated { rng::angle::<S, R>(rng) } else { S::ZERO };
+            if cells.overhangs(p) {
+                continue;
+            }
             let slot = match cells.judge(slot, &drawn, quarter, clearance, &FieldOf(self)) {
                 Verdict::Reject => continue,
                 Verdict::Test(s) => s,

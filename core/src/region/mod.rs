@@ -361,6 +361,27 @@ impl<'a> PolygonRegion<'a> {
         self.rings().flat_map(edges).map(|(a, b)| (conv(a), conv(b)))
     }
 
+    /// [`Region::signed_clearance`] of the polygon: its edges' distance rounded up inside,
+    /// down outside. On `f64` (the only scalar the tree serves) the rounded-up distance is
+    /// the plain one, so the tree's nearest edge gives it.
+    fn signed_clearance<S: Scalar>(&self, q: Point<S>) -> S {
+        let inside = self.inside(q);
+        let d2 = if inside && self.tree_for::<S>().is_none() {
+            self.edges_s::<S>()
+                .map(|(a, b)| S::seg_dist2_up(q, a, b))
+                .fold(None, |m: Option<S>, d| Some(m.map_or(d, |m| m.min(d))))
+                .unwrap_or(S::ZERO)
+        } else {
+            self.dist2(q)
+        };
+        let d = d2.sqrt();
+        if inside {
+            d
+        } else {
+            -d
+        }
+    }
+
     /// The tree, when queries on `S` may use it (`f64` only: its pruning is proven for
     /// `f64` rounding).
     fn tree_for<S: Scalar>(&self) -> Option<&EdgeTree<'a>> {
@@ -712,7 +733,8 @@ impl Region<'_> {
     }
 
     /// The signed distance from a point to the outside of the region: positive inside,
-    /// negative outside; a periodic region has no outside (a distance larger than it).
+    /// negative outside; a periodic region has no outside (a distance larger than it). Rounded
+    /// up where the scalar rounds (an upper bound, as the cell sampler needs).
     pub fn signed_clearance<S: Scalar>(&self, q: Point<S>) -> S {
         match *self {
             Region::Rect {
@@ -721,19 +743,15 @@ impl Region<'_> {
                 height,
             } => S::from_f64(4.0 * width.max(height)),
             Region::Rect { width, height, .. } => q.x.min(S::from_f64(width) - q.x).min(q.y).min(S::from_f64(height) - q.y),
+            // The distance from the centre rounded down where it is subtracted, up where added.
             Region::Circle { radius } => S::from_f64(radius) - q.dist2(self.centre()).sqrt(),
             Region::Annulus { outer, inner } => {
-                let t = q.dist2(self.centre()).sqrt();
-                (S::from_f64(outer) - t).min(t - S::from_f64(inner))
+                let c = self.centre();
+                let d = q.diff(c);
+                let (near, far) = (q.dist2(c).sqrt(), S::dist2_up(d.x, d.y).sqrt());
+                (S::from_f64(outer) - near).min(far - S::from_f64(inner))
             }
-            Region::Polygon(p) => {
-                let d = self.boundary_dist2(q).sqrt();
-                if p.inside(q) {
-                    d
-                } else {
-                    -d
-                }
-            }
+            Region::Polygon(p) => p.signed_clearance(q),
         }
     }
 

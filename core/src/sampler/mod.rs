@@ -67,6 +67,17 @@
 //! point of tangency, a set of no area, the cells around it refine to the finest level and
 //! stay live; then the trial limit ends the fill, as it does for the reference.)
 //!
+//! The argument needs bounds that are never below the truth and cells that are exactly the
+//! union of their children, in the scalar's own arithmetic. Each bound is computed rounded:
+//! `f64` to nearest, a relative error far below what the sampler adds to every bound, the
+//! slack ([`Scalar::BOUND_SLACK`]: 1e-9 of the region's size and 1e-12); fixed point rounds
+//! its distances up, in exact 128-bit integers ([`Scalar::dist2_up`],
+//! [`Scalar::seg_dist2_up`]), and its slack covers the rest (1e-8 of the region's size and
+//! 2^-18 mm). Cells halve exactly: `f64` halves without rounding, and fixed point rounds the
+//! first grid's cells up so that they halve 23 times without remainder
+//! ([`Scalar::grid_step`]); where that makes the grid overhang a torus, a point drawn beyond
+//! the period is rejected (wrapped, it would be drawn twice as often).
+//!
 //! Shapes without a clearance condition fall back to the reference sampler: a ring whose hole
 //! is larger than its material (an earlier shape may sit in that hole, around the new
 //! centre), or a ring in a region with holes (the ring may enclose one).
@@ -288,6 +299,10 @@ pub struct CellSampler<'c, S> {
     last_paper: f64,
     ready: bool,
     stats: CellStats,
+    /// On a torus that the grid overhangs by more than the slack (fixed point rounds its cells
+    /// up so that they halve exactly; f64 never does), points drawn at or beyond this lie
+    /// outside the period: wrapped, they would fall on others and be drawn twice as often.
+    overhang: Option<Point<S>>,
 }
 
 /// Why a cell sampler could not be set up: its storage is empty (or beyond `u32` indices).
@@ -341,6 +356,7 @@ impl<'c, S: Scalar> CellSampler<'c, S> {
             last_paper: 0.0,
             ready: false,
             stats: CellStats::default(),
+            overhang: None,
         })
     }
 
@@ -421,11 +437,11 @@ impl<'c, S: Scalar> CellSampler<'c, S> {
 }
 
 /// The distance from `o` to the corner farthest from it of the box centred on `c` with half
-/// sides `hw`, `hh`.
+/// sides `hw`, `hh` (its square rounded up: see [`Scalar::dist2_up`]).
 #[inline]
 fn far_corner<S: Scalar>(o: Point<S>, c: Point<S>, hw: S, hh: S) -> S {
     let (ax, ay) = ((c.x - o.x).abs() + hw, (c.y - o.y).abs() + hh);
-    (ax * ax + ay * ay).sqrt()
+    S::dist2_up(ax, ay).sqrt()
 }
 
 /// `ceil(v)` as a `u32` (0 for NaN or negative, saturating above).

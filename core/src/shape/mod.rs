@@ -351,15 +351,23 @@ impl ShapeKind {
         }
     }
 
-    /// Radius of the smallest circle about the centre that holds the shape.
+    /// Radius of the smallest circle about the centre that holds the shape: for a polygon, as
+    /// drawn in the scalar's arithmetic (grown by [`Scalar::OUTLINE_SLACK`]).
     pub fn bounding_radius<S: Scalar>(&self, scale: S) -> S {
-        match *self {
+        let r = match *self {
+            ShapeKind::Circle | ShapeKind::Ring { .. } => return scale,
             ShapeKind::Square | ShapeKind::Rect { .. } => {
                 let hw = scale * S::from_f64(self.aspect());
                 (hw * hw + scale * scale).sqrt()
             }
             ShapeKind::Blob { delta } => scale * S::from_f64(1.0 + 3.0 * delta),
             _ => scale,
+        };
+        let [rel, abs] = S::OUTLINE_SLACK;
+        if rel > 0.0 || abs > 0.0 {
+            r + scale * S::from_f64(rel) + S::from_f64(abs)
+        } else {
+            r
         }
     }
 

@@ -5,6 +5,7 @@
 #![allow(dead_code)]
 
 pub mod geometry;
+pub mod safety;
 pub mod voronoi;
 
 // Each test uses a few of the checkers.

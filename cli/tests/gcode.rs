@@ -1,387 +1,26 @@
-//! G-code output, read back with an independent parser (the `gcode` crate) and replayed by a
-//! small interpreter written here, not shared with the writer: it tracks position, modal
-//! motion (G0/G1/G2/G3), feed, and the tool state implied by the profile's own `tool_off`
-//! block (a Z height, a servo angle, or laser power), and reports every breach of the safety
-//! invariants (DESIGN section 3, issue 4):
+//! G-code output, read back with an independent parser (the `gcode` crate) and replayed by
+//! the interpreter of `common/safety.rs` (not shared with the writer; the fuzz targets of
+//! `fuzz.rs` replay through it too), which reports every breach of the safety invariants
+//! (DESIGN section 3, issue 4):
 //! - every coordinate inside the bed, arcs included (their extreme points);
-//! - the tool off for every G0 and at the end of the program;
+//! - the tool off for every G0, at every pause and at the end of the program;
 //! - a feed set before the first cutting move;
 //! - plain decimals with fixed precision (no exponent, NaN or -0);
-//! - byte-identical output for the same input.
+//! - byte-identical output for the same input (checked here).
 //!
 //! `checkers_fail_on_broken_programs` shows that each check can fail.
 
 mod common;
 
+use common::safety::*;
 use common::*;
-use std::f64::consts::{FRAC_PI_2, TAU};
+use std::f64::consts::TAU;
 use std::path::Path;
-
-// ---------------------------------------------------------------------------------------------
-// The profile as the checker sees it (read with `toml`, not with the writer's types)
-
-#[derive(Debug, Clone, Copy, PartialEq)]
-enum ToolModel {
-    /// Laser: on while M3/M4 is active with S > 0.
-    Laser,
-    /// Servo pen: up while the last M3 S equals the tool_off angle (M5 also counts as up).
-    Servo { up: f64 },
-    /// Z-lift pen: up at or above the tool_off Z.
-    Z { up: f64 },
-}
-
-#[derive(Debug, Clone)]
-struct Profile {
-    decimals: usize,
-    /// Bed in output units: x0, y0, x1, y1.
-    bed: [f64; 4],
-    tool: ToolModel,
-}
-
-fn toml_f(v: &toml::Value, path: &[&str]) -> f64 {
-    let mut cur = v;
-    for k in path {
-        cur = cur.get(k).unwrap_or_else(|| panic!("profile lacks {path:?}"));
-    }
-    cur.as_float()
-        .or_else(|| cur.as_integer().map(|i| i as f64))
-        .unwrap_or_else(|| panic!("{path:?} is not a number"))
-}
-
-fn profile_from_toml(text: &str) -> Profile {
-    let v: toml::Value = toml::from_str(text).unwrap_or_else(|e| panic!("profile TOML: {e}"));
-    let inch = v.get("units").and_then(|u| u.as_str()) == Some("inch");
-    let f = if inch { 1.0 / 25.4 } else { 1.0 };
-    let (w, h) = (toml_f(&v, &["bed", "width"]) * f, toml_f(&v, &["bed", "height"]) * f);
-    let bed = match v.get("origin").and_then(|o| o.as_str()) {
-        Some("center") => [-w / 2.0, -h / 2.0, w / 2.0, h / 2.0],
-        _ => [0.0, 0.0, w, h],
-    };
-    let off = v.get("tool_off").and_then(|t| t.as_str()).unwrap_or("");
-    let prog = gcode::parse(off).unwrap_or_else(|e| panic!("tool_off does not parse: {e:?}"));
-    let mut tool = ToolModel::Laser;
-    for b in &prog.blocks {
-        for c in &b.codes {
-            let (letter, num, args) = code_parts(c);
-            for a in args {
-                let val = match a.value {
-                    gcode::Value::Literal(x) => x as f64,
-                    _ => continue,
-                };
-                if a.letter == 'Z' {
-                    tool = ToolModel::Z { up: val };
-                }
-                if letter == 'M' && num == 3 && a.letter == 'S' && !matches!(tool, ToolModel::Z { .. }) {
-                    tool = ToolModel::Servo { up: val };
-                }
-            }
-        }
-    }
-    Profile {
-        decimals: if inch { 4 } else { 3 },
-        bed,
-        tool,
-    }
-}
 
 fn builtin_profile(d: &Path, name: &str) -> (Profile, String) {
     let o = zf_ok(d, &["machines", "show", name]);
     let text = String::from_utf8_lossy(&o.stdout).into_owned();
     (profile_from_toml(&text), text)
-}
-
-fn code_parts(c: &gcode::Code) -> (char, u32, &[gcode::Argument]) {
-    match c {
-        gcode::Code::General(g) => ('G', g.number.major(), &g.args),
-        gcode::Code::Miscellaneous(m) => ('M', m.number.major(), &m.args),
-        gcode::Code::ToolChange(t) => ('T', t.number.major(), &t.args),
-        _ => ('?', 0, &[]),
-    }
-}
-
-// ---------------------------------------------------------------------------------------------
-// The interpreter
-
-#[derive(Debug, Default, Clone)]
-struct Replay {
-    /// One message per violation.
-    errors: Vec<String>,
-    /// Cutting length (output units).
-    down: f64,
-    /// Rapid / tool-off travel (output units).
-    up: f64,
-    g0: usize,
-    arcs: usize,
-    cuts: usize,
-    /// Cutting moves as segments (arcs as their chord) for geometry checks.
-    segments: Vec<[[f64; 2]; 2]>,
-    /// Every position reached (x0, y0, x1, y1).
-    bounds: [f64; 4],
-    /// Every position reached with the tool on, arc extremes included.
-    drawn: [f64; 4],
-    /// At each program pause (`M0`, `M1`: a pen change), the number of cutting segments so far.
-    pauses: Vec<usize>,
-}
-
-/// A plain decimal: `-?\d+(\.\d+)?` with exactly `decimals` decimals when given.
-fn plain(num: &str, decimals: Option<usize>) -> bool {
-    let body = num.strip_prefix('-').unwrap_or(num);
-    let (int, frac) = match body.split_once('.') {
-        Some((i, f)) => (i, Some(f)),
-        None => (body, None),
-    };
-    let digits = |s: &str| !s.is_empty() && s.bytes().all(|b| b.is_ascii_digit());
-    if !digits(int) || frac.is_some_and(|f| !digits(f)) {
-        return false;
-    }
-    if num.starts_with('-') && body.bytes().all(|b| b == b'0' || b == b'.') {
-        return false; // -0
-    }
-    match decimals {
-        Some(d) => frac.map_or(0, str::len) == d,
-        None => true,
-    }
-}
-
-/// Checks the raw text of every line, independently of the parser: words are a letter and a
-/// plain number; coordinates have exactly `decimals` decimals.
-fn check_numbers(text: &str, decimals: usize, errors: &mut Vec<String>) {
-    for (n, raw) in text.lines().enumerate() {
-        let line = raw.split(';').next().unwrap_or("");
-        let mut chars = line.char_indices().peekable();
-        while let Some((i, c)) = chars.next() {
-            if c.is_whitespace() {
-                continue;
-            }
-            if !c.is_ascii_alphabetic() {
-                errors.push(format!("line {}: unexpected '{c}' in '{raw}'", n + 1));
-                break;
-            }
-            let start = i + c.len_utf8();
-            let mut end = start;
-            while let Some(&(j, d)) = chars.peek() {
-                if d.is_ascii_digit() || d == '.' || d == '-' || d == '+' {
-                    end = j + d.len_utf8();
-                    chars.next();
-                } else {
-                    break;
-                }
-            }
-            let num = &line[start..end];
-            let letter = c.to_ascii_uppercase();
-            let want = if matches!(letter, 'X' | 'Y' | 'I' | 'J') {
-                Some(decimals)
-            } else {
-                None
-            };
-            if !plain(num, want) {
-                errors.push(format!(
-                    "line {}: '{letter}{num}' is not a plain number with the fixed precision ({raw})",
-                    n + 1
-                ));
-            }
-        }
-    }
-}
-
-fn arc_extreme_angles(from: f64, span: f64) -> Vec<f64> {
-    let k0 = (from / FRAC_PI_2).ceil() as i64;
-    let k1 = ((from + span) / FRAC_PI_2).floor() as i64;
-    (k0..=k1).map(|k| k as f64 * FRAC_PI_2).collect()
-}
-
-fn replay(text: &str, p: &Profile) -> Replay {
-    let empty = [f64::INFINITY, f64::INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY];
-    let mut r = Replay {
-        bounds: empty,
-        drawn: empty,
-        ..Replay::default()
-    };
-    check_numbers(text, p.decimals, &mut r.errors);
-    let prog = match gcode::parse(text) {
-        Ok(p) => p,
-        Err(e) => {
-            r.errors.push(format!("does not parse: {e:?}"));
-            return r;
-        }
-    };
-    let eps = 1e-9;
-    let [bx0, by0, bx1, by1] = p.bed;
-    let mut pos = [0.0f64, 0.0];
-    let mut motion: Option<u32> = None;
-    let mut feed: Option<f64> = None;
-    let mut spindle = false;
-    let mut s_word = 0.0f64;
-    // Unknown at the start: assume the worst (down) for pens, off for a laser (GRBL boots off).
-    let mut z = f64::NEG_INFINITY;
-    let mut servo_s: Option<f64> = None;
-    let tool_on = |spindle: bool, s: f64, z: f64, servo_s: Option<f64>| match p.tool {
-        ToolModel::Laser => spindle && s > 0.0,
-        ToolModel::Servo { up } => !(servo_s == Some(up) || (!spindle && servo_s.is_some())),
-        ToolModel::Z { up } => z < up - 1e-9,
-    };
-    for (n, b) in prog.blocks.iter().enumerate() {
-        let line = n + 1;
-        let mut words: Vec<(char, f64)> = Vec::new();
-        let mut codes: Vec<(char, u32)> = Vec::new();
-        for c in &b.codes {
-            let (letter, num, args) = code_parts(c);
-            codes.push((letter, num));
-            for a in args {
-                let raw = &text[a.span.start..a.span.start + a.span.length];
-                let v = raw[1..].trim().parse::<f64>().unwrap_or(f64::NAN);
-                words.push((a.letter.to_ascii_uppercase(), v));
-            }
-        }
-        for w in &b.word_addresses {
-            let raw = &text[w.span.start..w.span.start + w.span.length];
-            words.push((w.letter.to_ascii_uppercase(), raw[1..].trim().parse::<f64>().unwrap_or(f64::NAN)));
-        }
-        let word = |l: char| words.iter().find(|w| w.0 == l).map(|w| w.1);
-        for &(l, num) in &codes {
-            match (l, num) {
-                ('G', 0..=3) => motion = Some(num),
-                ('M', 3) | ('M', 4) => {
-                    spindle = true;
-                    if let Some(s) = word('S') {
-                        servo_s = Some(s);
-                    }
-                }
-                ('M', 5) | ('M', 2) | ('M', 30) => spindle = false,
-                ('M', 0) | ('M', 1) => {
-                    if tool_on(spindle, s_word, z, servo_s) {
-                        r.errors.push(format!("line {line}: a pause with the tool on"));
-                    }
-                    r.pauses.push(r.segments.len());
-                }
-                _ => {}
-            }
-        }
-        if let Some(f) = word('F') {
-            feed = Some(f);
-        }
-        if let Some(s) = word('S') {
-            s_word = s;
-        }
-        let moves_xy = word('X').is_some() || word('Y').is_some();
-        let moves_z = word('Z').is_some();
-        let dwell = codes.contains(&('G', 4));
-        if dwell || !(moves_xy || moves_z) {
-            continue;
-        }
-        let Some(m) = motion else {
-            r.errors.push(format!("line {line}: a move without a motion mode"));
-            continue;
-        };
-        let on = tool_on(spindle, s_word, z, servo_s);
-        if m >= 1 && feed.is_none() {
-            r.errors.push(format!("line {line}: G{m} before any feed was set"));
-        }
-        if let Some(zz) = word('Z') {
-            z = zz;
-        }
-        if !moves_xy {
-            continue;
-        }
-        let to = [word('X').unwrap_or(pos[0]), word('Y').unwrap_or(pos[1])];
-        if !(to[0].is_finite() && to[1].is_finite()) {
-            r.errors.push(format!("line {line}: a coordinate is not a number"));
-            continue;
-        }
-        let visit = |q: [f64; 2], what: &str, r: &mut Replay| {
-            r.bounds = [
-                r.bounds[0].min(q[0]),
-                r.bounds[1].min(q[1]),
-                r.bounds[2].max(q[0]),
-                r.bounds[3].max(q[1]),
-            ];
-            if on {
-                r.drawn = [
-                    r.drawn[0].min(q[0]),
-                    r.drawn[1].min(q[1]),
-                    r.drawn[2].max(q[0]),
-                    r.drawn[3].max(q[1]),
-                ];
-            }
-            if q[0] < bx0 - eps || q[0] > bx1 + eps || q[1] < by0 - eps || q[1] > by1 + eps {
-                r.errors
-                    .push(format!("line {line}: {what} ({}, {}) is outside the bed", q[0], q[1]));
-            }
-        };
-        if on {
-            visit(pos, "start point", &mut r);
-        }
-        visit(to, "end point", &mut r);
-        let len = (to[0] - pos[0]).hypot(to[1] - pos[1]);
-        match m {
-            0 => {
-                r.g0 += 1;
-                if on {
-                    r.errors.push(format!("line {line}: G0 with the tool on"));
-                }
-                r.up += len;
-            }
-            1 => {
-                if on {
-                    r.down += len;
-                    r.cuts += 1;
-                    r.segments.push([pos, to]);
-                } else {
-                    r.up += len;
-                }
-            }
-            _ => {
-                let (i, j) = (word('I').unwrap_or(0.0), word('J').unwrap_or(0.0));
-                let c = [pos[0] + i, pos[1] + j];
-                let rad = i.hypot(j);
-                let rad_end = (to[0] - c[0]).hypot(to[1] - c[1]);
-                if (rad - rad_end).abs() > 0.005_f64.max(rad * 1e-3) {
-                    r.errors
-                        .push(format!("line {line}: arc radius {rad} at the start, {rad_end} at the end"));
-                }
-                let a0 = (pos[1] - c[1]).atan2(pos[0] - c[0]);
-                let a1 = (to[1] - c[1]).atan2(to[0] - c[0]);
-                let full = to == pos;
-                let ccw = m == 3;
-                let span = if full {
-                    TAU
-                } else if ccw {
-                    (a1 - a0).rem_euclid(TAU)
-                } else {
-                    (a0 - a1).rem_euclid(TAU)
-                };
-                let from = if ccw || full { a0 } else { a1 };
-                for a in arc_extreme_angles(from, span) {
-                    visit([c[0] + rad * a.cos(), c[1] + rad * a.sin()], "arc extreme", &mut r);
-                }
-                r.arcs += 1;
-                if on {
-                    r.down += rad * span;
-                    r.cuts += 1;
-                    r.segments.push([pos, to]);
-                } else {
-                    r.up += rad * span;
-                }
-            }
-        }
-        pos = to;
-    }
-    if tool_on(spindle, s_word, z, servo_s) {
-        r.errors.push("the tool is on at the end of the program".into());
-    }
-    r
-}
-
-fn assert_safe(text: &str, p: &Profile, what: &str) -> Replay {
-    let r = replay(text, p);
-    assert!(
-        r.errors.is_empty(),
-        "{what}: {} violations, first: {:?}",
-        r.errors.len(),
-        &r.errors[..r.errors.len().min(5)]
-    );
-    assert!(r.cuts > 0, "{what}: nothing drawn");
-    r
 }
 
 fn gcode_to(d: &Path, name: &str, args: &[&str]) -> (String, Out) {
@@ -437,7 +76,7 @@ fn checkers_fail_on_broken_programs() {
     }
     // Pens: a servo angle other than the up angle is down; a Z below the up height is down.
     let servo = Profile {
-        tool: ToolModel::Servo { up: 30.0 },
+        tool: ToolModel::servo(30.0),
         ..laser.clone()
     };
     let pen = "G90\nM3 S30\nG0 X10.000 Y10.000\nM3 S90\nG1 X20.000 Y10.000 F1000\nM3 S30\nG0 X0.000 Y0.000\nM2\n";
@@ -455,7 +94,7 @@ fn checkers_fail_on_broken_programs() {
         .iter()
         .any(|e| e.contains("G0 with the tool on")));
     let zpen = Profile {
-        tool: ToolModel::Z { up: 3.0 },
+        tool: ToolModel::z_lift(3.0),
         ..laser
     };
     let zp = "G90\nG0 Z3.000\nG0 X10.000 Y10.000\nG1 Z0.000 F600\nG1 X20.000 Y10.000 F1000\nG0 Z3.000\nG0 X0.000 Y0.000\n";
@@ -471,6 +110,55 @@ fn checkers_fail_on_broken_programs() {
             .any(|e| e.contains("G0 with the tool on")),
         "pen state unknown at start counts as down"
     );
+    // What a controller refuses: a Z lift left in arc mode (no centre), a word twice on a
+    // line, a comment left open.
+    let arc = "G90\nG0 Z3.000\nG0 X10.000 Y10.000\nG1 Z0.000 F600\nG2 X20.000 Y10.000 I5.000 J0.000\nZ3.000\nG0 X0.000 Y0.000\n";
+    let errs = replay(arc, &zpen).errors;
+    assert!(errs.iter().any(|e| e.contains("arc mode")), "{errs:?}");
+    assert!(replay(&zp.replace("G0 Z3.000\nG0 X0", "G0 Z3.000 Z5.000\nG0 X0"), &zpen)
+        .errors
+        .iter()
+        .any(|e| e.contains("comes twice")));
+    assert!(replay(&zp.replace("G0 Z3.000\nG0 X0", "G0 Z3.000 (up\nG0 X0"), &zpen)
+        .errors
+        .iter()
+        .any(|e| e.contains("comment left open")));
+    assert!(replay(&zp.replace("G0 Z3.000\nG0 X0", "G0 Z3.000 (up)\nG0 X0"), &zpen)
+        .errors
+        .is_empty());
+    // A pen between its positions is down: a servo between its angles, a Z below the down Z.
+    let servo2 = Profile {
+        tool: ToolModel::Pen {
+            z: None,
+            s: Some(30.0),
+            spindle_off: false,
+            z_down: None,
+            s_down: Some(90.0),
+        },
+        ..zpen.clone()
+    };
+    assert!(replay(&pen.replace("M3 S30\nG0 X0", "M3 S10\nG0 X0"), &servo2).errors.is_empty());
+    assert!(replay(&pen.replace("M3 S30\nG0 X0", "M3 S37\nG0 X0"), &servo2)
+        .errors
+        .iter()
+        .any(|e| e.contains("G0 with the tool on")));
+    let zpen2 = Profile {
+        tool: ToolModel::Pen {
+            z: Some(3.0),
+            s: None,
+            spindle_off: false,
+            z_down: Some(0.0),
+            s_down: None,
+        },
+        ..zpen
+    };
+    assert!(replay(&zp.replace("G0 Z3.000\nG0 X0", "G0 Z1.000\nG0 X0"), &zpen2)
+        .errors
+        .is_empty());
+    assert!(replay(&zp.replace("G0 Z3.000\nG0 X0", "G1 Z-1.000\nG0 X0"), &zpen2)
+        .errors
+        .iter()
+        .any(|e| e.contains("G0 with the tool on")));
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -845,8 +533,22 @@ fn machines_lists_and_shows_profiles() {
     }
     let laser = builtin_profile(d, "grbl-laser").0;
     assert_eq!(laser.tool, ToolModel::Laser);
-    assert_eq!(builtin_profile(d, "grbl-servo-pen").0.tool, ToolModel::Servo { up: 30.0 });
-    assert_eq!(builtin_profile(d, "z-lift-pen").0.tool, ToolModel::Z { up: 3.0 });
+    let servo = ToolModel::Pen {
+        z: None,
+        s: Some(30.0),
+        spindle_off: false,
+        z_down: None,
+        s_down: Some(90.0),
+    };
+    assert_eq!(builtin_profile(d, "grbl-servo-pen").0.tool, servo);
+    let z = ToolModel::Pen {
+        z: Some(3.0),
+        s: None,
+        spindle_off: false,
+        z_down: Some(0.0),
+        s_down: None,
+    };
+    assert_eq!(builtin_profile(d, "z-lift-pen").0.tool, z);
     // `show FILE.toml` checks a profile and prints it back as TOML that loads again.
     let shown = String::from_utf8_lossy(&zf_ok(d, &["machines", "show", "copy.toml"]).stdout).into_owned();
     std::fs::write(d.join("again.toml"), &shown).unwrap_or_else(|e| panic!("{e}"));

@@ -7,7 +7,8 @@ use crate::error::CliError;
 use crate::model::doc::{kind_name, FillDoc, ParamsDoc, ShapeDoc, ShapeParamsDoc, StatsDoc};
 use crate::output;
 use crate::plan::fill::{
-    first_shape_error, first_two_error, halt_advice, param_error, too_small_error, FillDraw, FillPlan, FillRun, SHAPES,
+    first_shape_error, first_two_error, fixed_outline_error, halt_advice, param_error, too_small_error, FillDraw, FillPlan, FillRun,
+    FIXED_MAX_VERTICES, SHAPES,
 };
 use crate::plan::format::Format;
 use crate::plan::raster::{height_map_error, png_error};
@@ -79,6 +80,11 @@ fn run_engine<S: zetafill::Scalar>(
     stop: &Stop,
     cap: usize,
 ) -> Result<EngineRun, CliError> {
+    if let Region::Polygon(p) = &region {
+        if !S::IS_F64 && p.points().len() > FIXED_MAX_VERTICES {
+            return Err(fixed_outline_error(p.points().len()));
+        }
+    }
     // Before the storage is allocated: a run that reaches shapes the scalar cannot resolve
     // may ask for millions.
     zetafill::check_smallest::<S>(sequence, &params.shape, stop, cap as u64).map_err(|e| too_small_error(e, stop))?;

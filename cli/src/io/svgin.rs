@@ -7,6 +7,13 @@
 //! Coordinates are rounded to 1e-4 mm (usvg computes in f32). Curves are flattened so that no chord is longer than 0.5 mm, with at least 8 pieces per
 //! curve. Rings inside other rings are holes (the even-odd rule). Subpaths that are not
 //! closed are ignored; a file with none is an error.
+//!
+//! The work is bounded whatever the file holds: a compressed file (SVGZ) is expanded to at
+//! most the size of an uncompressed one; a number beyond [`MAX_NUMBER`] in path data, radii
+//! or styles is refused before usvg sees it (usvg turns an arc into a number of curves
+//! that grows with its radius, without end near the largest numbers); and the outline stops
+//! at [`MAX_VERTICES`] vertices in [`MAX_RINGS`] rings (the core checks an outline through a
+//! tree of its edges, in a time that grows as E log E: well under a second at the limits).
 
 use resvg::usvg;
 use std::path::Path;
@@ -14,6 +21,20 @@ use zetafill::Point;
 
 const MM_PER_PX: f64 = 25.4 / 96.0;
 const MAX_CHORD_MM: f64 = 0.5;
+
+/// Largest number (in absolute value) in a file's path data (`d`), radii (`r`, `rx`, `ry`)
+/// and styles: a billion user units, a thousand kilometres at 1 mm per unit.
+pub const MAX_NUMBER: f64 = 1e9;
+
+/// Farthest an outline's vertex may lie from the origin on either axis, in mm once its
+/// transforms are applied (a kilometre, as for `--region polygon:`).
+pub const MAX_COORDINATE_MM: f64 = 1_000_000.0;
+
+/// Most vertices of an outline, its curves flattened.
+pub const MAX_VERTICES: usize = 250_000;
+
+/// Most rings (closed subpaths) of an outline.
+pub const MAX_RINGS: usize = 25_000;
 
 /// Why a file holds no outline. The caller says which flag named the file.
 #[derive(Debug)]
@@ -24,18 +45,44 @@ pub enum OutlineError {
     Svg(usvg::Error),
     /// The file has no closed path.
     NoClosedPath,
+    /// A number of the geometry (as written, shortened) is beyond [`MAX_NUMBER`].
+    Number(String),
+    /// A vertex lies beyond [`MAX_COORDINATE_MM`] (or is not finite) once transformed: the
+    /// coordinate, in mm.
+    Far(f64),
+    /// The outline has more than [`MAX_VERTICES`] vertices.
+    TooManyVertices,
+    /// The outline has more than [`MAX_RINGS`] rings.
+    TooManyRings,
 }
 
 /// Rings of the outline: vertices, ring after ring, and the exclusive end of each ring.
 pub fn read_outline(path: &Path) -> Result<(Vec<Point<f64>>, Vec<usize>), OutlineError> {
-    let data = crate::io::read::read_limited(path, crate::io::read::MAX_SVG_BYTES, "an SVG outline").map_err(OutlineError::Read)?;
+    let mut data = crate::io::read::read_limited(path, crate::io::read::MAX_SVG_BYTES, "an SVG outline").map_err(OutlineError::Read)?;
+    if data.starts_with(&[0x1f, 0x8b]) {
+        data = gunzip(&data)?;
+    }
+    if let Ok(text) = std::str::from_utf8(&data) {
+        check_numbers(text)?;
+    }
     let tree = usvg::Tree::from_data(&data, &usvg::Options::default()).map_err(OutlineError::Svg)?;
     let height = f64::from(tree.size().height());
     let mut rings: Vec<Vec<Point<f64>>> = Vec::new();
-    collect(tree.root(), height, &mut rings);
+    let mut left = MAX_VERTICES;
+    collect(tree.root(), height, &mut rings, &mut left)?;
     rings.retain(|r| r.len() >= 3);
+    if rings.len() > MAX_RINGS {
+        return Err(OutlineError::TooManyRings);
+    }
     if rings.is_empty() {
         return Err(OutlineError::NoClosedPath);
+    }
+    if let Some(p) = rings
+        .iter()
+        .flatten()
+        .find(|p| !(p.x.abs() <= MAX_COORDINATE_MM && p.y.abs() <= MAX_COORDINATE_MM))
+    {
+        return Err(OutlineError::Far(if p.x.abs() <= MAX_COORDINATE_MM { p.y } else { p.x }));
     }
     let mut points = Vec::new();
     let mut ends = Vec::new();
@@ -46,17 +93,106 @@ pub fn read_outline(path: &Path) -> Result<(Vec<Point<f64>>, Vec<usize>), Outlin
     Ok((points, ends))
 }
 
-fn collect(group: &usvg::Group, height: f64, rings: &mut Vec<Vec<Point<f64>>>) {
+/// An SVGZ file expanded, to at most [`crate::io::read::MAX_SVG_BYTES`].
+fn gunzip(data: &[u8]) -> Result<Vec<u8>, OutlineError> {
+    use std::io::Read;
+    let limit = crate::io::read::MAX_SVG_BYTES;
+    let mut out = Vec::new();
+    flate2::read::GzDecoder::new(data)
+        .take(limit + 1)
+        .read_to_end(&mut out)
+        .map_err(|_| OutlineError::Svg(usvg::Error::MalformedGZip))?;
+    if out.len() as u64 > limit {
+        return Err(OutlineError::Read(std::io::Error::other(format!(
+            "it expands to more than {} MiB, the most an SVG outline may be",
+            limit >> 20
+        ))));
+    }
+    Ok(out)
+}
+
+/// Refuses a number beyond [`MAX_NUMBER`] in path data, radii and styles (text that is not
+/// XML is left to usvg to refuse).
+fn check_numbers(text: &str) -> Result<(), OutlineError> {
+    let opt = usvg::roxmltree::ParsingOptions {
+        allow_dtd: true,
+        ..Default::default()
+    };
+    let Ok(doc) = usvg::roxmltree::Document::parse_with_options(text, opt) else {
+        return Ok(());
+    };
+    for node in doc.descendants() {
+        for a in node.attributes() {
+            if matches!(a.name(), "d" | "r" | "rx" | "ry" | "style") {
+                too_large(a.value())?;
+            }
+        }
+        if node.has_tag_name("style") {
+            for t in node.children().filter_map(|c| c.text()) {
+                too_large(t)?;
+            }
+        }
+    }
+    Ok(())
+}
+
+/// The first number of `text` beyond [`MAX_NUMBER`] (or not finite), as an error.
+fn too_large(text: &str) -> Result<(), OutlineError> {
+    let b = text.as_bytes();
+    let mut i = 0;
+    while i < b.len() {
+        let digit = |k: usize| b.get(k).is_some_and(u8::is_ascii_digit);
+        if !(digit(i) || (b[i] == b'.' && digit(i + 1))) {
+            i += 1;
+            continue;
+        }
+        let start = i;
+        while digit(i) || b.get(i) == Some(&b'.') {
+            i += 1;
+        }
+        if matches!(b.get(i), Some(b'e' | b'E')) {
+            let j = if matches!(b.get(i + 1), Some(b'+' | b'-')) { i + 2 } else { i + 1 };
+            if digit(j) {
+                i = j;
+                while digit(i) {
+                    i += 1;
+                }
+            }
+        }
+        let num = text.get(start..i).unwrap_or("");
+        // A second '.' starts the next number ("1.5.5" is 1.5 and .5): parse the longest
+        // prefix that reads.
+        let value = (1..=num.len()).rev().find_map(|k| num.get(..k).and_then(|p| p.parse::<f64>().ok()));
+        if value.is_some_and(|v| v.is_nan() || v.abs() > MAX_NUMBER) {
+            let shown: String = num.chars().take(24).collect();
+            return Err(OutlineError::Number(if shown.len() < num.len() {
+                format!("{shown}...")
+            } else {
+                shown
+            }));
+        }
+    }
+    Ok(())
+}
+
+fn collect(group: &usvg::Group, height: f64, rings: &mut Vec<Vec<Point<f64>>>, left: &mut usize) -> Result<(), OutlineError> {
     for node in group.children() {
         match node {
-            usvg::Node::Group(g) => collect(g, height, rings),
-            usvg::Node::Path(p) => flatten(p, height, rings),
+            usvg::Node::Group(g) => collect(g, height, rings, left)?,
+            usvg::Node::Path(p) => flatten(p, height, rings, left)?,
             _ => {}
         }
     }
+    Ok(())
 }
 
-fn flatten(p: &usvg::Path, height: f64, rings: &mut Vec<Vec<Point<f64>>>) {
+/// Takes `n` vertices from the budget `left`.
+fn spend(left: &mut usize, n: usize) -> Result<(), OutlineError> {
+    *left = left.checked_sub(n).ok_or(OutlineError::TooManyVertices)?;
+    Ok(())
+}
+
+fn flatten(p: &usvg::Path, height: f64, rings: &mut Vec<Vec<Point<f64>>>, left: &mut usize) -> Result<(), OutlineError> {
     let ts = p.abs_transform();
     let map = |x: f32, y: f32| {
         let (x, y) = (f64::from(x), f64::from(y));
@@ -91,16 +227,19 @@ fn flatten(p: &usvg::Path, height: f64, rings: &mut Vec<Vec<Point<f64>>>) {
             S::MoveTo(a) => {
                 let open_closed = cur.len() >= 3 && cur.first() == cur.last();
                 push_ring(rings, &mut cur, open_closed);
+                spend(left, 1)?;
                 last = map(a.x, a.y);
                 cur.push(last);
             }
             S::LineTo(a) => {
+                spend(left, 1)?;
                 last = map(a.x, a.y);
                 cur.push(last);
             }
             S::QuadTo(b, c) => {
                 let (b, c) = (map(b.x, b.y), map(c.x, c.y));
                 let n = pieces(&[last, b, c]);
+                spend(left, n)?;
                 for k in 1..=n {
                     let t = k as f64 / n as f64;
                     let u = 1.0 - t;
@@ -114,6 +253,7 @@ fn flatten(p: &usvg::Path, height: f64, rings: &mut Vec<Vec<Point<f64>>>) {
             S::CubicTo(b, c, d) => {
                 let (b, c, d) = (map(b.x, b.y), map(c.x, c.y), map(d.x, d.y));
                 let n = pieces(&[last, b, c, d]);
+                spend(left, n)?;
                 for k in 1..=n {
                     let t = k as f64 / n as f64;
                     let u = 1.0 - t;
@@ -134,6 +274,7 @@ fn flatten(p: &usvg::Path, height: f64, rings: &mut Vec<Vec<Point<f64>>>) {
     }
     let open_closed = cur.len() >= 3 && cur.first() == cur.last();
     push_ring(rings, &mut cur, open_closed);
+    Ok(())
 }
 
 /// Pieces for a curve with this control polygon: chords of at most 0.5 mm, at least 8.
@@ -143,4 +284,71 @@ fn pieces(ctrl: &[Point<f64>]) -> usize {
         .map(|w| ((w[1].x - w[0].x).powi(2) + (w[1].y - w[0].y).powi(2)).sqrt())
         .sum();
     ((len / MAX_CHORD_MM).ceil() as usize).clamp(8, 10_000)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn outline(svg: &str) -> Result<usize, OutlineError> {
+        let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
+        let p = dir.path().join("a.svg");
+        std::fs::write(&p, svg).unwrap_or_else(|e| panic!("{e}"));
+        read_outline(&p).map(|(points, _)| points.len())
+    }
+
+    fn doc(body: &str) -> String {
+        format!("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"100mm\" height=\"100mm\" viewBox=\"0 0 100 100\">{body}</svg>")
+    }
+
+    /// Found by the fuzz targets (cli/tests/fuzz.rs): one arc of radius 1e60 in a 150-byte
+    /// file made usvg build curves without end (9 GB in 20 s), and one of radius 1e20 gave
+    /// millions of vertices.
+    #[test]
+    fn huge_radii_and_endless_curves_are_refused() {
+        for big in [
+            "M0,0 A1e60 1e60 0 0 1 1e60 0 L0,50 Z",
+            "M0,0 A1e20 1e20 0 0 1 1e20 0 L0,50 Z",
+            "M0,0 L1e999,0 L0,50 Z",
+        ] {
+            let e = outline(&doc(&format!("<path d=\"{big}\"/>")));
+            assert!(matches!(e, Err(OutlineError::Number(_))), "{big}: {e:?}");
+        }
+        let e = outline(&doc("<circle cx=\"50\" cy=\"50\" r=\"3e38\"/>"));
+        assert!(matches!(e, Err(OutlineError::Number(_))), "{e:?}");
+        let e = outline(&doc("<ellipse cx=\"50\" cy=\"50\" style=\"rx: 1e30px\" ry=\"4\"/>"));
+        assert!(matches!(e, Err(OutlineError::Number(_))), "{e:?}");
+        // Within the limit, a large curve stops at the vertex budget.
+        let curves: String = (0..30).map(|k| format!("M{k},0 C1e5,1e5 -1e5,1e5 {k},1 Z ")).collect();
+        let e = outline(&doc(&format!("<path d=\"{curves}\"/>")));
+        assert!(matches!(e, Err(OutlineError::TooManyVertices)), "{e:?}");
+        // Rings are counted too.
+        let many: String = (0..=MAX_RINGS).map(|k| format!("M{0},1 L{0}.5,1 L{0},2 Z ", k % 90)).collect();
+        let e = outline(&doc(&format!("<path d=\"{many}\"/>")));
+        assert!(matches!(e, Err(OutlineError::TooManyRings)), "{e:?}");
+        // A transform can carry small numbers far: the outline is measured once transformed.
+        let e = outline(&doc("<path d=\"M10,10 L90,10 L50,80 Z\" transform=\"matrix(1e30,0,0,1,0,0)\"/>"));
+        assert!(matches!(e, Err(OutlineError::Far(_))), "{e:?}");
+        let e = outline(&doc("<g transform=\"scale(20000)\"><path d=\"M10,10 L90,10 L50,80 Z\"/></g>"));
+        assert!(matches!(e, Err(OutlineError::Far(_))), "{e:?}");
+        // Ordinary numbers pass: exponents, signs, a number run into the next.
+        assert_eq!(outline(&doc("<path d=\"M10,10 L9e1,1e1 L50-5e-1.5,80Z\"/>")).ok(), Some(4));
+    }
+
+    #[test]
+    fn compressed_files_expand_to_the_limit() {
+        use std::io::Write;
+        let mut gz = flate2::write::GzEncoder::new(Vec::new(), flate2::Compression::fast());
+        gz.write_all(doc("<rect x=\"10\" y=\"10\" width=\"50\" height=\"50\"/>").as_bytes())
+            .unwrap_or_else(|e| panic!("{e}"));
+        let small = gz.finish().unwrap_or_else(|e| panic!("{e}"));
+        assert!(gunzip(&small).is_ok());
+        let mut gz = flate2::write::GzEncoder::new(Vec::new(), flate2::Compression::fast());
+        let zeros = vec![b' '; 1 << 20];
+        for _ in 0..=(crate::io::read::MAX_SVG_BYTES >> 20) {
+            gz.write_all(&zeros).unwrap_or_else(|e| panic!("{e}"));
+        }
+        let bomb = gz.finish().unwrap_or_else(|e| panic!("{e}"));
+        assert!(matches!(gunzip(&bomb), Err(OutlineError::Read(_))));
+    }
 }

@@ -290,6 +290,21 @@ pub fn resolve_as(a: &FillArgs, format: Format) -> Result<(FillRun, FillDraw), C
     Ok((run, draw))
 }
 
+/// Most vertices of a polygon region on `--scalar fixed`: its region tests visit every edge on
+/// every trial (the edge tree's pruning is proven for `f64` rounding only), so a fill's time
+/// grows with the outline (about 80 s for 2,000 circles at the limit).
+pub const FIXED_MAX_VERTICES: usize = 10_000;
+
+/// The refusal of an outline too large for `--scalar fixed`.
+pub fn fixed_outline_error(vertices: usize) -> CliError {
+    CliError::arg(
+        "--scalar",
+        format!(
+            "--scalar fixed tests every edge of the outline on every trial, and this outline has {vertices} vertices (at most {FIXED_MAX_VERTICES}); simplify the outline or use --scalar f64"
+        ),
+    )
+}
+
 /// Names the flag behind a core parameter error.
 pub fn param_error(e: ParamError) -> CliError {
     let flag = match e {

@@ -6,6 +6,7 @@
 #![allow(dead_code)]
 
 pub mod geometry;
+pub mod safety;
 pub mod svgread;
 pub mod voronoi;
 

@@ -6,7 +6,7 @@
 use crate::error::CliError;
 use crate::model::doc::RegionDoc;
 use crate::model::region::RegionSpec;
-use crate::plan::region::{not_periodic, outline_error, polygon_error};
+use crate::plan::region::{area_too_small, not_periodic, outline_error, polygon_error};
 use zetafill::{Point, PolygonRegion, Region};
 
 /// A region resolved from its flag: owns the outline vertices the core borrows.
@@ -34,7 +34,7 @@ impl RegionData {
         if periodic && !matches!(self.spec, RegionSpec::Rect { .. }) {
             return Err(not_periodic());
         }
-        Ok(match &self.spec {
+        let region = match &self.spec {
             RegionSpec::Rect { width, height } => Region::Rect {
                 width: *width,
                 height: *height,
@@ -47,7 +47,13 @@ impl RegionData {
             },
             RegionSpec::Polygon { points, ends } => Region::Polygon(polygon(points, ends, scratch).map_err(polygon_error)?),
             RegionSpec::Svg(_) => return Err(CliError::Io("internal: SVG region not loaded".into())),
-        })
+        };
+        // Sizes of 1e-160 mm and less give an area that rounds to nothing (or to a number
+        // without full precision), from which no shape's size can be computed.
+        if !region.area().is_normal() {
+            return Err(area_too_small(region.area()));
+        }
+        Ok(region)
     }
 
     /// The region as written in JSON.

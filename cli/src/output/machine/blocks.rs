@@ -88,6 +88,33 @@ impl Tool {
         (on.spindle.is_none() || self.spindle == on.spindle) && (on.s.is_none() || self.s == on.s) && (on.z.is_none() || self.z == on.z)
     }
 
+    /// Whether this state has the pen up, for a pen that `tool_off` alone leaves as `lift`
+    /// and `tool_on` as `on`: in everything `lift` sets, a Z above `on`'s (or at least
+    /// `lift`'s, when `on` sets none), a servo angle at `lift`'s or farther from `on`'s
+    /// (or the spindle off once an angle is set), the spindle off if `lift` turns it off.
+    /// A pen below its down position, or a servo between its two angles, is down.
+    pub fn pen_up(&self, on: &Tool, lift: &Tool) -> bool {
+        let z_up = match (lift.z, on.z) {
+            (None, _) => true,
+            (Some(_), Some(down)) => self.z.is_some_and(|z| z > down),
+            (Some(up), None) => self.z.is_some_and(|z| z >= up),
+        };
+        let s_up = match lift.s {
+            None => true,
+            Some(up) => {
+                let off = self.spindle == Some(Spindle::Off) && self.s.is_some();
+                let past = |s: f64| match on.s {
+                    Some(down) if down != up => (s - down) * (up - down) >= (up - down) * (up - down),
+                    _ => s == up,
+                };
+                off || self.s.is_some_and(past)
+            }
+        };
+        let spindle_up = lift.spindle != Some(Spindle::Off) || self.spindle == Some(Spindle::Off);
+        let lifts = lift.z.is_some() || lift.s.is_some() || lift.spindle == Some(Spindle::Off);
+        lifts && z_up && s_up && spindle_up
+    }
+
     /// The words of the tool's state, for messages.
     pub fn describe(&self) -> String {
         let mut s = String::new();
@@ -125,9 +152,25 @@ pub fn printable(text: &str) -> String {
     out
 }
 
-fn strip_comment(line: &str) -> &str {
-    let line = line.split(';').next().unwrap_or("");
-    line.split('(').next().unwrap_or("")
+/// The line without its comments, as a controller reads it: `(` to the next `)` is left out
+/// and reading goes on after it; `;` ends the line. A `(` left open is refused (controllers
+/// differ on what follows it).
+fn strip_comment(line: &str) -> Result<String, String> {
+    let mut out = String::with_capacity(line.len());
+    let mut open = false;
+    for c in line.chars() {
+        match (open, c) {
+            (true, ')') => open = false,
+            (true, _) => {}
+            (false, ';') => break,
+            (false, '(') => open = true,
+            (false, c) => out.push(c),
+        }
+    }
+    if open {
+        return Err("a comment opened with '(' is not closed on its line".into());
+    }
+    Ok(out)
 }
 
 /// Placeholders a block may hold, and the value a check stands in for each.
@@ -139,7 +182,7 @@ pub fn run(kind: Kind, text: &str, power: Option<(f64, f64)>, tool: &mut Tool) -
     let field = kind.key();
     for (n, raw) in text.lines().enumerate() {
         let at = |why: String| format!("{field}, line {}: '{}': {why}", n + 1, shown(raw));
-        let mut line = strip_comment(raw).to_string();
+        let mut line = strip_comment(raw).map_err(&at)?;
         for (p, stand_in) in PLACEHOLDERS {
             if *p == "{power}" && line.contains(p) && power.is_none() {
                 return Err(format!("{field}, line {}: {{power}} needs a [power] range in the profile", n + 1));
@@ -165,6 +208,10 @@ pub fn run(kind: Kind, text: &str, power: Option<(f64, f64)>, tool: &mut Tool) -
         }
         let words = words(&line).map_err(&at)?;
         check_line(kind, &words, power).map_err(&at)?;
+        let pause = words.iter().any(|w| w.letter == 'M' && matches!(tenths(w.value), 0 | 10));
+        if pause && power.is_some() && tool.laser_fires() {
+            return Err(at("a pause with the laser on; turn it off first (M5)".into()));
+        }
         for w in &words {
             match (w.letter, tenths(w.value)) {
                 ('M', 30 | 40) => tool.spindle = Some(Spindle::On),
@@ -191,7 +238,17 @@ impl Word {
     }
 }
 
-/// The words of a line (letters upper-cased); a letter without a plain decimal is refused.
+/// Whether `v` is a plain decimal as the writer writes its own numbers: an optional `-`,
+/// digits, and optionally a `.` and digits; not a negative zero.
+fn plain(v: &str) -> bool {
+    let body = v.strip_prefix('-').unwrap_or(v);
+    let (int, frac) = body.split_once('.').unwrap_or((body, "0"));
+    let digits = |s: &str| !s.is_empty() && s.bytes().all(|b| b.is_ascii_digit());
+    digits(int) && digits(frac) && !(v.starts_with('-') && body.bytes().all(|b| b == b'0' || b == b'.'))
+}
+
+/// The words of a line (letters upper-cased); a letter not followed at once by a plain
+/// decimal ([`plain`]) is refused.
 fn words(line: &str) -> Result<Vec<Word>, String> {
     let mut out = Vec::new();
     let mut chars = line.chars().peekable();
@@ -202,9 +259,6 @@ fn words(line: &str) -> Result<Vec<Word>, String> {
         if !c.is_ascii_alphabetic() {
             return Err(format!("'{c}' does not follow a letter; a word is a letter and a plain decimal"));
         }
-        while chars.peek().is_some_and(|d| *d == ' ' || *d == '\t') {
-            chars.next();
-        }
         let mut v = String::new();
         while let Some(&d) = chars.peek() {
             if d.is_ascii_digit() || matches!(d, '.' | '-' | '+') {
@@ -214,13 +268,11 @@ fn words(line: &str) -> Result<Vec<Word>, String> {
                 break;
             }
         }
-        let plain = !v.is_empty()
-            && v.trim_start_matches(['-', '+']).chars().all(|d| d.is_ascii_digit() || d == '.')
-            && v.matches('.').count() <= 1
-            && v.chars().skip(1).all(|d| d != '-' && d != '+');
-        let value = v.parse::<f64>().ok().filter(|x| plain && x.is_finite());
+        let value = v.parse::<f64>().ok().filter(|x| plain(&v) && x.is_finite());
         let Some(value) = value else {
-            return Err(format!("'{c}{v}' is not a plain decimal number"));
+            return Err(format!(
+                "'{c}{v}' is not a letter followed at once by a plain decimal (as Z3 or S0.5: no space, no + and no -0)"
+            ));
         };
         out.push(Word {
             letter: c.to_ascii_uppercase(),
@@ -252,7 +304,8 @@ fn refused_g(g: f64) -> Option<&'static str> {
 }
 
 fn check_line(kind: Kind, words: &[Word], power: Option<(f64, f64)>) -> Result<(), String> {
-    let dwell = words.iter().any(|w| w.letter == 'G' && tenths(w.value) == 40);
+    let g = |code: i64| words.iter().any(|w| w.letter == 'G' && tenths(w.value) == code);
+    let dwell = g(40);
     for w in words {
         match w.letter {
             'G' => {
@@ -321,6 +374,29 @@ fn check_line(kind: Kind, words: &[Word], power: Option<(f64, f64)>) -> Result<(
     if dwell && !words.iter().any(|w| w.letter == 'P') {
         return Err("a G4 dwell needs its P word (seconds)".into());
     }
+    // A controller refuses a line that repeats a letter, and does nothing of what it says.
+    for (i, w) in words.iter().enumerate() {
+        if words[..i].iter().any(|o| o.letter == w.letter) {
+            return Err(format!(
+                "'{}' comes twice on the line, which a controller refuses; give each its own line",
+                w.letter
+            ));
+        }
+    }
+    // A Z alone moves in whatever mode the line before left: after an arc the controller
+    // refuses it (no centre) and the pen stays where it was.
+    if let Some(z) = words.iter().find(|w| w.letter == 'Z') {
+        if !(g(0) || g(10)) {
+            return Err(format!(
+                "'{}' needs G0 or G1 on its line (alone it moves in the mode the line before left)",
+                z.code()
+            ));
+        }
+    }
+    // The first G1 of a block may come before any feed was set: a controller refuses it.
+    if g(10) && !words.iter().any(|w| w.letter == 'F') {
+        return Err("'G1' needs its F on the same line (no feed may be set yet when the block runs)".into());
+    }
     Ok(())
 }
 
@@ -328,7 +404,7 @@ fn check_line(kind: Kind, words: &[Word], power: Option<(f64, f64)>) -> Result<(
 pub fn dwell_seconds(block: &str) -> f64 {
     let mut total = 0.0;
     for raw in block.lines() {
-        let mut line = strip_comment(raw).to_string();
+        let Ok(mut line) = strip_comment(raw) else { continue };
         for (p, stand_in) in PLACEHOLDERS {
             line = line.replace(p, stand_in);
         }
@@ -406,11 +482,33 @@ mod tests {
             (Kind::ToolOn, "M3 S9-0", "plain decimal"),
             (Kind::ToolOn, "M3 S", "plain decimal"),
             (Kind::ToolOn, "M3 S{speed}", "placeholders"),
+            // Found by the fuzz targets (cli/tests/fuzz.rs): lines a controller reads
+            // otherwise than this check did.
+            (Kind::ToolOff, "Z3.000", "needs G0 or G1"),
+            (Kind::ToolOff, "G0 Z3 Z5", "comes twice"),
+            (Kind::ToolOff, "M5 M3", "comes twice"),
+            (Kind::ToolOn, "G1 Z0", "needs its F"),
+            (Kind::ToolOff, "M5 S0 (off) X500", "X or Y"),
+            (Kind::ToolOff, "M5 S0 (off", "not closed"),
+            (Kind::ToolOff, "G0 Z 3", "at once"),
+            (Kind::ToolOn, "M3 S+5", "at once"),
+            (Kind::ToolOn, "M3 S.5", "at once"),
+            (Kind::ToolOn, "M3 S5.", "at once"),
+            (Kind::ToolOff, "M3 S-0", "at once"),
+            (Kind::Start, "M3 S500\nM0", "pause with the laser on"),
         ] {
             let e = check(kind, text).err().unwrap_or_default();
             assert!(e.contains(want), "{text:?}: expected '{want}' in '{e}'");
             assert!(e.starts_with(kind.key()), "{e}");
         }
+    }
+
+    #[test]
+    fn closed_comments_are_read_past() {
+        let t = check(Kind::ToolOff, "M5 (laser off) S0 ; done").unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!((t.spindle, t.s), (Some(Spindle::Off), Some(0.0)));
+        assert!(check(Kind::ToolOn, "G1 Z-0.5 F600 (down)\nG4 P0.1").is_ok());
+        assert_eq!(dwell_seconds("G4 P0.5 (wait)\nG4 P1 (\nM5"), 0.5);
     }
 
     #[test]
@@ -429,5 +527,30 @@ mod tests {
         };
         let up = Tool { z: Some(3.0), ..on };
         assert!(on.pen_down(&on) && !up.pen_down(&on));
+    }
+
+    /// Found by the fuzz targets (cli/tests/fuzz.rs): an `end` or `pen_change` that moved the
+    /// pen below its down position (`G1 Z-1 F100`), or a servo to an angle between up and
+    /// down, passed as "not the down state".
+    #[test]
+    fn pen_up_is_at_or_past_the_lift() {
+        let z = |v: f64| Tool {
+            z: Some(v),
+            ..Tool::default()
+        };
+        let (on, lift) = (z(0.0), z(3.0));
+        assert!(z(3.0).pen_up(&on, &lift) && z(0.5).pen_up(&on, &lift));
+        assert!(!z(0.0).pen_up(&on, &lift) && !z(-1.0).pen_up(&on, &lift) && !Tool::default().pen_up(&on, &lift));
+        let servo = |s: f64, spindle: Spindle| Tool {
+            spindle: Some(spindle),
+            s: Some(s),
+            z: None,
+        };
+        let (on, lift) = (servo(90.0, Spindle::On), servo(30.0, Spindle::On));
+        assert!(servo(30.0, Spindle::On).pen_up(&on, &lift) && servo(10.0, Spindle::On).pen_up(&on, &lift));
+        assert!(servo(90.0, Spindle::Off).pen_up(&on, &lift));
+        for down in [37.0, 90.0, 97.0] {
+            assert!(!servo(down, Spindle::On).pen_up(&on, &lift), "S{down}");
+        }
     }
 }

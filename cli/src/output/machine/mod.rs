@@ -14,6 +14,9 @@ pub use blocks::{printable, MAX_FEED, MIN_FEED};
 use blocks::{Kind, Tool};
 use serde::{Deserialize, Serialize};
 
+/// Smallest bed side (mm).
+pub const MIN_BED: f64 = 1.0;
+
 /// Largest machine profile file (bytes).
 pub const MAX_PROFILE_BYTES: u64 = 1 << 20;
 
@@ -213,11 +216,16 @@ impl Machine {
         if self.name.trim().is_empty() {
             return Err("name: must not be empty".into());
         }
+        // At least 1 mm: on a smaller bed a drawing fitted to it collapses onto a few points
+        // of the G-code's 0.001 mm grid.
         let pos = |what: &str, v: f64, max: f64| -> Result<(), String> {
-            if v.is_finite() && v > 0.0 && v <= max {
+            if v.is_finite() && (MIN_BED..=max).contains(&v) {
                 Ok(())
             } else {
-                Err(format!("{what} = {}: must be positive (at most {max})", crate::error::num(v)))
+                Err(format!(
+                    "{what} = {}: must be positive, from {MIN_BED} to {max} mm",
+                    crate::error::num(v)
+                ))
             }
         };
         pos("bed.width", self.bed.width, 100_000.0)?;
@@ -248,8 +256,8 @@ impl Machine {
                 return Err(format!(
                     "power.default = {}: must be within min {} and max {}",
                     crate::error::num(p.default),
-                    p.min,
-                    p.max
+                    crate::error::num(p.min),
+                    crate::error::num(p.max)
                 ));
             }
         }
@@ -258,7 +266,12 @@ impl Machine {
             if !(park[0] >= b.x0 && park[0] <= b.x1 && park[1] >= b.y0 && park[1] <= b.y1) {
                 return Err(format!(
                     "park = [{}, {}]: must be inside the bed (machine x {}..{}, y {}..{})",
-                    park[0], park[1], b.x0, b.x1, b.y0, b.y1
+                    crate::error::num(park[0]),
+                    crate::error::num(park[1]),
+                    b.x0,
+                    b.x1,
+                    b.y0,
+                    b.y1
                 ));
             }
         }
@@ -268,7 +281,7 @@ impl Machine {
     /// Checks every block's words, then runs the blocks in the writer's order on a model of
     /// the tool: `tool_on` must put the pen down or fire the laser, `tool_off` must undo it
     /// (a pen lifted higher than it was put down), and `pen_change` and `end` must leave the
-    /// tool off.
+    /// tool off: a laser off, a pen up as [`Tool::pen_up`] says.
     fn check_blocks(&self) -> Result<(), String> {
         let power = self.power.as_ref().map(|p| (p.min, p.max));
         let laser = power.is_some();
@@ -285,6 +298,9 @@ impl Machine {
         if self.tool_on.trim().is_empty() || self.tool_off.trim().is_empty() {
             return Err("tool_on and tool_off: must not be empty".into());
         }
+        // What tool_off alone sets: the pen is up there, or farther from where tool_on puts it.
+        let mut lift = Tool::default();
+        blocks::run(Kind::ToolOff, &self.tool_off, power, &mut lift)?;
         let mut t = Tool::default();
         blocks::run(Kind::Start, &self.start, power, &mut t)?;
         blocks::run(Kind::ToolOff, &self.tool_off, power, &mut t)?;
@@ -305,7 +321,12 @@ impl Machine {
                 off.describe()
             ));
         }
-        let fires = |s: &Tool| if laser { s.laser_fires() } else { s.pen_down(&on) };
+        if let (false, Some(down), Some(up)) = (laser, on.z, lifted.z) {
+            if up <= down {
+                return Err(format!("tool_off: lifts the pen to Z{up}, which is not above tool_on's Z{down}"));
+            }
+        }
+        let fires = |s: &Tool| if laser { s.laser_fires() } else { !s.pen_up(&on, &lift) };
         if fires(&lifted) {
             return Err(format!(
                 "tool_off: must {} ; after it the tool is still on ({})",
@@ -313,10 +334,11 @@ impl Machine {
                 lifted.describe()
             ));
         }
-        if let (false, Some(down), Some(up)) = (laser, on.z, lifted.z) {
-            if up <= down {
-                return Err(format!("tool_off: lifts the pen to Z{up}, which is not above tool_on's Z{down}"));
-            }
+        if fires(&off) {
+            return Err(format!(
+                "start and tool_off: leave the tool on for the first travel ({})",
+                off.describe()
+            ));
         }
         for (kind, text) in [(Kind::PenChange, &self.pen_change), (Kind::End, &self.end)] {
             let mut s = lifted;
@@ -468,7 +490,7 @@ mod tests {
                 z.replace("tool_on = \"\"\"\nG1 Z0.000 F600", "tool_on = \"\"\"\nG4 P0.1"),
                 "tool_on and tool_off: leave the tool the same",
             ),
-            (z.replace("G0 Z3.000\nM2", "G1 Z0.000\nM2"), "end: must leave the tool off"),
+            (z.replace("G0 Z3.000\nM2", "G1 Z0.000 F600\nM2"), "end: must leave the tool off"),
         ];
         for (text, want) in cases {
             assert_ne!(text, laser);

@@ -1,0 +1,37 @@
+//! Wavefront OBJ of solids: one object (`o solid_K`, K from 1) per solid, its vertices and
+//! faces (1-based, counter-clockwise seen from outside). Coordinates are the same 32-bit floats
+//! the STL holds, written in their shortest round-trip form, so both files carry the same
+//! points and every mesh stays inside its solid ([`MeshOptions::for_scene`]). Deterministic.
+
+use super::mesh::{each_mesh, MeshOptions};
+use super::stl::{to_f32, StlError};
+use crate::model::solid::Solid;
+use std::io::Write;
+
+/// Writes the solids as OBJ text to `out`.
+pub fn write(solids: &[Solid], opt: &MeshOptions, out: &mut impl Write) -> Result<(), StlError> {
+    let mut text = String::from("# zetafill: solids of a 3D fractal fill, mm\n");
+    let mut base: u64 = 1;
+    each_mesh(solids, opt, |i, m| {
+        use std::fmt::Write as _;
+        let _ = writeln!(text, "o solid_{}", i + 1);
+        for v in &m.vertices {
+            let [x, y, z] = to_f32(*v).map(|c| if c == 0.0 { 0.0 } else { c });
+            let _ = writeln!(text, "v {x} {y} {z}");
+        }
+        for t in &m.triangles {
+            let [a, b, c] = t.map(|k| base + u64::from(k));
+            let _ = writeln!(text, "f {a} {b} {c}");
+        }
+        base += m.vertices.len() as u64;
+    })
+    .map_err(StlError::Mesh)?;
+    out.write_all(text.as_bytes()).map_err(|e| StlError::Io(e.to_string()))
+}
+
+/// The solids as OBJ bytes.
+pub fn to_bytes(solids: &[Solid], opt: &MeshOptions) -> Result<Vec<u8>, StlError> {
+    let mut v = Vec::new();
+    write(solids, opt, &mut v)?;
+    Ok(v)
+}

@@ -1,7 +1,8 @@
 //! A shaded picture of solids as PNG, from our own small ray caster.
 //!
 //! The camera looks at the region's centre from a fixed oblique direction (from the front
-//! right, above: towards `-(1, -1.5, 1.1)`), far enough to see the whole region, in perspective.
+//! right, above: towards `-(1, -1.5, 1.1)`), three times the radius of a ball holding the region
+//! away, in perspective, framing that ball.
 //! Each ray meets the solids exactly: spheres and shells (seen from outside, a shell is its
 //! outer sphere) by the quadratic, cubes and regular polyhedra by clipping the ray against
 //! their face planes, bead tori as their balls, and smooth tori by sphere tracing with the
@@ -386,7 +387,11 @@ pub fn pixels(solids: &[Solid], region: &Region3, opt: &RenderOptions) -> Result
     let scene = Scene::new(solids, |s| visible(s, region, opt.cut));
     let (lo, hi) = region.bounds();
     let centre = scale(add(lo, hi), 0.5);
-    let radius = 0.5 * norm(sub(hi, lo));
+    // The radius of a ball that holds the region: the camera frames it.
+    let radius = match *region {
+        Region3::Ball { r } => r,
+        _ => 0.5 * norm(sub(hi, lo)),
+    };
     let eye_dir = unit([1.0, -1.5, 1.1]);
     let distance = 3.0 * radius;
     let eye = add(centre, scale(eye_dir, distance));

@@ -260,6 +260,46 @@ fn discs_union_into_outlines_with_holes() {
 }
 
 #[test]
+fn random_disc_unions_are_closed_loops_around_exactly_the_union() {
+    let mut seed: u64 = 0x9e37_79b9_7f4a_7c15;
+    let mut rnd = move || {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        (seed >> 11) as f64 / (1u64 << 53) as f64
+    };
+    for _ in 0..40 {
+        let discs: Vec<([f64; 2], f64)> = (0..25).map(|_| ([rnd() * 20.0, rnd() * 20.0], 0.5 + 3.0 * rnd())).collect();
+        let loops = slices::disc_union(&discs);
+        for l in &loops {
+            for (k, p) in l.iter().enumerate() {
+                let next = &l[(k + 1) % l.len()];
+                let gap = (p.end_point()[0] - next.start_point()[0]).hypot(p.end_point()[1] - next.start_point()[1]);
+                assert!(gap < 1e-9, "a loop is broken by {gap}");
+            }
+        }
+        let pieces: Vec<Path> = loops.into_iter().flatten().collect();
+        for i in 0..50 {
+            for j in 0..50 {
+                let q = [
+                    -4.0 + 28.0 * (f64::from(i) + 0.3 * 2f64.sqrt()) / 50.0,
+                    -4.0 + 28.0 * (f64::from(j) + 0.2 * 3f64.sqrt()) / 50.0,
+                ];
+                let depth = discs
+                    .iter()
+                    .map(|(c, r)| r - (q[0] - c[0]).hypot(q[1] - c[1]))
+                    .fold(f64::NEG_INFINITY, f64::max);
+                if depth.abs() < 1e-6 {
+                    continue;
+                }
+                let drawn = pieces.iter().map(|p| crossings(p, q)).sum::<usize>() % 2 == 1;
+                assert_eq!(drawn, depth > 0.0, "{q:?}");
+            }
+        }
+    }
+}
+
+#[test]
 fn sheets_stack_with_marks_and_write_as_svg_and_gcode() {
     let solids = scene();
     let region = Region3::Box {

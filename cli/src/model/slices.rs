@@ -301,19 +301,34 @@ fn clip_half_plane(poly: &[Pt], a: f64, b: f64, e: f64) -> Vec<Pt> {
 /// The boundary of a union of discs as closed loops of arcs: each circle's arcs that no other
 /// disc covers (counter-clockwise about their own centres), chained end to start. A disc inside
 /// another adds nothing; of equal discs, the first counts.
+///
+/// Discs are paired through a sweep along x, and an arc that ends where disc `j` starts to
+/// cover its circle goes on with an arc of `j`'s circle, so the work grows with the number of
+/// overlapping pairs, not with its square.
 pub fn disc_union(discs: &[(Pt, f64)]) -> Vec<Vec<Path>> {
-    let mut arcs: Vec<Path> = Vec::new();
+    let rmax = discs.iter().fold(0.0f64, |m, d| m.max(d.1));
+    let mut order: Vec<usize> = (0..discs.len()).collect();
+    order.sort_by(|a, b| discs[*a].0[0].total_cmp(&discs[*b].0[0]).then(a.cmp(b)));
+    // Arcs with the disc they lie on and the disc whose circle the boundary goes on along.
+    let mut arcs: Vec<(Path, usize, usize)> = Vec::new();
     let mut loops: Vec<Vec<Path>> = Vec::new();
-    for (i, &(ci, ri)) in discs.iter().enumerate() {
-        let mut covered: Vec<(f64, f64)> = Vec::new();
+    for (p, &i) in order.iter().enumerate() {
+        let (ci, ri) = discs[i];
+        let near = |q: &&usize| (discs[**q].0[0] - ci[0]).abs() < ri + rmax;
+        let before = order[..p].iter().rev().take_while(near);
+        let after = order[p + 1..].iter().take_while(near);
+        // Covered angle ranges of circle i, each with the disc that covers it.
+        let mut covered: Vec<(f64, f64, usize)> = Vec::new();
         let mut hidden = false;
-        for (j, &(cj, rj)) in discs.iter().enumerate() {
+        for &j in before.chain(after) {
+            let (cj, rj) = discs[j];
             let d = dist(ci, cj);
-            if j == i || d >= ri + rj || d + rj <= ri && !(d == 0.0 && rj == ri) {
+            let same = d == 0.0 && rj == ri;
+            if d >= ri + rj || (d + rj <= ri && !same) {
                 continue;
             }
             if d + ri <= rj {
-                hidden = !(d == 0.0 && rj == ri && j > i);
+                hidden = !(same && j > i);
                 if hidden {
                     break;
                 }
@@ -323,10 +338,10 @@ pub fn disc_union(discs: &[(Pt, f64)]) -> Vec<Vec<Path>> {
             let h = ((ri * ri + d * d - rj * rj) / (2.0 * ri * d)).clamp(-1.0, 1.0).acos();
             let s = (a - h).rem_euclid(TAU);
             if s + 2.0 * h > TAU {
-                covered.push((s, TAU));
-                covered.push((0.0, s + 2.0 * h - TAU));
+                covered.push((s, TAU, j));
+                covered.push((0.0, s + 2.0 * h - TAU, j));
             } else {
-                covered.push((s, s + 2.0 * h));
+                covered.push((s, s + 2.0 * h, j));
             }
         }
         if hidden {
@@ -336,48 +351,56 @@ pub fn disc_union(discs: &[(Pt, f64)]) -> Vec<Vec<Path>> {
             loops.push(vec![Path::circle(ci, ri)]);
             continue;
         }
-        covered.sort_by(|x, y| x.0.total_cmp(&y.0).then(x.1.total_cmp(&y.1)));
-        let mut merged: Vec<(f64, f64)> = Vec::new();
-        for (s, e) in covered {
+        covered.sort_by(|x, y| x.0.total_cmp(&y.0).then(x.1.total_cmp(&y.1)).then(x.2.cmp(&y.2)));
+        // Merged ranges: start, end, the disc covering the start.
+        let mut merged: Vec<(f64, f64, usize)> = Vec::new();
+        for (s, e, j) in covered {
             match merged.last_mut() {
                 Some(last) if s <= last.1 => last.1 = last.1.max(e),
-                _ => merged.push((s, e)),
+                _ => merged.push((s, e, j)),
             }
         }
-        // The gaps between covered intervals, the last one wrapping past 2π.
-        for (k, &(_, end)) in merged.iter().enumerate() {
-            let next = merged.get(k + 1).map_or(merged[0].0 + TAU, |m| m.0);
+        // The gaps between covered ranges, the last one wrapping past 2π.
+        for (k, &(_, end, _)) in merged.iter().enumerate() {
+            let (next, to) = merged.get(k + 1).map_or((merged[0].0 + TAU, merged[0].2), |m| (m.0, m.2));
             if next - end > 1e-12 {
-                arcs.push(Path::Arc {
+                let arc = Path::Arc {
                     center: ci,
                     radius: ri,
                     start: end,
                     sweep: next - end,
-                });
+                };
+                arcs.push((arc, i, to));
             }
         }
     }
-    // Chain the arcs: each goes on with the unused arc that starts nearest its end, until the
-    // loop's own start is nearer.
+    let mut on_disc: Vec<Vec<usize>> = vec![Vec::new(); discs.len()];
+    for (k, a) in arcs.iter().enumerate() {
+        on_disc[a.1].push(k);
+    }
+    // Chain the arcs: each goes on with the unused arc of the next disc that starts nearest its
+    // end (any unused arc, should that disc have none), until the loop's own start is nearer.
     let mut used = vec![false; arcs.len()];
     for first in 0..arcs.len() {
         if used[first] {
             continue;
         }
         used[first] = true;
-        let mut chain = vec![arcs[first].clone()];
-        let mut end = arcs[first].end_point();
+        let home = arcs[first].0.start_point();
+        let mut chain = vec![arcs[first].0.clone()];
+        let (mut end, mut to) = (arcs[first].0.end_point(), arcs[first].2);
         loop {
-            let home = dist(end, arcs[first].start_point());
-            let next = (0..arcs.len())
-                .filter(|k| !used[*k])
-                .map(|k| (dist(end, arcs[k].start_point()), k))
-                .min_by(|x, y| x.0.total_cmp(&y.0).then(x.1.cmp(&y.1)));
+            let nearest = |ks: &mut dyn Iterator<Item = usize>| {
+                ks.filter(|k| !used[*k])
+                    .map(|k| (dist(end, arcs[k].0.start_point()), k))
+                    .min_by(|x, y| x.0.total_cmp(&y.0).then(x.1.cmp(&y.1)))
+            };
+            let next = nearest(&mut on_disc[to].iter().copied()).or_else(|| nearest(&mut (0..arcs.len())));
             match next {
-                Some((d, k)) if d < home => {
+                Some((d, k)) if d < dist(end, home) => {
                     used[k] = true;
-                    end = arcs[k].end_point();
-                    chain.push(arcs[k].clone());
+                    (end, to) = (arcs[k].0.end_point(), arcs[k].2);
+                    chain.push(arcs[k].0.clone());
                 }
                 _ => break,
             }

@@ -251,72 +251,143 @@ fn positive(v: &[f64]) -> bool {
     v.iter().all(|x| x.is_finite() && *x > 0.0)
 }
 
-/// The mesh of `kind` in its local frame, inside it (by `opt.margin`).
-pub fn local_mesh(kind: &SolidKind, opt: &MeshOptions) -> Result<Mesh, MeshError> {
-    let n = opt.segments;
-    if !SEGMENTS.contains(&n) {
-        return Err(MeshError::Segments(n));
+/// A solid's mesh once its sizes are checked: the radii its surfaces are built at.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum MeshPlan {
+    /// A UV sphere of this vertex radius.
+    Sphere(f64),
+    /// A UV sphere of vertex radius `outer`, and one of vertex radius `hole` facing inwards.
+    Shell {
+        /// The outer surface's vertex radius.
+        outer: f64,
+        /// The inner surface's vertex radius.
+        hole: f64,
+    },
+    /// A polygonal torus with its vertices `tube` from the circle of radius `major`.
+    Torus {
+        /// Radius of the central circle.
+        major: f64,
+        /// The vertices' distance from it.
+        tube: f64,
+    },
+    /// A polyhedron scaled about its centre by this factor.
+    Polyhedron(SolidKind, f64),
+}
+
+/// Checks and plans meshes at one resolution (the least distance of the unit UV sphere's
+/// triangles from its centre is computed once).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Mesher {
+    opt: MeshOptions,
+    gap: f64,
+}
+
+impl Mesher {
+    /// A mesher for `opt`, if its segments are in [`SEGMENTS`].
+    pub fn new(opt: &MeshOptions) -> Result<Mesher, MeshError> {
+        if !SEGMENTS.contains(&opt.segments) {
+            return Err(MeshError::Segments(opt.segments));
+        }
+        Ok(Mesher {
+            opt: MeshOptions {
+                margin: opt.margin.max(0.0),
+                ..*opt
+            },
+            gap: uv_sphere_gap(opt.segments),
+        })
     }
-    let e = opt.margin.max(0.0);
-    match *kind {
-        SolidKind::Sphere { radius } => {
-            if !positive(&[radius, radius - e]) {
-                return Err(MeshError::BadSize);
+
+    /// The plan of `kind`'s mesh, inside it by the margin (see the module's argument).
+    pub fn plan(&self, kind: &SolidKind) -> Result<MeshPlan, MeshError> {
+        let (n, e, gap) = (self.opt.segments, self.opt.margin, self.gap);
+        match *kind {
+            SolidKind::Sphere { radius } => {
+                if !positive(&[radius, radius - e]) {
+                    return Err(MeshError::BadSize);
+                }
+                Ok(MeshPlan::Sphere(radius - e))
             }
-            Ok(uv_sphere(radius - e, n))
+            SolidKind::Shell { outer, inner } => {
+                if !positive(&[outer, inner, outer - inner, outer - e]) {
+                    return Err(MeshError::BadSize);
+                }
+                // The outer mesh's nearest point to the centre is gap * (outer - e); the inner
+                // mesh's farthest is its vertex radius. Slightly more than the least radius, so
+                // rounding cannot bring a triangle into the hole.
+                let hole = (inner + e) / gap * (1.0 + 1e-12);
+                if hole >= (outer - e) * gap {
+                    return Err(MeshError::ShellTooThin);
+                }
+                Ok(MeshPlan::Shell { outer: outer - e, hole })
+            }
+            SolidKind::Torus { major, minor } => {
+                if !positive(&[major, minor, major - minor]) {
+                    return Err(MeshError::BadSize);
+                }
+                let tube = torus_mesh_tube(major, minor - e, n).ok_or(MeshError::TubeTooThin)?;
+                Ok(MeshPlan::Torus { major, tube })
+            }
+            SolidKind::BeadTorus { major, minor, beads } => {
+                if !positive(&[major, minor]) || beads < 3 {
+                    return Err(MeshError::BadSize);
+                }
+                let smooth = bead_torus_tube(major, minor, beads).ok_or(MeshError::TubeTooThin)?;
+                if smooth >= major {
+                    return Err(MeshError::BadSize);
+                }
+                let tube = torus_mesh_tube(major, smooth - e, n).ok_or(MeshError::TubeTooThin)?;
+                Ok(MeshPlan::Torus { major, tube })
+            }
+            SolidKind::Cube { .. } | SolidKind::Tetrahedron { .. } | SolidKind::Octahedron { .. } => {
+                // Every face is at the inradius; scaling by (in - e) / in moves each in by e.
+                let inradius = kind.polyhedron().and_then(|p| p.planes.first().map(|pl| pl.1)).unwrap_or(0.0);
+                if !positive(&[inradius, inradius - e]) {
+                    return Err(MeshError::BadSize);
+                }
+                Ok(MeshPlan::Polyhedron(*kind, (inradius - e) / inradius))
+            }
         }
-        SolidKind::Shell { outer, inner } => {
-            if !positive(&[outer, inner, outer - inner]) {
-                return Err(MeshError::BadSize);
-            }
-            let gap = uv_sphere_gap(n);
-            // The outer mesh's nearest point to the centre is gap * (outer - e); the inner
-            // mesh's farthest is its vertex radius. Slightly more than the least radius, so
-            // rounding cannot bring a triangle into the hole.
-            let hole = (inner + e) / gap * (1.0 + 1e-12);
-            if hole >= (outer - e) * gap {
-                return Err(MeshError::ShellTooThin);
-            }
-            let mut mesh = uv_sphere(outer - e, n);
-            let mut inside = uv_sphere(hole, n);
-            for t in &mut inside.triangles {
-                t.swap(1, 2);
-            }
-            mesh.append(&inside);
-            Ok(mesh)
+    }
+
+    /// The number of triangles of a planned mesh.
+    pub fn triangles(&self, plan: &MeshPlan) -> usize {
+        let n = self.opt.segments as usize;
+        let sphere = 2 * n * ((n / 2).max(2) - 1);
+        match plan {
+            MeshPlan::Sphere(_) => sphere,
+            MeshPlan::Shell { .. } => 2 * sphere,
+            MeshPlan::Torus { .. } => 2 * n * (n / 2).max(3),
+            MeshPlan::Polyhedron(kind, _) => kind.polyhedron().map_or(0, |p| p.triangles.len()),
         }
-        SolidKind::Torus { major, minor } => {
-            if !positive(&[major, minor, major - minor]) {
-                return Err(MeshError::BadSize);
+    }
+
+    /// The planned mesh in the solid's local frame.
+    pub fn build(&self, plan: &MeshPlan) -> Mesh {
+        let n = self.opt.segments;
+        match *plan {
+            MeshPlan::Sphere(r) => uv_sphere(r, n),
+            MeshPlan::Shell { outer, hole } => {
+                let mut mesh = uv_sphere(outer, n);
+                let mut inside = uv_sphere(hole, n);
+                for t in &mut inside.triangles {
+                    t.swap(1, 2);
+                }
+                mesh.append(&inside);
+                mesh
             }
-            let tube = torus_mesh_tube(major, minor - e, n).ok_or(MeshError::TubeTooThin)?;
-            Ok(torus_mesh(major, tube, n))
-        }
-        SolidKind::BeadTorus { major, minor, beads } => {
-            if !positive(&[major, minor]) || beads < 3 {
-                return Err(MeshError::BadSize);
-            }
-            let smooth = bead_torus_tube(major, minor, beads).ok_or(MeshError::TubeTooThin)?;
-            if smooth >= major {
-                return Err(MeshError::BadSize);
-            }
-            let tube = torus_mesh_tube(major, smooth - e, n).ok_or(MeshError::TubeTooThin)?;
-            Ok(torus_mesh(major, tube, n))
-        }
-        SolidKind::Cube { .. } | SolidKind::Tetrahedron { .. } | SolidKind::Octahedron { .. } => {
-            let p = kind.polyhedron().ok_or(MeshError::BadSize)?;
-            // Every face is at the inradius; scaling by (in - e) / in moves each in by e.
-            let inradius = p.planes.first().map_or(0.0, |pl| pl.1);
-            if !positive(&[inradius, inradius - e]) {
-                return Err(MeshError::BadSize);
-            }
-            let s = (inradius - e) / inradius;
-            Ok(Mesh {
+            MeshPlan::Torus { major, tube } => torus_mesh(major, tube, n),
+            MeshPlan::Polyhedron(kind, s) => kind.polyhedron().map_or_else(Mesh::default, |p| Mesh {
                 vertices: p.vertices.iter().map(|v| scale(*v, s)).collect(),
                 triangles: p.triangles,
-            })
+            }),
         }
     }
+}
+
+/// The mesh of `kind` in its local frame, inside it (by `opt.margin`).
+pub fn local_mesh(kind: &SolidKind, opt: &MeshOptions) -> Result<Mesh, MeshError> {
+    let m = Mesher::new(opt)?;
+    Ok(m.build(&m.plan(kind)?))
 }
 
 /// The mesh of a placed solid in the world frame.
@@ -324,13 +395,35 @@ pub fn solid_mesh(solid: &Solid, opt: &MeshOptions) -> Result<Mesh, MeshError> {
     Ok(local_mesh(&solid.kind, opt)?.mapped(|q| solid.to_world(q)))
 }
 
-/// Every solid's mesh in the world frame, in order (`f` receives each).
-pub fn each_mesh(solids: &[Solid], opt: &MeshOptions, mut f: impl FnMut(usize, &Mesh)) -> Result<(), SceneError> {
-    for (index, s) in solids.iter().enumerate() {
-        let m = solid_mesh(s, opt).map_err(|error| SceneError { index, error })?;
-        f(index, &m);
+/// The meshes of a list of solids, checked and counted before any is built, so a writer can
+/// write a header with the count and then stream one solid at a time.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ScenePlan {
+    mesher: Mesher,
+    plans: Vec<MeshPlan>,
+    /// The number of triangles of every mesh together.
+    pub triangles: u64,
+}
+
+impl ScenePlan {
+    /// Checks every solid; the error names the first that cannot be meshed.
+    pub fn new(solids: &[Solid], opt: &MeshOptions) -> Result<ScenePlan, SceneError> {
+        let mesher = Mesher::new(opt).map_err(|error| SceneError { index: 0, error })?;
+        let plans = solids
+            .iter()
+            .enumerate()
+            .map(|(index, s)| mesher.plan(&s.kind).map_err(|error| SceneError { index, error }))
+            .collect::<Result<Vec<_>, _>>()?;
+        let triangles = plans.iter().map(|p| mesher.triangles(p) as u64).sum();
+        Ok(ScenePlan { mesher, plans, triangles })
     }
-    Ok(())
+
+    /// Solid `index`'s mesh in the world frame (`solid` is that solid).
+    pub fn mesh(&self, index: usize, solid: &Solid) -> Mesh {
+        self.plans
+            .get(index)
+            .map_or_else(Mesh::default, |p| self.mesher.build(p).mapped(|q| solid.to_world(q)))
+    }
 }
 
 /// What makes two solids share one mesh up to a rotation, a uniform scale and a move.
@@ -394,6 +487,27 @@ mod tests {
             }
         }
         out
+    }
+
+    #[test]
+    fn triangle_counts_are_those_built() {
+        let m = Mesher::new(&MeshOptions::new(7)).expect("7 segments");
+        for kind in [
+            SolidKind::Sphere { radius: 2.0 },
+            SolidKind::Shell { outer: 2.0, inner: 1.0 },
+            SolidKind::Cube { half_side: 1.0 },
+            SolidKind::Tetrahedron { circumradius: 1.0 },
+            SolidKind::Octahedron { circumradius: 1.0 },
+            SolidKind::Torus { major: 3.0, minor: 1.0 },
+            SolidKind::BeadTorus {
+                major: 3.0,
+                minor: 1.0,
+                beads: 16,
+            },
+        ] {
+            let plan = m.plan(&kind).unwrap_or_else(|e| panic!("{kind:?}: {e:?}"));
+            assert_eq!(m.triangles(&plan), m.build(&plan).triangles.len(), "{kind:?}");
+        }
     }
 
     fn inside(kind: SolidKind, n: u32) -> bool {

@@ -3,7 +3,7 @@
 //! [`MeshOptions::for_scene`]). The 80-byte header names the program, never a date, so the
 //! same solids give the same bytes.
 
-use super::mesh::{each_mesh, MeshOptions, SceneError};
+use super::mesh::{MeshOptions, SceneError, ScenePlan};
 use crate::model::solid::{cross, sub, Solid};
 use std::io::Write;
 
@@ -27,27 +27,30 @@ pub fn normal(t: [[f32; 3]; 3]) -> [f32; 3] {
     }
 }
 
-/// Writes the solids as one binary STL to `out`.
+/// Writes the solids as one binary STL to `out`, one solid's triangles at a time. Every solid
+/// is checked before the first byte is written; a failing sink may leave part of the file.
 pub fn write(solids: &[Solid], opt: &MeshOptions, out: &mut impl Write) -> Result<(), StlError> {
+    let plan = ScenePlan::new(solids, opt).map_err(StlError::Mesh)?;
+    let count = u32::try_from(plan.triangles).map_err(|_| StlError::TooMany(plan.triangles))?;
+    let io = |e: std::io::Error| StlError::Io(e.to_string());
     let mut header = [b' '; 80];
     header[..HEADER.len()].copy_from_slice(HEADER);
-    let mut body = Vec::new();
-    let mut count: u64 = 0;
-    each_mesh(solids, opt, |_, m| {
+    out.write_all(&header).map_err(io)?;
+    out.write_all(&count.to_le_bytes()).map_err(io)?;
+    let mut chunk = Vec::new();
+    for (i, s) in solids.iter().enumerate() {
+        let m = plan.mesh(i, s);
+        chunk.clear();
         for t in &m.triangles {
             let corners = t.map(|k| to_f32(m.vertices[k as usize]));
             for x in normal(corners).iter().chain(corners.iter().flatten()) {
-                body.extend_from_slice(&x.to_le_bytes());
+                chunk.extend_from_slice(&x.to_le_bytes());
             }
-            body.extend_from_slice(&0u16.to_le_bytes());
-            count += 1;
+            chunk.extend_from_slice(&0u16.to_le_bytes());
         }
-    })
-    .map_err(StlError::Mesh)?;
-    let count = u32::try_from(count).map_err(|_| StlError::TooMany(count))?;
-    out.write_all(&header).map_err(|e| StlError::Io(e.to_string()))?;
-    out.write_all(&count.to_le_bytes()).map_err(|e| StlError::Io(e.to_string()))?;
-    out.write_all(&body).map_err(|e| StlError::Io(e.to_string()))
+        out.write_all(&chunk).map_err(io)?;
+    }
+    Ok(())
 }
 
 /// The solids as binary STL bytes.

@@ -174,6 +174,39 @@ fn stl_is_read_back_closed_oriented_and_inside() {
 }
 
 #[test]
+fn solids_that_cannot_be_meshed_are_named() {
+    let mut solids = scene();
+    solids[4].rotation[2] = [0.0, 0.0, -1.0];
+    let opt = MeshOptions::new(16);
+    let e = stl::to_bytes(&solids, &opt).expect_err("a reflection is not a rotation");
+    assert!(e.to_string().starts_with("solid 4:"), "{e}");
+    assert!(
+        glb::to_bytes(&solids, 16).is_err()
+            && render3d::pixels(
+                &solids,
+                &region(),
+                &RenderOptions {
+                    width: 8,
+                    height: 8,
+                    samples: 1,
+                    cut: Cut::None
+                }
+            )
+            .is_err()
+    );
+    let mut solids = scene();
+    solids[2].centre[1] = f64::NAN;
+    assert!(obj::to_bytes(&solids, &opt).is_err() && glb::to_bytes(&solids, 16).is_err());
+    let mut solids = scene();
+    solids[1].kind = SolidKind::Shell { outer: 9.0, inner: 8.99 };
+    assert!(stl::to_bytes(&solids, &opt)
+        .expect_err("too thin")
+        .to_string()
+        .contains("use more segments"));
+    assert!(stl::to_bytes(&scene(), &MeshOptions::new(2000)).is_err(), "an absurd resolution");
+}
+
+#[test]
 fn tori_meshed_on_their_surface_leave_the_tube() {
     // The twin of the inside check for the shrink: the same torus written with the tube of
     // its mesh put back to the full radius is caught.

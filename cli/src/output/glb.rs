@@ -17,7 +17,7 @@
 //! The JSON is written with `serde_json` (shortest round-trip numbers), the binary chunk in
 //! little endian; the same solids give the same bytes.
 
-use super::mesh::{local_mesh, unit_kind, MeshKey, MeshOptions, SceneError};
+use super::mesh::{local_mesh, unit_kind, MeshError, MeshKey, MeshOptions, SceneError};
 use crate::model::solid::{is_rotation, Mat3, Solid};
 use serde_json::{json, Value};
 use std::collections::BTreeMap;
@@ -95,6 +95,11 @@ pub fn to_bytes(solids: &[Solid], segments: u32) -> Result<Vec<u8>, GlbError> {
             return Err(GlbError::NotRotation(index));
         }
         let (key, unit, size) = unit_kind(&s.kind);
+        let finite = s.centre.iter().all(|c| c.is_finite()) && size.is_finite() && size > 0.0;
+        if !finite {
+            let error = if size > 0.0 { MeshError::Placement } else { MeshError::BadSize };
+            return Err(GlbError::Mesh(SceneError { index, error }));
+        }
         let next = keys.len();
         let mesh = *keys.entry(key).or_insert(next);
         if mesh == next {

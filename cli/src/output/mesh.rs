@@ -39,7 +39,7 @@
 //! ([`MeshOptions::for_scene`]). Deterministic: the same solids give the same numbers.
 
 pub use crate::model::solid::bead_torus_tube;
-use crate::model::solid::{add, cross, dot, norm, scale, sub, Solid, SolidKind, V3};
+use crate::model::solid::{add, cross, dot, is_rotation, norm, scale, sub, Solid, SolidKind, V3};
 use std::f64::consts::PI;
 
 /// The fewest and most segments a round solid may be meshed with.
@@ -77,6 +77,9 @@ pub enum MeshError {
     /// A torus's tube is too thin for this many segments around its ring (or, for a bead torus,
     /// the beads do not overlap enough to hold a smooth torus).
     TubeTooThin,
+    /// A solid's centre is not finite, or its rotation matrix is not a rotation (orthonormal,
+    /// determinant +1, within 1e-9).
+    Placement,
 }
 
 impl std::fmt::Display for MeshError {
@@ -88,6 +91,7 @@ impl std::fmt::Display for MeshError {
             MeshError::BadSize => write!(f, "a solid has a size that is not a positive number, or radii out of order"),
             MeshError::ShellTooThin => write!(f, "a shell's wall is too thin to mesh at this resolution: use more segments"),
             MeshError::TubeTooThin => write!(f, "a torus's tube is too thin to mesh at this resolution: use more segments"),
+            MeshError::Placement => write!(f, "its centre is not a finite point or its rotation is not a rotation matrix"),
         }
     }
 }
@@ -395,6 +399,13 @@ pub fn solid_mesh(solid: &Solid, opt: &MeshOptions) -> Result<Mesh, MeshError> {
     Ok(local_mesh(&solid.kind, opt)?.mapped(|q| solid.to_world(q)))
 }
 
+/// Whether a solid's centre is finite and its rotation a rotation (so a mesh moved by them
+/// stays inside the solid and keeps its orientation).
+pub fn check_placement(s: &Solid) -> Result<(), MeshError> {
+    let ok = s.centre.iter().all(|c| c.is_finite()) && is_rotation(&s.rotation, 1e-9);
+    ok.then_some(()).ok_or(MeshError::Placement)
+}
+
 /// The meshes of a list of solids, checked and counted before any is built, so a writer can
 /// write a header with the count and then stream one solid at a time.
 #[derive(Debug, Clone, PartialEq)]
@@ -412,7 +423,11 @@ impl ScenePlan {
         let plans = solids
             .iter()
             .enumerate()
-            .map(|(index, s)| mesher.plan(&s.kind).map_err(|error| SceneError { index, error }))
+            .map(|(index, s)| {
+                check_placement(s)
+                    .and_then(|()| mesher.plan(&s.kind))
+                    .map_err(|error| SceneError { index, error })
+            })
             .collect::<Result<Vec<_>, _>>()?;
         let triangles = plans.iter().map(|p| mesher.triangles(p) as u64).sum();
         Ok(ScenePlan { mesher, plans, triangles })

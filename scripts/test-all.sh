@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Runs every zetafill test on a fresh machine, installing what it needs first.
 #   bash scripts/test-all.sh
-# Steps: the Cortex-M3 Rust target, qemu-system-arm and defmt-print; the core built and linted
+# Steps: the Cortex-M3 Rust target, qemu-system-arm, defmt-print and the glTF validator (npm); the core built and linted
 # for it (no_std, no alloc, no panicking constructs); the API docs; the firmware run under QEMU; every host
 # test of the workspace in release mode (including host-vs-firmware parity).
 set -euo pipefail
@@ -33,6 +33,15 @@ step "installing defmt-print (decodes the firmware's defmt log on the host)"
 if ! command -v defmt-print >/dev/null 2>&1; then
     cargo install defmt-print --version =1.2.0 --locked
 fi
+
+step "installing the Khronos glTF validator (checks the GLB writer; node and npm)"
+if ! command -v npm >/dev/null 2>&1; then
+    sudo=""
+    if [ "$(id -u)" -ne 0 ]; then sudo="sudo"; fi
+    $sudo apt-get update
+    $sudo apt-get install -y nodejs npm
+fi
+(cd scripts/node && npm ci --no-audit --no-fund)
 
 step "core builds for Cortex-M3 (no_std, no allocator)"
 cargo build -p zetafill --target thumbv7m-none-eabi --release

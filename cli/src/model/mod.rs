@@ -11,6 +11,8 @@
 //!   edges). A tile is cut this way in every output, never by a clip path.
 //! - [`place`](mod@place): [`Placement`] scales and moves a drawing onto a bed or a page.
 //! - [`region`]: a region as given, before its outline is read.
+//! - [`solid`]: solids in space and their region (a 3D fill), with their exact geometry;
+//!   [`slices`] cuts them into sheets for stacked laser cuts, as pictures.
 //! - [`tile`]: the fractal tile's parameters and plane, and the layouts of copies of its
 //!   picture (mosaic, planet).
 //!
@@ -47,6 +49,8 @@ pub mod picture;
 pub mod place;
 pub mod region;
 pub mod shape;
+pub mod slices;
+pub mod solid;
 pub mod tile;
 
 pub use clip::{clip_area, clip_path, clip_polygon, clip_segment};

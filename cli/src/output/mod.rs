@@ -1,16 +1,24 @@
 //! Output formats: one file per format, each turning a [`crate::model::doc::FillDoc`] or a
 //! [`crate::model::Drawing`] into bytes. Writers take plain options (no clap), touch no files
 //! and never exit the process: the commands decide where the bytes go.
+//!
+//! The 3D writers ([`mesh`], [`stl`], [`obj`], [`glb`], [`render3d`]) take solids
+//! ([`crate::model::solid`]); the `space` command will call them.
 
 pub mod csv;
 pub mod digest;
 pub mod gcode;
+pub mod glb;
 pub mod height;
 pub mod json;
 pub mod machine;
+pub mod mesh;
+pub mod obj;
 pub mod order;
 pub mod palette;
 pub mod png;
+pub mod render3d;
+pub mod stl;
 pub mod svg;
 
 /// A number in mm with at most `places` decimals, no trailing zeros, never `-0`.

@@ -179,6 +179,18 @@ const PLACEHOLDERS: &[(&str, &str)] = &[("{power}", "1"), ("{feed}", "1000"), ("
 /// Checks `text` as a block of `kind` and runs it on `tool`. `power` is the laser's S range,
 /// if the profile is a laser's.
 pub fn run(kind: Kind, text: &str, power: Option<(f64, f64)>, tool: &mut Tool) -> Result<(), String> {
+    run_with(kind, text, power, tool, None)
+}
+
+/// [`run`], refusing as well a pause (`M0`, `M1`) while `pen_down` says the pen is down: an
+/// operator who changes the paper or the pen there meets a pen on the paper.
+pub fn run_with(
+    kind: Kind,
+    text: &str,
+    power: Option<(f64, f64)>,
+    tool: &mut Tool,
+    pen_down: Option<&dyn Fn(&Tool) -> bool>,
+) -> Result<(), String> {
     let field = kind.key();
     for (n, raw) in text.lines().enumerate() {
         let at = |why: String| format!("{field}, line {}: '{}': {why}", n + 1, shown(raw));
@@ -211,6 +223,9 @@ pub fn run(kind: Kind, text: &str, power: Option<(f64, f64)>, tool: &mut Tool) -
         let pause = words.iter().any(|w| w.letter == 'M' && matches!(tenths(w.value), 0 | 10));
         if pause && power.is_some() && tool.laser_fires() {
             return Err(at("a pause with the laser on; turn it off first (M5)".into()));
+        }
+        if pause && pen_down.is_some_and(|down| down(tool)) {
+            return Err(at(format!("a pause with the pen down ({}); lift it first", tool.describe())));
         }
         for w in &words {
             match (w.letter, tenths(w.value)) {

@@ -340,9 +340,12 @@ impl Machine {
                 off.describe()
             ));
         }
+        // A pause with the pen down where its position is known (the fields tool_off sets).
+        let known_down = |s: &Tool| !laser && (lift.z.is_none() || s.z.is_some()) && (lift.s.is_none() || s.s.is_some()) && fires(s);
+        blocks::run_with(Kind::Start, &self.start, power, &mut Tool::default(), Some(&known_down))?;
         for (kind, text) in [(Kind::PenChange, &self.pen_change), (Kind::End, &self.end)] {
             let mut s = lifted;
-            blocks::run(kind, text, power, &mut s)?;
+            blocks::run_with(kind, text, power, &mut s, Some(&known_down))?;
             if fires(&s) {
                 return Err(format!(
                     "{}: must leave the tool off; it turns it on ({})",
@@ -491,6 +494,16 @@ mod tests {
                 "tool_on and tool_off: leave the tool the same",
             ),
             (z.replace("G0 Z3.000\nM2", "G1 Z0.000 F600\nM2"), "end: must leave the tool off"),
+            // Found by the fuzz targets: a servo moved between its angles (the pen touching)
+            // and then a pause, in start, before tool_off lifts it.
+            (
+                servo.replace("start = \"\"\"\nM3 S30\nG4 P0.3", "start = \"\"\"\nM3 S30\nG4 P0.3\nM3 S44.16\nM0"),
+                "start, line 4: 'M0': a pause with the pen down",
+            ),
+            (
+                z.replace("pen_change = \"\"\"\nM0", "pen_change = \"\"\"\nG1 Z0.000 F600\nM0"),
+                "pen_change, line 2: 'M0': a pause with the pen down",
+            ),
         ];
         for (text, want) in cases {
             assert_ne!(text, laser);

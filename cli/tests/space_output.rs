@@ -8,23 +8,10 @@ use std::collections::HashMap;
 use std::io::Cursor;
 use std::path::Path;
 use std::process::Command;
-use zetafill_cli::model::solid::{Mat3, Region3, Solid, SolidKind};
+use zetafill_cli::model::solid::{axis_angle as rotation, Region3, Solid, SolidKind};
 use zetafill_cli::output::mesh::{local_mesh, MeshOptions};
 use zetafill_cli::output::render3d::{self, Cut, RenderOptions};
 use zetafill_cli::output::{glb, obj, stl};
-
-/// The rotation by `angle` about the unit axis `a` (Rodrigues).
-fn rotation(a: [f64; 3], angle: f64) -> Mat3 {
-    let n = (a[0] * a[0] + a[1] * a[1] + a[2] * a[2]).sqrt();
-    let [x, y, z] = a.map(|v| v / n);
-    let (s, c) = angle.sin_cos();
-    let t = 1.0 - c;
-    [
-        [t * x * x + c, t * x * y - s * z, t * x * z + s * y],
-        [t * x * y + s * z, t * y * y + c, t * y * z - s * x],
-        [t * x * z - s * y, t * y * z + s * x, t * z * z + c],
-    ]
-}
 
 /// One solid of every kind, turned, in a 100 mm box, apart from each other.
 fn scene() -> Vec<Solid> {

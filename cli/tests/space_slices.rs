@@ -7,22 +7,9 @@
 use std::f64::consts::TAU;
 use zetafill_cli::model::picture::{Item, Shape};
 use zetafill_cli::model::slices::{self, section, SliceError, SliceOptions};
-use zetafill_cli::model::solid::{Mat3, Region3, Solid, SolidKind};
+use zetafill_cli::model::solid::{axis_angle as rotation, Region3, Solid, SolidKind};
 use zetafill_cli::model::{Drawing, Path};
 use zetafill_cli::output::{gcode, machine::Machine, svg};
-
-/// The rotation by `angle` about the unit axis `a` (Rodrigues).
-fn rotation(a: [f64; 3], angle: f64) -> Mat3 {
-    let n = (a[0] * a[0] + a[1] * a[1] + a[2] * a[2]).sqrt();
-    let [x, y, z] = a.map(|v| v / n);
-    let (s, c) = angle.sin_cos();
-    let t = 1.0 - c;
-    [
-        [t * x * x + c, t * x * y - s * z, t * x * z + s * y],
-        [t * x * y + s * z, t * y * y + c, t * y * z - s * x],
-        [t * x * z - s * y, t * y * z + s * x, t * z * z + c],
-    ]
-}
 
 /// One solid of every kind, turned, apart from each other in a 100 mm box.
 fn scene() -> Vec<Solid> {

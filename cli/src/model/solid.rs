@@ -180,6 +180,23 @@ pub fn mul_t(m: &Mat3, v: V3) -> V3 {
     ]
 }
 
+/// The rotation by `angle` (radians) about the axis `a`, which need not be a unit vector
+/// (Rodrigues' formula; the zero axis gives no rotation).
+pub fn axis_angle(a: V3, angle: f64) -> Mat3 {
+    let n = norm(a);
+    if n == 0.0 {
+        return [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+    }
+    let [x, y, z] = a.map(|v| v / n);
+    let (s, c) = angle.sin_cos();
+    let t = 1.0 - c;
+    [
+        [t * x * x + c, t * x * y - s * z, t * x * z + s * y],
+        [t * x * y + s * z, t * y * y + c, t * y * z - s * x],
+        [t * x * z - s * y, t * y * z + s * x, t * z * z + c],
+    ]
+}
+
 /// Whether `m` is a rotation (orthonormal rows, determinant +1) within `eps`.
 pub fn is_rotation(m: &Mat3, eps: f64) -> bool {
     let orthonormal = (0..3).all(|i| (0..3).all(|j| (dot(m[i], m[j]) - f64::from(u8::from(i == j))).abs() <= eps));
@@ -368,6 +385,15 @@ impl Region3 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn axis_angle_turns_about_its_axis() {
+        let m = axis_angle([0.0, 0.0, 2.0], std::f64::consts::FRAC_PI_2);
+        let v = mul(&m, [1.0, 0.0, 0.0]);
+        assert!(norm(sub(v, [0.0, 1.0, 0.0])) < 1e-15, "{v:?}");
+        assert!(is_rotation(&axis_angle([1.0, -2.0, 0.5], 2.3), 1e-12));
+        assert_eq!(axis_angle([0.0; 3], 1.0), axis_angle([1.0, 0.0, 0.0], 0.0));
+    }
 
     fn kinds() -> Vec<SolidKind> {
         vec![

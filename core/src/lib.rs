@@ -43,6 +43,10 @@
 //!   (last shapes narrower than the scalar resolves, [`TooSmall`]).
 //! - 1D: [`LineEngine`], [`LineParams`], [`Interval`], [`LineStorage`] (sized with
 //!   [`line_index_words`]), [`Segment`], [`LinePlacement`].
+//! - 3D: [`SpaceEngine`] over [`SpaceStorage`] (sized with [`space_index_words`]), set up by
+//!   [`SpaceParams`] and a [`SpaceRegion`], with solids from [`Solid`] / [`SolidList`]; each
+//!   step gives a [`SpacePlacement`] of a [`PlacedSolid`]; before a fill [`space_capacity`] and
+//!   [`check_first_solid`] ([`FirstSolidError`]); the digest is [`digest::space_digest`].
 //! - Numbers and randomness: [`Scalar`] (`f64`, or [`Fixed`] for cores without an FPU),
 //!   [`rng_from_seed`] / [`ZetaRng`], and [`digest`] (the determinism digest).
 //!
@@ -58,6 +62,7 @@
 //! - the fixed-capacity multi-level spatial hash and the coverage bitmap;
 //! - the engine (the paper's loop, then its optimisations) and the cell sampler;
 //! - the 1D fill over its own 1D multi-level hash;
+//! - the 3D fill (solids, regions, exact tests, its 3D multi-level hash; the paper's sampler);
 //! - statistics: the gasket width of the paper's Table 1, exact dimensions, power-law fits;
 //!   and the up-front checks ([`AreaSequence`], capacity, first-shape feasibility).
 //!
@@ -107,6 +112,7 @@ mod rng;
 mod sampler;
 mod scalar;
 mod shape;
+mod space;
 mod spatial;
 mod stats;
 mod zeta;
@@ -125,6 +131,10 @@ pub use rng::{rng_from_seed, ZetaRng};
 pub use sampler::{cells_for, CellSampler, CellWords, NoCells};
 pub use scalar::Scalar;
 pub use shape::{MixOrder, Placed, ShapeKind, ShapeList, MAX_MIX};
+pub use space::{
+    check_first_solid, space_capacity, space_index_words, FirstSolidError, PlacedSolid, Solid, SolidList, SpaceEngine, SpaceParams,
+    SpacePlacement, SpaceRegion, SpaceStorage,
+};
 pub use zeta::ZetaError;
 
 /// The building blocks under the public API, for zetafill's own crates (the command-line
@@ -173,6 +183,11 @@ pub mod internals {
     /// the first-two-shapes test for given areas.
     pub mod feasibility {
         pub use crate::feasibility::{capacity, first_two_fit};
+    }
+    /// The 3D fill's building blocks: points and rotations, solids in place and their exact
+    /// tests, the 3D hash's constants.
+    pub mod space {
+        pub use crate::space::*;
     }
     /// The fixed-capacity multi-level spatial hash.
     pub mod spatial {

@@ -172,13 +172,25 @@ pub(crate) fn bounding<S: Scalar>(kind: &Solid, scale: S) -> S {
 /// assert!(SolidList::mix(&[], MixOrder::Random, 0).is_none());
 /// ```
 #[derive(Clone, Debug, PartialEq)]
-#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct SolidList {
     kinds: heapless::Vec<Solid, MAX_SOLIDS>,
     /// How kinds are chosen per placement.
     pub order: MixOrder,
     /// Salt for [`MixOrder::Random`].
     pub salt: u64,
+}
+
+#[cfg(feature = "defmt")]
+impl defmt::Format for SolidList {
+    fn format(&self, f: defmt::Formatter<'_>) {
+        defmt::write!(
+            f,
+            "SolidList {{ kinds: {=[?]}, order: {}, salt: {=u64} }}",
+            self.kinds(),
+            self.order,
+            self.salt
+        );
+    }
 }
 
 impl From<Solid> for SolidList {

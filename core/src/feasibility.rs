@@ -197,6 +197,18 @@ pub fn segment_capacity(seq: &AreaSequence, stop: &Stop, max: u64) -> Result<u64
     capacity(seq, stop, max, |k| seq.area(k))
 }
 
+/// Whether a shape of this kind and area is wider (its bounding circle's diameter, in f64)
+/// than [`Scalar::MAX_EXTENT`]: the engines' and [`check_largest`]'s test.
+pub(crate) fn too_large<S: Scalar>(kind: ShapeKind, area: f64) -> bool {
+    S::MAX_EXTENT < f64::MAX && 2.0 * kind.bounding_radius(kind.scale_for_area(area)) > S::MAX_EXTENT
+}
+
+/// The narrowest shape the scalar resolves in `region`: the larger of
+/// [`Scalar::MIN_SIZE`] and [`Scalar::MIN_SIZE_RELATIVE`] of its largest coordinate.
+pub(crate) fn min_size<S: Scalar>(region: &Region<'_>) -> f64 {
+    S::MIN_SIZE.max(S::MIN_SIZE_RELATIVE * region.magnitude())
+}
+
 /// A run would place a shape narrower than its scalar resolves ([`Scalar::MIN_SIZE`]), where
 /// the exact tests are no longer exact: found by [`check_smallest`] before the run, which the
 /// engine would otherwise stop at ([`crate::StepError::TooSmall`]).
@@ -272,39 +284,59 @@ fn first_narrower(seq: &AreaSequence, shapes: &ShapeList, limit: f64, max: u64) 
     first
 }
 
+/// Whether a run stops before shape `index`: at `stop.count`, once the first `index` shapes
+/// cover `stop.fill`, or at a shape up to `index` narrower than `stop.min_size` (the engine's
+/// own rules, on the areas it uses).
+fn stops_before(seq: &AreaSequence, shapes: &ShapeList, stop: &Stop, index: u64) -> bool {
+    stop.count.is_some_and(|k| index >= k)
+        || stop.fill.is_some_and(|f| seq.covered(index) >= f)
+        || stop
+            .min_size
+            .is_some_and(|m| first_narrower(seq, shapes, m, index.saturating_add(1)).is_some())
+}
+
 /// Refuses a run whose stop conditions let it reach a shape narrower than its scalar resolves
-/// ([`Scalar::MIN_SIZE`]; `f64` has no limit), with the first such shape. `capacity` is the
-/// engine's number of shape slots. The run reaches shape `i` when `i` is below `capacity` and
-/// `stop.count`, the first `i` shapes cover less than `stop.fill`, and no shape up to `i` is
-/// narrower than `stop.min_size` (the engine's own rules, on the areas it uses).
+/// in `region` (the larger of [`Scalar::MIN_SIZE`] and [`Scalar::MIN_SIZE_RELATIVE`] of the
+/// region's largest coordinate, [`Region::magnitude`]), with the first such shape. `capacity`
+/// is the engine's number of shape slots. The run reaches shape `i` when `i` is below
+/// `capacity` and `stop.count`, the first `i` shapes cover less than `stop.fill`, and no shape
+/// up to `i` is narrower than `stop.min_size` (the engine's own rules, on the areas it uses).
 ///
 /// ```
-/// use zetafill::{check_smallest, AreaSequence, Fixed, ShapeKind, Stop};
+/// use zetafill::{check_smallest, AreaSequence, Fixed, Region, ShapeKind, Stop};
+/// let region = Region::Rect { width: 200.0, height: 200.0, periodic: false };
 /// let seq = AreaSequence::new(200.0 * 200.0, 1.3, 1.0)?;
 /// let circles = ShapeKind::Circle.into();
 /// let few = Stop { count: Some(2000), ..Stop::default() };
-/// assert_eq!(check_smallest::<Fixed>(&seq, &circles, &few, 1 << 24), Ok(()));
+/// assert_eq!(check_smallest::<Fixed>(&seq, &circles, &few, 1 << 24, &region), Ok(()));
 /// let many = Stop { count: Some(10_000_000), ..Stop::default() };
-/// let err = check_smallest::<Fixed>(&seq, &circles, &many, 1 << 24).unwrap_err();
+/// let err = check_smallest::<Fixed>(&seq, &circles, &many, 1 << 24, &region).unwrap_err();
 /// assert!(err.width < 0.01 && err.index < 10_000_000);
 /// // Stopping at 0.01 mm keeps every shape resolved.
 /// let sized = Stop { min_size: Some(0.01), ..many };
-/// assert_eq!(check_smallest::<Fixed>(&seq, &circles, &sized, 1 << 24), Ok(()));
-/// assert_eq!(check_smallest::<f64>(&seq, &circles, &many, 1 << 24), Ok(()));
+/// assert_eq!(check_smallest::<Fixed>(&seq, &circles, &sized, 1 << 24, &region), Ok(()));
+/// assert_eq!(check_smallest::<f64>(&seq, &circles, &many, 1 << 24, &region), Ok(()));
+/// // On f64 the limit follows the coordinates: at c = 50 the sixth shape is 1e-12 of the first.
+/// let steep = AreaSequence::new(200.0 * 200.0, 50.0, 2.0)?;
+/// let err = check_smallest::<f64>(&steep, &circles, &few, 1 << 24, &region).unwrap_err();
+/// assert_eq!(err.limit, 200.0 / 1_099_511_627_776.0);
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
-pub fn check_smallest<S: Scalar>(seq: &AreaSequence, shapes: &ShapeList, stop: &Stop, capacity: u64) -> Result<(), TooSmall> {
-    let limit = S::MIN_SIZE;
-    if limit <= 0.0 {
+pub fn check_smallest<S: Scalar>(
+    seq: &AreaSequence,
+    shapes: &ShapeList,
+    stop: &Stop,
+    capacity: u64,
+    region: &Region<'_>,
+) -> Result<(), TooSmall> {
+    let limit = min_size::<S>(region);
+    if limit <= 0.0 || limit.is_nan() {
         return Ok(());
     }
     let Some(index) = first_narrower(seq, shapes, limit, capacity) else {
         return Ok(());
     };
-    let stopped = stop.count.is_some_and(|k| index >= k)
-        || stop.fill.is_some_and(|f| seq.covered(index) >= f)
-        || stop.min_size.is_some_and(|m| first_narrower(seq, shapes, m, index + 1).is_some());
-    if stopped {
+    if stops_before(seq, shapes, stop, index) {
         return Ok(());
     }
     let kind = shapes.kind_of(index);
@@ -312,6 +344,83 @@ pub fn check_smallest<S: Scalar>(seq: &AreaSequence, shapes: &ShapeList, stop: &
         index,
         width: kind.min_width(kind.scale_for_area(seq.area(index))),
         limit,
+    })
+}
+
+/// A run would place a shape wider than its scalar computes exactly ([`Scalar::MAX_EXTENT`],
+/// the diameter of its bounding circle): found by [`check_largest`] before the run, which the
+/// engine would otherwise stop at ([`crate::StepError::TooLarge`]). Only a torus lets such a
+/// shape in, wrapped around it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct TooLarge {
+    /// The first shape the run would reach that is too wide (its placement index).
+    pub index: u64,
+    /// The diameter of its bounding circle.
+    pub width: f64,
+    /// The widest shape the scalar computes exactly, [`Scalar::MAX_EXTENT`].
+    pub limit: f64,
+}
+
+impl core::fmt::Display for TooLarge {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        let TooLarge { index, width, limit } = self;
+        write!(
+            f,
+            "shape {index} would be {width} mm across, wider than the {limit} mm this number type computes exactly"
+        )
+    }
+}
+
+impl core::error::Error for TooLarge {}
+
+/// Refuses a run whose stop conditions let it reach a shape wider than its scalar computes
+/// exactly ([`Scalar::MAX_EXTENT`]; `f64` has no limit), with the first such shape: its
+/// squared lengths would saturate and the exact tests stop being tests. Each kind's widest
+/// shape is its first placement (looked for over at most 2^16 placements: past them the
+/// 2^16-th shape stands for it, which only errs early). `capacity` and `stop` as in
+/// [`check_smallest`].
+///
+/// ```
+/// use zetafill::{check_largest, AreaSequence, Fixed, ShapeKind, ShapeList, Stop, MixOrder};
+/// // A 10 m torus at c = 1.05: the second shape, a rectangle of aspect 1e-4, is 127 m long.
+/// let seq = AreaSequence::new(1e8, 1.05, 2.0)?;
+/// let mix = ShapeList::mix(&[ShapeKind::Circle, ShapeKind::Rect { aspect: 1e-4 }], MixOrder::Cycle, 0).ok_or("mix")?;
+/// let two = Stop { count: Some(2), ..Stop::default() };
+/// let err = check_largest::<Fixed>(&seq, &mix, &two, 100).unwrap_err();
+/// assert_eq!((err.index, err.limit), (1, 10_000.0));
+/// assert!(err.width > 120_000.0);
+/// // One circle, 1.8 m across, is fine; so is any shape on f64.
+/// assert_eq!(check_largest::<Fixed>(&seq, &mix, &Stop { count: Some(1), ..two }, 100), Ok(()));
+/// assert_eq!(check_largest::<f64>(&seq, &mix, &two, 100), Ok(()));
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn check_largest<S: Scalar>(seq: &AreaSequence, shapes: &ShapeList, stop: &Stop, capacity: u64) -> Result<(), TooLarge> {
+    if S::MAX_EXTENT >= f64::MAX {
+        return Ok(());
+    }
+    let window = capacity.min(1 << 16);
+    let mut first: Option<u64> = None;
+    for &kind in shapes.kinds() {
+        let Some(i) = (0..window)
+            .find(|&i| shapes.kind_of(i) == kind)
+            .or((window < capacity).then_some(window))
+        else {
+            continue;
+        };
+        if too_large::<S>(kind, seq.area(i)) {
+            first = Some(first.map_or(i, |f| f.min(i)));
+        }
+    }
+    let Some(index) = first else { return Ok(()) };
+    if stops_before(seq, shapes, stop, index) {
+        return Ok(());
+    }
+    let kind = shapes.kind_of(index);
+    Err(TooLarge {
+        index,
+        width: 2.0 * kind.bounding_radius(kind.scale_for_area(seq.area(index))),
+        limit: S::MAX_EXTENT,
     })
 }
 

@@ -15,6 +15,11 @@
 //!   squared cross product of a point's distance to an edge, a length to the fourth power, is
 //!   formed exactly in 128 bits ([`Scalar::mul_div`]). Beyond the limit squares saturate and
 //!   the tests stop being tests: 2,000 squares in a 500 m square overlapped by tens of metres.
+//! - **Shapes: at most 10,000 mm across** (the diameter of the bounding circle, at most
+//!   [`Scalar::MAX_EXTENT`]): only a torus lets a larger one in, wrapped around it, and its
+//!   squared lengths saturate (a bar 127 m long on a 10 m torus was placed across a disc's
+//!   image). The engines stop at one with [`crate::StepError::TooLarge`], and
+//!   [`crate::check_largest`] finds it before a run.
 //! - **Shapes: at least 10 µm wide** ([`Scalar::MIN_SIZE`]; the engines stop at a narrower
 //!   one with [`crate::StepError::TooSmall`], and [`crate::check_smallest`] finds it before a
 //!   run). The exact tests compare squared lengths and cross products to a resolution of

@@ -40,7 +40,8 @@
 //!   [`shape_capacity`] / [`segment_capacity`] (the slots a stop condition needs, or a
 //!   [`CapacityError`]), [`check_first_two`] and [`first_shape`] (first shapes that cannot
 //!   fit, with the largest c that works: [`FirstTwoError`], [`FirstShape`]), [`check_smallest`]
-//!   (last shapes narrower than the scalar resolves, [`TooSmall`]).
+//!   (last shapes narrower than the scalar resolves, [`TooSmall`]) and [`check_largest`]
+//!   (first shapes wider than it computes exactly, [`TooLarge`]).
 //! - 1D: [`LineEngine`], [`LineParams`], [`Interval`], [`LineStorage`] (sized with
 //!   [`line_index_words`]), [`Segment`], [`LinePlacement`].
 //! - 3D: [`SpaceEngine`] over [`SpaceStorage`] (sized with [`space_index_words`]), set up by
@@ -82,8 +83,11 @@
 //! - No public function panics on any input: invalid input is an error value; running out of
 //!   storage and halting are error values with everything placed so far intact.
 //! - What a scalar cannot compute exactly is refused: a region beyond
-//!   [`Scalar::MAX_EXTENT`] ([`ParamError::Extent`]) and a shape narrower than
-//!   [`Scalar::MIN_SIZE`] ([`StepError::TooSmall`]); both are limits of [`Fixed`] only.
+//!   [`Scalar::MAX_EXTENT`] ([`ParamError::Extent`]), a shape wider than it (on a torus,
+//!   [`StepError::TooLarge`]) and a shape narrower than [`Scalar::MIN_SIZE`]
+//!   ([`StepError::TooSmall`]) are limits of [`Fixed`]; on `f64` a shape narrower than
+//!   [`Scalar::MIN_SIZE_RELATIVE`] (2^-40) of the region's largest coordinate is refused
+//!   ([`StepError::TooSmall`]): its outline would round to zero area.
 //! - With the `defmt` feature, the error types and key types derive `defmt::Format`.
 //!
 //! ## Memory
@@ -120,8 +124,8 @@ mod zeta;
 pub use self::fixed::Fixed;
 pub use engine::{index_words, Engine, Placement, Stats, Storage};
 pub use feasibility::{
-    check_first_two, check_smallest, first_shape, segment_capacity, shape_capacity, AreaSequence, CapacityError, FirstShape, FirstTwoError,
-    TooSmall,
+    check_first_two, check_largest, check_smallest, first_shape, segment_capacity, shape_capacity, AreaSequence, CapacityError, FirstShape,
+    FirstTwoError, TooLarge, TooSmall,
 };
 pub use geom::{Geo, Point, Verts};
 pub use line::{line_index_words, Interval, LineEngine, LineParams, LinePlacement, LineStorage, Segment};

@@ -188,9 +188,17 @@ pub enum StepError {
         index: u64,
     },
     /// Shape (segment) `index` is narrower than the scalar resolves
-    /// ([`crate::Scalar::MIN_SIZE`]); [`crate::check_smallest`] finds this before a run.
+    /// ([`crate::Scalar::MIN_SIZE`], or [`crate::Scalar::MIN_SIZE_RELATIVE`] of the region's
+    /// coordinates); [`crate::check_smallest`] finds this before a run.
     TooSmall {
         /// The shape that is too small.
+        index: u64,
+    },
+    /// Shape `index` is wider (its bounding circle's diameter) than the scalar computes
+    /// exactly ([`crate::Scalar::MAX_EXTENT`]): only a torus lets such a shape in, wrapped
+    /// around it; [`crate::check_largest`] finds this before a run.
+    TooLarge {
+        /// The shape that is too large.
         index: u64,
     },
 }
@@ -202,6 +210,7 @@ impl core::fmt::Display for StepError {
             StepError::Capacity { capacity } => write!(f, "storage for {capacity} shapes is full"),
             StepError::CannotFit { index } => write!(f, "shape {index} is larger than the region allows"),
             StepError::TooSmall { index } => write!(f, "shape {index} is narrower than this number type resolves"),
+            StepError::TooLarge { index } => write!(f, "shape {index} is wider than this number type computes exactly"),
         }
     }
 }

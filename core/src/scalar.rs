@@ -68,6 +68,15 @@ pub trait Scalar:
     /// none narrower ([`crate::StepError::TooSmall`]) and [`crate::check_smallest`] finds,
     /// before a run, whether its stop conditions would reach one. `f64`: 0 (no limit).
     const MIN_SIZE: f64;
+    /// The narrowest shape the geometry resolves, as a fraction of the largest coordinate of
+    /// the region's bounding box ([`crate::Region::magnitude`]): for a floating-point scalar,
+    /// whose resolution grows with the coordinates. The engines place no shape narrower than
+    /// the larger of this limit and [`Scalar::MIN_SIZE`] ([`crate::StepError::TooSmall`]).
+    /// `f64`: 2^-40, at least 4,096 units in the last place of the coordinates, so that a
+    /// polygon's vertices stay distinct and its drawn outline is the power-law shape (a
+    /// narrower rectangle's sides round onto each other: an outline of zero area). Fixed
+    /// point resolves an absolute width: 0 (the default).
+    const MIN_SIZE_RELATIVE: f64 = 0.0;
     /// Whether the type is `f64` itself (IEEE-754 binary64, rounding to nearest). A polygon
     /// region's edge tree answers queries on such a scalar by visiting only the edges near
     /// the point or shape asked about: its proofs that the skipped edges change nothing bound
@@ -189,6 +198,7 @@ impl Scalar for f64 {
     const ONE: Self = 1.0;
     const MAX_EXTENT: f64 = f64::MAX;
     const MIN_SIZE: f64 = 0.0;
+    const MIN_SIZE_RELATIVE: f64 = 1.0 / 1_099_511_627_776.0;
     const IS_F64: bool = true;
     const OUTLINE_SLACK: [f64; 2] = [0.0, 0.0];
     const BOUND_SLACK: [f64; 2] = [1e-9, 1e-12];

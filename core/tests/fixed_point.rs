@@ -12,8 +12,9 @@
 mod common;
 
 use zetafill::{
-    cells_for, check_smallest, rng_from_seed, AreaSequence, CellSampler, Engine, Fixed, Geo, Interval, LineEngine, LineParams, LineStorage,
-    ParamError, Params, Placed, Point, PolygonRegion, Region, Scalar, Segment, ShapeKind, StepError, Stop, StopReason,
+    cells_for, check_largest, check_smallest, rng_from_seed, AreaSequence, CellSampler, Engine, Fixed, Geo, Interval, LineEngine,
+    LineParams, LineStorage, ParamError, Params, Placed, Point, PolygonRegion, Region, Scalar, Segment, ShapeKind, StepError, Stop,
+    StopReason,
 };
 
 // ---------------------------------------------------------------------------------------------
@@ -442,7 +443,7 @@ fn shapes_below_the_fixed_resolution_are_refused() {
     let circles = ShapeKind::Circle.into();
     let width = |i: u64| ShapeKind::Circle.min_width(ShapeKind::Circle.scale_for_area(seq.area(i)));
     let stop = |count: Option<u64>, fill: Option<f64>, min_size: Option<f64>| Stop { count, fill, min_size };
-    let err = check_smallest::<Fixed>(&seq, &circles, &stop(Some(2000), None, None), 4000).expect_err("too small");
+    let err = check_smallest::<Fixed>(&seq, &circles, &stop(Some(2000), None, None), 4000, &region).expect_err("too small");
     let first = err.index;
     assert!(width(first) < 0.01 && width(first - 1) >= 0.01, "{err:?}");
     assert_eq!((err.width, err.limit), (width(first), 0.01));
@@ -453,14 +454,17 @@ fn shapes_below_the_fixed_resolution_are_refused() {
         (stop(None, Some(seq.covered(first)), None), 4000),
         (stop(Some(2000), None, None), first),
     ] {
-        assert_eq!(check_smallest::<Fixed>(&seq, &circles, &ok, capacity), Ok(()), "{ok:?}");
+        assert_eq!(check_smallest::<Fixed>(&seq, &circles, &ok, capacity, &region), Ok(()), "{ok:?}");
     }
-    assert!(check_smallest::<Fixed>(&seq, &circles, &stop(None, None, Some(0.009)), 4000).is_err());
-    assert_eq!(check_smallest::<f64>(&seq, &circles, &stop(Some(2000), None, None), 4000), Ok(()));
+    assert!(check_smallest::<Fixed>(&seq, &circles, &stop(None, None, Some(0.009)), 4000, &region).is_err());
+    assert_eq!(
+        check_smallest::<f64>(&seq, &circles, &stop(Some(2000), None, None), 4000, &region),
+        Ok(())
+    );
     // A mix: the first shape of either kind that is too narrow (a ring's band is a fifth of
     // its radius, narrower than a circle of its area).
     let mix = zetafill::ShapeList::mix(&[ShapeKind::Circle, ShapeKind::Ring { inner: 0.8 }], zetafill::MixOrder::Cycle, 0).expect("a mix");
-    let err = check_smallest::<Fixed>(&seq, &mix, &stop(Some(2000), None, None), 4000).expect_err("too small");
+    let err = check_smallest::<Fixed>(&seq, &mix, &stop(Some(2000), None, None), 4000, &region).expect_err("too small");
     assert!(err.index < first && err.index % 2 == 1, "{err:?}");
 
     // The engine stops at the same shape, every shape placed before it at least 10 µm wide.
@@ -500,4 +504,70 @@ fn shapes_below_the_fixed_resolution_are_refused() {
         panic!("{reason:?}")
     };
     assert!(line.length_of(index) < 0.01 && line.length_of(index - 1) >= 0.01);
+}
+
+/// Fuzz seed `engine_fixed` (core/proptest-regressions/fuzz/engine_fixed.txt): on a
+/// 10,000 mm torus at c = 1.05, N = 2, the mix [circle, rect of aspect 1e-4, circle] makes
+/// shape 1 a bar 127,000 mm long and 12 mm wide. Its squared lengths saturate on fixed point,
+/// and the reference sampler placed it across the first disc's image four periods away. A
+/// shape wider than `Fixed::MAX_EXTENT` is now refused before the run (`check_largest`) and
+/// by the engine, which stops there with every shape before it placed.
+#[test]
+fn fixed_bar_longer_than_the_torus_crossed_a_disc_image() {
+    let region = Region::Rect {
+        width: 10_000.0,
+        height: 10_000.0,
+        periodic: true,
+    };
+    let kinds = [ShapeKind::Circle, ShapeKind::Rect { aspect: 1e-4 }, ShapeKind::Circle];
+    let mix = zetafill::ShapeList::mix(&kinds, zetafill::MixOrder::Cycle, 0).expect("a mix");
+    let params = Params {
+        c: 1.05,
+        n_offset: 2.0,
+        shape: mix.clone(),
+        rotate: true,
+        gap: 0.0,
+        max_trials: 7,
+    };
+    let seq = AreaSequence::new(1e8, 1.05, 2.0).expect("a sequence");
+    let stop = Stop {
+        count: Some(2),
+        min_size: Some(0.01),
+        ..Stop::default()
+    };
+    let err = check_largest::<Fixed>(&seq, &mix, &stop, 2).expect_err("too large");
+    assert_eq!((err.index, err.limit), (1, 10_000.0), "{err:?}");
+    assert!(err.width > 120_000.0, "{err:?}");
+    assert_eq!(check_largest::<Fixed>(&seq, &mix, &Stop { count: Some(1), ..stop }, 2), Ok(()));
+    assert_eq!(check_largest::<f64>(&seq, &mix, &stop, 2), Ok(()));
+
+    let mut b = common::Buffers::<Fixed>::new(2);
+    let mut e = Engine::<Fixed>::new(params.clone(), region, b.storage(&mut [])).expect("valid");
+    let mut rng = rng_from_seed(1571467049953998411);
+    let mut last = Ok(());
+    for _ in 0..4 {
+        match e.step(&mut rng) {
+            Ok(_) => {}
+            Err(StepError::Halted { index: 0, .. }) => continue,
+            Err(err) => {
+                last = Err(err);
+                break;
+            }
+        }
+    }
+    assert_eq!(last, Err(StepError::TooLarge { index: 1 }));
+    assert_eq!(e.placed().len(), 1);
+    // A run stops there too.
+    let mut b = common::Buffers::<Fixed>::new(2);
+    let mut e = Engine::<Fixed>::new(
+        Params {
+            max_trials: 10_000,
+            ..params
+        },
+        region,
+        b.storage(&mut []),
+    )
+    .expect("valid");
+    let reason = e.run(&mut rng_from_seed(1571467049953998411), &stop, |_| {});
+    assert_eq!(reason, StopReason::Step(StepError::TooLarge { index: 1 }));
 }

@@ -486,3 +486,56 @@ fn the_fill_checker_can_fail() {
         "overlap across the edge not found"
     );
 }
+
+/// Fuzz seed `engine_f64` (core/proptest-regressions/fuzz/engine_f64.txt): at c = 50 in a
+/// 1 x 1.7458 torus, shape 5 of a random mix of six circles and a rectangle of aspect 1e-6 is
+/// a rectangle 3e-17 wide, a fifth of an f64 ulp of its coordinates: its four vertices
+/// rounded onto two points, an outline of zero area, and the engine placed it. A shape
+/// narrower than 2^-40 of the region's largest coordinate is now refused before the run
+/// (`check_smallest`) and by the engine, which stops there.
+#[test]
+fn f64_rect_narrower_than_an_ulp_was_placed_with_zero_area() {
+    use zetafill::{check_smallest, AreaSequence, MixOrder, ShapeList, StepError};
+    let height = 1.7458006789965368;
+    let region = Region::Rect {
+        width: 1.0,
+        height,
+        periodic: true,
+    };
+    let mut kinds = vec![ShapeKind::Circle; 6];
+    kinds.push(ShapeKind::Rect { aspect: 1e-6 });
+    let mix = ShapeList::mix(&kinds, MixOrder::Random, 17408239503747695232).expect("a mix");
+    assert_eq!(mix.kind_of(5), ShapeKind::Rect { aspect: 1e-6 });
+    let params = Params {
+        c: 50.0,
+        n_offset: 2.0,
+        shape: mix.clone(),
+        rotate: true,
+        gap: 0.0,
+        max_trials: 1,
+    };
+    let stop = Stop {
+        count: Some(6),
+        ..Stop::default()
+    };
+    let seq = AreaSequence::new(height, 50.0, 2.0).expect("a sequence");
+    let err = check_smallest::<f64>(&seq, &mix, &stop, 6, &region).expect_err("too small");
+    assert_eq!((err.index, err.limit), (5, height / 1_099_511_627_776.0), "{err:?}");
+    assert!(err.width < 1e-16, "{err:?}");
+    assert_eq!(
+        check_smallest::<f64>(&seq, &mix, &Stop { count: Some(5), ..stop }, 6, &region),
+        Ok(())
+    );
+
+    let mut shapes = vec![Placed::<f64>::default(); 6];
+    let mut index = vec![0u32; index_words(6)];
+    let storage = Storage {
+        shapes: &mut shapes,
+        index: &mut index,
+        coverage: &mut [],
+    };
+    let mut e = Engine::<f64>::new(params, region, storage).expect("valid");
+    let reason = e.run(&mut rng_from_seed(15794296920101147133), &stop, |_| {});
+    assert_eq!(reason, StopReason::Step(StepError::TooSmall { index: 5 }));
+    assert_eq!(e.placed().len(), 5);
+}

@@ -7,8 +7,8 @@ use crate::error::CliError;
 use crate::model::doc::{kind_name, FillDoc, ParamsDoc, ShapeDoc, ShapeParamsDoc, StatsDoc};
 use crate::output;
 use crate::plan::fill::{
-    first_shape_error, first_two_error, fixed_outline_error, halt_advice, param_error, too_small_error, FillDraw, FillPlan, FillRun,
-    FIXED_MAX_VERTICES, SHAPES,
+    first_shape_error, first_two_error, fixed_outline_error, halt_advice, param_error, too_large_error, too_small_error, FillDraw,
+    FillPlan, FillRun, FIXED_MAX_VERTICES, SHAPES,
 };
 use crate::plan::format::Format;
 use crate::plan::raster::{height_map_error, png_error};
@@ -87,7 +87,8 @@ fn run_engine<S: zetafill::Scalar>(
     }
     // Before the storage is allocated: a run that reaches shapes the scalar cannot resolve
     // may ask for millions.
-    zetafill::check_smallest::<S>(sequence, &params.shape, stop, cap as u64).map_err(|e| too_small_error(e, stop))?;
+    zetafill::check_smallest::<S>(sequence, &params.shape, stop, cap as u64, &region).map_err(|e| too_small_error(e, stop, S::IS_F64))?;
+    zetafill::check_largest::<S>(sequence, &params.shape, stop, cap as u64).map_err(|e| too_large_error(e, &params.shape))?;
     let mut shapes = vec![Placed::<S>::default(); cap];
     let mut index = vec![0u32; index_words(cap)];
     // Only the paper's sampler asks the coverage bitmap (the cell sampler never does).
@@ -187,7 +188,9 @@ pub fn compute(a: &FillRun) -> Result<(FillDoc, Option<StepError>), CliError> {
             ))
         }
         StopReason::Step(e @ StepError::Halted { .. }) => ("halted", Some(e)),
-        StopReason::Step(e @ (StepError::CannotFit { .. } | StepError::TooSmall { .. })) => ("halted", Some(e)),
+        StopReason::Step(e @ (StepError::CannotFit { .. } | StepError::TooSmall { .. } | StepError::TooLarge { .. })) => {
+            ("halted", Some(e))
+        }
         StopReason::Step(e @ StepError::Capacity { .. }) => return Err(CliError::Io(format!("internal: {e}"))),
     };
     let doc = FillDoc {

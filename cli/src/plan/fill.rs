@@ -21,7 +21,7 @@ use crate::plan::plot::{GcodePlan, PagePlan};
 use crate::plan::raster::{self, only_png};
 use crate::plan::Unit;
 use zetafill::ParamError;
-use zetafill::{FirstShape, FirstTwoError, MixOrder, Params, ShapeList, Stop, TooSmall};
+use zetafill::{FirstShape, FirstTwoError, MixOrder, Params, ShapeList, Stop, TooLarge, TooSmall};
 
 /// What a 2D run places, and the most one run may hold.
 pub const SHAPES: Unit = Unit {
@@ -330,11 +330,23 @@ pub fn param_error(e: ParamError) -> CliError {
 }
 
 /// The usage error of a run whose stop conditions reach a shape narrower than the scalar
-/// resolves (the core's [`zetafill::check_smallest`]; only `--scalar fixed` has a limit),
-/// naming the stop condition that lets it through.
-pub fn too_small_error(e: TooSmall, stop: &Stop) -> CliError {
+/// resolves (the core's [`zetafill::check_smallest`]: 10 µm on `--scalar fixed`, 2^-40 of
+/// the region's largest coordinate on `--scalar f64`), naming the stop condition that lets
+/// it through. `is_f64`: the scalar is `f64`.
+pub fn too_small_error(e: TooSmall, stop: &Stop, is_f64: bool) -> CliError {
     let TooSmall { index, width, limit } = e;
-    let shape = format!("shape {index} ({width} mm wide) is narrower than the {limit} mm that --scalar fixed resolves");
+    // f64's limits are far below a micrometre: in exponent form.
+    let (width, limit) = if is_f64 {
+        (format!("{width:e}"), format!("{limit:e}"))
+    } else {
+        (width.to_string(), limit.to_string())
+    };
+    let scalar = if is_f64 {
+        "--scalar f64 resolves at this region's coordinates (its outline would round to zero area)"
+    } else {
+        "--scalar fixed resolves"
+    };
+    let shape = format!("shape {index} ({width} mm wide) is narrower than the {limit} mm that {scalar}");
     let (flag, advice) = match (stop.count, stop.fill, stop.min_size) {
         (Some(count), _, _) => (
             "--count",
@@ -347,9 +359,33 @@ pub fn too_small_error(e: TooSmall, stop: &Stop) -> CliError {
         (None, None, Some(m)) => ("--min-size", format!("stopping at {m} mm, {shape}; raise it to {limit}")),
         (None, None, None) => ("--count", format!("{shape}; give --count or --min-size {limit}")),
     };
+    let last = if is_f64 {
+        "or use less slender --shape proportions"
+    } else {
+        "or use --scalar f64"
+    };
     CliError::arg(
         flag,
-        format!("{advice}, lower --c or raise --n-offset (larger small shapes), or use --scalar f64"),
+        format!("{advice}, lower --c or raise --n-offset (larger small shapes), {last}"),
+    )
+}
+
+/// The usage error of a run whose stop conditions reach a shape wider than `--scalar fixed`
+/// computes exactly (the core's [`zetafill::check_largest`]: only a torus lets one in,
+/// wrapped around it). Names `--shape` for a slender kind, `--n-offset` otherwise.
+pub fn too_large_error(e: TooLarge, shape: &ShapeList) -> CliError {
+    let TooLarge { index, width, limit } = e;
+    let kind = shape.kind_of(index);
+    let flag = if kind.min_width(1.0) < 0.5 * kind.bounding_radius(1.0) {
+        "--shape"
+    } else {
+        "--n-offset"
+    };
+    CliError::arg(
+        flag,
+        format!(
+            "shape {index} would be {width} mm across, wider than the {limit} mm that --scalar fixed computes exactly (it would wrap around the torus); use less slender --shape proportions, raise --n-offset or lower --c (smaller first shapes), or use --scalar f64"
+        ),
     )
 }
 

@@ -4,6 +4,7 @@
 //! limit).
 
 use super::Engine;
+use crate::feasibility::too_large;
 use crate::geom::Point;
 use crate::params::StepError;
 use crate::region::Region;
@@ -104,14 +105,20 @@ impl<S: Scalar> Engine<'_, S> {
         }
         let kind = self.kind_of(index);
         let area = self.area_of(index);
-        // Below the scalar's resolution the exact tests are not exact (f64 has no limit: this
-        // is compiled out).
-        if S::MIN_SIZE > 0.0 && kind.min_width(kind.scale_for_area(area)) < S::MIN_SIZE {
+        // Below the scalar's resolution the exact tests are not exact, and on f64 a polygon's
+        // vertices round onto each other where the coordinates are large.
+        let scale = kind.scale_for_area(area);
+        if kind.min_width(scale) < self.min_size {
             return Err(StepError::TooSmall { index });
         }
         let base_scale: S = kind.scale_for(area, S::ZERO);
         if !(base_scale > S::ZERO && base_scale.is_finite()) || self.cannot_fit(kind, area) {
             return Err(StepError::CannotFit { index });
+        }
+        // Wider than the scalar computes exactly: its squared lengths would saturate (f64 has
+        // no limit). Only a torus lets such a shape in; any other region refused it above.
+        if too_large::<S>(kind, area) {
+            return Err(StepError::TooLarge { index });
         }
         let rotated = self.params.rotate && kind.rotates();
         let is_blob = matches!(kind, ShapeKind::Blob { .. });

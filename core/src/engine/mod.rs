@@ -165,6 +165,8 @@ pub struct Engine<'a, S: Scalar> {
     trials: u64,
     gap: S,
     period: (S, S),
+    /// The narrowest shape the scalar resolves in this region ([`crate::Region::magnitude`]).
+    min_size: f64,
 }
 
 /// Index words needed for `capacity` shapes: one link each plus `2 * capacity` buckets (the
@@ -284,6 +286,7 @@ impl<'a, S: Scalar> Engine<'a, S> {
             trials: 0,
             gap,
             period: (S::from_f64(w), S::from_f64(h)),
+            min_size: crate::feasibility::min_size::<S>(&region),
         })
     }
 

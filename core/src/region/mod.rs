@@ -610,6 +610,13 @@ impl Region<'_> {
         }
     }
 
+    /// The largest absolute coordinate of the bounding box: where a floating-point scalar's
+    /// resolution is coarsest (see [`Scalar::MIN_SIZE_RELATIVE`]).
+    pub fn magnitude(&self) -> f64 {
+        let (x0, y0, x1, y1) = self.bbox();
+        [x0, y0, x1, y1].iter().fold(0.0f64, |m, v| m.max(v.abs()))
+    }
+
     /// Whether the bounding box has sides of at most `max` and lies within `max` of the
     /// origin on each axis (see [`Scalar::MAX_EXTENT`]).
     pub fn within(&self, max: f64) -> bool {

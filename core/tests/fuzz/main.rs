@@ -268,8 +268,10 @@ fn run_case<S: Scalar>(case: &Case, tally: &Tally) -> Result<bool, String> {
             }
             StepError::Capacity { capacity } => capacity == case.capacity as u64 && n == case.capacity,
             StepError::CannotFit { index } => index == n as u64,
-            // Only fixed point has a narrowest shape.
-            StepError::TooSmall { index } => index == n as u64 && matches!(case.scalar, Scal::Fixed),
+            // Fixed point has a narrowest shape; f64 one relative to the region's coordinates.
+            StepError::TooSmall { index } => index == n as u64,
+            // Only fixed point has a widest shape.
+            StepError::TooLarge { index } => index == n as u64 && matches!(case.scalar, Scal::Fixed),
         },
         End::Stepped(None) => case.stop.count.is_none_or(|k| n as u64 == k) || case.stop.min_size.is_some(),
     };

@@ -85,10 +85,15 @@ fn run_engine<S: zetafill::Scalar>(
             return Err(fixed_outline_error(p.points().len()));
         }
     }
+    // The region first: the shapes' limits below are measured against what it allows.
+    if !region.within(S::MAX_EXTENT) {
+        return Err(param_error(zetafill::ParamError::Extent));
+    }
     // Before the storage is allocated: a run that reaches shapes the scalar cannot resolve
     // may ask for millions.
     zetafill::check_smallest::<S>(sequence, &params.shape, stop, cap as u64, &region).map_err(|e| too_small_error(e, stop, S::IS_F64))?;
-    zetafill::check_largest::<S>(sequence, &params.shape, stop, cap as u64).map_err(|e| too_large_error(e, &params.shape))?;
+    zetafill::check_largest::<S>(sequence, &params.shape, stop, cap as u64)
+        .map_err(|e| too_large_error(e, &params.shape, region.periodic()))?;
     let mut shapes = vec![Placed::<S>::default(); cap];
     let mut index = vec![0u32; index_words(cap)];
     // Only the paper's sampler asks the coverage bitmap (the cell sampler never does).

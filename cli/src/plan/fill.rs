@@ -373,7 +373,7 @@ pub fn too_small_error(e: TooSmall, stop: &Stop, is_f64: bool) -> CliError {
 /// The usage error of a run whose stop conditions reach a shape wider than `--scalar fixed`
 /// computes exactly (the core's [`zetafill::check_largest`]: only a torus lets one in,
 /// wrapped around it). Names `--shape` for a slender kind, `--n-offset` otherwise.
-pub fn too_large_error(e: TooLarge, shape: &ShapeList) -> CliError {
+pub fn too_large_error(e: TooLarge, shape: &ShapeList, periodic: bool) -> CliError {
     let TooLarge { index, width, limit } = e;
     let kind = shape.kind_of(index);
     let flag = if kind.min_width(1.0) < 0.5 * kind.bounding_radius(1.0) {
@@ -384,7 +384,8 @@ pub fn too_large_error(e: TooLarge, shape: &ShapeList) -> CliError {
     CliError::arg(
         flag,
         format!(
-            "shape {index} would be {width} mm across, wider than the {limit} mm that --scalar fixed computes exactly (it would wrap around the torus); use less slender --shape proportions, raise --n-offset or lower --c (smaller first shapes), or use --scalar f64"
+            "shape {index} would be {width} mm across, wider than the {limit} mm that --scalar fixed computes exactly{}; use less slender --shape proportions, raise --n-offset or lower --c (smaller first shapes), or use --scalar f64",
+            if periodic { " (it would wrap around the torus)" } else { "" }
         ),
     )
 }

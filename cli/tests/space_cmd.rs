@@ -268,3 +268,53 @@ fn bad_input_names_its_flag_and_writes_nothing() {
         assert!(left.is_empty(), "{a:?} wrote {left:?}");
     }
 }
+
+#[test]
+fn the_svg_desc_makes_the_same_sheets_again() {
+    let dir = tmp();
+    let args = [
+        "--shape",
+        "mix:octahedron,shell:0.6",
+        "--region",
+        "box:50:50:30",
+        "--n-offset",
+        "3",
+        "--count",
+        "40",
+        "--slices",
+        "6",
+    ];
+    let svg = String::from_utf8(space_to(dir.path(), "a.svg", &args)).expect("utf-8");
+    let start = svg.find("<desc>").expect("desc") + "<desc>".len();
+    let end = start + svg[start..].find("</desc>").expect("end");
+    let words: Vec<&str> = svg[start..end].split_whitespace().skip(2).collect();
+    assert_eq!(space_to(dir.path(), "b.svg", &words), svg.as_bytes());
+}
+
+#[test]
+fn fixed_point_runs_its_own_deterministic_fill() {
+    let dir = tmp();
+    let args = [
+        "--shape",
+        "octahedron",
+        "--region",
+        "box:60:60:60",
+        "--n-offset",
+        "3",
+        "--count",
+        "40",
+        "--format",
+        "digest",
+    ];
+    let f64_line = space_to(dir.path(), "a.txt", &args);
+    let fixed = [&args[..], &["--scalar", "fixed"]].concat();
+    let one = space_to(dir.path(), "b.txt", &fixed);
+    assert_eq!(one, space_to(dir.path(), "c.txt", &fixed));
+    assert!(one.starts_with(b"40 ") && one != f64_line);
+    let doc = parse_json(&space_to(
+        dir.path(),
+        "d.json",
+        &[&fixed[..fixed.len() - 4], &["--scalar", "fixed"]].concat(),
+    ));
+    assert_eq!(doc["params"]["scalar"].as_str(), Some("fixed"));
+}

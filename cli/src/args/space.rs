@@ -195,13 +195,14 @@ pub fn dimension_3d(s: &str) -> Result<f64, String> {
 /// Arguments of `zetafill space`.
 #[derive(Debug, Args)]
 #[command(
-    mut_arg("c", |a| a.help("Power-law exponent c > 1 (default 1.2; about 1.2 is the 3D limit for cubes with N = 1)")),
+    mut_arg("c", |a| a.help("Power-law exponent c > 1 (default 1.15; about 1.2 is the 3D limit for cubes with N = 1)")),
     mut_arg("dimension", |a| a.help("Fractal dimension D in (0, 3) instead of c (c = 3/D)").value_parser(dimension_3d)),
     mut_arg("n_offset", |a| a.help("The paper's N > 0: larger N makes the first solids smaller")),
     mut_arg("count", |a| a.help("Stop after K solids (default 2000 when no stop condition is given)")),
     mut_arg("fill", |a| a.help("Stop once this fraction of the region's volume is filled, 0 < F < 1")),
     mut_arg("min_size", |a| a.help("Stop before the first solid narrower than MM")),
     mut_arg("gap", |a| a.help("Minimum clearance between solids and to the boundary, in mm")),
+    mut_arg("output", |a| a.help("Output path; the format comes from the extension (.json .csv .stl .obj .glb .png, .svg with --slices); '-' is stdout (JSON)")),
 )]
 pub struct SpaceArgs {
     /// sphere | cube | tetrahedron | octahedron | shell:RATIO (hole over radius) |
@@ -227,7 +228,7 @@ pub struct SpaceArgs {
     /// Number type of the engine: f64 or fixed (32.32 fixed point).
     #[arg(long, value_enum, default_value = "f64")]
     pub scalar: ScalarArg,
-    /// Where the output goes: .json .csv .stl .obj .glb .png, .svg with --slices.
+    /// Where the output goes.
     #[command(flatten)]
     pub output: OutputArgs<SpaceFormatArg>,
     /// STL, OBJ, GLB: segments around a sphere's equator and a torus's ring.

@@ -318,3 +318,53 @@ fn fixed_point_runs_its_own_deterministic_fill() {
     ));
     assert_eq!(doc["params"]["scalar"].as_str(), Some("fixed"));
 }
+
+#[test]
+fn spheres_keep_their_gap_from_each_other_and_the_boundary() {
+    // Checked here from the JSON alone: centre distances against radii, never the engine's
+    // own tests.
+    let dir = tmp();
+    let gap = 0.4;
+    for region in ["ball:30", "box:50:40:30", "boxball:60:60:60:12"] {
+        let doc = parse_json(&space_to(
+            dir.path(),
+            "a.json",
+            &["--region", region, "--n-offset", "8", "--gap", "0.4", "--count", "150"],
+        ));
+        let balls: Vec<([f64; 3], f64)> = solids(&doc)
+            .iter()
+            .map(|s| {
+                let c = [0, 1, 2].map(|i| s["center"][i].as_f64().expect("centre"));
+                (c, s["size"].as_f64().expect("radius"))
+            })
+            .collect();
+        assert_eq!(balls.len(), 150, "{region}");
+        let dist = |a: [f64; 3], b: [f64; 3]| ((a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2) + (a[2] - b[2]).powi(2)).sqrt();
+        for (i, &(a, ra)) in balls.iter().enumerate() {
+            for &(b, rb) in &balls[..i] {
+                assert!(dist(a, b) > ra + rb + gap, "{region}: sphere {i} is too near another");
+            }
+            let r = &doc["region"];
+            match r["kind"].as_str() {
+                Some("ball") => {
+                    let (c, big) = ([r["radius"].as_f64().expect("r"); 3], r["radius"].as_f64().expect("r"));
+                    assert!(dist(a, c) + ra + gap <= big, "{region}: sphere {i} leaves the ball");
+                }
+                _ => {
+                    let side = ["width", "height", "depth"].map(|k| r[k].as_f64().expect("side"));
+                    assert!(
+                        (0..3).all(|k| a[k] - ra - gap >= 0.0 && a[k] + ra + gap <= side[k]),
+                        "{region}: sphere {i} leaves the box"
+                    );
+                    if r["kind"].as_str() == Some("boxball") {
+                        let c = [0, 1, 2].map(|k| r["center"][k].as_f64().expect("centre"));
+                        assert!(
+                            dist(a, c) > r["radius"].as_f64().expect("radius") + ra + gap,
+                            "{region}: sphere {i} enters the ball"
+                        );
+                    }
+                }
+            }
+        }
+    }
+}

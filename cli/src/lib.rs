@@ -49,6 +49,7 @@ pub fn run(cli: Cli) -> Result<(), CliError> {
     match cli.command {
         Command::Fill(a) => cmd::fill::run(&plan::fill::resolve(&a)?),
         Command::Line(a) => cmd::line::run(&plan::line::resolve(&a)?),
+        Command::Space(a) => cmd::space::run(&plan::space::resolve(&a)?),
         Command::Territory(a) => cmd::territory::run(&plan::territory::resolve(&a)?),
         Command::Tile(a) => cmd::tile::run(&plan::tile::resolve(&a)?),
         Command::Stats(s) => cmd::stats::run(&plan::stats::resolve(&s)?),

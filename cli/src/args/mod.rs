@@ -10,6 +10,7 @@ pub mod line;
 pub mod machines;
 pub mod plot;
 pub mod raster;
+pub mod space;
 pub mod spec;
 pub mod stats;
 pub mod style;
@@ -37,6 +38,9 @@ pub enum Command {
     Fill(fill::FillArgs),
     /// Fill an interval with segments whose lengths follow a power law (1D).
     Line(line::LineArgs),
+    /// Fill a 3D region (box, ball, box without a ball) with solids whose volumes follow a
+    /// power law: JSON, CSV, STL, OBJ, GLB, a PNG render, or SVG sheets for stacked laser cuts.
+    Space(space::SpaceArgs),
     /// Sugihara's Voronoi territory competing: boundaries, cells or coloured cells.
     Territory(territory::TerritoryArgs),
     /// The scale-periodic fractal tile of the "Fractal Tiles" post: a texture that meets

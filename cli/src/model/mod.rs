@@ -51,6 +51,7 @@ pub mod region;
 pub mod shape;
 pub mod slices;
 pub mod solid;
+pub mod space;
 pub mod tile;
 
 pub use clip::{clip_area, clip_path, clip_polygon, clip_segment};

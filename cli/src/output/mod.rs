@@ -18,6 +18,7 @@ pub mod order;
 pub mod palette;
 pub mod png;
 pub mod render3d;
+pub mod space;
 pub mod stl;
 pub mod svg;
 

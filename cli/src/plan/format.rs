@@ -3,6 +3,7 @@
 //! says nothing is refused naming `--output`.
 
 use crate::args::format::FormatArg;
+use crate::args::space::SpaceFormatArg;
 use crate::args::stats::ChartFormatArg;
 use crate::args::territory::TerritoryFormatArg;
 use crate::args::tile::TileFormatArg;
@@ -50,6 +51,73 @@ pub enum TerritoryFormat {
     Json,
     /// G-code for a plotter or laser.
     Gcode,
+}
+
+/// What `space` writes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum SpaceFormat {
+    /// JSON document (version 1, mode "space").
+    Json,
+    /// One row per solid.
+    Csv,
+    /// Binary STL.
+    Stl,
+    /// Wavefront OBJ.
+    Obj,
+    /// glTF 2.0 binary.
+    Glb,
+    /// A shaded render.
+    Png,
+    /// The sheets of `--slices`.
+    Svg,
+    /// The digest line.
+    Digest,
+}
+
+impl From<SpaceFormatArg> for SpaceFormat {
+    fn from(f: SpaceFormatArg) -> SpaceFormat {
+        match f {
+            SpaceFormatArg::Json => SpaceFormat::Json,
+            SpaceFormatArg::Csv => SpaceFormat::Csv,
+            SpaceFormatArg::Stl => SpaceFormat::Stl,
+            SpaceFormatArg::Obj => SpaceFormat::Obj,
+            SpaceFormatArg::Glb => SpaceFormat::Glb,
+            SpaceFormatArg::Png => SpaceFormat::Png,
+            SpaceFormatArg::Svg => SpaceFormat::Svg,
+            SpaceFormatArg::Digest => SpaceFormat::Digest,
+        }
+    }
+}
+
+impl SpaceFormat {
+    /// The format: `--format`, or else the extension of `path` (JSON for `-`).
+    pub fn resolve(given: Option<SpaceFormatArg>, path: &Path) -> Result<SpaceFormat, CliError> {
+        use SpaceFormat::*;
+        let known = [
+            ("json", Json),
+            ("csv", Csv),
+            ("stl", Stl),
+            ("obj", Obj),
+            ("glb", Glb),
+            ("png", Png),
+            ("svg", Svg),
+        ];
+        format_for(given.map(SpaceFormat::from), path, Json, &known)
+    }
+
+    /// The name `--format` takes.
+    pub fn name(self) -> &'static str {
+        match self {
+            SpaceFormat::Json => "json",
+            SpaceFormat::Csv => "csv",
+            SpaceFormat::Stl => "stl",
+            SpaceFormat::Obj => "obj",
+            SpaceFormat::Glb => "glb",
+            SpaceFormat::Png => "png",
+            SpaceFormat::Svg => "svg",
+            SpaceFormat::Digest => "digest",
+        }
+    }
 }
 
 /// What `stats trials` and `stats halting` write.

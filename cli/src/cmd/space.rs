@@ -1,0 +1,183 @@
+//! `zetafill space`: the 3D fractal fill. Runs the core's 3D engine on the plan's scalar,
+//! builds the document, and writes it in the plan's format.
+
+use crate::cmd::stopping;
+use crate::error::CliError;
+use crate::model::doc::{RunParamsDoc, StatsDoc};
+use crate::model::slices;
+use crate::model::space::{scene, SolidDoc, SpaceDoc};
+use crate::output;
+use crate::output::mesh::MeshOptions;
+use crate::plan::format::SpaceFormat;
+use crate::plan::space::{first_halt_error, first_solid_error, halt_advice, SpaceDraw, SpacePlan, SpaceRun, SOLIDS};
+use zetafill::digest::space_digest;
+use zetafill::{space_index_words, PlacedSolid, Scalar, Solid, SpaceEngine, SpaceStorage, StepError, StopReason};
+
+/// What a run of the engine produced, in f64 whatever the scalar.
+struct EngineRun {
+    solids: Vec<SolidDoc>,
+    stats: zetafill::Stats,
+    reason: StopReason,
+    zeta: f64,
+    digest: (u64, u64),
+}
+
+/// The document's name of a solid.
+fn kind_name(s: &Solid) -> &'static str {
+    match s {
+        Solid::Sphere => "sphere",
+        Solid::Cube => "cube",
+        Solid::Tetrahedron => "tetrahedron",
+        Solid::Octahedron => "octahedron",
+        Solid::Shell { .. } => "shell",
+        Solid::Torus { .. } => "torus",
+    }
+}
+
+/// Runs the engine on scalar `S`.
+fn run_engine<S: Scalar>(a: &SpaceRun) -> Result<EngineRun, CliError> {
+    let cap = a.slots;
+    let mut placed = vec![PlacedSolid::<S>::default(); cap];
+    let mut index = vec![0u32; space_index_words(cap)];
+    let storage = SpaceStorage {
+        solids: &mut placed,
+        index: &mut index,
+    };
+    let mut engine = SpaceEngine::<S>::new(a.params.clone(), a.region, storage).map_err(crate::plan::fill::param_error)?;
+    let mut rng = zetafill::rng_from_seed(a.seed);
+    let bar = stopping::progress_bar(a.quiet, a.stop.count, SOLIDS);
+    let mut trials = Vec::with_capacity(cap);
+    let reason = engine.run(&mut rng, &a.stop, |p| {
+        trials.push(p.trials);
+        if let Some(b) = &bar {
+            b.inc(1);
+        }
+    });
+    if let Some(b) = &bar {
+        b.finish_and_clear();
+    }
+    let solids = engine
+        .placed()
+        .iter()
+        .enumerate()
+        .map(|(i, p)| {
+            let i = i as u64;
+            let kind = engine.kind_of(i);
+            let size = p.scale.to_f64();
+            let (inner_radius, tube_radius, beads) = match kind {
+                Solid::Shell { inner } => (Some(size * inner), None, None),
+                Solid::Torus { ratio } => (None, Some(size * ratio), Some(kind.beads() as u32)),
+                _ => (None, None, None),
+            };
+            SolidDoc {
+                index: i,
+                kind: kind_name(&kind),
+                center: [p.x.to_f64(), p.y.to_f64(), p.z.to_f64()],
+                size,
+                inner_radius,
+                tube_radius,
+                beads,
+                quaternion: p.rotation.map(|v| v.to_f64()),
+                volume: engine.volume_of(i),
+                trials: trials.get(i as usize).copied().unwrap_or(0),
+            }
+        })
+        .collect();
+    Ok(EngineRun {
+        solids,
+        stats: engine.stats(),
+        reason,
+        zeta: engine.sequence().zeta(),
+        digest: space_digest(&engine),
+    })
+}
+
+/// Runs the fill and returns the document, and the halt if any (after at least one
+/// placement: a first solid that finds no place is a usage error). Nothing is written.
+pub fn compute(a: &SpaceRun) -> Result<(SpaceDoc, Option<StepError>), CliError> {
+    let run = if a.fixed_point {
+        run_engine::<zetafill::Fixed>(a)?
+    } else {
+        run_engine::<f64>(a)?
+    };
+    let (stop_name, halt) = match run.reason {
+        StopReason::Count => ("count", None),
+        StopReason::Fill => ("fill", None),
+        StopReason::MinSize => ("min-size", None),
+        StopReason::Step(StepError::CannotFit { index: 0 }) => return Err(first_solid_error(None, &a.params)),
+        StopReason::Step(StepError::Halted { index: 0, trials }) => return Err(first_halt_error(trials)),
+        StopReason::Step(e @ StepError::Capacity { .. }) => return Err(CliError::Io(format!("internal: {e}"))),
+        StopReason::Step(e) => ("halted", Some(e)),
+    };
+    let (params, stop) = (&a.params, &a.stop);
+    let doc = SpaceDoc {
+        version: 1,
+        mode: "space",
+        command: a.command.clone(),
+        params: RunParamsDoc {
+            c: params.c,
+            n_offset: params.n_offset,
+            seed: a.seed,
+            of: a.names.clone(),
+            gap: params.gap,
+            count: stop.count,
+            fill: stop.fill,
+            min_size: stop.min_size,
+            max_trials: params.max_trials,
+            dimension: 3.0 / params.c,
+        },
+        region: a.region_doc,
+        volume: a.region.volume(),
+        zeta: run.zeta,
+        solids: run.solids,
+        stats: StatsDoc {
+            placed: run.stats.placed,
+            trials: run.stats.trials,
+            fill_fraction: run.stats.fill_fraction,
+            halted: halt.is_some(),
+            stop: stop_name,
+        },
+        digest: run.digest,
+    };
+    Ok((doc, halt))
+}
+
+/// A writer's refusal, which the plan's checks should have met first.
+fn write_error(e: impl std::fmt::Display) -> CliError {
+    CliError::Io(format!("cannot write the solids: {e}"))
+}
+
+/// Renders a document in a format.
+pub fn render(doc: &SpaceDoc, format: SpaceFormat, d: &SpaceDraw) -> Result<Vec<u8>, CliError> {
+    let region = doc.region.region3();
+    Ok(match format {
+        SpaceFormat::Json => output::space::json(doc)?,
+        SpaceFormat::Csv => output::space::csv(doc),
+        SpaceFormat::Digest => output::space::digest(doc),
+        SpaceFormat::Stl => {
+            let solids = scene(doc);
+            output::stl::to_bytes(&solids, &MeshOptions::for_scene(&solids, d.segments)).map_err(write_error)?
+        }
+        SpaceFormat::Obj => {
+            let solids = scene(doc);
+            output::obj::to_bytes(&solids, &MeshOptions::for_scene(&solids, d.segments)).map_err(write_error)?
+        }
+        SpaceFormat::Glb => output::glb::to_bytes(&scene(doc), d.segments).map_err(write_error)?,
+        SpaceFormat::Png => output::render3d::render(&scene(doc), &region, &d.render).map_err(write_error)?,
+        SpaceFormat::Svg => {
+            let opt = d.slices.ok_or_else(|| CliError::Io("internal: an SVG without --slices".into()))?;
+            let sheets = slices::slices(&scene(doc), &region, &opt).map_err(write_error)?;
+            let mut picture = slices::stacked(&sheets).ok_or_else(|| write_error("no sheet"))?;
+            picture.desc = format!("{}{}", doc.command, d.flags);
+            output::svg::write(&picture)
+        }
+    })
+}
+
+/// `zetafill space`: runs the plan and writes its output.
+pub fn run(plan: &SpacePlan) -> Result<(), CliError> {
+    let (doc, halt) = compute(&plan.run)?;
+    let bytes = render(&doc, plan.format, &plan.draw)?;
+    plan.dest.write(&bytes)?;
+    stopping::outcome(halt, SOLIDS, |index, _| halt_advice(index))
+}

@@ -1,0 +1,379 @@
+//! `zetafill space` resolved: the flags of a 3D fill checked against each other and turned
+//! into the run (the core's parameters, region and stops) and the drawing (the mesh
+//! resolution, the render, the sheets). Also the messages of the run's own outcomes that name
+//! a flag: a first solid that does not fit, a halt.
+
+use crate::args::fill::{Rotate, ScalarArg};
+use crate::args::space::{solid_name, CutArg, SpaceArgs};
+use crate::error::{num, CliError};
+use crate::io::write::Dest;
+use crate::model::slices::{SliceOptions, MAX_SHEETS};
+use crate::model::solid::{Region3, SolidKind};
+use crate::model::space::{SolidParamsDoc, SpaceRegionDoc};
+use crate::output::mesh::{MeshOptions, Mesher, SEGMENTS};
+use crate::output::render3d::{Cut, RenderOptions, MAX_SIDE};
+use crate::plan::format::SpaceFormat;
+use crate::plan::Unit;
+use zetafill::{check_first_solid, space_capacity, AreaSequence, Scalar, Solid, SpaceParams, SpaceRegion, Stop};
+
+/// The most solids one 3D run may hold (64 bytes a solid in the core, in f64).
+pub const MAX_SOLIDS: u64 = 5_000_000;
+
+/// What a 3D run places, and the most one run may hold.
+pub const SOLIDS: Unit = Unit {
+    plural: "solids",
+    max: MAX_SOLIDS,
+};
+
+/// The default exponent of a 3D fill.
+pub const DEFAULT_C: f64 = 1.15;
+
+/// A checked `zetafill space`.
+#[derive(Debug, Clone)]
+pub struct SpacePlan {
+    /// Where the output goes.
+    pub dest: Dest,
+    /// The output format.
+    pub format: SpaceFormat,
+    /// The run.
+    pub run: SpaceRun,
+    /// How the solids are written.
+    pub draw: SpaceDraw,
+}
+
+/// What the engine runs.
+#[derive(Debug, Clone)]
+pub struct SpaceRun {
+    /// The core's region.
+    pub region: SpaceRegion,
+    /// The region as the document records it.
+    pub region_doc: SpaceRegionDoc,
+    /// The core's parameters.
+    pub params: SpaceParams,
+    /// The stop conditions.
+    pub stop: Stop,
+    /// The volume sequence.
+    pub sequence: AreaSequence,
+    /// The solid slots the stop conditions need.
+    pub slots: usize,
+    /// RNG seed.
+    pub seed: u64,
+    /// The engine computes in 32.32 fixed point instead of f64.
+    pub fixed_point: bool,
+    /// No progress bar.
+    pub quiet: bool,
+    /// The names the document records.
+    pub names: SolidParamsDoc,
+    /// The command line that makes the same solids again (without the output's own flags).
+    pub command: String,
+}
+
+/// How the solids are written.
+#[derive(Debug, Clone)]
+pub struct SpaceDraw {
+    /// STL, OBJ, GLB: segments around round solids.
+    pub segments: u32,
+    /// PNG: the render's size and cut-away.
+    pub render: RenderOptions,
+    /// SVG: the sheets.
+    pub slices: Option<SliceOptions>,
+    /// The output's own flags as command-line text.
+    pub flags: String,
+}
+
+/// The core's region of `r`.
+fn core_region(r: Region3, periodic: bool) -> (SpaceRegion, SpaceRegionDoc) {
+    match r {
+        Region3::Box { w, h, d } => (
+            SpaceRegion::Box {
+                width: w,
+                height: h,
+                depth: d,
+                periodic,
+            },
+            SpaceRegionDoc::Box {
+                width: w,
+                height: h,
+                depth: d,
+                periodic,
+            },
+        ),
+        Region3::Ball { r } => (SpaceRegion::Ball { radius: r }, SpaceRegionDoc::Ball { center: [r; 3], radius: r }),
+        Region3::BoxMinusBall { w, h, d, r } => {
+            let centre = [w / 2.0, h / 2.0, d / 2.0];
+            (
+                SpaceRegion::BoxMinusBall {
+                    width: w,
+                    height: h,
+                    depth: d,
+                    centre,
+                    radius: r,
+                },
+                SpaceRegionDoc::Boxball {
+                    width: w,
+                    height: h,
+                    depth: d,
+                    center: centre,
+                    radius: r,
+                },
+            )
+        }
+    }
+}
+
+/// The writers' kind of a solid at unit size (for the mesh checks before a run).
+fn unit_kind(s: &Solid) -> SolidKind {
+    match *s {
+        Solid::Sphere => SolidKind::Sphere { radius: 1.0 },
+        Solid::Cube => SolidKind::Cube { half_side: 1.0 },
+        Solid::Tetrahedron => SolidKind::Tetrahedron { circumradius: 1.0 },
+        Solid::Octahedron => SolidKind::Octahedron { circumradius: 1.0 },
+        Solid::Shell { inner } => SolidKind::Shell { outer: 1.0, inner },
+        Solid::Torus { ratio } => SolidKind::BeadTorus {
+            major: 1.0,
+            minor: ratio,
+            beads: s.beads() as u32,
+        },
+    }
+}
+
+/// Checks the flags of `zetafill space` and resolves them into a plan. Nothing runs.
+pub fn resolve(a: &SpaceArgs) -> Result<SpacePlan, CliError> {
+    let dest = Dest::parse(&a.output.output);
+    dest.check("--output", &[])?;
+    let format = SpaceFormat::resolve(a.output.format, &a.output.output)?;
+    let (run, draw) = resolve_as(a, format)?;
+    Ok(SpacePlan { dest, format, run, draw })
+}
+
+/// The run and the drawing of `a` written as `format`: every rule between the flags, but none
+/// about the output path.
+pub fn resolve_as(a: &SpaceArgs, format: SpaceFormat) -> Result<(SpaceRun, SpaceDraw), CliError> {
+    if a.periodic && !matches!(a.region, Region3::Box { .. }) {
+        return Err(CliError::arg(
+            "--periodic",
+            "only box:W:H:D regions can be periodic; remove --periodic or use a box region",
+        ));
+    }
+    if a.slices.is_some() && format != SpaceFormat::Svg {
+        return Err(CliError::arg(
+            "--slices",
+            format!("writes the sheets as SVG, not {}: end -o in .svg", format.name()),
+        ));
+    }
+    if a.slices.is_none() && format == SpaceFormat::Svg {
+        return Err(CliError::arg(
+            "--output",
+            "the SVG of a 3D fill is its sheets for stacked laser cuts: give --slices THICKNESS",
+        ));
+    }
+    let (lo, hi) = a.region.bounds();
+    let depth = hi[2] - lo[2];
+    let slices = match a.slices {
+        Some(t) => {
+            if t > depth {
+                return Err(CliError::arg(
+                    "--slices",
+                    format!(
+                        "sheets {} mm thick are thicker than the region is deep ({} mm); give at most its depth",
+                        num(t),
+                        num(depth)
+                    ),
+                ));
+            }
+            let n = (depth / t - 1e-9).ceil();
+            if n > MAX_SHEETS as f64 {
+                return Err(CliError::arg(
+                    "--slices",
+                    format!("{} mm makes {n} sheets, more than {MAX_SHEETS}; give thicker sheets", num(t)),
+                ));
+            }
+            Some(SliceOptions::new(t))
+        }
+        None => None,
+    };
+    if a.cut != CutArg::None && format != SpaceFormat::Png {
+        return Err(CliError::arg("--cut", "is for the render: end -o in .png, or drop --cut"));
+    }
+    if !(1..=MAX_SIDE).contains(&a.pixels) {
+        return Err(CliError::arg(
+            "--pixels",
+            format!("{} pixels: the render's side must be from 1 to {MAX_SIDE}", a.pixels),
+        ));
+    }
+    if !SEGMENTS.contains(&a.segments) {
+        return Err(CliError::arg(
+            "--segments",
+            format!("{}: a mesh needs {} to {} segments", a.segments, SEGMENTS.start(), SEGMENTS.end()),
+        ));
+    }
+    if matches!(format, SpaceFormat::Stl | SpaceFormat::Obj | SpaceFormat::Glb) {
+        let mesher = Mesher::new(&MeshOptions::new(a.segments)).map_err(|e| CliError::arg("--segments", e))?;
+        for s in &a.shape.0 {
+            mesher.plan(&unit_kind(s)).map_err(|e| {
+                CliError::arg(
+                    "--segments",
+                    format!(
+                        "{} at {} segments: {e}; raise --segments or change the --shape proportions",
+                        solid_name(s),
+                        a.segments
+                    ),
+                )
+            })?;
+        }
+    }
+    let stop = crate::plan::stops(&a.run.stop);
+    if stop.count.is_some_and(|k| k > SOLIDS.max) {
+        return Err(CliError::arg(
+            "--count",
+            format!("at most {} solids a run; ask for fewer", SOLIDS.max),
+        ));
+    }
+    let seed = a.run.seed.seed;
+    let order = match a.mix_order {
+        crate::args::fill::MixArg::Cycle => zetafill::MixOrder::Cycle,
+        crate::args::fill::MixArg::Random => zetafill::MixOrder::Random,
+    };
+    let solids = a.shape.list(order, seed);
+    let rotate = a.rotate.map_or(a.shape.rotates(), |r| r == Rotate::Random);
+    let params = SpaceParams {
+        c: crate::plan::exponent(&a.run.power, DEFAULT_C, SpaceParams::c_from_dimension),
+        n_offset: a.run.power.n_offset,
+        solids,
+        rotate,
+        gap: a.run.gap,
+        max_trials: a.run.max_trials,
+    };
+    let (region, region_doc) = core_region(a.region, a.periodic);
+    let fixed_point = a.scalar == ScalarArg::Fixed;
+    if fixed_point {
+        let max = <zetafill::Fixed as Scalar>::MAX_EXTENT;
+        if hi.iter().any(|&v| v > max) {
+            return Err(crate::plan::fill::param_error(zetafill::ParamError::Extent));
+        }
+    }
+    region.check().map_err(crate::plan::fill::param_error)?;
+    if a.run.gap >= 0.5 * hi.iter().fold(f64::MAX, |m, &v| m.min(v)) {
+        return Err(CliError::arg(
+            "--gap",
+            format!("{} mm leaves no room in this region; lower it", num(a.run.gap)),
+        ));
+    }
+    let sequence = crate::plan::sequence(region.volume(), params.c, params.n_offset)?;
+    let first = params.solids.kind_of(0);
+    crate::plan::check_min_size(&stop, first.min_width(first.scale_for_volume(sequence.area(0))), SOLIDS)?;
+    check_first_solid(&params, &region).map_err(|e| first_solid_error(e.max_c, &params))?;
+    let slots = crate::plan::slots(space_capacity(&sequence, &params.solids, &stop, SOLIDS.max), SOLIDS)? as usize;
+    let names = SolidParamsDoc {
+        shape: a.shape.name(),
+        rotate: if rotate && a.shape.rotates() { "random" } else { "none" },
+        mix_order: (a.shape.0.len() > 1).then(|| a.mix_order.name()),
+        scalar: a.scalar.name(),
+    };
+    let mut command = format!(
+        "zetafill space --shape {}{} --rotate {} --region {} --c {} --n-offset {} --gap {} --max-trials {} --seed {}{}",
+        names.shape,
+        names.mix_order.map_or_else(String::new, |m| format!(" --mix-order {m}")),
+        names.rotate,
+        region_doc.arg(),
+        params.c,
+        params.n_offset,
+        params.gap,
+        params.max_trials,
+        seed,
+        if fixed_point { " --scalar fixed" } else { "" }
+    );
+    if let Some(k) = stop.count {
+        command.push_str(&format!(" --count {k}"));
+    }
+    if let Some(f) = stop.fill {
+        command.push_str(&format!(" --fill {f}"));
+    }
+    if let Some(m) = stop.min_size {
+        command.push_str(&format!(" --min-size {m}"));
+    }
+    let cut = match a.cut {
+        CutArg::None => Cut::None,
+        CutArg::Octant => Cut::Octant,
+        CutArg::Half => Cut::Half,
+    };
+    let flags = match format {
+        SpaceFormat::Stl | SpaceFormat::Obj | SpaceFormat::Glb => format!(" --segments {}", a.segments),
+        SpaceFormat::Png => format!(" --pixels {} --cut {}", a.pixels, cut_name(a.cut)),
+        SpaceFormat::Svg => a.slices.map_or_else(String::new, |t| format!(" --slices {t}")),
+        _ => String::new(),
+    };
+    let run = SpaceRun {
+        region,
+        region_doc,
+        params,
+        stop,
+        sequence,
+        slots,
+        seed,
+        fixed_point,
+        quiet: a.quiet,
+        names,
+        command,
+    };
+    let draw = SpaceDraw {
+        segments: a.segments,
+        render: RenderOptions {
+            width: a.pixels,
+            height: a.pixels,
+            samples: 2,
+            cut,
+        },
+        slices,
+        flags,
+    };
+    Ok((run, draw))
+}
+
+/// `--cut` as written.
+fn cut_name(c: CutArg) -> &'static str {
+    match c {
+        CutArg::None => "none",
+        CutArg::Octant => "octant",
+        CutArg::Half => "half",
+    }
+}
+
+/// The usage error of a first solid that cannot fit the region: `max_c` is the largest c at
+/// which it does, when one does.
+pub fn first_solid_error(max_c: Option<f64>, params: &SpaceParams) -> CliError {
+    match max_c {
+        Some(c) => CliError::arg(
+            "--c",
+            format!(
+                "the first solid is larger than the region at c = {}; lower --c to at most {c:.4}, raise --n-offset or use a larger --region",
+                params.c
+            ),
+        ),
+        None => CliError::arg(
+            "--n-offset",
+            format!(
+                "the first solid is larger than the region at any c; raise --n-offset{} or use a larger --region",
+                if params.gap > 0.0 { ", lower --gap" } else { "" }
+            ),
+        ),
+    }
+}
+
+/// The usage error of a first solid that found no place in `trials` trials (nothing is
+/// written: an output with no solid is no fill).
+pub fn first_halt_error(trials: u64) -> CliError {
+    CliError::arg(
+        "--c",
+        format!("the first solid found no place in {trials} trials; lower --c or raise --n-offset (a smaller first solid), or use a larger --region"),
+    )
+}
+
+/// Advice for a halt at placement `index` (at least 1).
+pub fn halt_advice(index: u64) -> &'static str {
+    if index < 100 {
+        "the first solids left no room for this one: lower --c, raise --n-offset, or try another --seed"
+    } else {
+        "raise --max-trials, lower --c, or ask for fewer solids"
+    }
+}

@@ -142,65 +142,74 @@ fn a_shorter_run_is_a_prefix_of_a_longer_one() {
     assert_eq!(solids(&short)[..], solids(&long)[..20]);
 }
 
+/// The CLI's digest is the core's, for each sampler (the cell sampler is the default).
 #[test]
 fn the_digest_is_the_cores() {
     use zetafill::{
-        digest::space_digest, rng_from_seed, space_index_words, PlacedSolid, Solid, SpaceEngine, SpaceParams, SpaceRegion, SpaceStorage,
-        Stop,
+        digest::space_digest, rng_from_seed, space_cells_for, space_index_words, PlacedSolid, Solid, SpaceCell, SpaceCells, SpaceEngine,
+        SpaceParams, SpaceRegion, SpaceStorage, Stop,
     };
     let dir = tmp();
-    let line = String::from_utf8(space_to(
-        dir.path(),
-        "d.txt",
-        &[
-            "--shape",
-            "cube",
-            "--region",
-            "box:50:60:70",
-            "--c",
-            "1.12",
-            "--n-offset",
-            "2",
-            "--gap",
-            "0.5",
-            "--count",
-            "80",
-            "--seed",
-            "7",
-            "--format",
-            "digest",
-        ],
-    ))
-    .expect("utf-8");
-    let mut placed = vec![PlacedSolid::<f64>::default(); 80];
-    let mut index = vec![0u32; space_index_words(80)];
-    let storage = SpaceStorage {
-        solids: &mut placed,
-        index: &mut index,
-    };
-    let params = SpaceParams {
-        solids: Solid::Cube.into(),
-        rotate: true,
-        gap: 0.5,
-        ..SpaceParams::spheres(1.12, 2.0)
-    };
-    let region = SpaceRegion::Box {
-        width: 50.0,
-        height: 60.0,
-        depth: 70.0,
-        periodic: false,
-    };
-    let mut engine = SpaceEngine::new(params, region, storage).expect("valid");
-    engine.run(
-        &mut rng_from_seed(7),
-        &Stop {
+    for sampler in ["fast", "reference"] {
+        let line = String::from_utf8(space_to(
+            dir.path(),
+            "d.txt",
+            &[
+                "--shape",
+                "cube",
+                "--region",
+                "box:50:60:70",
+                "--c",
+                "1.12",
+                "--n-offset",
+                "2",
+                "--gap",
+                "0.5",
+                "--count",
+                "80",
+                "--seed",
+                "7",
+                "--sampler",
+                sampler,
+                "--format",
+                "digest",
+            ],
+        ))
+        .expect("utf-8");
+        let mut placed = vec![PlacedSolid::<f64>::default(); 80];
+        let mut index = vec![0u32; space_index_words(80)];
+        let storage = SpaceStorage {
+            solids: &mut placed,
+            index: &mut index,
+        };
+        let params = SpaceParams {
+            solids: Solid::Cube.into(),
+            rotate: true,
+            gap: 0.5,
+            ..SpaceParams::spheres(1.12, 2.0)
+        };
+        let region = SpaceRegion::Box {
+            width: 50.0,
+            height: 60.0,
+            depth: 70.0,
+            periodic: false,
+        };
+        let mut engine = SpaceEngine::new(params, region, storage).expect("valid");
+        let stop = Stop {
             count: Some(80),
             ..Stop::default()
-        },
-        |_| {},
-    );
-    let (n, h) = space_digest(&engine);
-    assert_eq!(line, format!("{n} {h:016x}\n"));
+        };
+        let mut rng = rng_from_seed(7);
+        if sampler == "fast" {
+            let mut pool = vec![SpaceCell::default(); space_cells_for(80)];
+            let mut cells = SpaceCells::new(&mut pool).expect("cells");
+            engine.run_fast(&mut cells, &mut rng, &stop, |_| {});
+        } else {
+            engine.run(&mut rng, &stop, |_| {});
+        }
+        let (n, h) = space_digest(&engine);
+        assert_eq!(line, format!("{n} {h:016x}\n"), "--sampler {sampler}");
+    }
 }
 
 #[test]

@@ -47,7 +47,10 @@
 //! - 3D: [`SpaceEngine`] over [`SpaceStorage`] (sized with [`space_index_words`]), set up by
 //!   [`SpaceParams`] and a [`SpaceRegion`], with solids from [`Solid`] / [`SolidList`]; each
 //!   step gives a [`SpacePlacement`] of a [`PlacedSolid`]; before a fill [`space_capacity`] and
-//!   [`check_first_solid`] ([`FirstSolidError`]); the digest is [`digest::space_digest`].
+//!   [`check_first_solid`] ([`FirstSolidError`]); the digest is [`digest::space_digest`]. The
+//!   octree cell sampler [`SpaceCells`] (storage [`SpaceCell`], sized with
+//!   [`space_cells_for`]; [`NoSpaceCells`] when there is too little) draws from exactly the
+//!   paper's distribution with far fewer trials ([`SpaceEngine::step_fast`]).
 //! - Numbers and randomness: [`Scalar`] (`f64`, or [`Fixed`] for cores without an FPU),
 //!   [`rng_from_seed`] / [`ZetaRng`], and [`digest`] (the determinism digest).
 //!
@@ -63,7 +66,8 @@
 //! - the fixed-capacity multi-level spatial hash and the coverage bitmap;
 //! - the engine (the paper's loop, then its optimisations) and the cell sampler;
 //! - the 1D fill over its own 1D multi-level hash;
-//! - the 3D fill (solids, regions, exact tests, its 3D multi-level hash; the paper's sampler);
+//! - the 3D fill (solids, regions, exact tests, its 3D multi-level hash; the paper's sampler
+//!   and the octree cell sampler);
 //! - statistics: the gasket width of the paper's Table 1, exact dimensions, power-law fits;
 //!   and the up-front checks ([`AreaSequence`], capacity, first-shape feasibility).
 //!
@@ -136,8 +140,8 @@ pub use sampler::{cells_for, CellSampler, CellWords, NoCells};
 pub use scalar::Scalar;
 pub use shape::{MixOrder, Placed, ShapeKind, ShapeList, MAX_MIX};
 pub use space::{
-    check_first_solid, space_capacity, space_index_words, FirstSolidError, PlacedSolid, Solid, SolidList, SpaceEngine, SpaceParams,
-    SpacePlacement, SpaceRegion, SpaceStorage,
+    check_first_solid, space_capacity, space_cells_for, space_index_words, FirstSolidError, NoSpaceCells, PlacedSolid, Solid, SolidList,
+    SpaceCell, SpaceCells, SpaceEngine, SpaceParams, SpacePlacement, SpaceRegion, SpaceStorage,
 };
 pub use zeta::ZetaError;
 

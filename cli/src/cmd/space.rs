@@ -11,7 +11,9 @@ use crate::output::mesh::MeshOptions;
 use crate::plan::format::SpaceFormat;
 use crate::plan::space::{first_halt_error, first_solid_error, halt_advice, SpaceDraw, SpacePlan, SpaceRun, SOLIDS};
 use zetafill::digest::space_digest;
-use zetafill::{space_index_words, PlacedSolid, Scalar, Solid, SpaceEngine, SpaceStorage, StepError, StopReason};
+use zetafill::{
+    space_cells_for, space_index_words, PlacedSolid, Scalar, Solid, SpaceCell, SpaceCells, SpaceEngine, SpaceStorage, StepError, StopReason,
+};
 
 /// What a run of the engine produced, in f64 whatever the scalar.
 struct EngineRun {
@@ -47,12 +49,19 @@ fn run_engine<S: Scalar>(a: &SpaceRun) -> Result<EngineRun, CliError> {
     let mut rng = zetafill::rng_from_seed(a.seed);
     let bar = stopping::progress_bar(a.quiet, a.stop.count, SOLIDS);
     let mut trials = Vec::with_capacity(cap);
-    let reason = engine.run(&mut rng, &a.stop, |p| {
+    let on_place = |p: &zetafill::SpacePlacement<S>| {
         trials.push(p.trials);
         if let Some(b) = &bar {
             b.inc(1);
         }
-    });
+    };
+    let reason = if a.reference_sampler {
+        engine.run(&mut rng, &a.stop, on_place)
+    } else {
+        let mut pool = vec![SpaceCell::default(); space_cells_for(cap)];
+        let mut cells = SpaceCells::new(&mut pool).map_err(|e| CliError::Io(format!("internal: {e}")))?;
+        engine.run_fast(&mut cells, &mut rng, &a.stop, on_place)
+    };
     if let Some(b) = &bar {
         b.finish_and_clear();
     }

@@ -53,6 +53,8 @@ pub struct SolidParamsDoc {
     pub mix_order: Option<&'static str>,
     /// `f64` or `fixed`.
     pub scalar: &'static str,
+    /// `fast` or `reference`.
+    pub sampler: &'static str,
 }
 
 /// The region of a 3D fill (mm).

@@ -3,7 +3,7 @@
 //! resolution, the render, the sheets). Also the messages of the run's own outcomes that name
 //! a flag: a first solid that does not fit, a halt.
 
-use crate::args::fill::{Rotate, ScalarArg};
+use crate::args::fill::{Rotate, Sampler, ScalarArg};
 use crate::args::space::{solid_name, CutArg, SpaceArgs};
 use crate::error::{num, CliError};
 use crate::io::write::Dest;
@@ -60,6 +60,8 @@ pub struct SpaceRun {
     pub seed: u64,
     /// The engine computes in 32.32 fixed point instead of f64.
     pub fixed_point: bool,
+    /// The paper's sampler instead of the octree cell sampler.
+    pub reference_sampler: bool,
     /// No progress bar.
     pub quiet: bool,
     /// The names the document records.
@@ -269,9 +271,10 @@ pub fn resolve_as(a: &SpaceArgs, format: SpaceFormat) -> Result<(SpaceRun, Space
         rotate: if rotate && a.shape.rotates() { "random" } else { "none" },
         mix_order: (a.shape.0.len() > 1).then(|| a.mix_order.name()),
         scalar: a.scalar.name(),
+        sampler: a.sampler.name(),
     };
     let mut command = format!(
-        "zetafill space --shape {}{} --rotate {} --region {} --c {} --n-offset {} --gap {} --max-trials {} --seed {}{}",
+        "zetafill space --shape {}{} --rotate {} --region {} --c {} --n-offset {} --gap {} --max-trials {} --seed {} --sampler {}{}",
         names.shape,
         names.mix_order.map_or_else(String::new, |m| format!(" --mix-order {m}")),
         names.rotate,
@@ -281,6 +284,7 @@ pub fn resolve_as(a: &SpaceArgs, format: SpaceFormat) -> Result<(SpaceRun, Space
         params.gap,
         params.max_trials,
         seed,
+        names.sampler,
         if fixed_point { " --scalar fixed" } else { "" }
     );
     if let Some(k) = stop.count {
@@ -312,6 +316,7 @@ pub fn resolve_as(a: &SpaceArgs, format: SpaceFormat) -> Result<(SpaceRun, Space
         slots,
         seed,
         fixed_point,
+        reference_sampler: a.sampler == Sampler::Reference,
         quiet: a.quiet,
         names,
         command,

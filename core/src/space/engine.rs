@@ -287,30 +287,48 @@ impl<'a, S: Scalar> SpaceEngine<'a, S> {
     /// Whether the body fits: inside the region and apart from every placed solid and every
     /// periodic image (its own too).
     pub(crate) fn fits(&self, body: &Body<S>, bound: S) -> bool {
+        self.fits_hit(body, bound, false).is_ok()
+    }
+
+    /// [`Self::fits`], naming on failure a placed solid the body hits (`None` when it leaves
+    /// the region, or meets only its own periodic image). With `least`, every solid is tested
+    /// and the hit named is the one placed first, so that it does not depend on the spatial
+    /// index's layout (the cell sampler learns it); otherwise the first found.
+    pub(crate) fn fits_hit(&self, body: &Body<S>, bound: S, least: bool) -> Result<(), Option<u32>> {
         if !self.region.holds(body, self.gap) {
-            return false;
+            return Err(None);
         }
         let gap = self.gap;
         let total = self.len as u32;
         let c = body.centre();
-        let test = |b: &Body<S>| {
+        let mut hit: Option<u32> = None;
+        let mut test = |b: &Body<S>| {
             let bc = b.centre();
             self.hash.query([bc.x, bc.y, bc.z], bound + gap, total, |j| {
+                if hit.is_some_and(|h| j >= h) {
+                    return true;
+                }
                 let Some(p) = self.solids.get(j as usize) else { return true };
                 let kind = self.kind_of(u64::from(j));
                 let contact = bound + bounding(&kind, p.scale) + gap;
                 let d = V3::new(p.x, p.y, p.z).sub(bc);
-                d.norm2() > contact * contact || apart(b, &Body::new(&kind, V3::new(p.x, p.y, p.z), p.scale, &p.rotation), gap)
+                let ok = d.norm2() > contact * contact || apart(b, &Body::new(&kind, V3::new(p.x, p.y, p.z), p.scale, &p.rotation), gap);
+                if !ok {
+                    hit = Some(j);
+                }
+                ok || least
             })
         };
         if !self.region.periodic() {
-            return test(body);
+            test(body);
+            return hit.map_or(Ok(()), |j| Err(Some(j)));
         }
         let reach = bound + gap + self.hash.max_r().max(bound);
         let self_reach = bound + bound + gap;
         let [px, py, pz] = self.period;
         let ks = |p: S, r: S| (r / p).floor_i64().saturating_add(1).clamp(1, 3);
         let (kx, ky, kz) = (ks(px, reach), ks(py, reach), ks(pz, reach));
+        let mut own_image = false;
         for i in -kx..=kx {
             for j in -ky..=ky {
                 for k in -kz..=kz {
@@ -322,17 +340,24 @@ impl<'a, S: Scalar> SpaceEngine<'a, S> {
                         continue;
                     }
                     let image = body.shifted(d);
-                    if !test(&image) {
-                        return false;
+                    if !test(&image) && !least {
+                        return Err(hit);
                     }
                     let own = d.norm2() < self_reach * self_reach;
                     if (i, j, k) != (0, 0, 0) && own && !apart(body, &image, gap) {
-                        return false;
+                        if !least {
+                            return Err(None);
+                        }
+                        own_image = true;
                     }
                 }
             }
         }
-        true
+        match hit {
+            Some(j) => Err(Some(j)),
+            None if own_image => Err(None),
+            None => Ok(()),
+        }
     }
 
     /// Records the placement.

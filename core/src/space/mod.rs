@@ -14,7 +14,9 @@
 //! - `body`: a solid in place and the exact clearance test between two ([`apart`]);
 //! - `region`: boxes (inclusive or periodic), balls, a box with a ball removed;
 //! - `hash`: the 3D multi-level spatial hash in caller storage;
-//! - `engine`: the paper's loop ([`SpaceEngine::step`]).
+//! - `engine`: the paper's loop ([`SpaceEngine::step`]);
+//! - `cells`: the octree cell sampler ([`SpaceCells`], [`SpaceEngine::step_fast`]), the same
+//!   distribution of placements with far fewer trials.
 //!
 //! ## Tori are beads
 //! A torus of major radius `R` and tube radius `a = ratio R` is represented, tested and meant
@@ -47,6 +49,7 @@
 //! ([`crate::Scalar::MAX_EXTENT`], [`crate::Scalar::MIN_SIZE`]).
 
 mod body;
+mod cells;
 mod engine;
 mod feasibility;
 mod hash;
@@ -55,6 +58,9 @@ mod solid;
 pub mod vec3;
 
 pub use body::{apart, Body, Poly};
+pub use cells::{
+    space_cells_for, NoSpaceCells, SpaceCell, SpaceCells, SPACE_CELLS_BASE, SPACE_CELLS_PER_SOLID, SPACE_CELL_LEVELS, SPACE_NEAR,
+};
 pub use engine::{space_index_words, PlacedSolid, SpaceEngine, SpaceParams, SpacePlacement, SpaceStorage};
 pub use feasibility::{check_first_solid, space_capacity, FirstSolidError};
 pub use hash::SPACE_LEVELS;

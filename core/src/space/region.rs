@@ -121,6 +121,14 @@ impl SpaceRegion {
     }
 
     /// The removed ball as a body (the ball region's own ball for [`SpaceRegion::Ball`]).
+    /// The removed ball's radius, if the region has one.
+    pub(crate) fn ball_radius(&self) -> Option<f64> {
+        match *self {
+            SpaceRegion::BoxMinusBall { radius, .. } => Some(radius),
+            _ => None,
+        }
+    }
+
     fn ball<S: Scalar>(&self) -> Option<Body<S>> {
         match *self {
             SpaceRegion::BoxMinusBall { centre, radius, .. } => Some(Body::Ball {

@@ -21,12 +21,15 @@
 
 use crate::error::CliError;
 use crate::plan::stats::{input_error, BoxRange, DimensionPlan};
+use super::space_boxes::Space3;
 use serde_json::Value;
 
 /// Finest 2D level: 2^12 boxes along the larger side.
 const MAX_LEVEL_2D: u32 = 12;
 /// Finest 1D level: 2^40 boxes.
 const MAX_LEVEL_1D: u32 = 40;
+/// Finest 3D level: 2^10 boxes along the largest side.
+const MAX_LEVEL_3D: u32 = 10;
 
 /// A placed 2D shape as read from the JSON.
 #[derive(Debug, Clone)]
@@ -113,6 +116,8 @@ pub enum FillSet {
         /// The shapes.
         shapes: Vec<Shape2>,
     },
+    /// A 3D fill.
+    Space(Space3),
 }
 
 fn num(v: &Value, key: &str) -> Result<f64, CliError> {
@@ -127,10 +132,22 @@ fn point(v: &Value) -> Option<[f64; 2]> {
     Some([a.first()?.as_f64()?, a.get(1)?.as_f64()?])
 }
 
-/// Reads a fill document (`"mode": "fill"` with a rect region, or `"mode": "line"`) and its c.
+/// Reads a fill document (`"mode": "fill"` with a rect region, `"mode": "line"` or
+/// `"mode": "space"`) and its c.
 pub fn read_set(doc: &Value) -> Result<(FillSet, f64), CliError> {
     match doc.get("mode").and_then(Value::as_str) {
         Some("fill" | "line") => {}
+        Some("space") => {
+            let c = doc
+                .get("params")
+                .map(|p| num(p, "c"))
+                .transpose()?
+                .ok_or_else(|| input_error("no 'params' with 'c'"))?;
+            if c <= 1.0 {
+                return Err(input_error(format!("'c' is {c}; a fill's c is above 1")));
+            }
+            return Ok((FillSet::Space(super::space_boxes::read(doc)?), c));
+        }
         Some(other) => {
             return Err(input_error(format!(
                 "this is a `zetafill {other}` JSON, not a fill or line JSON; give a JSON file written by zetafill fill or zetafill line"
@@ -355,11 +372,11 @@ pub fn count_2d(w: f64, h: f64, periodic: bool, shapes: &[Shape2], e: f64) -> (u
 pub struct DimensionDoc {
     /// The box-counting estimate.
     pub box_counting: f64,
-    /// The exact dimension: 2/c (1/c for a 1D fill).
+    /// The exact dimension: 2/c (1/c for a 1D fill, 3/c for a 3D fill).
     pub exact: f64,
     /// Exponent c of the fill.
     pub c: f64,
-    /// `fill` or `line`.
+    /// `fill`, `line` or `space`.
     pub mode: &'static str,
     /// Every box size used in the fit (mm) and the boxes that meet the gasket.
     pub boxes: Vec<BoxCount>,
@@ -390,6 +407,7 @@ pub fn estimate(set: &FillSet, c: f64, range: &BoxRange) -> Result<DimensionDoc,
             let m = shapes.iter().map(Shape2::size).fold(f64::INFINITY, f64::min);
             (w.max(*h), m, MAX_LEVEL_2D, "fill", 2.0 / c)
         }
+        FillSet::Space(s) => (s.sides().iter().fold(0.0f64, |m, &v| m.max(v)), s.smallest(), MAX_LEVEL_3D, "space", 3.0 / c),
     };
     if !smallest.is_finite() {
         return Err(input_error("the fill has no shapes"));
@@ -412,6 +430,7 @@ pub fn estimate(set: &FillSet, c: f64, range: &BoxRange) -> Result<DimensionDoc,
                 segments,
             } => count_1d(*length, *periodic, segments, e),
             FillSet::Plane { w, h, periodic, shapes } => count_2d(*w, *h, *periodic, shapes, e),
+            FillSet::Space(s) => s.count(e),
         };
         boxes.push(BoxCount {
             size: e,
@@ -461,7 +480,11 @@ pub fn run(a: &DimensionPlan) -> Result<(), CliError> {
     if a.json {
         println!("{}", serde_json::to_string(&d).map_err(|e| CliError::Io(e.to_string()))?);
     } else {
-        let which = if d.mode == "line" { "1/c" } else { "2/c" };
+        let which = match d.mode {
+            "line" => "1/c",
+            "space" => "3/c",
+            _ => "2/c",
+        };
         let used: Vec<&BoxCount> = d.boxes.iter().filter(|b| b.used).collect();
         let (big, small) = (used.first().map_or(0.0, |b| b.size), used.last().map_or(0.0, |b| b.size));
         println!(

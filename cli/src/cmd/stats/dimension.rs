@@ -398,22 +398,32 @@ pub struct BoxCount {
 /// Box-counts a fill over the box sizes of `range` (defaults in the module docs).
 pub fn estimate(set: &FillSet, c: f64, range: &BoxRange) -> Result<DimensionDoc, CliError> {
     let (max_box, min_box) = (range.max, range.min);
+    // The default smallest box: twice the smallest shape's size in 1D and 2D; in 3D the
+    // smallest solid's diameter over sqrt 3, the side of the largest box a solid still to come
+    // (no wider, in a fill of one kind) could hold, so every count down to there is the
+    // complete fractal's.
     let (side, smallest, max_level, mode, exact) = match set {
         FillSet::Line { length, segments, .. } => {
             let m = segments.iter().map(|s| s.1).fold(f64::INFINITY, f64::min);
-            (*length, m, MAX_LEVEL_1D, "line", 1.0 / c)
+            (*length, 2.0 * m, MAX_LEVEL_1D, "line", 1.0 / c)
         }
         FillSet::Plane { w, h, shapes, .. } => {
             let m = shapes.iter().map(Shape2::size).fold(f64::INFINITY, f64::min);
-            (w.max(*h), m, MAX_LEVEL_2D, "fill", 2.0 / c)
+            (w.max(*h), 2.0 * m, MAX_LEVEL_2D, "fill", 2.0 / c)
         }
-        FillSet::Space(s) => (s.sides().iter().fold(0.0f64, |m, &v| m.max(v)), s.smallest(), MAX_LEVEL_3D, "space", 3.0 / c),
+        FillSet::Space(s) => (
+            s.sides().iter().fold(0.0f64, |m, &v| m.max(v)),
+            s.smallest() / 3f64.sqrt(),
+            MAX_LEVEL_3D,
+            "space",
+            3.0 / c,
+        ),
     };
     if !smallest.is_finite() {
         return Err(input_error("the fill has no shapes"));
     }
     let hi = max_box.unwrap_or(side / 4.0);
-    let lo = min_box.unwrap_or(2.0 * smallest);
+    let lo = min_box.unwrap_or(smallest);
     let mut boxes = Vec::new();
     for k in 0..=max_level {
         let e = side / 2f64.powi(k as i32);
@@ -441,10 +451,11 @@ pub fn estimate(set: &FillSet, c: f64, range: &BoxRange) -> Result<DimensionDoc,
     }
     if max_box.is_none() {
         // Leave out the saturated large sizes (more than half the boxes meet the gasket),
-        // keeping at least three sizes.
+        // keeping at least three sizes (two in 3D: the finest octave the fill resolves).
+        let keep = if mode == "space" { 2 } else { 3 };
         let mut left = boxes.len();
         for b in boxes.iter_mut() {
-            if left > 3 && 2 * b.count > b.total {
+            if left > keep && 2 * b.count > b.total {
                 b.used = false;
                 left -= 1;
             } else {

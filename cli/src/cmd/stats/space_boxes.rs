@@ -58,7 +58,7 @@ pub struct Space3 {
     /// Periodic in x, y and z (box regions only).
     pub periodic: bool,
     bodies: Vec<Body>,
-    /// The smallest side of each solid's bounding box.
+    /// Each solid's diameter (that of its bounding ball about its centre).
     sizes: Vec<f64>,
 }
 
@@ -183,9 +183,8 @@ pub fn read(doc: &Value) -> Result<Space3, CliError> {
                 )))
             }
         };
-        let (body, lo, hi) = body(&kind, centre, &m, margin);
-        sizes.push((0..3).map(|a| hi[a] - lo[a]).fold(f64::INFINITY, f64::min));
-        bodies.push(body);
+        sizes.push(2.0 * kind.bounding_radius());
+        bodies.push(body(&kind, centre, &m, margin));
     }
     Ok(Space3 {
         region,
@@ -195,20 +194,13 @@ pub fn read(doc: &Value) -> Result<Space3, CliError> {
     })
 }
 
-/// The body of a solid shrunk by `margin`, with the world bounding box of the solid.
-fn body(kind: &SolidKind, c: V3, m: &Mat3, margin: f64) -> (Body, V3, V3) {
-    let around = |r: f64| (c.map(|v| v - r), c.map(|v| v + r));
+/// The body of a solid shrunk by `margin`.
+fn body(kind: &SolidKind, c: V3, m: &Mat3, margin: f64) -> Body {
     match *kind {
-        SolidKind::Sphere { radius } => {
-            let (lo, hi) = around(radius);
-            (Body::Ball(c, radius - margin), lo, hi)
-        }
-        SolidKind::Shell { outer, inner } => {
-            let (lo, hi) = around(outer);
-            (Body::Shell(c, outer - margin, inner + margin), lo, hi)
-        }
+        SolidKind::Sphere { radius } => Body::Ball(c, radius - margin),
+        SolidKind::Shell { outer, inner } => Body::Shell(c, outer - margin, inner + margin),
         SolidKind::BeadTorus { minor, .. } => {
-            let centres: Vec<V3> = kind
+            let centres = kind
                 .bead_centres()
                 .iter()
                 .map(|q| {
@@ -216,30 +208,18 @@ fn body(kind: &SolidKind, c: V3, m: &Mat3, margin: f64) -> (Body, V3, V3) {
                     [c[0] + w[0], c[1] + w[1], c[2] + w[2]]
                 })
                 .collect();
-            let mut lo = [f64::INFINITY; 3];
-            let mut hi = [f64::NEG_INFINITY; 3];
-            for p in &centres {
-                for a in 0..3 {
-                    lo[a] = lo[a].min(p[a] - minor);
-                    hi[a] = hi[a].max(p[a] + minor);
-                }
-            }
-            (Body::Beads(centres, minor - margin), lo, hi)
+            Body::Beads(centres, minor - margin)
         }
         _ => {
             // A cube, tetrahedron or octahedron (every other kind is matched above).
-            let p = kind.polyhedron().map(|p| (p.vertices, p.planes)).unwrap_or_default();
-            let mut lo = [f64::INFINITY; 3];
-            let mut hi = [f64::NEG_INFINITY; 3];
-            for v in &p.0 {
-                let w = mul(m, *v);
-                for a in 0..3 {
-                    lo[a] = lo[a].min(c[a] + w[a]);
-                    hi[a] = hi[a].max(c[a] + w[a]);
-                }
-            }
-            let planes = p.1.iter().map(|(n, d)| (mul(m, *n), d - margin)).collect();
-            (Body::Poly(c, planes), lo, hi)
+            let planes = kind
+                .polyhedron()
+                .map(|p| p.planes)
+                .unwrap_or_default()
+                .iter()
+                .map(|(n, d)| (mul(m, *n), d - margin))
+                .collect();
+            Body::Poly(c, planes)
         }
     }
 }
@@ -427,7 +407,7 @@ impl Space3 {
         self.region.bounds().1
     }
 
-    /// The smallest side of the smallest solid's bounding box (infinite for no solid).
+    /// The smallest solid's diameter, as that of its bounding ball (infinite for no solid).
     pub fn smallest(&self) -> f64 {
         self.sizes.iter().copied().fold(f64::INFINITY, f64::min)
     }
@@ -581,9 +561,8 @@ mod tests {
         let mut bodies = Vec::new();
         let mut sizes = Vec::new();
         for (k, c, m) in solids {
-            let (b, lo, hi) = body(k, *c, m, margin);
-            bodies.push(b);
-            sizes.push((0..3).map(|a| hi[a] - lo[a]).fold(f64::INFINITY, f64::min));
+            bodies.push(body(k, *c, m, margin));
+            sizes.push(2.0 * k.bounding_radius());
         }
         Space3 {
             region,

@@ -56,7 +56,9 @@ pub mod vec3;
 
 pub use body::{apart, Body, Poly};
 pub use engine::{space_index_words, PlacedSolid, SpaceEngine, SpaceParams, SpacePlacement, SpaceStorage};
-pub use feasibility::{check_first_solid, space_capacity, FirstSolidError};
+pub use feasibility::{
+    check_first_solid, check_first_two_solids, first_two_solids_fit, space_capacity, FirstSolidError, FirstTwoSolidsError,
+};
 pub use hash::SPACE_LEVELS;
 pub use region::SpaceRegion;
 pub use solid::{Solid, SolidList, MAX_BEADS, MAX_SOLIDS};

@@ -30,8 +30,7 @@ fn space_box_counting_is_within_2_percent_of_3_over_c() {
     let est = f(&v, "box_counting");
     assert!((est / exact - 1.0).abs() < 0.02, "box counting {est}, exact {exact}: {v}");
     // The twin: a wrong exponent in the document puts the estimate outside the band.
-    let mut doc: Value =
-        serde_json::from_slice(&std::fs::read(d.path().join("a.json")).unwrap_or_default()).unwrap_or(Value::Null);
+    let mut doc: Value = serde_json::from_slice(&std::fs::read(d.path().join("a.json")).unwrap_or_default()).unwrap_or(Value::Null);
     doc["params"]["c"] = Value::from(1.3);
     std::fs::write(d.path().join("b.json"), doc.to_string()).unwrap_or_default();
     let w = zf_json(d.path(), &["stats", "dimension", "b.json", "--json"]);
@@ -46,9 +45,26 @@ fn space_box_counting_is_within_2_percent_of_3_over_c() {
 fn space_dimension_reads_every_kind_and_region() {
     let d = tmp();
     for args in [
-        &["--shape", "mix:cube,tetrahedron,octahedron,sphere", "--n-offset", "3", "--count", "300"][..],
+        &[
+            "--shape",
+            "mix:cube,tetrahedron,octahedron,sphere",
+            "--n-offset",
+            "3",
+            "--count",
+            "300",
+        ][..],
         &["--shape", "shell:0.5", "--n-offset", "3", "--count", "200", "--region", "ball:50"][..],
-        &["--shape", "torus:0.4", "--c", "1.1", "--n-offset", "3", "--count", "100", "--periodic"][..],
+        &[
+            "--shape",
+            "torus:0.4",
+            "--c",
+            "1.1",
+            "--n-offset",
+            "3",
+            "--count",
+            "100",
+            "--periodic",
+        ][..],
         &["--n-offset", "8", "--count", "300", "--region", "boxball:80:80:80:25"][..],
     ] {
         let mut a = vec!["space", "-q", "-o", "a.json"];
@@ -88,8 +104,16 @@ fn malformed_space_json_exits_2_naming_the_file() {
             "depth",
         ),
         ("no-solids.json", good.replace(r#""solids""#, r#""shapes""#), "solids"),
-        ("kind.json", doc(r#"{"c": 1.15}"#, region, &solid.replace("sphere", "pyramid")), "pyramid"),
-        ("size.json", doc(r#"{"c": 1.15}"#, region, &solid.replace(r#""size": 2"#, r#""size": "big""#)), "size"),
+        (
+            "kind.json",
+            doc(r#"{"c": 1.15}"#, region, &solid.replace("sphere", "pyramid")),
+            "pyramid",
+        ),
+        (
+            "size.json",
+            doc(r#"{"c": 1.15}"#, region, &solid.replace(r#""size": 2"#, r#""size": "big""#)),
+            "size",
+        ),
         (
             "centre.json",
             doc(r#"{"c": 1.15}"#, region, &solid.replace("[5, 5, 5]", "[5, 5]")),
@@ -110,7 +134,9 @@ fn malformed_space_json_exits_2_naming_the_file() {
             doc(
                 r#"{"c": 1.15}"#,
                 region,
-                &solid.replace("sphere", "torus").replace("}", r#", "tube_radius": 0.5, "beads": 1000}"#),
+                &solid
+                    .replace("sphere", "torus")
+                    .replace("}", r#", "tube_radius": 0.5, "beads": 1000}"#),
             ),
             "beads",
         ),

@@ -19,9 +19,9 @@
 //! the whole boxes inside it); the 2D count tests each box against the one shape that could
 //! hold it (circles by chords, polygons by corners and edges, rings as a disc minus a hole).
 
+use super::space_boxes::Space3;
 use crate::error::CliError;
 use crate::plan::stats::{input_error, BoxRange, DimensionPlan};
-use super::space_boxes::Space3;
 use serde_json::Value;
 
 /// Finest 2D level: 2^12 boxes along the larger side.

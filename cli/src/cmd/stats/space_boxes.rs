@@ -121,11 +121,7 @@ pub fn read(doc: &Value) -> Result<Space3, CliError> {
             }
             (Region3::BoxMinusBall { w, h, d, r }, false)
         }
-        other => {
-            return Err(input_error(format!(
-                "the region's kind {other:?} is not box, ball or boxball"
-            )))
-        }
+        other => return Err(input_error(format!("the region's kind {other:?} is not box, ball or boxball"))),
     };
     let solids = doc
         .get("solids")
@@ -153,9 +149,7 @@ pub fn read(doc: &Value) -> Result<Space3, CliError> {
             Some("shell") => {
                 let inner = positive(s, "inner_radius", what)?;
                 if inner >= size {
-                    return Err(input_error(format!(
-                        "{what}: 'inner_radius' {inner} is not below its size {size}"
-                    )));
+                    return Err(input_error(format!("{what}: 'inner_radius' {inner} is not below its size {size}")));
                 }
                 SolidKind::Shell { outer: size, inner }
             }
@@ -278,7 +272,15 @@ impl Body {
             Body::Shell(c, r, ri) => {
                 let Some((lo, hi)) = ball_chord(*c, *r, y, z) else { return };
                 // The nearest point of the row's cross-section to the centre.
-                let near = |v: f64, (a, b): (f64, f64)| if v < a { a - v } else if v > b { v - b } else { 0.0 };
+                let near = |v: f64, (a, b): (f64, f64)| {
+                    if v < a {
+                        a - v
+                    } else if v > b {
+                        v - b
+                    } else {
+                        0.0
+                    }
+                };
                 let (dy, dz) = (near(c[1], y), near(c[2], z));
                 let rest = ri * ri - dy * dy - dz * dz;
                 if rest <= 0.0 {
@@ -462,7 +464,15 @@ impl Space3 {
                 let mut n = 0u64;
                 for k in 0..g[2].n {
                     for j in 0..g[1].n {
-                        let near = |v: f64, a: f64, b: f64| if v < a { a - v } else if v > b { v - b } else { 0.0 };
+                        let near = |v: f64, a: f64, b: f64| {
+                            if v < a {
+                                a - v
+                            } else if v > b {
+                                v - b
+                            } else {
+                                0.0
+                            }
+                        };
                         let (dy, dz) = (near(r, g[1].lo(j), g[1].hi(j)), near(r, g[2].lo(k), g[2].hi(k)));
                         let rest = r * r - dy * dy - dz * dz;
                         if rest <= 0.0 {

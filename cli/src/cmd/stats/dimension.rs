@@ -1,5 +1,6 @@
 //! `zetafill stats dimension FILE.json`: a box-counting estimate of the fractal dimension of a
-//! fill, beside the exact `D = 2/c` (`1/c` for a 1D fill).
+//! fill, beside the exact `D = 2/c` (`1/c` for a 1D fill, `3/c` for a 3D fill; the 3D count
+//! and its default range are in [`super::space_boxes`] and below).
 //!
 //! What is counted: the *gasket*, the part of the region that no shape covers (its limit is
 //! the fractal of dimension `2/c`, section 5). At box size `e` (the region's larger side over

@@ -359,7 +359,7 @@ impl Axis {
     /// The boxes `i` in `[a, b)` whose span lies in `[lo, hi]` (decided with the same
     /// arithmetic as the boxes' own ends).
     fn inside(&self, lo: f64, hi: f64) -> (i64, i64) {
-        if !(lo <= hi) {
+        if lo.partial_cmp(&hi).is_none_or(|o| o == std::cmp::Ordering::Greater) {
             return (0, 0);
         }
         let n = self.n;

@@ -217,7 +217,8 @@ fn a_halt_keeps_the_solids_and_exits_3() {
     let dir = tmp();
     let o = zf(
         dir.path(),
-        &["space", "--c", "1.3", "--count", "5000", "--max-trials", "1000", "-o", "h.json"],
+        // Below the spheres' hard limit (about 1.2243 at N = 1), so the run starts and halts.
+        &["space", "--c", "1.2", "--count", "5000", "--max-trials", "1000", "-o", "h.json"],
     );
     assert_eq!(o.code, 3, "{}", o.stderr);
     assert!(o.stderr.contains("halted at placement"), "{}", o.stderr);
@@ -376,4 +377,46 @@ fn spheres_keep_their_gap_from_each_other_and_the_boundary() {
             }
         }
     }
+}
+
+/// A c above the hard limit (the first two solids cannot both fit) is refused before any
+/// work, naming --c and the largest c that works; just below it the fill runs. Rotated cubes
+/// have no known limit, so the same c is left to the trials (the twin: the check does not
+/// refuse what it cannot prove).
+#[test]
+fn a_c_beyond_the_first_two_solids_limit_is_refused() {
+    for (args, limit) in [
+        (&["--shape", "cube", "--rotate", "none"][..], "1.2071"),
+        (&["--shape", "sphere"][..], "1.2243"),
+    ] {
+        let dir = tmp();
+        let mut a = vec!["space", "--c", "1.3", "--count", "20", "-o", "a.json"];
+        a.extend_from_slice(args);
+        let o = zf(dir.path(), &a);
+        assert_eq!(o.code, 2, "{a:?}: {}", o.stderr);
+        assert!(o.stderr.contains("--c") && o.stderr.contains(limit), "{a:?}: {}", o.stderr);
+        assert!(!dir.path().join("a.json").exists(), "{a:?} wrote a file");
+        let mut b = vec!["space", "--c", "1.2", "--count", "2", "--max-trials", "1000", "-o", "b.json"];
+        b.extend_from_slice(args);
+        let o = zf(dir.path(), &b);
+        assert_ne!(o.code, 2, "{b:?} was refused: {}", o.stderr);
+    }
+    let dir = tmp();
+    let o = zf(
+        dir.path(),
+        &[
+            "space",
+            "--shape",
+            "cube",
+            "--c",
+            "1.3",
+            "--count",
+            "2",
+            "--max-trials",
+            "1000",
+            "-o",
+            "a.json",
+        ],
+    );
+    assert_ne!(o.code, 2, "rotated cubes were refused: {}", o.stderr);
 }

@@ -140,8 +140,9 @@ pub use sampler::{cells_for, CellSampler, CellWords, NoCells};
 pub use scalar::Scalar;
 pub use shape::{MixOrder, Placed, ShapeKind, ShapeList, MAX_MIX};
 pub use space::{
-    check_first_solid, space_capacity, space_cells_for, space_index_words, FirstSolidError, NoSpaceCells, PlacedSolid, Solid, SolidList,
-    SpaceCell, SpaceCells, SpaceEngine, SpaceParams, SpacePlacement, SpaceRegion, SpaceStorage,
+    check_first_solid, check_first_two_solids, space_capacity, space_cells_for, space_index_words, FirstSolidError, FirstTwoSolidsError,
+    NoSpaceCells, PlacedSolid, Solid, SolidList, SpaceCell, SpaceCells, SpaceEngine, SpaceParams, SpacePlacement, SpaceRegion,
+    SpaceStorage,
 };
 pub use zeta::ZetaError;
 

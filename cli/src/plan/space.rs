@@ -14,7 +14,7 @@ use crate::output::mesh::{MeshOptions, Mesher, SEGMENTS};
 use crate::output::render3d::{Cut, RenderOptions, MAX_SIDE};
 use crate::plan::format::SpaceFormat;
 use crate::plan::Unit;
-use zetafill::{check_first_solid, space_capacity, AreaSequence, Scalar, Solid, SpaceParams, SpaceRegion, Stop};
+use zetafill::{check_first_solid, check_first_two_solids, space_capacity, AreaSequence, Scalar, Solid, SpaceParams, SpaceRegion, Stop};
 
 /// The most solids one 3D run may hold (64 bytes a solid in the core, in f64).
 pub const MAX_SOLIDS: u64 = 5_000_000;
@@ -265,6 +265,7 @@ pub fn resolve_as(a: &SpaceArgs, format: SpaceFormat) -> Result<(SpaceRun, Space
     let first = params.solids.kind_of(0);
     crate::plan::check_min_size(&stop, first.min_width(first.scale_for_volume(sequence.area(0))), SOLIDS)?;
     check_first_solid(&params, &region).map_err(|e| first_solid_error(e.max_c, &params))?;
+    check_first_two_solids(&params, &region).map_err(|e| first_two_error(e.max_c, &params))?;
     let slots = crate::plan::slots(space_capacity(&sequence, &params.solids, &stop, SOLIDS.max), SOLIDS)? as usize;
     let names = SolidParamsDoc {
         shape: a.shape.name(),
@@ -380,5 +381,27 @@ pub fn halt_advice(index: u64) -> &'static str {
         "the first solids left no room for this one: lower --c, raise --n-offset, or try another --seed"
     } else {
         "raise --max-trials, lower --c, or ask for fewer solids"
+    }
+}
+
+/// The usage error of a first two solids that cannot both fit the region (the hard limit on c
+/// for spheres, and for unrotated cubes in a box): `max_c` is the largest c at which they do,
+/// when one does.
+pub fn first_two_error(max_c: Option<f64>, params: &SpaceParams) -> CliError {
+    match max_c {
+        Some(c) => CliError::arg(
+            "--c",
+            format!(
+                "with N = {} the first two solids cannot both fit in this region when c > {c:.4} (the hard limit, Shier and Bourke's section 3); lower --c to at most {c:.4} or raise --n-offset",
+                params.n_offset
+            ),
+        ),
+        None => CliError::arg(
+            "--n-offset",
+            format!(
+                "the first two solids cannot both fit in this region at any c; raise --n-offset{} or use a larger --region",
+                if params.gap > 0.0 { ", lower --gap" } else { "" }
+            ),
+        ),
     }
 }

@@ -3,7 +3,7 @@
 
 use super::engine::SpaceParams;
 use super::region::SpaceRegion;
-use super::solid::SolidList;
+use super::solid::{Solid, SolidList};
 use crate::feasibility::{capacity, AreaSequence, CapacityError};
 use crate::params::Stop;
 use crate::zeta;
@@ -92,4 +92,108 @@ pub fn check_first_solid(params: &SpaceParams, region: &SpaceRegion) -> Result<(
         }
     }
     Err(FirstSolidError { max_c: Some(lo) })
+}
+
+/// The first two solids certainly cannot both be placed (every run would halt at placement
+/// 1): `max_c` is the largest c (60 halvings of `[1 + 1e-9, c]`) at which they can, if any.
+/// See [`check_first_two_solids`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct FirstTwoSolidsError {
+    /// The largest c that works at this N, or `None` when none does (raise N, lower the gap).
+    pub max_c: Option<f64>,
+}
+
+impl core::fmt::Display for FirstTwoSolidsError {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self.max_c {
+            Some(c) => write!(f, "the first two solids cannot both fit: lower c to at most {c}"),
+            None => f.write_str("the first two solids cannot both fit at any c: raise N or lower the gap"),
+        }
+    }
+}
+
+impl core::error::Error for FirstTwoSolidsError {}
+
+/// Whether solids 0 and 1, of scales `s0` and `s1`, can both lie in `region` at least `gap`
+/// from its boundary and from each other, for the cases whose limit is known exactly:
+/// spheres in an inclusive box (in opposite corners) or in a ball (on opposite sides), and
+/// unrotated cubes in an inclusive box (side by side along some axis). True for every other
+/// case (no known limit).
+pub fn first_two_solids_fit(kind: Solid, rotate: bool, s0: f64, s1: f64, region: &SpaceRegion, gap: f64) -> bool {
+    match (kind, region) {
+        (Solid::Sphere, SpaceRegion::Box { periodic: false, .. }) => {
+            let room = region.extent().map(|e| e - 2.0 * gap);
+            let mut d2 = 0.0;
+            for e in room {
+                if 2.0 * s0 > e {
+                    return false;
+                }
+                let d = e - s0 - s1;
+                d2 += if d > 0.0 { d * d } else { 0.0 };
+            }
+            d2 > (s0 + s1 + gap) * (s0 + s1 + gap)
+        }
+        (Solid::Sphere, SpaceRegion::Ball { radius }) => {
+            let (a, b) = (radius - gap - s0, radius - gap - s1);
+            a >= 0.0 && a + b > s0 + s1 + gap
+        }
+        (Solid::Cube, SpaceRegion::Box { periodic: false, .. }) if !rotate => {
+            let room = region.extent().map(|e| e - 2.0 * gap);
+            let (w0, w1) = (2.0 * s0, 2.0 * s1);
+            room.iter().all(|&e| w0 <= e) && room.iter().any(|&e| w0 + w1 + gap < e)
+        }
+        _ => true,
+    }
+}
+
+/// Refuses parameters whose first two solids certainly cannot both fit, for the cases of
+/// [`first_two_solids_fit`] and a single kind (no mix). This is the hard limit on c of Shier
+/// and Bourke's section 3 in 3D: about 1.2 for unrotated cubes in a cube at N = 1.
+///
+/// # Examples
+///
+/// ```
+/// use zetafill::{check_first_two_solids, Solid, SpaceParams, SpaceRegion};
+///
+/// let region = SpaceRegion::Box { width: 100.0, height: 100.0, depth: 100.0, periodic: false };
+/// let mut params = SpaceParams::spheres(1.15, 1.0);
+/// params.solids = Solid::Cube.into();
+/// params.rotate = false;
+/// assert!(check_first_two_solids(&params, &region).is_ok());
+/// params.c = 1.3;
+/// let c = check_first_two_solids(&params, &region).unwrap_err().max_c.expect("a smaller c works");
+/// assert!(c > 1.19 && c < 1.21);
+/// ```
+pub fn check_first_two_solids(params: &SpaceParams, region: &SpaceRegion) -> Result<(), FirstTwoSolidsError> {
+    let [kind] = params.solids.kinds() else {
+        return Ok(());
+    };
+    let kind = *kind;
+    let n = params.n_offset;
+    let fits = |c: f64| {
+        let Ok(z) = zeta::zeta(c, n) else {
+            return false;
+        };
+        let v = |i: f64| region.volume() / (z * libm::pow(i + n, c));
+        let (s0, s1) = (kind.scale_for_volume(v(0.0)), kind.scale_for_volume(v(1.0)));
+        first_two_solids_fit(kind, params.rotate, s0, s1, region, params.gap)
+    };
+    if fits(params.c) {
+        return Ok(());
+    }
+    let mut lo = 1.0 + 1e-9;
+    if !fits(lo) {
+        return Err(FirstTwoSolidsError { max_c: None });
+    }
+    let mut hi = params.c;
+    for _ in 0..60 {
+        let mid = 0.5 * (lo + hi);
+        if fits(mid) {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    Err(FirstTwoSolidsError { max_c: Some(lo) })
 }

@@ -62,7 +62,9 @@ pub use cells::{
     space_cells_for, NoSpaceCells, SpaceCell, SpaceCells, SPACE_CELLS_BASE, SPACE_CELLS_PER_SOLID, SPACE_CELL_LEVELS, SPACE_NEAR,
 };
 pub use engine::{space_index_words, PlacedSolid, SpaceEngine, SpaceParams, SpacePlacement, SpaceStorage};
-pub use feasibility::{check_first_solid, space_capacity, FirstSolidError};
+pub use feasibility::{
+    check_first_solid, check_first_two_solids, first_two_solids_fit, space_capacity, FirstSolidError, FirstTwoSolidsError,
+};
 pub use hash::SPACE_LEVELS;
 pub use region::SpaceRegion;
 pub use solid::{Solid, SolidList, MAX_BEADS, MAX_SOLIDS};

@@ -1,5 +1,6 @@
 //! `zetafill stats dimension FILE.json`: a box-counting estimate of the fractal dimension of a
-//! fill, beside the exact `D = 2/c` (`1/c` for a 1D fill).
+//! fill, beside the exact `D = 2/c` (`1/c` for a 1D fill, `3/c` for a 3D fill; the 3D count
+//! and its default range are in [`super::space_boxes`] and below).
 //!
 //! What is counted: the *gasket*, the part of the region that no shape covers (its limit is
 //! the fractal of dimension `2/c`, section 5). At box size `e` (the region's larger side over
@@ -19,6 +20,7 @@
 //! the whole boxes inside it); the 2D count tests each box against the one shape that could
 //! hold it (circles by chords, polygons by corners and edges, rings as a disc minus a hole).
 
+use super::space_boxes::Space3;
 use crate::error::CliError;
 use crate::plan::stats::{input_error, BoxRange, DimensionPlan};
 use serde_json::Value;
@@ -27,6 +29,8 @@ use serde_json::Value;
 const MAX_LEVEL_2D: u32 = 12;
 /// Finest 1D level: 2^40 boxes.
 const MAX_LEVEL_1D: u32 = 40;
+/// Finest 3D level: 2^10 boxes along the largest side.
+const MAX_LEVEL_3D: u32 = 10;
 
 /// A placed 2D shape as read from the JSON.
 #[derive(Debug, Clone)]
@@ -113,6 +117,8 @@ pub enum FillSet {
         /// The shapes.
         shapes: Vec<Shape2>,
     },
+    /// A 3D fill.
+    Space(Space3),
 }
 
 fn num(v: &Value, key: &str) -> Result<f64, CliError> {
@@ -127,10 +133,22 @@ fn point(v: &Value) -> Option<[f64; 2]> {
     Some([a.first()?.as_f64()?, a.get(1)?.as_f64()?])
 }
 
-/// Reads a fill document (`"mode": "fill"` with a rect region, or `"mode": "line"`) and its c.
+/// Reads a fill document (`"mode": "fill"` with a rect region, `"mode": "line"` or
+/// `"mode": "space"`) and its c.
 pub fn read_set(doc: &Value) -> Result<(FillSet, f64), CliError> {
     match doc.get("mode").and_then(Value::as_str) {
         Some("fill" | "line") => {}
+        Some("space") => {
+            let c = doc
+                .get("params")
+                .map(|p| num(p, "c"))
+                .transpose()?
+                .ok_or_else(|| input_error("no 'params' with 'c'"))?;
+            if c <= 1.0 {
+                return Err(input_error(format!("'c' is {c}; a fill's c is above 1")));
+            }
+            return Ok((FillSet::Space(super::space_boxes::read(doc)?), c));
+        }
         Some(other) => {
             return Err(input_error(format!(
                 "this is a `zetafill {other}` JSON, not a fill or line JSON; give a JSON file written by zetafill fill or zetafill line"
@@ -355,11 +373,11 @@ pub fn count_2d(w: f64, h: f64, periodic: bool, shapes: &[Shape2], e: f64) -> (u
 pub struct DimensionDoc {
     /// The box-counting estimate.
     pub box_counting: f64,
-    /// The exact dimension: 2/c (1/c for a 1D fill).
+    /// The exact dimension: 2/c (1/c for a 1D fill, 3/c for a 3D fill).
     pub exact: f64,
     /// Exponent c of the fill.
     pub c: f64,
-    /// `fill` or `line`.
+    /// `fill`, `line` or `space`.
     pub mode: &'static str,
     /// Every box size used in the fit (mm) and the boxes that meet the gasket.
     pub boxes: Vec<BoxCount>,
@@ -381,21 +399,32 @@ pub struct BoxCount {
 /// Box-counts a fill over the box sizes of `range` (defaults in the module docs).
 pub fn estimate(set: &FillSet, c: f64, range: &BoxRange) -> Result<DimensionDoc, CliError> {
     let (max_box, min_box) = (range.max, range.min);
+    // The default smallest box: twice the smallest shape's size in 1D and 2D; in 3D the
+    // smallest solid's diameter over sqrt 3, the side of the largest box a solid still to come
+    // (no wider, in a fill of one kind) could hold, so every count down to there is the
+    // complete fractal's.
     let (side, smallest, max_level, mode, exact) = match set {
         FillSet::Line { length, segments, .. } => {
             let m = segments.iter().map(|s| s.1).fold(f64::INFINITY, f64::min);
-            (*length, m, MAX_LEVEL_1D, "line", 1.0 / c)
+            (*length, 2.0 * m, MAX_LEVEL_1D, "line", 1.0 / c)
         }
         FillSet::Plane { w, h, shapes, .. } => {
             let m = shapes.iter().map(Shape2::size).fold(f64::INFINITY, f64::min);
-            (w.max(*h), m, MAX_LEVEL_2D, "fill", 2.0 / c)
+            (w.max(*h), 2.0 * m, MAX_LEVEL_2D, "fill", 2.0 / c)
         }
+        FillSet::Space(s) => (
+            s.sides().iter().fold(0.0f64, |m, &v| m.max(v)),
+            s.smallest() / 3f64.sqrt(),
+            MAX_LEVEL_3D,
+            "space",
+            3.0 / c,
+        ),
     };
     if !smallest.is_finite() {
         return Err(input_error("the fill has no shapes"));
     }
     let hi = max_box.unwrap_or(side / 4.0);
-    let lo = min_box.unwrap_or(2.0 * smallest);
+    let lo = min_box.unwrap_or(smallest);
     let mut boxes = Vec::new();
     for k in 0..=max_level {
         let e = side / 2f64.powi(k as i32);
@@ -412,6 +441,7 @@ pub fn estimate(set: &FillSet, c: f64, range: &BoxRange) -> Result<DimensionDoc,
                 segments,
             } => count_1d(*length, *periodic, segments, e),
             FillSet::Plane { w, h, periodic, shapes } => count_2d(*w, *h, *periodic, shapes, e),
+            FillSet::Space(s) => s.count(e),
         };
         boxes.push(BoxCount {
             size: e,
@@ -422,10 +452,11 @@ pub fn estimate(set: &FillSet, c: f64, range: &BoxRange) -> Result<DimensionDoc,
     }
     if max_box.is_none() {
         // Leave out the saturated large sizes (more than half the boxes meet the gasket),
-        // keeping at least three sizes.
+        // keeping at least three sizes (two in 3D: the finest octave the fill resolves).
+        let keep = if mode == "space" { 2 } else { 3 };
         let mut left = boxes.len();
         for b in boxes.iter_mut() {
-            if left > 3 && 2 * b.count > b.total {
+            if left > keep && 2 * b.count > b.total {
                 b.used = false;
                 left -= 1;
             } else {
@@ -461,7 +492,11 @@ pub fn run(a: &DimensionPlan) -> Result<(), CliError> {
     if a.json {
         println!("{}", serde_json::to_string(&d).map_err(|e| CliError::Io(e.to_string()))?);
     } else {
-        let which = if d.mode == "line" { "1/c" } else { "2/c" };
+        let which = match d.mode {
+            "line" => "1/c",
+            "space" => "3/c",
+            _ => "2/c",
+        };
         let used: Vec<&BoxCount> = d.boxes.iter().filter(|b| b.used).collect();
         let (big, small) = (used.first().map_or(0.0, |b| b.size), used.last().map_or(0.0, |b| b.size));
         println!(

@@ -4,6 +4,7 @@
 pub mod chart;
 pub mod dimension;
 pub mod halting;
+pub mod space_boxes;
 pub mod trials;
 
 use crate::error::CliError;

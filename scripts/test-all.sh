@@ -58,6 +58,8 @@ RUSTDOCFLAGS="-D warnings" cargo doc -p zetafill -p zetafill-display -p zetafill
 
 step "firmware: every scene under qemu-system-arm (lm3s6965evb, Cortex-M3, no FPU)"
 (cd firmware-sim && env -u CARGO_TARGET_DIR cargo run --release)
+step "firmware: the 3D scenes, a second image (2D and 3D together overflow the flash)"
+(cd firmware-sim && env -u CARGO_TARGET_DIR cargo run --release --bin zetafill-firmware-space)
 if cargo clippy --version >/dev/null 2>&1; then
     (cd firmware-sim && env -u CARGO_TARGET_DIR cargo clippy --release -- -D warnings)
 fi

@@ -11,7 +11,10 @@
 //! - [`scenes`]: the scenes the firmware runs (the canonical runs of DESIGN section 4 and one
 //!   per shape kind, region and scalar), the storage sizes of the 1,024-shape engine, and
 //!   [`scenes::run`], which fills a scene step by step, drawing as it goes, and returns the
-//!   count, the determinism digest and the trials.
+//!   count, the determinism digest and the trials;
+//! - [`space`]: the 3D scenes (solids in a box or a ball, f64 and fixed point) in a
+//!   256-solid [`zetafill::SpaceEngine`], and [`space::run_space`], which returns the same
+//!   [`Outcome`] with the 3D digest.
 //!
 //! `no_std`, no allocator, no panics; drawing uses only integer and IEEE basic `f64`
 //! operations, so the pixels are the same on every target.
@@ -25,6 +28,8 @@
 
 pub mod draw;
 pub mod scenes;
+pub mod space;
 
 pub use draw::{Frame, View};
 pub use scenes::{run, Outcome, RunError, ScalarKind, Scene, SCENES};
+pub use space::{run_space, SpaceRunError, SpaceScene, SPACE_SCENES};

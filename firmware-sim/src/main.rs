@@ -14,13 +14,12 @@
 //! Exit status 0 when every scene ran and the memory stays within the limits; 1 on any error
 //! (invalid parameters, capacity, halting, a failed file write, over budget), after a line
 //! `error ...`. A panic (there should be none) prints its message and exits non-zero too.
-//! There is no logic here beyond wiring the core and the display crate to the board.
+//! There is no logic here beyond wiring the core and the display crate to the board. The 3D
+//! scenes are a second image, `zetafill-firmware-space` (see the crate's library).
 
 #![no_std]
 #![no_main]
 #![deny(unsafe_code)]
-
-mod board;
 
 use core::ffi::CStr;
 use cortex_m_rt::entry;
@@ -33,16 +32,8 @@ use zetafill_display::draw::{Frame, PBM_HEADER};
 use zetafill_display::scenes::{
     run, run_fast, RunError, ScalarKind, Scene, CAPACITY, FAST_CAPACITY, FAST_CELLS, FAST_INDEX_WORDS, INDEX_WORDS, SCENES,
 };
-
-use board::{Board, CALIBRATION_INSTRUCTIONS};
-
-/// The target for static RAM plus stack (bytes): reported, see the README.
-const RAM_TARGET: usize = 48 * 1024;
-/// Static RAM plus stack beyond this fails the run.
-const RAM_LIMIT: usize = RAM_TARGET;
-/// Flash must stay within this (bytes): the chip's 256 KiB less 32 KiB left for the code of
-/// an application around the engine.
-const FLASH_BUDGET: usize = 224 * 1024;
+use zetafill_firmware_sim::board::Board;
+use zetafill_firmware_sim::{fail, finish, report, stack_line, Calibration};
 
 #[entry]
 fn main() -> ! {
@@ -55,15 +46,7 @@ fn main() -> ! {
         SCENES.len(),
         CAPACITY
     );
-    let cal = Calibration {
-        instructions: CALIBRATION_INSTRUCTIONS,
-        ticks: board.calibrate(),
-    };
-    eprintln!("clock instructions={} ticks={}", cal.instructions, cal.ticks);
-    defmt::info!("clock: {=u64} instructions in {=u64} SysTick ticks", cal.instructions, cal.ticks);
-    if cal.ticks == 0 {
-        fail("SysTick does not count: run QEMU with -icount shift=0");
-    }
+    let cal = Calibration::measure(&board);
     let mut deepest = 0;
     for scene in SCENES {
         board.repaint();
@@ -76,46 +59,9 @@ fn main() -> ! {
         if !ok {
             process::exit(1);
         }
-        let m = board.memory();
-        eprintln!(
-            "stack {} static={} stack={} total={}",
-            scene.name,
-            m.static_ram,
-            m.stack,
-            m.static_ram + m.stack
-        );
-        deepest = deepest.max(m.stack);
+        deepest = deepest.max(stack_line(&board, scene.name));
     }
-    let m = board.memory();
-    let total = m.static_ram + deepest;
-    eprintln!(
-        "memory static={} stack={} total={} flash={} target={}",
-        m.static_ram, deepest, total, m.flash, RAM_TARGET
-    );
-    defmt::info!(
-        "memory: static {=usize} B + stack {=usize} B = {=usize} B, flash {=usize} B",
-        m.static_ram,
-        deepest,
-        total,
-        m.flash
-    );
-    if total > RAM_LIMIT || m.flash > FLASH_BUDGET {
-        fail("memory over budget (56 KiB RAM, 224 KiB flash)");
-    }
-    eprintln!("done");
-    process::exit(0)
-}
-
-/// Instructions per SysTick tick, as measured.
-struct Calibration {
-    instructions: u64,
-    ticks: u64,
-}
-
-impl Calibration {
-    fn instructions(&self, ticks: u64) -> u64 {
-        (u128::from(ticks) * u128::from(self.instructions) / u128::from(self.ticks.max(1))) as u64
-    }
+    finish(&board, deepest)
 }
 
 /// Logs a failed scene through defmt: the core's error values derive `defmt::Format` (its
@@ -127,11 +73,6 @@ fn log_error<E>(scene: &str, e: &RunError<E>) {
         RunError::Step(e) => defmt::error!("{=str}: {}", scene, e),
         RunError::Draw(_) => defmt::error!("{=str}: the display refused a drawing", scene),
     }
-}
-
-fn fail(msg: &str) -> ! {
-    eprintln!("error {}", msg);
-    process::exit(1)
 }
 
 /// Runs one scene on scalar `S` with the engine's storage on this frame of the stack.
@@ -154,24 +95,7 @@ fn run_scene<S: Scalar + Default>(scene: &Scene, board: &Board, cal: &Calibratio
             return false;
         }
     };
-    let instructions = cal.instructions(outcome.ticks);
-    eprintln!("digest {} {} {:016x}", scene.name, outcome.count, outcome.digest);
-    eprintln!(
-        "cost {} scalar={} placements={} trials={} instructions={}",
-        scene.name,
-        scene.scalar.name(),
-        outcome.count,
-        outcome.trials,
-        instructions
-    );
-    defmt::info!(
-        "{=str} ({=str}): {=u64} shapes, {=u64} trials, {=u64} instructions per placement",
-        scene.name,
-        scene.scalar.name(),
-        outcome.count,
-        outcome.trials,
-        instructions / outcome.count.max(1)
-    );
+    report(scene.name, scene.scalar.name(), "shapes", &outcome, cal);
     write_frame(scene.name, &frame)
 }
 
@@ -197,24 +121,7 @@ fn run_scene_fast<S: Scalar + Default>(scene: &Scene, board: &Board, cal: &Calib
             return false;
         }
     };
-    let instructions = cal.instructions(outcome.ticks);
-    eprintln!("digest {} {} {:016x}", scene.name, outcome.count, outcome.digest);
-    eprintln!(
-        "cost {} scalar={} placements={} trials={} instructions={}",
-        scene.name,
-        scene.scalar.name(),
-        outcome.count,
-        outcome.trials,
-        instructions
-    );
-    defmt::info!(
-        "{=str} ({=str}): {=u64} shapes, {=u64} trials, {=u64} instructions per placement",
-        scene.name,
-        scene.scalar.name(),
-        outcome.count,
-        outcome.trials,
-        instructions / outcome.count.max(1)
-    );
+    report(scene.name, scene.scalar.name(), "shapes", &outcome, cal);
     write_frame(scene.name, &frame)
 }
 

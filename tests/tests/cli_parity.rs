@@ -83,3 +83,93 @@ fn fixed_point_digest_matches_the_core() {
     let (_, h64, _) = run_scene(scene, 0);
     assert_ne!(h, h64, "fixed point and f64 give different shapes");
 }
+
+/// The `zetafill space` arguments of a firmware 3D scene (every scene is expressible: box or
+/// ball, periodic, mixes in turn, rotation, gap, scalar).
+fn space_args(s: &zetafill_display::SpaceScene) -> Vec<String> {
+    use zetafill::SpaceRegion;
+    let names: Vec<String> = s.solids.iter().map(zetafill_cli::args::space::solid_name).collect();
+    let shape = if names.len() == 1 {
+        names[0].clone()
+    } else {
+        format!("mix:{}", names.join(","))
+    };
+    let (region, periodic) = match s.region {
+        SpaceRegion::Box {
+            width,
+            height,
+            depth,
+            periodic,
+        } => (format!("box:{width}:{height}:{depth}"), periodic),
+        SpaceRegion::Ball { radius } => (format!("ball:{radius}"), false),
+        SpaceRegion::BoxMinusBall { .. } => panic!("{}: the CLI centres the removed ball; no scene uses one", s.name),
+    };
+    let mut a: Vec<String> = ["zetafill", "space", "-q", "--shape", &shape, "--region", &region]
+        .map(String::from)
+        .to_vec();
+    if periodic {
+        a.push("--periodic".into());
+    }
+    let scalar = match s.scalar {
+        zetafill_display::ScalarKind::F64 => "f64",
+        zetafill_display::ScalarKind::Fixed => "fixed",
+    };
+    for (flag, v) in [
+        ("--rotate", if s.rotate { "random".to_string() } else { "none".to_string() }),
+        ("--c", s.c.to_string()),
+        ("--n-offset", s.n_offset.to_string()),
+        ("--gap", s.gap.to_string()),
+        ("--seed", s.seed.to_string()),
+        ("--count", s.count.to_string()),
+        ("--scalar", scalar.to_string()),
+        ("--format", "digest".to_string()),
+        ("-o", "-".to_string()),
+    ] {
+        a.extend([flag.to_string(), v]);
+    }
+    a
+}
+
+/// `zetafill space ... --format digest` prints, for every 3D scene of the firmware, the digest
+/// the core gives on the host (which `tests/tests/firmware.rs` shows the Cortex-M3 prints too).
+#[test]
+fn space_digest_matches_the_firmware_scenes() {
+    use clap::Parser;
+    use zetafill::{Fixed, PlacedSolid, Scalar, SpaceStorage};
+    use zetafill_cli::plan::format::SpaceFormat;
+    use zetafill_display::space::{run_space, SpaceScene, SPACE_CAPACITY, SPACE_INDEX_WORDS, SPACE_SCENES};
+    fn core<S: Scalar + Default>(s: &SpaceScene) -> (u64, u64) {
+        let mut solids = vec![PlacedSolid::<S>::default(); SPACE_CAPACITY];
+        let mut index = vec![0u32; SPACE_INDEX_WORDS];
+        let storage = SpaceStorage {
+            solids: &mut solids,
+            index: &mut index,
+        };
+        let o = run_space(s, storage, || 0).unwrap_or_else(|e| panic!("{}: {e}", s.name));
+        (o.count, o.digest)
+    }
+    for s in SPACE_SCENES {
+        let args = space_args(s);
+        let zetafill_cli::Command::Space(a) = zetafill_cli::Cli::try_parse_from(&args)
+            .unwrap_or_else(|e| panic!("{args:?}: {e}"))
+            .command
+        else {
+            panic!("not a space command")
+        };
+        let (run, draw) = zetafill_cli::plan::space::resolve_as(&a, SpaceFormat::Digest).unwrap_or_else(|e| panic!("{}: {e}", s.name));
+        let (doc, halt) = zetafill_cli::cmd::space::compute(&run).unwrap_or_else(|e| panic!("{}: {e}", s.name));
+        assert!(halt.is_none(), "{}", s.name);
+        let line = zetafill_cli::cmd::space::render(&doc, SpaceFormat::Digest, &draw).unwrap_or_default();
+        let (n, h) = match s.scalar {
+            zetafill_display::ScalarKind::F64 => core::<f64>(s),
+            zetafill_display::ScalarKind::Fixed => core::<Fixed>(s),
+        };
+        assert_eq!(
+            String::from_utf8_lossy(&line),
+            format!("{n} {h:016x}\n"),
+            "{}: {}",
+            s.name,
+            args.join(" ")
+        );
+    }
+}

@@ -10,8 +10,13 @@
 //! compares: digests, pixels, memory (static + painted stack of the 1,024-shape engine, and
 //! flash), the defmt log decoded by `defmt-print`, and the cost figures.
 //!
+//! The 3D scenes (`zetafill_display::SPACE_SCENES`) are a second image,
+//! `zetafill-firmware-space`, since the 2D and 3D engines together overflow the chip's flash;
+//! it prints the same digest, cost, stack and memory lines (no frames), checked the same way.
+//!
 //! Memory: flash must stay within 224 KiB, and static RAM plus the painted stack of the
-//! 1,024-shape engine within 48 KiB ([`RAM_LIMIT`]); the figure is printed.
+//! 1,024-shape engine (the 256-solid 3D engine in the 3D image) within 48 KiB
+//! ([`RAM_LIMIT`]); the figures are printed.
 //!
 //! The Rust target, `qemu-system-arm` and `defmt-print` are installed by
 //! `bash scripts/test-all.sh`. Without them these tests fail; they never skip.
@@ -23,11 +28,12 @@ use std::process::{Command, Stdio};
 use std::sync::OnceLock;
 use std::time::{Duration, Instant};
 
-use zetafill::{CellWords, Fixed, Placed, Scalar, Storage};
+use zetafill::{CellWords, Fixed, Placed, PlacedSolid, Scalar, SpaceStorage, Storage};
 use zetafill_display::draw::{Frame, FRAME_BYTES, HEIGHT, PBM_HEADER, WIDTH};
 use zetafill_display::scenes::{
     run, run_fast, Outcome, ScalarKind, Scene, SceneRegion, CAPACITY, FAST_CAPACITY, FAST_CELLS, FAST_INDEX_WORDS, INDEX_WORDS, SCENES,
 };
+use zetafill_display::space::{run_space, SpaceScene, SPACE_CAPACITY, SPACE_INDEX_WORDS, SPACE_SCENES};
 use zetafill_tests::{run_scene, CANONICAL};
 
 const RAM_TARGET: u64 = 48 * 1024;
@@ -63,75 +69,95 @@ fn require_tool(program: &str, install: &str) {
     );
 }
 
-/// Builds the firmware and runs it once under QEMU (shared by every test in this file).
+/// Builds both firmware images once (one `cargo build` makes both binaries).
+fn build() -> PathBuf {
+    static BUILT: OnceLock<PathBuf> = OnceLock::new();
+    BUILT
+        .get_or_init(|| {
+            require_tool("qemu-system-arm", "apt-get install qemu-system-arm");
+            let dir = firmware_dir();
+            let target = dir.join("target");
+            let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
+            let status = Command::new(cargo)
+                .args(["build", "--release", "--bins"])
+                .current_dir(&dir)
+                .env("CARGO_TARGET_DIR", &target)
+                .env_remove("RUSTFLAGS")
+                .env_remove("CARGO_ENCODED_RUSTFLAGS")
+                .env_remove("CARGO_BUILD_TARGET")
+                .status()
+                .expect("cargo runs");
+            assert!(
+                status.success(),
+                "the firmware does not build (rustup target add thumbv7m-none-eabi?)"
+            );
+            target
+        })
+        .clone()
+}
+
+/// Runs the firmware image `bin` once under QEMU, in `target/RUN_DIR`.
+fn run_image(bin: &str, run_dir: &str) -> Firmware {
+    let target = build();
+    let elf = target.join("thumbv7m-none-eabi/release").join(bin);
+    let out = target.join(run_dir);
+    let _ = std::fs::remove_dir_all(&out);
+    std::fs::create_dir_all(&out).expect("output directory");
+    let stdout = File::create(out.join("defmt.bin")).expect("defmt.bin");
+    let stderr = File::create(out.join("report.txt")).expect("report.txt");
+    let mut child = Command::new("qemu-system-arm")
+        .args([
+            "-cpu",
+            "cortex-m3",
+            "-machine",
+            "lm3s6965evb",
+            "-display",
+            "none",
+            "-serial",
+            "none",
+            "-monitor",
+            "none",
+        ])
+        .args(["-semihosting-config", "enable=on,target=native", "-icount", "shift=0", "-kernel"])
+        .arg(&elf)
+        .current_dir(&out)
+        .stdin(Stdio::null())
+        .stdout(stdout)
+        .stderr(stderr)
+        .spawn()
+        .expect("qemu-system-arm starts");
+    let start = Instant::now();
+    let status = loop {
+        if let Some(s) = child.try_wait().expect("wait for qemu") {
+            break s;
+        }
+        if start.elapsed() > QEMU_LIMIT {
+            let _ = child.kill();
+            panic!("the firmware {bin} did not finish under QEMU (hung?)");
+        }
+        std::thread::sleep(Duration::from_millis(50));
+    };
+    let report = std::fs::read_to_string(out.join("report.txt")).expect("report");
+    let defmt = std::fs::read(out.join("defmt.bin")).expect("defmt log");
+    Firmware {
+        elf,
+        out,
+        report,
+        defmt,
+        exit: status.code(),
+    }
+}
+
+/// The 2D image, run once (shared by every test in this file).
 fn firmware() -> &'static Firmware {
     static FW: OnceLock<Firmware> = OnceLock::new();
-    FW.get_or_init(|| {
-        require_tool("qemu-system-arm", "apt-get install qemu-system-arm");
-        let dir = firmware_dir();
-        let target = dir.join("target");
-        let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
-        let status = Command::new(cargo)
-            .args(["build", "--release"])
-            .current_dir(&dir)
-            .env("CARGO_TARGET_DIR", &target)
-            .env_remove("RUSTFLAGS")
-            .env_remove("CARGO_ENCODED_RUSTFLAGS")
-            .env_remove("CARGO_BUILD_TARGET")
-            .status()
-            .expect("cargo runs");
-        assert!(
-            status.success(),
-            "the firmware does not build (rustup target add thumbv7m-none-eabi?)"
-        );
-        let elf = target.join("thumbv7m-none-eabi/release/zetafill-firmware-sim");
-        let out = target.join("test-run");
-        let _ = std::fs::remove_dir_all(&out);
-        std::fs::create_dir_all(&out).expect("output directory");
-        let stdout = File::create(out.join("defmt.bin")).expect("defmt.bin");
-        let stderr = File::create(out.join("report.txt")).expect("report.txt");
-        let mut child = Command::new("qemu-system-arm")
-            .args([
-                "-cpu",
-                "cortex-m3",
-                "-machine",
-                "lm3s6965evb",
-                "-display",
-                "none",
-                "-serial",
-                "none",
-                "-monitor",
-                "none",
-            ])
-            .args(["-semihosting-config", "enable=on,target=native", "-icount", "shift=0", "-kernel"])
-            .arg(&elf)
-            .current_dir(&out)
-            .stdin(Stdio::null())
-            .stdout(stdout)
-            .stderr(stderr)
-            .spawn()
-            .expect("qemu-system-arm starts");
-        let start = Instant::now();
-        let status = loop {
-            if let Some(s) = child.try_wait().expect("wait for qemu") {
-                break s;
-            }
-            if start.elapsed() > QEMU_LIMIT {
-                let _ = child.kill();
-                panic!("the firmware did not finish under QEMU (hung?)");
-            }
-            std::thread::sleep(Duration::from_millis(50));
-        };
-        let report = std::fs::read_to_string(out.join("report.txt")).expect("report");
-        let defmt = std::fs::read(out.join("defmt.bin")).expect("defmt log");
-        Firmware {
-            elf,
-            out,
-            report,
-            defmt,
-            exit: status.code(),
-        }
-    })
+    FW.get_or_init(|| run_image("zetafill-firmware-sim", "test-run"))
+}
+
+/// The 3D image, run once.
+fn space_firmware() -> &'static Firmware {
+    static FW: OnceLock<Firmware> = OnceLock::new();
+    FW.get_or_init(|| run_image("zetafill-firmware-space", "test-run-space"))
 }
 
 /// The fields of every report line starting with `word`.
@@ -468,4 +494,141 @@ fn defmt_log_decodes_on_the_host() {
         assert!(log.contains(&expected), "no `{expected}` in the decoded log:\n{log}");
     }
     assert!(log.contains("memory: static"), "decoded log:\n{log}");
+}
+
+fn host_space_run<S: Scalar + Default>(scene: &SpaceScene) -> Outcome {
+    let mut solids = vec![PlacedSolid::<S>::default(); SPACE_CAPACITY];
+    let mut index = vec![0u32; SPACE_INDEX_WORDS];
+    let storage = SpaceStorage {
+        solids: &mut solids,
+        index: &mut index,
+    };
+    run_space(scene, storage, || 0).unwrap_or_else(|e| panic!("{}: {e}", scene.name))
+}
+
+/// Every 3D scene run on this host, through the same core as the firmware.
+fn host_space_runs() -> &'static BTreeMap<&'static str, Outcome> {
+    static RUNS: OnceLock<BTreeMap<&'static str, Outcome>> = OnceLock::new();
+    RUNS.get_or_init(|| {
+        SPACE_SCENES
+            .iter()
+            .map(|s| {
+                let o = match s.scalar {
+                    ScalarKind::F64 => host_space_run::<f64>(s),
+                    ScalarKind::Fixed => host_space_run::<Fixed>(s),
+                };
+                (s.name, o)
+            })
+            .collect()
+    })
+}
+
+#[test]
+fn space_firmware_runs_every_3d_scene_and_exits_zero() {
+    let fw = space_firmware();
+    assert_eq!(fw.exit, Some(0), "3D firmware failed:\n{}", fw.report);
+    assert!(fw.report.lines().any(|l| l == "done"), "no `done`:\n{}", fw.report);
+    assert!(!fw.report.lines().any(|l| l.starts_with("error")), "{}", fw.report);
+    assert_eq!(parse_digests(&fw.report).len(), SPACE_SCENES.len());
+    assert!(SPACE_SCENES.iter().any(|s| s.scalar == ScalarKind::Fixed) && SPACE_SCENES.iter().any(|s| s.scalar == ScalarKind::F64));
+}
+
+#[test]
+fn space_firmware_digests_equal_the_hosts() {
+    let fw = parse_digests(&space_firmware().report);
+    let host = host_space_runs();
+    let mut bad = Vec::new();
+    for (name, o) in host {
+        match fw.get(*name) {
+            Some(&got) if got == (o.count, o.digest) => {}
+            got => bad.push(format!("{name}: firmware {got:?}, host {} {:016x}", o.count, o.digest)),
+        }
+    }
+    assert!(
+        bad.is_empty(),
+        "the Cortex-M3 and the host disagree on 3D scenes:\n{}",
+        bad.join("\n")
+    );
+    for (name, (count, hash)) in &fw {
+        println!("digest {name} {count} {hash:016x}");
+    }
+    // Fixed point and f64 place different solids from the same parameters.
+    assert_ne!(fw.get("spheres-box"), fw.get("spheres-box-fixed"));
+}
+
+#[test]
+fn a_256_solid_engine_fits_the_board() {
+    let fw = space_firmware();
+    let m = lines(&fw.report, "memory");
+    assert_eq!(m.len(), 1, "one memory line expected:\n{}", fw.report);
+    let (stat, stack, total, flash) = (
+        field(&m[0], "static"),
+        field(&m[0], "stack"),
+        field(&m[0], "total"),
+        field(&m[0], "flash"),
+    );
+    println!("3D image memory: static {stat} B + stack high-water mark {stack} B = {total} B; flash {flash} B (budget {FLASH_BUDGET})");
+    assert_eq!(total, stat + stack);
+    assert!(total <= RAM_LIMIT, "static + stack = {total} B > {RAM_LIMIT} B");
+    assert!(flash <= FLASH_BUDGET, "flash {flash} B > 224 KiB");
+    let per_scene = lines(&fw.report, "stack");
+    assert_eq!(per_scene.len(), SPACE_SCENES.len());
+    assert_eq!(per_scene.iter().map(|f| field(f, "stack")).max(), Some(stack));
+    let storage = (SPACE_CAPACITY * std::mem::size_of::<PlacedSolid<f64>>() + SPACE_INDEX_WORDS * 4) as u64;
+    for f in &per_scene {
+        assert!(
+            field(f, "stack") >= storage,
+            "{}: stack below the {storage} B of storage: painting is broken",
+            f[1]
+        );
+    }
+    let elf = std::fs::read(&fw.elf).expect("ELF");
+    assert!(elf_flash_bytes(&elf).abs_diff(flash) <= 64, "ELF and firmware disagree on flash");
+}
+
+#[test]
+fn space_cost_per_placement_is_reported() {
+    let fw = space_firmware();
+    let costs = lines(&fw.report, "cost");
+    assert_eq!(costs.len(), SPACE_SCENES.len());
+    for s in SPACE_SCENES {
+        let c = costs
+            .iter()
+            .find(|f| f.get(1) == Some(&s.name))
+            .unwrap_or_else(|| panic!("no cost line for {}", s.name));
+        let host = &host_space_runs()[s.name];
+        assert_eq!(
+            (field(c, "placements"), field(c, "trials")),
+            (host.count, host.trials),
+            "{}: trials differ",
+            s.name
+        );
+        let i = field(c, "instructions");
+        assert!(i > 0);
+        println!(
+            "cost {}: {} instructions per placement, {} per trial ({} placements, {} trials)",
+            s.name,
+            i / host.count,
+            i / host.trials,
+            host.count,
+            host.trials
+        );
+    }
+    let log = decoded(space_firmware());
+    for s in SPACE_SCENES {
+        let expected = format!("{} ({}): {} solids", s.name, s.scalar.name(), s.count);
+        assert!(log.contains(&expected), "no `{expected}` in the decoded log:\n{log}");
+    }
+}
+
+/// The firmware's defmt log decoded by `defmt-print`.
+fn decoded(fw: &Firmware) -> String {
+    require_tool("defmt-print", "cargo install defmt-print --version =1.2.0 --locked");
+    let out = Command::new("defmt-print")
+        .arg("-e")
+        .arg(&fw.elf)
+        .stdin(File::open(fw.out.join("defmt.bin")).expect("defmt.bin"))
+        .output()
+        .expect("defmt-print runs");
+    String::from_utf8_lossy(&out.stdout).into_owned()
 }

@@ -1,9 +1,15 @@
-//! Reference outputs: every `examples/gallery/NAME.args` (a `fill`, `line`, `tile` or `territory` command) run in
-//! process must write exactly the committed picture. Set `ZETAFILL_REGENERATE=1` to rewrite the pictures after an intended
-//! change (and look at them before committing).
+//! Reference outputs: every `examples/gallery/NAME.args` (a `fill`, `line`, `tile`, `territory` or `space` command)
+//! run in process must write exactly the committed picture. An output too large to commit (the STL for printing) is
+//! pinned instead by `OUTPUT.sha256` beside the `.args` (`sha256sum` format, so `sha256sum -c` checks a file made on
+//! the command line). Set `ZETAFILL_REGENERATE=1` to rewrite the pictures and pins after an intended change (and look
+//! at them before committing).
 
+use sha2::{Digest, Sha256};
 use std::path::{Path, PathBuf};
 use zetafill_tests::parse_fill;
+
+/// Outputs kept as a SHA-256 pin rather than committed: by extension.
+const PINNED: &[&str] = &["stl"];
 
 fn gallery() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../examples/gallery")
@@ -41,6 +47,15 @@ fn render(args_file: &Path) -> (PathBuf, Vec<u8>) {
             .unwrap_or_else(|e| panic!("{}: {e}", args_file.display()));
         return (gallery().join(&t.output.output), bytes);
     }
+    if let zetafill_cli::Command::Space(s) = command {
+        let format = zetafill_cli::plan::format::SpaceFormat::resolve(s.output.format, &s.output.output)
+            .unwrap_or_else(|e| panic!("{}: {e}", args_file.display()));
+        let (run, draw) = zetafill_cli::plan::space::resolve_as(&s, format).unwrap_or_else(|e| panic!("{}: {e}", args_file.display()));
+        let (doc, halt) = zetafill_cli::cmd::space::compute(&run).unwrap_or_else(|e| panic!("{}: {e}", args_file.display()));
+        assert!(halt.is_none(), "{} halted", args_file.display());
+        let bytes = zetafill_cli::cmd::space::render(&doc, format, &draw).unwrap_or_else(|e| panic!("{}: {e}", args_file.display()));
+        return (gallery().join(&s.output.output), bytes);
+    }
     if let zetafill_cli::Command::Line(l) = command {
         let format = zetafill_cli::plan::format::Format::resolve(l.output.format, &l.output.output)
             .unwrap_or(zetafill_cli::plan::format::Format::Svg);
@@ -71,6 +86,11 @@ fn gallery_pictures_are_what_the_tool_writes() {
     assert!(entries.len() >= 3, "gallery has {} parameter files", entries.len());
     for args_file in entries {
         let (out, bytes) = render(&args_file);
+        let (out, bytes) = if out.extension().is_some_and(|e| PINNED.iter().any(|p| e == *p)) {
+            pin(&out, &bytes)
+        } else {
+            (out, bytes)
+        };
         if regenerate {
             std::fs::write(&out, &bytes).unwrap_or_else(|e| panic!("{}: {e}", out.display()));
             continue;
@@ -84,6 +104,25 @@ fn gallery_pictures_are_what_the_tool_writes() {
             );
         }
     }
+}
+
+/// The pin file of `out` and its text: `HEX  NAME` and a newline, as `sha256sum` writes it.
+fn pin(out: &Path, bytes: &[u8]) -> (PathBuf, Vec<u8>) {
+    let name = out.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
+    let hex: String = Sha256::digest(bytes).iter().map(|b| format!("{b:02x}")).collect();
+    (
+        out.with_file_name(format!("{name}.sha256")),
+        format!("{hex}  {name}\n").into_bytes(),
+    )
+}
+
+#[test]
+fn a_pin_is_sha256sum_of_the_bytes() {
+    let (path, text) = pin(Path::new("g/a.stl"), b"abc");
+    assert_eq!(path, Path::new("g/a.stl.sha256"));
+    let want = "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad  a.stl\n";
+    assert_eq!(String::from_utf8_lossy(&text), want);
+    assert_ne!(pin(Path::new("a.stl"), b"abd").1, text);
 }
 
 #[test]

@@ -1,0 +1,117 @@
+//! What the two firmware images share: the board (clock, stack painting, memory figures) and
+//! the report every scene and every image ends with.
+//!
+//! The 2D scenes (`src/main.rs`, binary `zetafill-firmware-sim`) and the 3D scenes
+//! (`src/bin/zetafill-firmware-space.rs`) are two images because the core's 2D and 3D engines
+//! together do not fit the chip's 256 KiB of flash: each image holds one of them and must stay
+//! within the same budgets ([`RAM_LIMIT`], [`FLASH_BUDGET`]). There is no logic here beyond
+//! wiring the core to the board.
+
+#![no_std]
+#![deny(unsafe_code)]
+
+pub mod board;
+
+use semihosting::{eprintln, process};
+use zetafill_display::Outcome;
+
+use board::Board;
+
+/// The target for static RAM plus stack (bytes): reported, see the README.
+pub const RAM_TARGET: usize = 48 * 1024;
+/// Static RAM plus stack beyond this fails the run.
+pub const RAM_LIMIT: usize = RAM_TARGET;
+/// Flash must stay within this (bytes): the chip's 256 KiB less 32 KiB left for the code of
+/// an application around the engine.
+pub const FLASH_BUDGET: usize = 224 * 1024;
+
+/// Instructions per SysTick tick, as measured.
+pub struct Calibration {
+    /// Instructions in the calibration loop.
+    pub instructions: u64,
+    /// SysTick ticks they took.
+    pub ticks: u64,
+}
+
+impl Calibration {
+    /// Measures the clock, prints the `clock` line, and fails when SysTick does not count.
+    pub fn measure(board: &Board) -> Calibration {
+        let cal = Calibration {
+            instructions: board::CALIBRATION_INSTRUCTIONS,
+            ticks: board.calibrate(),
+        };
+        eprintln!("clock instructions={} ticks={}", cal.instructions, cal.ticks);
+        defmt::info!("clock: {=u64} instructions in {=u64} SysTick ticks", cal.instructions, cal.ticks);
+        if cal.ticks == 0 {
+            fail("SysTick does not count: run QEMU with -icount shift=0");
+        }
+        cal
+    }
+
+    /// Instructions in `ticks`.
+    pub fn instructions(&self, ticks: u64) -> u64 {
+        (u128::from(ticks) * u128::from(self.instructions) / u128::from(self.ticks.max(1))) as u64
+    }
+}
+
+/// Prints `error MSG` and exits 1.
+pub fn fail(msg: &str) -> ! {
+    eprintln!("error {}", msg);
+    process::exit(1)
+}
+
+/// Prints a scene's `digest` and `cost` lines and logs it through defmt; `unit` names what it
+/// places ("shapes", "solids").
+pub fn report(name: &str, scalar: &str, unit: &str, outcome: &Outcome, cal: &Calibration) {
+    let instructions = cal.instructions(outcome.ticks);
+    eprintln!("digest {} {} {:016x}", name, outcome.count, outcome.digest);
+    eprintln!(
+        "cost {} scalar={} placements={} trials={} instructions={}",
+        name, scalar, outcome.count, outcome.trials, instructions
+    );
+    defmt::info!(
+        "{=str} ({=str}): {=u64} {=str}, {=u64} trials, {=u64} instructions per placement",
+        name,
+        scalar,
+        outcome.count,
+        unit,
+        outcome.trials,
+        instructions / outcome.count.max(1)
+    );
+}
+
+/// Prints the scene's `stack` line (the stack painted before it) and returns its depth.
+pub fn stack_line(board: &Board, name: &str) -> usize {
+    let m = board.memory();
+    eprintln!(
+        "stack {} static={} stack={} total={}",
+        name,
+        m.static_ram,
+        m.stack,
+        m.static_ram + m.stack
+    );
+    m.stack
+}
+
+/// Prints the `memory` line for the deepest scene's stack, checks the budgets, prints `done`
+/// and exits 0 (1 when over budget).
+pub fn finish(board: &Board, deepest: usize) -> ! {
+    let m = board.memory();
+    let total = m.static_ram + deepest;
+    eprintln!(
+        "memory static={} stack={} total={} flash={} target={}",
+        m.static_ram, deepest, total, m.flash, RAM_TARGET
+    );
+    defmt::info!(
+        "memory: static {=usize} B + stack {=usize} B = {=usize} B, flash {=usize} B",
+        m.static_ram,
+        deepest,
+        total,
+        m.flash
+    );
+    if total > RAM_LIMIT || m.flash > FLASH_BUDGET {
+        fail("memory over budget (48 KiB RAM, 224 KiB flash)");
+    }
+    eprintln!("done");
+    process::exit(0)
+}

@@ -140,6 +140,8 @@ impl core::fmt::Display for NoSpaceCells {
     }
 }
 
+impl core::error::Error for NoSpaceCells {}
+
 /// The 3D cell sampler over caller-lent cells; see the module for how and why it is exact.
 ///
 /// # Examples

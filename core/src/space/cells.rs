@@ -155,7 +155,7 @@ impl core::error::Error for NoSpaceCells {}
 /// let mut pool = vec![SpaceCell::default(); space_cells_for(500)];
 /// let region = SpaceRegion::Box { width: 50.0, height: 50.0, depth: 50.0, periodic: false };
 /// let storage = SpaceStorage { solids: &mut solids, index: &mut index };
-/// let mut engine = SpaceEngine::new(SpaceParams::spheres(1.15, 1.0), region, storage)?;
+/// let mut engine = SpaceEngine::new(SpaceParams::spheres(1.15, 2.0), region, storage)?;
 /// let mut cells = SpaceCells::new(&mut pool)?;
 /// let stop = Stop { count: Some(500), ..Stop::default() };
 /// let reason = engine.run_fast(&mut cells, &mut rng_from_seed(3), &stop, |_| {});

@@ -1,8 +1,9 @@
 //! The 3D samplers side by side in one process: spheres at c = 1.15, N = 1 in a 100 mm cube,
 //! seed 1, the paper's sampler (`SpaceEngine::step`) against the octree cell sampler
 //! (`SpaceEngine::step_fast`). For each size: CPU time, trials per placement over the whole
-//! run and over its last tenth, the cell sampler's peak cells and the bytes per solid its
-//! storage needed (solid record, index words and peak cells).
+//! run and over its last tenth, the cell sampler's peak cells and rebuilds, and the bytes per
+//! solid its storage needed (solid record, index words and peak cells). The paper's sampler
+//! runs up to 10^4 solids.
 //!
 //!     cargo bench -p zetafill --bench space [-- N N ...]
 
@@ -38,13 +39,13 @@ fn run(n: usize, fast: bool) {
     let mut rng = rng_from_seed(1);
     let mut trials = Vec::with_capacity(n);
     let t = Instant::now();
-    let peak = if fast {
+    let (peak, rebuilds) = if fast {
         let mut cells = SpaceCells::new(&mut pool).expect("cells");
         e.run_fast(&mut cells, &mut rng, &stop, |p| trials.push(p.trials));
-        cells.peak()
+        (cells.peak(), cells.rebuilds())
     } else {
         e.run(&mut rng, &stop, |p| trials.push(p.trials));
-        0
+        (0, 0)
     };
     let secs = t.elapsed().as_secs_f64();
     let all = trials.iter().sum::<u64>() as f64 / trials.len().max(1) as f64;
@@ -53,18 +54,23 @@ fn run(n: usize, fast: bool) {
     let record = std::mem::size_of::<PlacedSolid<f64>>() + 4 * space_index_words(n) / n;
     let bytes = record + peak * std::mem::size_of::<SpaceCell>() / n;
     println!(
-        "| {n} | {} | {secs:.2} | {:.1} | {all:.0} | {last:.0} | {} | {bytes} |",
+        "| {n} | {} | {secs:.2} | {:.1} | {all:.0} | {last:.0} | {} | {} | {bytes} |",
         if fast { "cells" } else { "paper" },
         secs * 1e6 / n as f64,
-        if fast { peak.to_string() } else { "-".into() }
+        if fast { peak.to_string() } else { "-".into() },
+        if fast { rebuilds.to_string() } else { "-".into() }
     );
 }
 
 fn main() {
     let sizes: Vec<usize> = std::env::args().skip(1).filter_map(|a| a.parse().ok()).collect();
-    let sizes = if sizes.is_empty() { vec![1_000, 10_000, 30_000] } else { sizes };
-    println!("| solids | sampler | s | us/placement | trials/placement | last tenth | peak cells | bytes/solid |");
-    println!("|---:|---|---:|---:|---:|---:|---:|---:|");
+    let sizes = if sizes.is_empty() {
+        vec![1_000, 10_000, 30_000, 100_000]
+    } else {
+        sizes
+    };
+    println!("| solids | sampler | s | us/placement | trials/placement | last tenth | peak cells | rebuilds | bytes/solid |");
+    println!("|---:|---|---:|---:|---:|---:|---:|---:|---:|");
     for &n in &sizes {
         if n <= 10_000 {
             run(n, false);

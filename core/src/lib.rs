@@ -98,7 +98,9 @@
 //! A placed shape takes `size_of::<Placed<f64>>()` = 32 bytes plus 12 bytes of index
 //! (one link and two buckets), 44 bytes in all with the recommended [`index_words`].
 //! The cell sampler borrows a slice of 32-byte [`CellWords`] besides; circle fills of c = 1.3
-//! hold at most about 15 of them per placed shape. A polygon region's edge tree borrows 24
+//! hold at most about 15 of them per placed shape. The 3D cell sampler borrows 40-byte [`SpaceCell`]s: at most
+//! 64 per placed solid over a start of 16,384 ([`space_cells_for`]); sphere fills of c = 1.15
+//! reach that budget from about 30,000 solids on (2 to 3 KB per solid). A polygon region's edge tree borrows 24
 //! bytes a vertex ([`PolygonRegion::scratch_words`]), or nothing ([`PolygonRegion::new`]).
 
 #![no_std]

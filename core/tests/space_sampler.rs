@@ -13,6 +13,9 @@
 //! independent checker of `space_fills.rs`, and the invariant the argument rests on (every
 //! valid centre lies in a live cell) is checked directly in the core's unit tests.
 
+mod common;
+
+use common::ks;
 use zetafill::internals::space::{apart, Body, V3};
 use zetafill::{
     rng_from_seed, space_cells_for, space_index_words, Fixed, PlacedSolid, Scalar, Solid, SpaceCell, SpaceCells, SpaceEngine, SpaceParams,
@@ -144,37 +147,6 @@ fn statistics(solids: &[Rec], periodic: bool) -> Vec<f64> {
         out.extend([c[0], c[1], c[2], nearest]);
     }
     out
-}
-
-/// The two-sample Kolmogorov–Smirnov statistic D and its asymptotic p-value.
-fn ks(a: &[f64], b: &[f64]) -> (f64, f64) {
-    let mut a = a.to_vec();
-    let mut b = b.to_vec();
-    a.sort_by(f64::total_cmp);
-    b.sort_by(f64::total_cmp);
-    let (n, m) = (a.len() as f64, b.len() as f64);
-    let (mut i, mut j, mut d) = (0usize, 0usize, 0f64);
-    while i < a.len() && j < b.len() {
-        let v = a[i].min(b[j]);
-        while i < a.len() && a[i] <= v {
-            i += 1;
-        }
-        while j < b.len() && b[j] <= v {
-            j += 1;
-        }
-        d = d.max((i as f64 / n - j as f64 / m).abs());
-    }
-    let ne = n * m / (n + m);
-    let lambda = (ne.sqrt() + 0.12 + 0.11 / ne.sqrt()) * d;
-    let mut p = 0.0;
-    for k in 1..=100 {
-        let term = (-2.0 * (k * k) as f64 * lambda * lambda).exp();
-        p += if k % 2 == 1 { 2.0 * term } else { -2.0 * term };
-        if term < 1e-12 {
-            break;
-        }
-    }
-    (d, p.clamp(0.0, 1.0))
 }
 
 fn samples(kind: Solid, region: SpaceRegion, sampler: Sampler, first_seed: u64) -> Vec<Vec<f64>> {

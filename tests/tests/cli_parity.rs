@@ -104,9 +104,20 @@ fn space_args(s: &zetafill_display::SpaceScene) -> Vec<String> {
         SpaceRegion::Ball { radius } => (format!("ball:{radius}"), false),
         SpaceRegion::BoxMinusBall { .. } => panic!("{}: the CLI centres the removed ball; no scene uses one", s.name),
     };
-    let mut a: Vec<String> = ["zetafill", "space", "-q", "--shape", &shape, "--region", &region]
-        .map(String::from)
-        .to_vec();
+    // The board runs the paper's sampler.
+    let mut a: Vec<String> = [
+        "zetafill",
+        "space",
+        "-q",
+        "--sampler",
+        "reference",
+        "--shape",
+        &shape,
+        "--region",
+        &region,
+    ]
+    .map(String::from)
+    .to_vec();
     if periodic {
         a.push("--periodic".into());
     }

@@ -228,9 +228,9 @@ pub struct SpaceArgs {
     /// Number type of the engine: f64 or fixed (32.32 fixed point).
     #[arg(long, value_enum, default_value = "f64")]
     pub scalar: ScalarArg,
-    /// Candidate sampler: reference (the paper's) or fast (octree cells where the next solid
-    /// could fit: the same distribution of placements, a few times fewer trials, more memory).
-    #[arg(long, value_enum, default_value = "reference")]
+    /// Candidate sampler: fast (octree cells where the next solid could fit: the same
+    /// distribution of placements as reference, far fewer trials) or reference (the paper's).
+    #[arg(long, value_enum, default_value = "fast")]
     pub sampler: Sampler,
     /// Where the output goes.
     #[command(flatten)]

@@ -32,14 +32,22 @@
 //! paper's sampler, and the cells stay as they are (a bound is never made wrong by more solids).
 //!
 //! A drawn cell with `u < need` holds no valid centre: it goes to sleep in a max-heap until a
-//! later solid's `need` falls to `u` (needs only shrink in a fill of one kind; in a mix a cell
-//! may be live with `u < need`, which costs a trial, never exactness). A cell with `u <= 0`
-//! lies in material and is dropped for good. A drawn cell whose half diagonal is above the
-//! need, or that has rejected eight candidates, is split into its eight children, which start
-//! with their parent's solids and bound.
+//! later solid's `need` falls to `u` (in a mix a cell may be live with `u < need`, which costs a
+//! trial, never exactness), or is dropped when `u` is below the floor `F`. The cells are built
+//! from the first grid for the first solid, and built anew whenever a need falls below `F`;
+//! each build sets `F` to 0.6 times the need it serves. Between two builds every need is at
+//! least `F`, so a dropped cell (`u < F`) holds no valid centre for any of them, and the next
+//! build starts again from the whole grid: nothing dropped is lost for the smaller solids
+//! after it. A build refines every cell larger than the need, keeps the cells with `u >= F`
+//! (live when `u >= need`), and looks up, for each cell of about the need's size, the
+//! [`SPACE_NEAR`] solids nearest its centre. So no cell far below the need is ever stored.
+//! Between builds a drawn cell whose half diagonal is above the need, or that has rejected
+//! eight candidates, is split into its eight children, which start with their parent's solids
+//! and bound and look up their nearest solids.
 //!
 //! Cells learn their solids from the trials: a candidate that hits a solid teaches the drawn
-//! cell that solid, and the cell that receives a solid learns it at once.
+//! cell that solid, and the cell that receives a solid learns it at once. A candidate nearer
+//! than the need to a solid its cell knows is rejected without the spatial index.
 //!
 //! ## Why the accepted placements are exactly the reference's
 //! Each trial draws a cell with probability proportional to its volume (exact integer weights
@@ -81,6 +89,14 @@ const GRID: f64 = 16.0;
 pub const SPACE_CELLS_BASE: usize = 16 * 16 * 16 * 4;
 /// The cells a fill may hold per placed solid.
 pub const SPACE_CELLS_PER_SOLID: usize = 64;
+/// The floor, as a fraction of the need at a build: cells below it are dropped, and the cells
+/// are built anew when a need falls below it.
+const FLOOR: f64 = 0.6;
+/// Cells whose half diagonal is at most this many needs look up their nearest solids in a
+/// rebuild (larger ones pass theirs down).
+const ASK: f64 = 1.0;
+/// The depth-first stack of a rebuild: eight children a level.
+const STACK: usize = 8 * SPACE_CELL_LEVELS + 8;
 /// Rejections after which a cell splits whatever its size.
 const STUBBORN: u8 = 8;
 const NIL: u32 = u32::MAX;
@@ -139,7 +155,7 @@ impl core::error::Error for NoSpaceCells {}
 /// let mut pool = vec![SpaceCell::default(); space_cells_for(500)];
 /// let region = SpaceRegion::Box { width: 50.0, height: 50.0, depth: 50.0, periodic: false };
 /// let storage = SpaceStorage { solids: &mut solids, index: &mut index };
-/// let mut engine = SpaceEngine::new(SpaceParams::spheres(1.15, 1.0), region, storage)?;
+/// let mut engine = SpaceEngine::new(SpaceParams::spheres(1.15, 2.0), region, storage)?;
 /// let mut cells = SpaceCells::new(&mut pool)?;
 /// let stop = Stop { count: Some(500), ..Stop::default() };
 /// let reason = engine.run_fast(&mut cells, &mut rng_from_seed(3), &stop, |_| {});
@@ -167,6 +183,12 @@ pub struct SpaceCells<'c> {
     slack: f64,
     started: bool,
     peak: usize,
+    /// Cells whose bound is below the floor are dropped; when a need falls below it, the
+    /// cells are rebuilt from the first grid.
+    floor: f64,
+    /// The first grid's cells along each axis.
+    grid: [u32; 3],
+    rebuilds: u32,
 }
 
 /// The outcome of restructuring a drawn cell.
@@ -193,6 +215,9 @@ impl<'c> SpaceCells<'c> {
             slack: 0.0,
             started: false,
             peak: 0,
+            floor: f64::INFINITY,
+            grid: [1; 3],
+            rebuilds: 0,
         })
     }
 
@@ -204,6 +229,11 @@ impl<'c> SpaceCells<'c> {
     /// Sleeping cells.
     pub fn asleep(&self) -> usize {
         self.heap
+    }
+
+    /// How many times the cells were rebuilt.
+    pub fn rebuilds(&self) -> u32 {
+        self.rebuilds
     }
 
     /// The most cells held at once, live and asleep (the storage a fill needed).
@@ -360,7 +390,7 @@ impl<'c> SpaceCells<'c> {
     /// Retires a live cell too tight for `need`: asleep, or dropped when it lies in material.
     fn retire(&mut self, slot: usize) {
         let c = self.remove_live(slot);
-        if c.u > 0.0 {
+        if c.u >= self.floor && c.u > 0.0 {
             self.push_sleep(c);
         }
     }
@@ -383,21 +413,92 @@ impl<'c> SpaceCells<'c> {
         let [rel, abs] = S::BOUND_SLACK;
         let [orel, oabs] = S::OUTLINE_SLACK;
         self.slack = (rel + orel) * largest + abs + oabs;
-        let n = ext.map(|v| libm::ceil(v / self.side0).clamp(1.0, grid) as u32);
-        for ix in 0..n[0] {
-            for iy in 0..n[1] {
-                for iz in 0..n[2] {
-                    let mut c = SpaceCell {
+        self.grid = ext.map(|v| libm::ceil(v / self.side0).clamp(1.0, grid) as u32);
+    }
+
+    /// Builds the cells anew from the first grid for a solid that needs `need`: every cell
+    /// whose bound is at least the new floor (`FLOOR` times `need`) is kept, live when it
+    /// admits `need`, asleep otherwise; a cell larger than the need is refined first (while
+    /// the storage lets every cell still to be visited find a place, so none is lost). Each
+    /// cell near the need's size looks up the solids nearest its centre.
+    fn rebuild<S: Scalar>(&mut self, e: &SpaceEngine<'_, S>, need: f64) {
+        self.rebuilds = self.rebuilds.saturating_add(1);
+        self.starts = [0; SPACE_CELL_LEVELS + 1];
+        self.heap = 0;
+        self.weight = 0;
+        self.floor = FLOOR * need;
+        let limit = self.pool.len().min(self.budget(e.len));
+        let mut stack = [SpaceCell::default(); STACK];
+        let [nx, ny, nz] = self.grid;
+        for ix in 0..nx {
+            for iy in 0..ny {
+                for iz in 0..nz {
+                    let root = SpaceCell {
                         at: [ix, iy, iz],
+                        u: f64::INFINITY,
                         ..SpaceCell::default()
                     };
-                    c.u = self.bound_at(e, &c.known, self.centre(&c), 0);
-                    if c.u > 0.0 {
-                        let _ = self.insert_live(c);
+                    let mut top = 0usize;
+                    if let Some(s) = stack.get_mut(0) {
+                        *s = root;
+                        top = 1;
+                    }
+                    while top > 0 {
+                        top -= 1;
+                        let mut c = stack.get(top).copied().unwrap_or_default();
+                        let (m, h) = (self.centre(&c), self.half_diagonal(c.level));
+                        c.u = self.bound_at(e, &c.known, m, c.level).min(c.u);
+                        // What the parent knew may already drop the cell; otherwise a cell
+                        // near the need's size looks its nearest solids up.
+                        if h <= ASK * need && c.u >= self.floor {
+                            c.known = nearest(e, m, h + need, &c.known);
+                            c.u = self.bound_at(e, &c.known, m, c.level).min(c.u);
+                        }
+                        if c.u < self.floor || c.u <= 0.0 {
+                            continue;
+                        }
+                        let pending = top + (nx * ny * nz) as usize;
+                        let room = self.live() + self.heap + pending + 8 <= limit;
+                        if h > need && usize::from(c.level) + 1 < SPACE_CELL_LEVELS && room && top + 8 <= STACK {
+                            for child in 0..8u32 {
+                                let bits = [child & 1, (child >> 1) & 1, (child >> 2) & 1];
+                                let k = SpaceCell {
+                                    at: core::array::from_fn(|a| {
+                                        c.at.get(a).copied().unwrap_or(0).wrapping_mul(2) + bits.get(a).copied().unwrap_or(0)
+                                    }),
+                                    level: c.level + 1,
+                                    rejects: 0,
+                                    u: c.u,
+                                    known: c.known,
+                                };
+                                if let Some(s) = stack.get_mut(top) {
+                                    *s = k;
+                                    top += 1;
+                                }
+                            }
+                        } else if c.u >= need {
+                            let _ = self.insert_live(c);
+                        } else {
+                            self.push_sleep(c);
+                        }
                     }
                 }
             }
         }
+    }
+
+    /// Readies the cells for a solid that needs `need` (before the slack): rebuilds them when
+    /// the need fell below the floor, wakes the sleepers it admits otherwise. Returns the need
+    /// the cells are compared with.
+    fn prepare<S: Scalar>(&mut self, e: &SpaceEngine<'_, S>, need: f64) -> f64 {
+        self.begin(e);
+        let need = need - self.slack;
+        if need < self.floor {
+            self.rebuild(e, need);
+        } else {
+            self.wake(need);
+        }
+        need
     }
 
     /// Wakes every sleeping cell whose bound admits `need`.
@@ -512,7 +613,7 @@ impl<'c> SpaceCells<'c> {
             let live = if k.u >= need {
                 self.insert_live(k)
             } else {
-                if k.u > 0.0 {
+                if k.u > 0.0 && k.u >= self.floor {
                     self.push_sleep(k);
                 }
                 None
@@ -547,14 +648,21 @@ fn nearest<S: Scalar>(e: &SpaceEngine<'_, S>, p: [f64; 3], reach: f64, known: &[
             return;
         }
         let d = e.dist_up(j, p);
+        // Only solids truly within reach, whatever else the index lists: the choice must not
+        // depend on its layout.
+        if d > reach {
+            return;
+        }
+        // The largest by (distance, index), so that the four kept never depend on the order
+        // the index lists them in.
         let mut worst = 0usize;
         for (i, b) in best.iter().enumerate() {
-            if b.0 > best.get(worst).map_or(f64::NEG_INFINITY, |w| w.0) {
+            if best.get(worst).is_some_and(|w| b.0 > w.0 || (b.0 == w.0 && b.1 > w.1)) {
                 worst = i;
             }
         }
         if let Some(w) = best.get_mut(worst) {
-            if d < w.0 {
+            if d < w.0 || (d == w.0 && j < w.1) {
                 *w = (d, j);
             }
         }
@@ -691,9 +799,7 @@ impl<S: Scalar> SpaceEngine<'_, S> {
         let Some(need) = self.need(&next) else {
             return self.step(rng);
         };
-        cells.begin(self);
-        let need = need - cells.slack;
-        cells.wake(need);
+        let need = cells.prepare(self, need);
         let mut trials = 0u64;
         loop {
             if trials >= self.params.max_trials || cells.weight == 0 {
@@ -713,6 +819,13 @@ impl<S: Scalar> SpaceEngine<'_, S> {
             let c = V3::<S>::from_f64(point[0], point[1], point[2]);
             let inside = |v: S, a: usize| next.lo.get(a).is_some_and(|&l| v >= l) && next.hi.get(a).is_some_and(|&h| v <= h);
             if !(inside(c.x, 0) && inside(c.y, 1) && inside(c.z, 2)) {
+                cells.note_reject(slot);
+                continue;
+            }
+            // A point nearer than the need to a solid the cell knows cannot be valid (the
+            // distance used is an upper bound): rejected without the index.
+            let known = cells.get(slot).known;
+            if known.iter().any(|&j| j != NIL && self.dist_up(j, point) + cells.slack < need) {
                 cells.note_reject(slot);
                 continue;
             }
@@ -861,11 +974,7 @@ mod tests {
                     let mut probe = crate::rng_from_seed(7);
                     for _ in 0..n {
                         let next = e.next().unwrap();
-                        let need = e.need(&next).unwrap() - {
-                            cells.begin(&e);
-                            cells.slack
-                        };
-                        cells.wake(need);
+                        cells.prepare(&e, e.need(&next).unwrap());
                         let live = live_set(&cells);
                         for _ in 0..800 {
                             let p: [f64; 3] = core::array::from_fn(|a| {

@@ -116,6 +116,7 @@ mod feasibility;
 mod fixed;
 mod geom;
 mod line;
+mod noise;
 mod params;
 mod region;
 mod rng;
@@ -135,6 +136,7 @@ pub use feasibility::{
 };
 pub use geom::{Geo, Point, Verts};
 pub use line::{line_index_words, Interval, LineEngine, LineParams, LinePlacement, LineStorage, Segment};
+pub use noise::{Noise, NoiseError, NoiseKind, MAX_OCTAVES};
 pub use params::{ParamError, Params, StepError, Stop, StopReason};
 pub use region::{PolygonRegion, Region, RegionError};
 pub use rng::{rng_from_seed, ZetaRng};

@@ -483,3 +483,43 @@ fn the_two_samplers_may_take_turns() {
         valid(&f, &case).unwrap_or_else(|err| panic!("{case:?}: {err}"));
     }
 }
+
+// ---------------------------------------------------------------------------------------------
+// No input panics.
+// ---------------------------------------------------------------------------------------------
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig {
+        cases: 256,
+        failure_persistence: None,
+        rng_seed: proptest::test_runner::RngSeed::Fixed(0x1d02),
+        ..proptest::prelude::ProptestConfig::default()
+    })]
+
+    /// Arbitrary numbers (NaN and infinities included) and storage of any size, the samplers in
+    /// turn: an error or a valid fill, never a panic.
+    #[test]
+    fn no_input_panics(c in proptest::prop_oneof![proptest::prelude::any::<f64>(), 1.0f64..4.0],
+                       n in proptest::prop_oneof![proptest::prelude::any::<f64>(), 0.0f64..10.0],
+                       gap in proptest::prop_oneof![proptest::prelude::any::<f64>(), 0.0f64..1.0],
+                       l in proptest::prop_oneof![proptest::prelude::any::<f64>(), 1e-300f64..1e-290, 0.0f64..10.0],
+                       periodic in proptest::prelude::any::<bool>(), max_trials in 0u64..50, cap in 0usize..40,
+                       words in 0usize..300, seed in proptest::prelude::any::<u64>()) {
+        let mut segs = vec![Segment::<f64>::default(); cap];
+        let mut index = vec![0u32; line_index_words(cap)];
+        let mut slots = vec![LineGap::default(); words];
+        let params = LineParams { c, n_offset: n, gap, max_trials };
+        let storage = LineStorage { segments: &mut segs, index: &mut index };
+        if let (Ok(mut e), Ok(mut gaps)) = (LineEngine::new(params, Interval { length: l, periodic }, storage), LineGaps::new(&mut slots)) {
+            let mut rng = rng_from_seed(seed);
+            let stop = Stop { count: Some(30), fill: Some(0.9), min_size: Some(1e-12) };
+            let _ = e.run_fast(&mut gaps, &mut rng, &stop, |_| {});
+            for _ in 0..3 {
+                let _ = e.step(&mut rng);
+                let _ = e.step_fast(&mut gaps, &mut rng);
+            }
+            let segs: Vec<(f64, f64)> = e.placed().iter().map(|s| (s.start, s.length)).collect();
+            proptest::prop_assert!(check_pairs(&segs, l, gap, periodic).is_ok());
+        }
+    }
+}

@@ -901,6 +901,39 @@ fn colours_are_drawn_one_pen_after_another() {
     }
 }
 
+/// Bug: a palette that repeats a colour made a pen per entry, and plotted the shapes of the
+/// repeated colour once under each: a colour is one pen, every shape drawn once.
+#[test]
+fn a_repeated_palette_colour_is_one_pen() {
+    let dir = tmp();
+    let d = dir.path();
+    let base = [
+        "--count",
+        "40",
+        "--seed",
+        "3",
+        "--palette",
+        "ff0000,0000ff,ff0000",
+        "--layers",
+        "colours",
+    ];
+    let (prof, _) = builtin_profile(d, "z-lift-pen");
+    let (text, _) = gcode_to(d, "twice.gcode", &[&base[..], &["--machine", "z-lift-pen"]].concat());
+    let r = assert_safe(&text, &prof, "z-lift-pen");
+    assert!(
+        text.contains("; pen 1 of 2: #ff0000\n") && text.contains("; pen 2 of 2: #0000ff\n"),
+        "{text}"
+    );
+    assert_eq!(r.pauses.len(), 1, "one pen change for two colours");
+    // One stroke per circle: as many pen-downs as shapes.
+    let arcs = text.lines().filter(|l| l.starts_with("G2 ") || l.starts_with("G3 ")).count();
+    assert_eq!(arcs, 40, "every circle plotted once");
+    // The SVG's layers are the same two pens.
+    zf_ok(d, &[&["fill"][..], &base, &["-o", "twice.svg"]].concat());
+    let svg = std::fs::read_to_string(d.join("twice.svg")).unwrap_or_default();
+    assert_eq!(svg.matches("inkscape:groupmode=\"layer\"").count(), 2, "{svg}");
+}
+
 /// `line --layers colours`: each colour's bars drawn as one pen after a pause, every stroke on
 /// a bar of its pen's colour (the README's cycle rule: segment i takes colour i mod 2).
 #[test]

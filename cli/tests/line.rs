@@ -148,36 +148,39 @@ fn csv_and_digest_agree_with_json_and_the_core() {
         assert_eq!(f[4].parse::<f64>().ok(), s["length"].as_f64());
         assert_eq!(f[5].parse::<u64>().ok(), s["trials"].as_u64());
     }
-    // The digest equals the core's own digest of the same run.
-    let mut a = vec!["line", "--format", "digest", "-o", "-"];
-    a.extend_from_slice(&args);
-    let out = String::from_utf8(zf_ok(d.path(), &a).stdout).unwrap_or_default();
-    let mut segs = vec![zetafill::Segment::<f64>::default(); 401];
-    let mut index = vec![0u32; zetafill::line_index_words(401)];
-    let storage = zetafill::LineStorage {
-        segments: &mut segs,
-        index: &mut index,
-    };
-    let mut e = zetafill::LineEngine::new(
-        zetafill::LineParams::new(1.5, 1.0),
-        zetafill::Interval {
+    // The digest equals the core's own digest of the same run, with either sampler.
+    for sampler in ["fast", "reference"] {
+        let mut a = vec!["line", "--format", "digest", "-o", "-", "--sampler", sampler];
+        a.extend_from_slice(&args);
+        let out = String::from_utf8(zf_ok(d.path(), &a).stdout).unwrap_or_default();
+        let mut segs = vec![zetafill::Segment::<f64>::default(); 401];
+        let mut index = vec![0u32; zetafill::line_index_words(401)];
+        let mut words = vec![zetafill::LineGap::default(); zetafill::line_gaps_for(401)];
+        let storage = zetafill::LineStorage {
+            segments: &mut segs,
+            index: &mut index,
+        };
+        let interval = zetafill::Interval {
             length: 200.0,
             periodic: true,
-        },
-        storage,
-    )
-    .unwrap_or_else(|e| panic!("{e}"));
-    let mut rng = zetafill::rng_from_seed(3);
-    e.run(
-        &mut rng,
-        &zetafill::Stop {
+        };
+        let mut e = zetafill::LineEngine::new(zetafill::LineParams::new(1.5, 1.0), interval, storage).unwrap_or_else(|e| panic!("{e}"));
+        let mut rng = zetafill::rng_from_seed(3);
+        let stop = zetafill::Stop {
             count: Some(400),
             ..zetafill::Stop::default()
-        },
-        |_| {},
-    );
-    let (n, h) = zetafill::internals::line::line_digest(&e);
-    assert_eq!(out.trim(), format!("{n} {h:016x}"));
+        };
+        if sampler == "fast" {
+            let mut gaps = zetafill::LineGaps::new(&mut words).unwrap_or_else(|e| panic!("{e}"));
+            e.run_fast(&mut gaps, &mut rng, &stop, |_| {});
+        } else {
+            e.run(&mut rng, &stop, |_| {});
+        }
+        let (n, h) = zetafill::internals::line::line_digest(&e);
+        assert_eq!(out.trim(), format!("{n} {h:016x}"), "{sampler}");
+    }
+    // The default is the exact gap sampler, and the document says which ran.
+    assert_eq!(doc["params"]["sampler"], "fast");
 }
 
 fn count(svg: &str, tag: &str) -> usize {
@@ -269,10 +272,23 @@ fn bad_input_exits_2_names_the_flag_and_writes_nothing() {
 #[test]
 fn halting_exits_3_with_a_valid_partial_file() {
     let d = tmp();
-    // At c = 3 the first segments leave little room: with 3 trials per placement it halts.
+    // At c = 3 the first segments leave little room: with 3 trials per placement the paper's
+    // sampler halts (the gap sampler needs one trial a placement).
     let o = zf(
         d.path(),
-        &["line", "--c", "3", "--count", "500", "--max-trials", "3", "-o", "h.json"],
+        &[
+            "line",
+            "--c",
+            "3",
+            "--count",
+            "500",
+            "--max-trials",
+            "3",
+            "--sampler",
+            "reference",
+            "-o",
+            "h.json",
+        ],
     );
     assert_eq!(o.code, 3, "{}", o.stderr);
     assert!(o.stderr.contains("halted at placement"), "{}", o.stderr);
@@ -282,6 +298,20 @@ fn halting_exits_3_with_a_valid_partial_file() {
     let placed = doc["stats"]["placed"].as_u64().unwrap_or(0);
     assert!(placed > 0 && placed < 500);
     assert!(o.stderr.contains(&format!("placement {placed}")));
+    check_line(&doc).unwrap_or_else(|e| panic!("{e}"));
+}
+
+/// The gap sampler knows at once when no segment can fit: with a 26 mm clearance in 200 mm
+/// at c = 2 the second segment fits on neither side of the first, and more trials cannot help.
+#[test]
+fn a_proven_halt_exits_3_at_once() {
+    let d = tmp();
+    let o = zf(d.path(), &["line", "--c", "2", "--gap", "26", "--count", "5", "-o", "p.json"]);
+    assert_eq!(o.code, 3, "{}", o.stderr);
+    assert!(o.stderr.contains("halted at placement 1 after 0 trials"), "{}", o.stderr);
+    assert!(o.stderr.contains("more trials cannot help"), "{}", o.stderr);
+    let doc = parse_json(&read(&d.path().join("p.json")));
+    assert_eq!(doc["stats"]["placed"], 1);
     check_line(&doc).unwrap_or_else(|e| panic!("{e}"));
 }
 

@@ -49,7 +49,8 @@ fn reproduces(dir: &Path, args: &[&str], out: &str, command_of: fn(&str) -> Opti
     first == rerun(dir, &command, &again)
 }
 
-const RUNS: [&[&str]; 8] = [
+const RUNS: [&[&str]; 9] = [
+    &["fill", "--count", "400", "--cells", "512", "--seed", "5"],
     &["fill", "--count", "300", "--sampler", "reference", "--seed", "3"],
     &["fill", "--count", "200", "--scalar", "fixed", "--shape", "square"],
     &["fill", "--count", "200", "--shape", "mix:circle,triangle", "--mix-order", "random"],
@@ -281,6 +282,36 @@ fn json_names_the_mix_order() {
             .is_none(),
         "only mixes have an order"
     );
+}
+
+/// `--cells` is recorded (its fill differs from the default's), refused with the paper's
+/// sampler and out of range, and nothing is written then.
+#[test]
+fn json_names_the_cells_lent() {
+    let dir = tmp();
+    let d = dir.path();
+    zf_ok(d, &["fill", "--count", "400", "--seed", "5", "--cells", "512", "-o", "few.json"]);
+    zf_ok(d, &["fill", "--count", "400", "--seed", "5", "-o", "all.json"]);
+    let (few, all) = (
+        common::parse_json(&common::read(&d.join("few.json"))),
+        common::parse_json(&common::read(&d.join("all.json"))),
+    );
+    assert_eq!(few["params"]["cells"], 512);
+    assert!(all["params"].get("cells").is_none());
+    assert_ne!(few["shapes"], all["shapes"], "512 cells run out before 400 circles");
+    for (args, says) in [
+        (&["--cells", "512", "--sampler", "reference"][..], "--sampler fast"),
+        (&["--cells", "63"][..], "at least 64"),
+        (&["--cells", "999999999999"][..], "drop --cells"),
+    ] {
+        let mut all = vec!["fill", "--count", "50"];
+        all.extend_from_slice(args);
+        all.extend(["-o", "bad.json"]);
+        let o = common::zf(d, &all);
+        assert_eq!(o.code, 2, "{args:?}: {}", o.stderr);
+        assert!(o.stderr.contains("--cells") && o.stderr.contains(says), "{args:?}: {}", o.stderr);
+        assert!(!d.join("bad.json").exists());
+    }
 }
 
 /// An outline whose hole comes first in the file, with a second, separate outline beside it.

@@ -360,7 +360,7 @@ fn chart_help_offers_only_csv_and_svg() {
 }
 
 /// Bug: a territory or tile JSON given to `stats dimension` gave "'c' is missing"; the
-/// message says the file is not a fill or line JSON.
+/// message says the file is not a fill, line or space JSON.
 #[test]
 fn dimension_of_a_territory_or_tile_says_what_the_file_is() {
     let d = tmp();
@@ -371,7 +371,7 @@ fn dimension_of_a_territory_or_tile_says_what_the_file_is() {
         assert_eq!(o.code, 0, "{cmd}: {}", o.stderr);
         let o = zf(d.path(), &["stats", "dimension", "x.json"]);
         assert_eq!(o.code, 2, "{cmd}: {}", o.stderr);
-        assert!(o.stderr.contains("not a fill or line JSON"), "{cmd}: {}", o.stderr);
+        assert!(o.stderr.contains("not a fill, line or space JSON"), "{cmd}: {}", o.stderr);
         assert!(o.stderr.contains(cmd), "{cmd}: {}", o.stderr);
         assert!(!o.stderr.contains("'c'"), "{cmd}: {}", o.stderr);
     }

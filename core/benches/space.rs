@@ -5,13 +5,58 @@
 //! solid its storage needed (solid record, index words and peak cells). The paper's sampler
 //! runs up to 10^4 solids.
 //!
-//!     cargo bench -p zetafill --bench space [-- N N ...]
+//! With `rings`, the paper's Figure 1 instead: rings (`Solid::Torus { ratio: 0.3 }`) at
+//! c = 1.1, N = 2 in a 60 mm cube, seed 1, with the paper's sampler (tori take no cells),
+//! at 300 and 1,000 rings: CPU time, trials per placement, and time per trial.
+//!
+//!     cargo bench -p zetafill --bench space [-- N N ... | -- rings]
 
 use std::time::Instant;
 use zetafill::{
-    rng_from_seed, space_cells_for, space_index_words, PlacedSolid, SpaceCell, SpaceCells, SpaceEngine, SpaceParams, SpaceRegion,
+    rng_from_seed, space_cells_for, space_index_words, PlacedSolid, Solid, SpaceCell, SpaceCells, SpaceEngine, SpaceParams, SpaceRegion,
     SpaceStorage, Stop,
 };
+
+/// An inclusive cube of side `side` mm.
+fn cube(side: f64) -> SpaceRegion {
+    SpaceRegion::Box {
+        width: side,
+        height: side,
+        depth: side,
+        periodic: false,
+    }
+}
+
+fn rings(n: usize) {
+    let mut solids = vec![PlacedSolid::<f64>::default(); n];
+    let mut index = vec![0u32; space_index_words(n)];
+    let region = cube(60.0);
+    let storage = SpaceStorage {
+        solids: &mut solids,
+        index: &mut index,
+    };
+    let params = SpaceParams {
+        solids: Solid::Torus { ratio: 0.3 }.into(),
+        rotate: true,
+        ..SpaceParams::spheres(1.1, 2.0)
+    };
+    let mut e = SpaceEngine::new(params, region, storage).expect("valid");
+    let stop = Stop {
+        count: Some(n as u64),
+        ..Stop::default()
+    };
+    let mut rng = rng_from_seed(1);
+    let mut trials = 0u64;
+    let t = Instant::now();
+    e.run(&mut rng, &stop, |p| trials += p.trials);
+    let secs = t.elapsed().as_secs_f64();
+    println!(
+        "| {n} | {secs:.2} | {:.0} | {:.2} | {:.4} |",
+        trials as f64 / n as f64,
+        secs * 1e6 / trials as f64,
+        e.stats().fill_fraction
+    );
+}
 
 fn run(n: usize, fast: bool) {
     let mut solids = vec![PlacedSolid::<f64>::default(); n];
@@ -21,12 +66,7 @@ fn run(n: usize, fast: bool) {
     } else {
         Vec::new()
     };
-    let region = SpaceRegion::Box {
-        width: 100.0,
-        height: 100.0,
-        depth: 100.0,
-        periodic: false,
-    };
+    let region = cube(100.0);
     let storage = SpaceStorage {
         solids: &mut solids,
         index: &mut index,
@@ -63,6 +103,13 @@ fn run(n: usize, fast: bool) {
 }
 
 fn main() {
+    if std::env::args().any(|a| a == "rings") {
+        println!("| rings | s | trials/placement | us/trial | fill |");
+        println!("|---:|---:|---:|---:|---:|");
+        rings(300);
+        rings(1_000);
+        return;
+    }
     let sizes: Vec<usize> = std::env::args().skip(1).filter_map(|a| a.parse().ok()).collect();
     let sizes = if sizes.is_empty() {
         vec![1_000, 10_000, 30_000, 100_000]

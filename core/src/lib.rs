@@ -43,7 +43,10 @@
 //!   (last shapes narrower than the scalar resolves, [`TooSmall`]) and [`check_largest`]
 //!   (first shapes wider than it computes exactly, [`TooLarge`]).
 //! - 1D: [`LineEngine`], [`LineParams`], [`Interval`], [`LineStorage`] (sized with
-//!   [`line_index_words`]), [`Segment`], [`LinePlacement`].
+//!   [`line_index_words`]), [`Segment`], [`LinePlacement`]; the exact sampler keeps the free
+//!   gaps in [`LineGaps`] (storage [`LineGap`], sized with [`line_gaps_for`]; [`NoLineGaps`]
+//!   when there is too little) and draws each start uniformly over the valid ones in
+//!   O(log n) ([`LineEngine::step_fast`]).
 //! - 3D: [`SpaceEngine`] over [`SpaceStorage`] (sized with [`space_index_words`]), set up by
 //!   [`SpaceParams`] and a [`SpaceRegion`], with solids from [`Solid`] / [`SolidList`]; each
 //!   step gives a [`SpacePlacement`] of a [`PlacedSolid`]; before a fill [`space_capacity`] and
@@ -65,7 +68,7 @@
 //! - geometry, shapes and regions, with exact clearance tests;
 //! - the fixed-capacity multi-level spatial hash and the coverage bitmap;
 //! - the engine (the paper's loop, then its optimisations) and the cell sampler;
-//! - the 1D fill over its own 1D multi-level hash;
+//! - the 1D fill over its own 1D multi-level hash, and its exact sampler over the free gaps;
 //! - the 3D fill (solids, regions, exact tests, its 3D multi-level hash; the paper's sampler
 //!   and the octree cell sampler);
 //! - statistics: the gasket width of the paper's Table 1, exact dimensions, power-law fits;
@@ -102,6 +105,8 @@
 //! 64 per placed solid over a start of 16,384 ([`space_cells_for`]); sphere fills of c = 1.15
 //! reach that budget from about 30,000 solids on (2 to 3 KB per solid). A polygon region's edge tree borrows 24
 //! bytes a vertex ([`PolygonRegion::scratch_words`]), or nothing ([`PolygonRegion::new`]).
+//! A segment takes 16 bytes plus 12 of index ([`line_index_words`]); the exact 1D sampler
+//! adds 41 bytes per segment: a little over five 8-byte [`LineGap`] words ([`line_gaps_for`]).
 
 #![no_std]
 #![deny(missing_docs, unsafe_code)]
@@ -116,6 +121,7 @@ mod feasibility;
 mod fixed;
 mod geom;
 mod line;
+mod noise;
 mod params;
 mod region;
 mod rng;
@@ -134,7 +140,10 @@ pub use feasibility::{
     FirstTwoError, TooLarge, TooSmall,
 };
 pub use geom::{Geo, Point, Verts};
-pub use line::{line_index_words, Interval, LineEngine, LineParams, LinePlacement, LineStorage, Segment};
+pub use line::{
+    line_gaps_for, line_index_words, Interval, LineEngine, LineGap, LineGaps, LineParams, LinePlacement, LineStorage, NoLineGaps, Segment,
+};
+pub use noise::{Noise, NoiseError, NoiseKind, MAX_OCTAVES};
 pub use params::{ParamError, Params, StepError, Stop, StopReason};
 pub use region::{PolygonRegion, Region, RegionError};
 pub use rng::{rng_from_seed, ZetaRng};

@@ -8,6 +8,9 @@
 //! - a unit value u in `[0, 1)` takes one `next_u64()`; for `f64` it is `(bits >> 11) * 2^-53`
 //!   (see [`Scalar::unit`]); a fixed-point scalar takes the top fractional bits;
 //! - a coordinate in `[lo, hi)` is `lo + u * (hi - lo)`;
+//! - an integer below `n` (the exact 1D sampler's draw over its gaps) is Lemire's unbiased
+//!   bounded draw: the high 64 bits of `next_u64() * n`, drawn again while the low 64 bits
+//!   fall below `2^64 mod n` (see [`below`]);
 //! - an angle is `u * 2π` radians, counter-clockwise;
 //! - each trial draws, in this order: the angle (only when rotation is random), then x, then y.
 //!   A trial always draws the same count of values, whether or not it is accepted;
@@ -57,6 +60,23 @@ pub fn uniform<S: Scalar, R: RngCore + ?Sized>(rng: &mut R, lo: S, hi: S) -> S {
     }
 }
 
+/// A uniform integer in `[0, n)` (0 when `n` is 0), without bias: Lemire's method, one
+/// `next_u64()` most of the time, another while the low half of the product falls below
+/// `2^64 mod n`.
+#[inline]
+pub fn below<R: RngCore + ?Sized>(rng: &mut R, n: u64) -> u64 {
+    if n == 0 {
+        return 0;
+    }
+    let threshold = n.wrapping_neg() % n;
+    loop {
+        let m = u128::from(rng.next_u64()) * u128::from(n);
+        if (m as u64) >= threshold {
+            return (m >> 64) as u64;
+        }
+    }
+}
+
 /// An angle in `[0, 2π)` from the next 64 random bits.
 #[inline]
 pub fn angle<S: Scalar, R: RngCore + ?Sized>(rng: &mut R) -> S {
@@ -100,6 +120,20 @@ mod tests {
         let mut rng = rng_from_seed(1);
         let got: [u64; 4] = core::array::from_fn(|_| unit::<f64, _>(&mut rng).to_bits());
         assert_eq!(got, PINNED_SEED1, "seeding or unit mapping changed: {got:x?}");
+    }
+
+    #[test]
+    fn below_stays_below_and_reaches_both_ends() {
+        let mut rng = rng_from_seed(5);
+        let mut seen = [false; 3];
+        for _ in 0..200 {
+            let v = below(&mut rng, 3);
+            assert!(v < 3);
+            seen[v as usize] = true;
+        }
+        assert_eq!(seen, [true; 3]);
+        assert_eq!(below(&mut rng, 0), 0);
+        assert!(below(&mut rng, u64::MAX) < u64::MAX);
     }
 
     const PINNED_SEED1: [u64; 4] = [0x3fe9f8ba0fede078, 0x3fe7e8482652c7fc, 0x3fb9a37d5757aaf0, 0x3fe7e10233e0b9aa];

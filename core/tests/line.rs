@@ -7,6 +7,9 @@
 // The checks are written `!(a < b)` on purpose: a NaN must fail them.
 #![allow(clippy::neg_cmp_op_on_partial_ord, clippy::type_complexity)]
 
+mod common;
+
+use common::{check_pairs, check_sorted};
 use proptest::prelude::*;
 use proptest::test_runner::RngSeed;
 use zetafill::internals::line::line_digest;
@@ -15,79 +18,8 @@ use zetafill::{line_index_words, rng_from_seed, Interval, LineEngine, LineParams
 use zetafill::{ParamError, StepError, Stop, StopReason};
 
 // ---------------------------------------------------------------------------------------------
-// Checkers, written without the engine.
+// Checkers, written without the engine (the segment checkers are in `common`).
 // ---------------------------------------------------------------------------------------------
-
-/// O(n^2): every segment well formed and inside; every pair (and, periodic, every pair of
-/// images at ±L) separated by more than `gap`.
-fn check_pairs(segs: &[(f64, f64)], l: f64, gap: f64, periodic: bool) -> Result<(), String> {
-    for (i, &(s, len)) in segs.iter().enumerate() {
-        if !(s.is_finite() && len.is_finite() && len > 0.0) {
-            return Err(format!("segment {i} malformed: start {s}, length {len}"));
-        }
-        if periodic {
-            if !(s >= 0.0 && s < l) {
-                return Err(format!("segment {i} starts at {s}, outside [0, {l})"));
-            }
-            if !(len + gap < l) {
-                return Err(format!("segment {i} (length {len}) meets its own image"));
-            }
-        } else if !(s >= gap && s + len <= l - gap) {
-            return Err(format!("segment {i} [{s}, {}] is not inside [{gap}, {}]", s + len, l - gap));
-        }
-    }
-    let sep = |a: f64, alen: f64, b: f64, blen: f64| a > b + blen + gap || a + alen + gap < b;
-    for j in 0..segs.len() {
-        let (b, blen) = segs[j];
-        for (i, &(a, alen)) in segs.iter().enumerate().take(j) {
-            let shifts: &[f64] = if periodic { &[0.0, l, -l] } else { &[0.0] };
-            for &d in shifts {
-                if !sep(b + d, blen, a, alen) {
-                    return Err(format!(
-                        "segments {i} [{a}, {}] and {j} [{b}, {}] (shift {d}) are not {gap} apart",
-                        a + alen,
-                        b + blen
-                    ));
-                }
-            }
-        }
-    }
-    Ok(())
-}
-
-/// O(n log n): sorted by start, each segment ends more than `gap` before the next starts (and,
-/// periodic, the last one before the first + L).
-fn check_sorted(segs: &[(f64, f64)], l: f64, gap: f64, periodic: bool) -> Result<(), String> {
-    let mut v: Vec<(f64, f64)> = segs.to_vec();
-    if v.iter().any(|s| !(s.0.is_finite() && s.1 > 0.0)) {
-        return Err("malformed segment".into());
-    }
-    v.sort_by(|a, b| a.0.total_cmp(&b.0));
-    for w in v.windows(2) {
-        if !(w[0].0 + w[0].1 + gap < w[1].0) {
-            return Err(format!(
-                "[{}, {}] and [{}, {}] are not {gap} apart",
-                w[0].0,
-                w[0].0 + w[0].1,
-                w[1].0,
-                w[1].0 + w[1].1
-            ));
-        }
-    }
-    if let (Some(first), Some(last)) = (v.first(), v.last()) {
-        if periodic {
-            if !(first.0 >= 0.0 && last.0 < l) {
-                return Err("a start is outside [0, L)".into());
-            }
-            if v.len() > 1 && !(last.0 + last.1 + gap < first.0 + l) {
-                return Err(format!("the last segment wraps onto the first: {last:?} / {first:?}"));
-            }
-        } else if !(first.0 >= gap && last.0 + last.1 <= l - gap) {
-            return Err("a segment is outside the interval".into());
-        }
-    }
-    Ok(())
-}
 
 /// Both checkers, and lengths equal to L / (zeta(c, N) (i+N)^c) computed here.
 fn check_all(f: &Fill, case: &Case) -> Result<(), String> {

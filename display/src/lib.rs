@@ -27,6 +27,7 @@
 #![deny(clippy::unwrap_used, clippy::expect_used, clippy::panic, clippy::indexing_slicing)]
 
 pub mod draw;
+pub mod noise;
 pub mod scenes;
 pub mod space;
 

@@ -84,6 +84,30 @@ fn fixed_point_digest_matches_the_core() {
     assert_ne!(h, h64, "fixed point and f64 give different shapes");
 }
 
+/// The flags a firmware scene's command shares with every other: rotation, power law, gap,
+/// seed, count, scalar, and a digest on standard output.
+fn run_flags(rotate: bool, c: f64, n: f64, gap: f64, seed: u64, count: u64, scalar: zetafill_display::ScalarKind) -> Vec<String> {
+    let scalar = match scalar {
+        zetafill_display::ScalarKind::F64 => "f64",
+        zetafill_display::ScalarKind::Fixed => "fixed",
+    };
+    let rotate = if rotate { "random" } else { "none" };
+    [
+        ("--rotate", rotate.to_string()),
+        ("--c", c.to_string()),
+        ("--n-offset", n.to_string()),
+        ("--gap", gap.to_string()),
+        ("--seed", seed.to_string()),
+        ("--count", count.to_string()),
+        ("--scalar", scalar.to_string()),
+        ("--format", "digest".to_string()),
+        ("-o", "-".to_string()),
+    ]
+    .into_iter()
+    .flat_map(|(flag, v)| [flag.to_string(), v])
+    .collect()
+}
+
 /// The `zetafill space` arguments of a firmware 3D scene (every scene is expressible: box or
 /// ball, periodic, mixes in turn, rotation, gap, scalar).
 fn space_args(s: &zetafill_display::SpaceScene) -> Vec<String> {
@@ -121,23 +145,7 @@ fn space_args(s: &zetafill_display::SpaceScene) -> Vec<String> {
     if periodic {
         a.push("--periodic".into());
     }
-    let scalar = match s.scalar {
-        zetafill_display::ScalarKind::F64 => "f64",
-        zetafill_display::ScalarKind::Fixed => "fixed",
-    };
-    for (flag, v) in [
-        ("--rotate", if s.rotate { "random".to_string() } else { "none".to_string() }),
-        ("--c", s.c.to_string()),
-        ("--n-offset", s.n_offset.to_string()),
-        ("--gap", s.gap.to_string()),
-        ("--seed", s.seed.to_string()),
-        ("--count", s.count.to_string()),
-        ("--scalar", scalar.to_string()),
-        ("--format", "digest".to_string()),
-        ("-o", "-".to_string()),
-    ] {
-        a.extend([flag.to_string(), v]);
-    }
+    a.extend(run_flags(s.rotate, s.c, s.n_offset, s.gap, s.seed, s.count, s.scalar));
     a
 }
 
@@ -183,4 +191,111 @@ fn space_digest_matches_the_firmware_scenes() {
             args.join(" ")
         );
     }
+}
+
+/// The `zetafill fill` arguments of a firmware 2D scene: every region, mix, scalar and
+/// sampler of the board is expressible, and a cell-sampler scene lends the board's cells.
+fn fill_args(s: &zetafill_display::Scene) -> Vec<String> {
+    use zetafill_display::scenes::{SceneRegion, FAST_CELLS};
+    let names: Vec<String> = s.shapes.iter().map(zetafill_cli::model::doc::shape_name).collect();
+    let shape = if names.len() == 1 {
+        names[0].clone()
+    } else {
+        format!("mix:{}", names.join(","))
+    };
+    let (region, periodic) = match s.region {
+        SceneRegion::Rect(w, h, periodic) => (format!("rect:{w}:{h}"), periodic),
+        SceneRegion::Circle(r) => (format!("circle:{r}"), false),
+        SceneRegion::Annulus(o, i) => (format!("annulus:{o}:{i}"), false),
+        SceneRegion::Polygon(points, ends) => {
+            let mut rings = Vec::new();
+            let mut start = 0;
+            for &end in ends {
+                let ring: Vec<String> = points[start..end].iter().map(|p| format!("{},{}", p.x, p.y)).collect();
+                rings.push(ring.join(","));
+                start = end;
+            }
+            (format!("polygon:{}", rings.join("/")), false)
+        }
+    };
+    let mut a: Vec<String> = ["zetafill", "fill", "-q", "--shape", &shape, "--region", &region]
+        .map(String::from)
+        .to_vec();
+    if periodic {
+        a.push("--periodic".into());
+    }
+    if s.fast {
+        a.extend(["--sampler".into(), "fast".into(), "--cells".into(), FAST_CELLS.to_string()]);
+    } else {
+        a.extend(["--sampler".into(), "reference".into()]);
+    }
+    a.extend(run_flags(s.rotate, s.c, s.n_offset, s.gap, s.seed, s.count, s.scalar));
+    a
+}
+
+/// The digest the core gives for a firmware 2D scene on the board's storage (what
+/// `tests/tests/firmware.rs` shows the Cortex-M3 prints).
+fn board_digest<S: zetafill::Scalar + Default>(s: &zetafill_display::Scene) -> (u64, u64) {
+    use zetafill::{Placed, Storage};
+    use zetafill_display::scenes::{run, run_fast, CAPACITY, FAST_CELLS, INDEX_WORDS};
+    let mut shapes = vec![Placed::<S>::default(); CAPACITY];
+    let mut index = vec![0u32; INDEX_WORDS];
+    let mut cells = vec![[0u64; 4]; FAST_CELLS];
+    let mut frame = zetafill_display::draw::Frame::new();
+    let storage = Storage {
+        shapes: &mut shapes,
+        index: &mut index,
+        coverage: &mut [],
+    };
+    let o = if s.fast {
+        run_fast(s, storage, &mut cells, &mut frame, || 0)
+    } else {
+        run(s, storage, &mut frame, || 0)
+    }
+    .unwrap_or_else(|e| panic!("{}: {e}", s.name));
+    (o.count, o.digest)
+}
+
+/// `zetafill fill ... --format digest` prints, for every 2D scene of the firmware, the digest
+/// the core gives on the board's storage: the cell-sampler scenes through `--cells 512`.
+#[test]
+fn fill_digest_matches_every_firmware_scene() {
+    use zetafill_display::scenes::SCENES;
+    let mut bad = Vec::new();
+    for s in SCENES {
+        let args = fill_args(s);
+        let a = parse_fill(&args);
+        let format = zetafill_cli::plan::format::Format::Digest;
+        let (run, draw) = zetafill_cli::plan::fill::resolve_as(&a, format).unwrap_or_else(|e| panic!("{}: {e}", s.name));
+        let (doc, halt) = zetafill_cli::cmd::fill::compute(&run).unwrap_or_else(|e| panic!("{}: {e}", s.name));
+        assert!(halt.is_none(), "{}", s.name);
+        let line = zetafill_cli::cmd::fill::render(&doc, format, &draw).unwrap_or_default();
+        let (n, h) = match s.scalar {
+            zetafill_display::ScalarKind::F64 => board_digest::<f64>(s),
+            zetafill_display::ScalarKind::Fixed => board_digest::<zetafill::Fixed>(s),
+        };
+        if String::from_utf8_lossy(&line) != format!("{n} {h:016x}\n") {
+            bad.push(format!(
+                "{}: CLI {} board {n} {h:016x}: {}",
+                s.name,
+                String::from_utf8_lossy(&line).trim(),
+                args.join(" ")
+            ));
+        }
+    }
+    assert!(bad.is_empty(), "{}", bad.join("\n"));
+    // Without the board's cells, the cell sampler places other shapes: the flag matters.
+    let s = SCENES.iter().find(|s| s.name == "circles-cells").expect("circles-cells");
+    let mut args = fill_args(s);
+    let at = args.iter().position(|a| a == "--cells").expect("--cells");
+    args.drain(at..at + 2);
+    let a = parse_fill(&args);
+    let format = zetafill_cli::plan::format::Format::Digest;
+    let (run, draw) = zetafill_cli::plan::fill::resolve_as(&a, format).expect("resolves");
+    let (doc, _) = zetafill_cli::cmd::fill::compute(&run).expect("runs");
+    let line = zetafill_cli::cmd::fill::render(&doc, format, &draw).unwrap_or_default();
+    assert_ne!(
+        String::from_utf8_lossy(&line),
+        format!("{} {:016x}\n", board_digest::<f64>(s).0, board_digest::<f64>(s).1)
+    );
 }

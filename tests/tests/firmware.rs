@@ -556,6 +556,25 @@ fn space_firmware_digests_equal_the_hosts() {
     assert_ne!(fw.get("spheres-box"), fw.get("spheres-box-fixed"));
 }
 
+/// Value and gradient noise, open and periodic, give the same bits on the Cortex-M3 (software
+/// floating point) as on the host.
+#[test]
+fn noise_fields_are_the_same_bits_on_the_board() {
+    let fw = space_firmware();
+    let got = lines(&fw.report, "noise");
+    assert_eq!(got.len(), 1, "one noise line expected:\n{}", fw.report);
+    let host = zetafill_display::noise::noise_digest().expect("noise fields");
+    assert_eq!(got[0].get(1).copied(), Some(format!("{host:016x}").as_str()));
+    // The comparison can fail: another seed gives another digest.
+    let other = zetafill::Noise::new(zetafill::NoiseKind::Gradient, 12, 17.0, 5, 0.55, None).expect("a field");
+    assert_ne!(
+        other.at(1.0, 2.0),
+        zetafill::Noise::new(zetafill::NoiseKind::Gradient, 11, 17.0, 5, 0.55, None)
+            .expect("a field")
+            .at(1.0, 2.0)
+    );
+}
+
 #[test]
 fn a_256_solid_engine_fits_the_board() {
     let fw = space_firmware();

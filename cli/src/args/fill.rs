@@ -108,6 +108,12 @@ pub struct FillArgs {
     /// paper's uniform search); both give the same distribution of placements.
     #[arg(long, value_enum, default_value = "fast")]
     pub sampler: Sampler,
+    /// Cell sampler: the cells lent to it (at least 64). By default as many as it can ever use,
+    /// so the fill depends on nothing but the parameters; fewer, as on a board (the firmware
+    /// lends 512), and the sampler stops refining when they run out: still exact, but another
+    /// fill. Give the board's number to place its shapes.
+    #[arg(long, value_parser = clap::value_parser!(u64).range(1..))]
+    pub cells: Option<u64>,
     /// Number type of the engine: f64 or fixed (32.32 fixed point).
     #[arg(long, value_enum, default_value = "f64")]
     pub scalar: ScalarArg,

@@ -3,6 +3,7 @@
 
 use crate::args::colour::ColourArgs;
 use crate::args::common::{OutputArgs, RunArgs};
+use crate::args::fill::Sampler;
 use crate::args::format::FormatArg;
 use crate::args::plot::PlotArgs;
 use crate::args::raster::RasterArgs;
@@ -58,6 +59,11 @@ pub struct LineArgs {
     /// The power law (c = 1/D), stops, clearance, trial limit and seed.
     #[command(flatten)]
     pub run: RunArgs,
+    /// Candidate sampler: fast (starts drawn over the free gaps where the next segment fits,
+    /// about one trial a placement) or reference (the paper's uniform search); both give the
+    /// same distribution of placements.
+    #[arg(long, value_enum, default_value = "fast")]
+    pub sampler: Sampler,
     /// Where the output goes.
     #[command(flatten)]
     pub output: OutputArgs<FormatArg>,

@@ -17,7 +17,7 @@ pub enum StatsCommand {
     Trials(TrialsArgs),
     /// The fraction of runs that halt at each c (paper Figure 6), runs spread over all cores.
     Halting(HaltingArgs),
-    /// Box-counting estimate of the fractal dimension of a fill's JSON, beside the exact value.
+    /// Box-counting estimate of the fractal dimension of a fill's JSON (1D, 2D or 3D), beside the exact value.
     Dimension(DimensionArgs),
 }
 
@@ -181,7 +181,7 @@ pub struct HaltingArgs {
 /// Arguments of `stats dimension`.
 #[derive(Debug, Args)]
 pub struct DimensionArgs {
-    /// A JSON file written by `zetafill fill` or `zetafill line`.
+    /// A JSON file written by `zetafill fill`, `zetafill line` or `zetafill space` (boxes in 3D).
     pub input: PathBuf,
     /// Largest box size in mm for the fit (default: see the module docs).
     #[arg(long = "max-box", value_parser = spec::length, allow_hyphen_values = true)]

@@ -120,7 +120,9 @@ fn run_engine<S: zetafill::Scalar>(
         // Enough cells that only the sampler's own budget limits it: the shapes of a seed
         // then do not depend on the count asked for. Zeroed memory: the system maps only
         // the pages the sampler writes.
-        let mut pool = vec![[0u64; 4]; zetafill::cells_for(cap)];
+        // `--cells` lends fewer, as a board does (see `--help`).
+        let lent = a.names.cells.map_or(usize::MAX, |n| usize::try_from(n).unwrap_or(usize::MAX));
+        let mut pool = vec![[0u64; 4]; zetafill::cells_for(cap).min(lent)];
         let mut cells = CellSampler::new(&mut pool).map_err(|_| CliError::Io("internal: no cells for the fast sampler".into()))?;
         engine.run_fast(&mut cells, &mut rng, stop, on_place)
     };
@@ -211,6 +213,7 @@ pub fn compute(a: &FillRun) -> Result<(FillDoc, Option<StepError>), CliError> {
                 mix_order: a.names.mix_order,
                 sampler: a.names.sampler,
                 scalar: a.names.scalar,
+                cells: a.names.cells,
             },
             gap: params.gap,
             count: stop.count,

@@ -77,6 +77,9 @@ pub struct ShapeParamsDoc {
     pub sampler: &'static str,
     /// Engine number type: `f64` or `fixed`.
     pub scalar: &'static str,
+    /// The cells lent to the cell sampler, when `--cells` chose them.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub cells: Option<u64>,
 }
 
 /// A region, in its own frame (mm, x right, y up).

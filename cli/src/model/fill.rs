@@ -33,18 +33,25 @@ pub struct LayerSpec {
 }
 
 impl LayerSpec {
-    /// One layer (one pen) per colour of `palette`, in its order, labelled `K #rrggbb`; and
-    /// the layer of each of `colours` (the first, for a colour not in the palette).
+    /// One layer (one pen) per distinct colour of `palette`, in its order of first use,
+    /// labelled `K #rrggbb`; and the layer of each of `colours` (the first, for a colour not in
+    /// the palette). A colour the palette repeats is one pen, plotted once.
     pub fn colours(palette: &[Colour], colours: &[Colour]) -> (Vec<LayerSpec>, Vec<usize>) {
-        let layers = palette
+        let mut pens: Vec<&Colour> = Vec::new();
+        for c in palette {
+            if !pens.contains(&c) {
+                pens.push(c);
+            }
+        }
+        let layers = pens
             .iter()
             .enumerate()
             .map(|(i, c)| LayerSpec {
                 label: format!("{} {c}", i + 1),
-                pen: Some(c.clone()),
+                pen: Some((*c).clone()),
             })
             .collect();
-        let of = colours.iter().map(|c| palette.iter().position(|p| p == c).unwrap_or(0)).collect();
+        let of = colours.iter().map(|c| pens.iter().position(|p| *p == c).unwrap_or(0)).collect();
         (layers, of)
     }
 }

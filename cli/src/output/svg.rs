@@ -469,6 +469,9 @@ pub fn command_line(doc: &FillDoc) -> String {
         p.of.sampler,
         if p.of.scalar == "f64" { "" } else { " --scalar fixed" }
     );
+    if let Some(n) = p.of.cells {
+        s.push_str(&format!(" --cells {n}"));
+    }
     if let Some(k) = p.count {
         s.push_str(&format!(" --count {k}"));
     }

@@ -79,6 +79,8 @@ pub struct FillNames {
     pub sampler: &'static str,
     /// `f64` or `fixed`.
     pub scalar: &'static str,
+    /// `--cells`, when given.
+    pub cells: Option<u64>,
 }
 
 /// How the document is drawn.
@@ -219,6 +221,7 @@ pub fn resolve_as(a: &FillArgs, format: Format) -> Result<(FillRun, FillDraw), C
         })?;
     }
     check_plot(&a.plot, format)?;
+    check_cells(a)?;
     if a.plot.hatch.is_some() && a.style == StyleArg::Filled && matches!(format, Format::Svg | Format::Png) {
         return Err(CliError::arg(
             "--hatch",
@@ -247,6 +250,7 @@ pub fn resolve_as(a: &FillArgs, format: Format) -> Result<(FillRun, FillDraw), C
         mix_order: (a.shape.0.len() > 1).then(|| a.mix_order.name()),
         sampler: a.sampler.name(),
         scalar: a.scalar.name(),
+        cells: a.cells,
     };
     let run = FillRun {
         region: a.region.clone(),
@@ -303,6 +307,35 @@ pub fn fixed_outline_error(vertices: usize) -> CliError {
             "--scalar fixed tests every edge of the outline on every trial, and this outline has {vertices} vertices (at most {FIXED_MAX_VERTICES}); simplify the outline or use --scalar f64"
         ),
     )
+}
+
+/// The fewest cells `--cells` lends: fewer leave the sampler no room to refine at all.
+pub const MIN_CELLS: u64 = 64;
+
+/// `--cells` only with the cell sampler, at least [`MIN_CELLS`], and at most what the fill
+/// could use (more would change nothing but the memory taken).
+fn check_cells(a: &FillArgs) -> Result<(), CliError> {
+    let Some(n) = a.cells else { return Ok(()) };
+    if a.sampler == Sampler::Reference {
+        return Err(CliError::arg(
+            "--cells",
+            "only the cell sampler takes cells: drop --cells or use --sampler fast",
+        ));
+    }
+    if n < MIN_CELLS {
+        return Err(CliError::arg(
+            "--cells",
+            format!("{n} cells are too few: lend at least {MIN_CELLS}"),
+        ));
+    }
+    let most = zetafill::cells_for(crate::args::common::MAX_SHAPES as usize) as u64;
+    if n > most {
+        return Err(CliError::arg(
+            "--cells",
+            format!("{n} is more cells than any fill uses ({most}): drop --cells to lend what the fill can use"),
+        ));
+    }
+    Ok(())
 }
 
 /// Names the flag behind a core parameter error.

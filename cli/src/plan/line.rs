@@ -48,6 +48,8 @@ pub struct LineRun {
     pub stop: Stop,
     /// RNG seed.
     pub seed: u64,
+    /// The paper's sampler instead of the exact gap sampler.
+    pub reference_sampler: bool,
     /// No progress bar.
     pub quiet: bool,
 }
@@ -188,6 +190,7 @@ fn resolve_format(a: &LineArgs, format: Format) -> Result<(LineRun, LineDraw), C
         },
         stop: crate::plan::stops(&a.run.stop),
         seed: a.run.seed.seed,
+        reference_sampler: a.sampler == crate::args::fill::Sampler::Reference,
         quiet: a.quiet,
     };
     let draw = LineDraw {

@@ -1,6 +1,6 @@
 //! The 3D engine: the paper's loop over caller-owned storage ([`SpaceEngine::step`]).
 
-use super::body::{apart, bound_of, Body};
+use super::body::{apart, bound_of, BeadTrig, Body};
 use super::hash::{Hash3, NIL};
 use super::region::SpaceRegion;
 use super::solid::{bounding, Solid, SolidList};
@@ -119,6 +119,8 @@ pub struct SpaceEngine<'a, S: Scalar> {
     pub(crate) trials: u64,
     pub(crate) gap: S,
     pub(crate) period: [S; 3],
+    /// The bead angles of the fill's first torus kind, computed once.
+    pub(crate) trig: BeadTrig<S>,
 }
 
 /// What stays fixed over a placement's trials.
@@ -167,7 +169,6 @@ impl<'a, S: Scalar> SpaceEngine<'a, S> {
         let hash = Hash3::new(heads, next, S::from_f64(largest)).ok_or(ParamError::Storage)?;
         Ok(SpaceEngine {
             gap: S::from_f64(params.gap),
-            params,
             region,
             solids,
             len: 0,
@@ -176,6 +177,15 @@ impl<'a, S: Scalar> SpaceEngine<'a, S> {
             placed_volume: 0.0,
             trials: 0,
             period: [S::from_f64(ext[0]), S::from_f64(ext[1]), S::from_f64(ext[2])],
+            trig: BeadTrig::new(
+                params
+                    .solids
+                    .kinds()
+                    .iter()
+                    .find(|k| matches!(k, Solid::Torus { .. }))
+                    .unwrap_or(&Solid::Sphere),
+            ),
+            params,
         })
     }
 
@@ -226,7 +236,12 @@ impl<'a, S: Scalar> SpaceEngine<'a, S> {
     /// The geometry of placed solid `i` as tested (vertices, bead centres).
     pub fn body(&self, i: usize) -> Option<Body<S>> {
         let p = self.placed().get(i)?;
-        Some(Body::new(&self.kind_of(i as u64), V3::new(p.x, p.y, p.z), p.scale, &p.rotation))
+        Some(self.body_of(&self.kind_of(i as u64), V3::new(p.x, p.y, p.z), p.scale, &p.rotation))
+    }
+
+    /// [`Body::new`] with the engine's bead angles.
+    pub(crate) fn body_of(&self, kind: &Solid, c: V3<S>, s: S, q: &Quat<S>) -> Body<S> {
+        Body::with_trig(kind, c, s, q, Some(&self.trig))
     }
 
     pub(crate) fn next(&self) -> Result<Next<S>, StepError> {
@@ -312,7 +327,7 @@ impl<'a, S: Scalar> SpaceEngine<'a, S> {
                 let kind = self.kind_of(u64::from(j));
                 let contact = bound + bounding(&kind, p.scale) + gap;
                 let d = V3::new(p.x, p.y, p.z).sub(bc);
-                let ok = d.norm2() > contact * contact || apart(b, &Body::new(&kind, V3::new(p.x, p.y, p.z), p.scale, &p.rotation), gap);
+                let ok = d.norm2() > contact * contact || apart(b, &self.body_of(&kind, V3::new(p.x, p.y, p.z), p.scale, &p.rotation), gap);
                 if !ok {
                     hit = Some(j);
                 }
@@ -400,7 +415,7 @@ impl<'a, S: Scalar> SpaceEngine<'a, S> {
             trials += 1;
             self.trials = self.trials.saturating_add(1);
             let (q, c) = Self::draw(&next, rng);
-            let body = Body::new(&next.kind, c, next.scale, &q);
+            let body = self.body_of(&next.kind, c, next.scale, &q);
             if self.fits(&body, next.bound) {
                 return Ok(self.place(&next, &body, q, trials));
             }

@@ -5,7 +5,8 @@
 //! lives on the stack (so the f64 and the fixed-point scenes reuse the same RAM) and reports
 //! through semihosting, in the lines of the 2D image: `clock ...`, then per scene
 //! `digest NAME COUNT HEX16` (the core's `space_digest`, as `zetafill space ... --format
-//! digest` prints it), `cost NAME ...` and `stack NAME ...`, then `memory ...` and `done`;
+//! digest` prints it), `cost NAME ...` and `stack NAME ...`, then `noise HEX16` (the digest
+//! of `zetafill_display::noise`), `memory ...` and `done`;
 //! defmt log frames on stdout. Exit status 0 when every scene ran within the memory budget,
 //! 1 after an `error ...` line otherwise. No frames: the 3D scenes draw nothing.
 
@@ -45,6 +46,11 @@ fn main() -> ! {
             process::exit(1);
         }
         deepest = deepest.max(stack_line(&board, scene.name));
+    }
+    // The noise fields that density maps will use, bit for bit as on the host.
+    match zetafill_display::noise::noise_digest() {
+        Some(h) => eprintln!("noise {:016x}", h),
+        None => fail("noise fields"),
     }
     finish(&board, deepest)
 }

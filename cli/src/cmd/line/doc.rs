@@ -40,13 +40,15 @@ pub struct LineStatsDoc {
     pub stop: &'static str,
 }
 
-/// The parameters of a 1D fill: the power law, the seed, the gap and the stops, nothing of
-/// its own.
-pub type LineParamsDoc = crate::model::doc::RunParamsDoc<NoParams>;
+/// The parameters of a 1D fill: the power law, the seed, the sampler, the gap and the stops.
+pub type LineParamsDoc = crate::model::doc::RunParamsDoc<LineOwnDoc>;
 
-/// A mode with no parameters of its own.
+/// What only a 1D fill has: its sampler.
 #[derive(Debug, Clone, Serialize)]
-pub struct NoParams {}
+pub struct LineOwnDoc {
+    /// `fast` (the exact gap sampler) or `reference` (the paper's).
+    pub sampler: &'static str,
+}
 
 /// The interval.
 #[derive(Debug, Clone, Serialize)]

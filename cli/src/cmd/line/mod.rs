@@ -10,12 +10,12 @@ use crate::plan::plot::GcodePlan;
 use crate::plan::raster::png_error;
 use std::fmt::Write as _;
 use zetafill::StepError;
-use zetafill::{line_index_words, LineEngine, LineStorage, Segment, StopReason};
+use zetafill::{line_gaps_for, line_index_words, LineEngine, LineGap, LineGaps, LineStorage, Segment, StopReason};
 
 pub mod doc;
 pub mod picture;
 
-pub use doc::{IntervalDoc, LineDoc, LineParamsDoc, LineStatsDoc, SegmentDoc};
+pub use doc::{IntervalDoc, LineDoc, LineOwnDoc, LineParamsDoc, LineStatsDoc, SegmentDoc};
 use picture::drawing_flags;
 pub use picture::{command_line, picture, plotter_picture, LineSvgOptions};
 
@@ -39,12 +39,20 @@ pub fn compute(a: &LineRun) -> Result<(LineDoc, Option<StepError>), CliError> {
     let mut rng = zetafill::rng_from_seed(a.seed);
     let bar = stopping::progress_bar(a.quiet, stop.count, SEGMENTS);
     let mut trials = Vec::with_capacity(cap);
-    let reason = engine.run(&mut rng, &stop, |p| {
+    let on_place = |p: &zetafill::LinePlacement<f64>| {
         trials.push(p.trials);
         if let Some(b) = &bar {
             b.inc(1);
         }
-    });
+    };
+    let reason = if a.reference_sampler {
+        engine.run(&mut rng, &stop, on_place)
+    } else {
+        // Words for every gap the fill can make: the fill never depends on them.
+        let mut words = vec![LineGap::default(); line_gaps_for(cap)];
+        let mut gaps = LineGaps::new(&mut words).map_err(|_| CliError::Io("internal: no storage for the gap sampler".into()))?;
+        engine.run_fast(&mut gaps, &mut rng, &stop, on_place)
+    };
     if let Some(b) = &bar {
         b.finish_and_clear();
     }
@@ -77,7 +85,9 @@ pub fn compute(a: &LineRun) -> Result<(LineDoc, Option<StepError>), CliError> {
             c: params.c,
             n_offset: params.n_offset,
             seed: a.seed,
-            of: doc::NoParams {},
+            of: doc::LineOwnDoc {
+                sampler: if a.reference_sampler { "reference" } else { "fast" },
+            },
             gap: params.gap,
             count: stop.count,
             fill: stop.fill,

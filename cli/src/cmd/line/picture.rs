@@ -85,14 +85,15 @@ pub(crate) fn drawing_flags(opt: &LineSvgOptions) -> String {
 pub fn command_line(doc: &LineDoc) -> String {
     let p = &doc.params;
     let mut s = format!(
-        "zetafill line --length {}{} --c {} --n-offset {} --gap {} --max-trials {} --seed {}",
+        "zetafill line --length {}{} --c {} --n-offset {} --gap {} --max-trials {} --seed {} --sampler {}",
         doc.region.length,
         if doc.region.periodic { " --periodic" } else { "" },
         p.c,
         p.n_offset,
         p.gap,
         p.max_trials,
-        p.seed
+        p.seed,
+        p.of.sampler
     );
     if let Some(k) = p.count {
         let _ = write!(s, " --count {k}");

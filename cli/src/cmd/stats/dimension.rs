@@ -151,12 +151,12 @@ pub fn read_set(doc: &Value) -> Result<(FillSet, f64), CliError> {
         }
         Some(other) => {
             return Err(input_error(format!(
-                "this is a `zetafill {other}` JSON, not a fill or line JSON; give a JSON file written by zetafill fill or zetafill line"
+                "this is a `zetafill {other}` JSON, not a fill, line or space JSON; give a JSON file written by zetafill fill, zetafill line or zetafill space"
             )))
         }
         None => {
             return Err(input_error(
-                "not a fill or line JSON (it has no \"mode\"); give a JSON file written by zetafill fill or zetafill line",
+                "not a fill, line or space JSON (it has no \"mode\"); give a JSON file written by zetafill fill, zetafill line or zetafill space",
             ))
         }
     }
@@ -224,7 +224,7 @@ pub fn read_set(doc: &Value) -> Result<(FillSet, f64), CliError> {
             ))
         }
         other => Err(input_error(format!(
-            "mode {other:?} is not a fill; give a JSON file written by zetafill fill or zetafill line"
+            "mode {other:?} is not a fill; give a JSON file written by zetafill fill, zetafill line or zetafill space"
         ))),
     }
 }

@@ -158,7 +158,7 @@ impl<S: Scalar> SpaceEngine<'_, S> {
             } else {
                 crate::space::vec3::identity()
             };
-            let body = crate::space::body::Body::new(&next.kind, c, next.scale, &q);
+            let body = self.body_of(&next.kind, c, next.scale, &q);
             match self.fits_hit(&body, next.bound, true) {
                 Ok(()) => {
                     let placed = self.place(&next, &body, q, trials);

@@ -31,6 +31,13 @@ use crate::rng;
 use crate::scalar::{powf, Scalar};
 use rand_core::RngCore;
 
+mod fast;
+mod gaps;
+mod hash;
+
+pub use gaps::{line_gaps_for, LineGap, LineGaps, NoLineGaps};
+use hash::LineHash;
+
 /// Number of size levels of the index (cell lengths from `L` down to `L / 2^47`).
 pub const LINE_LEVELS: usize = 48;
 
@@ -198,118 +205,6 @@ pub struct LineStorage<'a, S> {
     pub index: &'a mut [u32],
 }
 
-#[derive(Clone, Copy, Debug)]
-struct Level<S> {
-    cell: S,
-    inv: S,
-    count: u32,
-    max_len: S,
-}
-
-/// The multi-level 1D hash over borrowed buckets and links.
-#[derive(Debug)]
-struct LineHash<'a, S> {
-    heads: &'a mut [u32],
-    next: &'a mut [u32],
-    mask: usize,
-    levels: [Level<S>; LINE_LEVELS],
-}
-
-impl<'a, S: Scalar> LineHash<'a, S> {
-    fn new(heads: &'a mut [u32], next: &'a mut [u32], extent: S) -> Option<Self> {
-        if heads.is_empty() {
-            return None;
-        }
-        let mut pow = 1usize;
-        while pow <= heads.len() / 2 {
-            pow *= 2;
-        }
-        heads.iter_mut().for_each(|h| *h = NIL);
-        next.iter_mut().for_each(|n| *n = NIL);
-        let mut levels = [Level {
-            cell: extent,
-            inv: S::ONE,
-            count: 0,
-            max_len: S::ZERO,
-        }; LINE_LEVELS];
-        let mut cell = extent;
-        for lv in levels.iter_mut() {
-            lv.cell = cell;
-            lv.inv = S::ONE / cell;
-            cell = cell.half();
-        }
-        Some(LineHash {
-            heads,
-            next,
-            mask: pow - 1,
-            levels,
-        })
-    }
-
-    fn level_for(&self, len: S) -> usize {
-        let mut l = 0usize;
-        while l + 1 < LINE_LEVELS && self.levels.get(l + 1).is_some_and(|v| len <= v.cell) {
-            l += 1;
-        }
-        l
-    }
-
-    #[inline]
-    fn bucket(&self, level: usize, cx: i64) -> usize {
-        let mut h = (cx as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15) ^ (level as u64).wrapping_mul(0x1656_67B1_9E37_79F9);
-        h ^= h >> 29;
-        h = h.wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        h ^= h >> 32;
-        (h as usize) & self.mask
-    }
-
-    fn insert(&mut self, idx: u32, start: S, len: S) {
-        let l = self.level_for(len);
-        let Some(lv) = self.levels.get(l).copied() else { return };
-        let b = self.bucket(l, (start * lv.inv).floor_i64());
-        let (Some(head), Some(link)) = (self.heads.get(b).copied(), self.next.get_mut(idx as usize)) else {
-            return;
-        };
-        *link = head;
-        if let Some(h) = self.heads.get_mut(b) {
-            *h = idx;
-        }
-        if let Some(lv) = self.levels.get_mut(l) {
-            lv.count = lv.count.saturating_add(1);
-            lv.max_len = lv.max_len.max(len);
-        }
-    }
-
-    /// Calls `f` for every segment index that may meet `[lo, hi]` (those whose start lies in
-    /// `[lo - longest at its level, hi]`, and possibly others), coarsest level first: a random
-    /// candidate most often lands in one of the long, early segments, so it is rejected after
-    /// a look at a few coarse cells. Stops as soon as `f` returns `false`.
-    fn query(&self, lo: S, hi: S, total: u32, mut f: impl FnMut(u32) -> bool) -> bool {
-        for (level, lv) in self.levels.iter().enumerate() {
-            if lv.count == 0 {
-                continue;
-            }
-            let c0 = ((lo - lv.max_len) * lv.inv).floor_i64();
-            let c1 = (hi * lv.inv).floor_i64();
-            if c1.saturating_sub(c0) >= i64::from(total) {
-                return (0..total).all(f);
-            }
-            // An inclusive range: `c1` may be `i64::MAX` (a saturated coordinate), where a
-            // counter stepped past it would wrap around and never stop.
-            for cx in c0..=c1 {
-                let mut j = self.heads.get(self.bucket(level, cx)).copied().unwrap_or(NIL);
-                while j != NIL {
-                    if !f(j) {
-                        return false;
-                    }
-                    j = self.next.get(j as usize).copied().unwrap_or(NIL);
-                }
-            }
-        }
-        true
-    }
-}
-
 /// The 1D fill engine over caller-provided storage.
 ///
 /// # Examples
@@ -334,6 +229,9 @@ pub struct LineEngine<'a, S: Scalar> {
     segments: &'a mut [Segment<S>],
     len: usize,
     hash: LineHash<'a, S>,
+    /// Segments `0..hashed` are in the hash; the exact sampler leaves the rest out until a
+    /// test needs them ([`LineEngine::catch_up`]).
+    hashed: usize,
     zeta: f64,
     placed_length: f64,
     trials: u64,
@@ -379,6 +277,7 @@ impl<'a, S: Scalar> LineEngine<'a, S> {
             segments,
             len: 0,
             hash,
+            hashed: 0,
             zeta,
             placed_length: 0.0,
             trials: 0,
@@ -427,7 +326,17 @@ impl<'a, S: Scalar> LineEngine<'a, S> {
         self.segments.len()
     }
 
-    /// Whether the candidate `[a, b]` keeps more than `gap` from every placed segment.
+    /// Puts the segments the exact sampler placed without the hash into it.
+    fn catch_up(&mut self) {
+        while self.hashed < self.len {
+            let Some(s) = self.segments.get(self.hashed).copied() else { return };
+            self.hash.insert(self.hashed as u32, s.start, s.length);
+            self.hashed += 1;
+        }
+    }
+
+    /// Whether the candidate `[a, b]` keeps more than `gap` from every placed segment (the
+    /// hash must hold them all: [`LineEngine::catch_up`]).
     fn clear_at(&self, a: S, b: S) -> bool {
         let gap = self.gap;
         self.hash
@@ -468,12 +377,11 @@ impl<'a, S: Scalar> LineEngine<'a, S> {
         }
     }
 
-    /// Places the next segment, drawing candidates from `rng` until one fits or the trial
-    /// limit is reached. On error nothing is placed and the engine may be stepped again.
-    pub fn step<R: RngCore + ?Sized>(&mut self, rng: &mut R) -> Result<LinePlacement<S>, StepError> {
-        let i = self.len;
-        let index = i as u64;
-        if i >= self.segments.len() {
+    /// The next segment's index, nominal length L_i and stored length, or why it cannot be
+    /// placed (the storage is full, or it is too short for the scalar or too long to fit).
+    fn next(&self) -> Result<(u64, f64, S), StepError> {
+        let index = self.len as u64;
+        if self.len >= self.segments.len() {
             return Err(StepError::Capacity {
                 capacity: self.segments.len() as u64,
             });
@@ -486,6 +394,38 @@ impl<'a, S: Scalar> LineEngine<'a, S> {
         if !(len > S::ZERO && len.is_finite() && self.can_fit(len)) {
             return Err(StepError::CannotFit { index });
         }
+        Ok((index, length, len))
+    }
+
+    /// Stores the accepted segment `[a, a + len]` (`a` in `[0, L)`) as the next one, in the
+    /// hash too when `hash` and the hash is up to date.
+    fn commit(&mut self, a: S, len: S, length: f64, trials: u64, hash: bool) -> LinePlacement<S> {
+        let i = self.len;
+        let segment = Segment { start: a, length: len };
+        if let Some(slot) = self.segments.get_mut(i) {
+            *slot = segment;
+        }
+        if hash && self.hashed == i {
+            self.hash.insert(i as u32, a, len);
+            self.hashed += 1;
+        }
+        self.max_end = self.max_end.max(segment.end());
+        self.len += 1;
+        self.placed_length += length;
+        LinePlacement {
+            index: i as u64,
+            segment,
+            length,
+            trials,
+        }
+    }
+
+    /// Places the next segment, drawing candidates from `rng` until one fits or the trial
+    /// limit is reached: the paper's sampler. On error nothing is placed and the engine may be
+    /// stepped again.
+    pub fn step<R: RngCore + ?Sized>(&mut self, rng: &mut R) -> Result<LinePlacement<S>, StepError> {
+        let (index, length, len) = self.next()?;
+        self.catch_up();
         let (lo, hi) = if self.interval.periodic {
             (S::ZERO, self.total)
         } else {
@@ -504,33 +444,34 @@ impl<'a, S: Scalar> LineEngine<'a, S> {
                 if a >= self.total {
                     a = a - self.total;
                 }
-            } else if !(a >= self.gap && a + len <= self.total - self.gap) {
+            } else if !self.in_range(a, len) {
                 continue;
             }
-            let b = a + len;
-            if !self.clear(a, b) {
-                continue;
+            if self.clear(a, a + len) {
+                return Ok(self.commit(a, len, length, trials, true));
             }
-            let segment = Segment { start: a, length: len };
-            if let Some(slot) = self.segments.get_mut(i) {
-                *slot = segment;
-            }
-            self.hash.insert(i as u32, a, len);
-            self.max_end = self.max_end.max(b);
-            self.len += 1;
-            self.placed_length += length;
-            return Ok(LinePlacement {
-                index,
-                segment,
-                length,
-                trials,
-            });
         }
+    }
+
+    /// Whether a segment of length `len` starting at `a` lies in an inclusive interval at
+    /// least `gap` from each end.
+    fn in_range(&self, a: S, len: S) -> bool {
+        a >= self.gap && a + len <= self.total - self.gap
     }
 
     /// Steps until a stop condition holds or a step fails, calling `on_place` after each
     /// placement. `Stop::min_size` is compared with the next segment's length.
-    pub fn run<R: RngCore + ?Sized>(&mut self, rng: &mut R, stop: &Stop, mut on_place: impl FnMut(&LinePlacement<S>)) -> StopReason {
+    pub fn run<R: RngCore + ?Sized>(&mut self, rng: &mut R, stop: &Stop, on_place: impl FnMut(&LinePlacement<S>)) -> StopReason {
+        self.run_with(stop, on_place, |e| e.step(rng))
+    }
+
+    /// The stop conditions around any step function.
+    fn run_with(
+        &mut self,
+        stop: &Stop,
+        mut on_place: impl FnMut(&LinePlacement<S>),
+        mut step: impl FnMut(&mut Self) -> Result<LinePlacement<S>, StepError>,
+    ) -> StopReason {
         loop {
             let n = self.len as u64;
             if stop.count.is_some_and(|k| n >= k) {
@@ -542,7 +483,7 @@ impl<'a, S: Scalar> LineEngine<'a, S> {
             if stop.min_size.is_some_and(|m| self.length_of(n) < m) {
                 return StopReason::MinSize;
             }
-            match self.step(rng) {
+            match step(self) {
                 Ok(p) => on_place(&p),
                 Err(e) => return StopReason::Step(e),
             }
@@ -564,22 +505,6 @@ pub fn line_digest<S: Scalar>(e: &LineEngine<'_, S>) -> (u64, u64) {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn a_query_at_the_end_of_the_coordinate_range_stops() {
-        // Coordinates this large saturate to i64::MAX cells; the scan must end there.
-        let (mut heads, mut next) = ([0u32; 8], [0u32; 4]);
-        let Some(mut h) = LineHash::<f64>::new(&mut heads, &mut next, 100.0) else {
-            panic!("hash")
-        };
-        h.insert(0, 10.0, 1.0);
-        let mut seen = 0;
-        assert!(h.query(f64::MAX, f64::MAX, 4, |_| {
-            seen += 1;
-            true
-        }));
-        assert!(seen <= 4);
-    }
 
     fn run(periodic: bool, k: usize, seed: u64) -> (u64, u64) {
         let mut segs = [Segment::<f64>::default(); 64];

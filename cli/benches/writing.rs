@@ -1,7 +1,7 @@
 //! 2D writing benchmark (a plain binary, `harness = false`): one fill of circles at c = 1.3,
 //! N = 1 in 200 x 200 mm (seed 1, cell sampler), then each writer timed on it, the writer the
 //! tool uses beside its control (`output::control`: numbers through the standard formatter,
-//! SVG through the `svg` crate, JSON through `serde_json`), with the output sizes. The SVG
+//! JSON through `serde_json`; both build SVG with the `svg` crate), with the output sizes. The SVG
 //! times include building the drawing from the fill. Run with
 //! `cargo bench -p zetafill-cli --bench writing [-- COUNT]` (default 10^5). Measures only; the
 //! test suite asserts nothing about time.

@@ -1,6 +1,6 @@
 //! The fast writers against their control: every fill below is written as JSON, CSV and SVG
 //! (several drawing styles) by the tool's writers and by `output::control` (numbers through
-//! the standard formatter, SVG through the `svg` crate, JSON through `serde_json`), and the
+//! the standard formatter, JSON through `serde_json`; SVG built with the `svg` crate by both), and the
 //! bytes must be equal. The fills cover every shape kind, both scalars, each region kind and
 //! periodic images, 20,000 shapes in the largest. `a_changed_byte_is_caught` shows the
 //! comparison fails when one number differs.

@@ -16,6 +16,9 @@ use crate::model::fill::{FillLook, LayerSpec};
 use crate::model::picture::{Frame, Item, Layer, Paint, Picture, Shape};
 use crate::model::{Path, Pt};
 use crate::output::{num, number};
+use ::svg::node::element::{ClipPath, Definitions, Description, Element, Group, Rectangle, Title};
+use ::svg::node::Text;
+use ::svg::{Document, Node};
 
 /// How shapes are painted.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -201,8 +204,8 @@ fn loops_d(out: &mut String, loops: &[Vec<Path>], f: &Frame, n: Num) {
     }
 }
 
-/// What receives an element's attributes: the direct writer's list here, or an element of
-/// the `svg` crate in [`crate::output::control`].
+/// What receives an element's attributes: an element of the `svg` crate, or the list of them
+/// gathered before their element exists.
 pub trait Attributes {
     /// Sets attribute `name` to the text `value` appends.
     fn set(&mut self, name: &'static str, value: impl FnOnce(&mut String));
@@ -331,123 +334,80 @@ pub fn group(e: &mut impl Attributes, layer: &Layer, n: Num) {
     }
 }
 
-/// The direct writer: one element's attributes, gathered into one buffer, then written
-/// sorted by name and escaped as XML.
-#[derive(Default)]
-struct Tag {
-    /// Name and the value's range in `text`.
-    list: Vec<(&'static str, usize, usize)>,
-    text: String,
-}
+/// An `svg` crate node receiving attributes.
+struct Crate<'a, N: Node>(&'a mut N);
 
-impl Attributes for Tag {
+impl<N: Node> Attributes for Crate<'_, N> {
     fn set(&mut self, name: &'static str, value: impl FnOnce(&mut String)) {
-        let a = self.text.len();
-        value(&mut self.text);
-        let b = self.text.len();
-        match self.list.iter_mut().find(|e| e.0 == name) {
-            Some(e) => *e = (name, a, b),
-            None => self.list.push((name, a, b)),
-        }
+        let mut s = String::new();
+        value(&mut s);
+        self.0.assign(name, s);
     }
 }
 
-impl Tag {
-    /// Writes `<tag attributes` (the caller closes it) and empties the list.
-    fn open(&mut self, out: &mut String, tag: &str) {
-        out.push('<');
-        out.push_str(tag);
-        self.list.sort_unstable_by_key(|e| e.0);
-        for &(name, a, b) in &self.list {
-            out.push(' ');
-            out.push_str(name);
-            out.push_str("=\"");
-            escape(out, self.text.get(a..b).unwrap_or(""), true);
-            out.push('"');
-        }
-        self.list.clear();
-        self.text.clear();
-    }
+/// Attributes gathered before their element exists.
+struct Pairs(Vec<(&'static str, String)>);
 
-    /// Writes an empty element: `<tag attributes/>`.
-    fn empty(&mut self, out: &mut String, tag: &str) {
-        self.open(out, tag);
-        out.push_str("/>");
+impl Attributes for Pairs {
+    fn set(&mut self, name: &'static str, value: impl FnOnce(&mut String)) {
+        let mut s = String::new();
+        value(&mut s);
+        self.0.push((name, s));
     }
 }
 
-/// Appends `s` escaped as XML text (`&`, `<`, `>`) or, for an attribute, also quotes.
-fn escape(out: &mut String, s: &str, attribute: bool) {
-    if !s.bytes().any(|b| matches!(b, b'&' | b'<' | b'>' | b'"' | b'\'')) {
-        out.push_str(s);
-        return;
-    }
-    for ch in s.chars() {
-        match ch {
-            '&' => out.push_str("&amp;"),
-            '<' => out.push_str("&lt;"),
-            '>' => out.push_str("&gt;"),
-            '"' if attribute => out.push_str("&quot;"),
-            '\'' if attribute => out.push_str("&apos;"),
-            c => out.push(c),
-        }
-    }
-}
-
-/// Writes any picture as SVG: elements one a line, attributes sorted by name.
+/// Writes any picture as SVG: a tree of `svg` crate elements, printed by it.
 pub fn write(pic: &Picture) -> Vec<u8> {
+    write_with(pic, n)
+}
+
+/// [`write`], with the numbers on the page written by `n`.
+#[doc(hidden)]
+pub fn write_with(pic: &Picture, n: Num) -> Vec<u8> {
     let f = pic.to_page();
     let (page_w, page_h) = pic.page_size();
-    let items: usize = pic.layers.iter().map(|l| l.items.len()).sum();
-    let mut out = String::with_capacity(1024 + pic.desc.len() + 48 * items);
-    let mut t = Tag::default();
-    page(&mut t, page_w, page_h, n);
-    t.open(&mut out, "svg");
-    out.push_str(">\n<title>");
-    escape(&mut out, &pic.title, false);
-    out.push_str("</title>\n<desc>");
-    escape(&mut out, &pic.desc, false);
-    out.push_str("</desc>");
+    let element = |it, in_clip| {
+        let mut pairs = Pairs(Vec::new());
+        let mut e = Element::new(item(&mut pairs, it, &f, in_clip, n));
+        for (k, v) in pairs.0 {
+            e.assign(k, v);
+        }
+        e
+    };
+    let mut d = Document::new();
+    page(&mut Crate(&mut d), page_w, page_h, n);
+    d = d
+        .add(Title::new("").add(Text::new(pic.title.as_str())))
+        .add(Description::new().add(Text::new(pic.desc.as_str())));
     if let Some(bg) = &pic.background {
-        out.push('\n');
-        background(&mut t, bg, page_w, page_h, n);
-        t.empty(&mut out, "rect");
+        let mut r = Rectangle::new();
+        background(&mut Crate(&mut r), bg, page_w, page_h, n);
+        d = d.add(r);
     }
     if !pic.clips.is_empty() {
-        out.push_str("\n<defs>");
+        let mut defs = Definitions::new();
         for c in &pic.clips {
-            out.push('\n');
-            t.text("id", &c.id);
-            t.open(&mut out, "clipPath");
-            out.push_str(">\n");
-            let tag = item(&mut t, &c.item, &f, true, n);
-            t.empty(&mut out, tag);
-            out.push_str("\n</clipPath>");
+            defs = defs.add(ClipPath::new().set("id", c.id.as_str()).add(element(&c.item, true)));
         }
-        out.push_str("\n</defs>");
+        d = d.add(defs);
     }
     for layer in &pic.layers {
-        if !layer.bare {
-            out.push('\n');
-            group(&mut t, layer, n);
-            t.open(&mut out, "g");
-            if layer.items.is_empty() {
-                out.push_str("/>");
-                continue;
+        if layer.bare {
+            for it in &layer.items {
+                d.append(element(it, false));
             }
-            out.push('>');
+            continue;
         }
+        let mut g = Group::new();
+        group(&mut Crate(&mut g), layer, n);
         for it in &layer.items {
-            out.push('\n');
-            let tag = item(&mut t, it, &f, false, n);
-            t.empty(&mut out, tag);
+            g.append(element(it, false));
         }
-        if !layer.bare {
-            out.push_str("\n</g>");
-        }
+        d = d.add(g);
     }
-    out.push_str("\n</svg>\n");
-    out.into_bytes()
+    let mut s = d.to_string();
+    s.push('\n');
+    s.into_bytes()
 }
 
 /// The `zetafill fill` command line that reproduces the document.

@@ -239,7 +239,7 @@ pub fn compute(a: &FillRun) -> Result<(FillDoc, Option<StepError>), CliError> {
 }
 
 /// The SVG options of the drawing, colours included.
-fn svg_options(doc: &FillDoc, d: &FillDraw) -> Result<output::svg::SvgOptions, CliError> {
+pub fn svg_options(doc: &FillDoc, d: &FillDraw) -> Result<output::svg::SvgOptions, CliError> {
     let flags = format!(
         " --style {}{}{}{}",
         d.style.name(),

@@ -1,12 +1,97 @@
 //! JSON output: the [`FillDoc`] as DESIGN section 3 specifies, numbers in shortest
 //! round-trip form (full f64 precision), on one line with a trailing newline.
+//!
+//! The shapes, nearly all of the bytes, are written directly into one buffer; the small parts
+//! (parameters, region, statistics) through their `serde` derive. The bytes are those of
+//! `serde_json::to_vec(doc)`: the same number formatter ([`push_json`]), the same
+//! field order and omissions (`cli/tests/writers.rs` compares the two on every shape kind).
 
 use crate::error::CliError;
-use crate::model::doc::FillDoc;
+use crate::model::doc::{FillDoc, ShapeDoc};
+use crate::output::number::{push_int, push_json};
+use serde::Serialize;
 
 /// Serialises a fill.
 pub fn render(doc: &FillDoc) -> Result<Vec<u8>, CliError> {
-    let mut v = serde_json::to_vec(doc).map_err(|e| CliError::Io(format!("cannot encode JSON: {e}")))?;
-    v.push(b'\n');
-    Ok(v)
+    let vertices: usize = doc.shapes.iter().map(|s| s.vertices.as_ref().map_or(0, Vec::len)).sum();
+    let mut s = String::with_capacity(1024 + 150 * doc.shapes.len() + 40 * vertices);
+    s.push_str("{\"version\":");
+    push_int(&mut s, u64::from(doc.version));
+    s.push_str(",\"mode\":");
+    part(&mut s, &doc.mode)?;
+    s.push_str(",\"params\":");
+    part(&mut s, &doc.params)?;
+    s.push_str(",\"region\":");
+    part(&mut s, &doc.region)?;
+    s.push_str(",\"area\":");
+    push_json(&mut s, doc.area);
+    s.push_str(",\"zeta\":");
+    push_json(&mut s, doc.zeta);
+    s.push_str(",\"shapes\":[");
+    for (i, sh) in doc.shapes.iter().enumerate() {
+        if i > 0 {
+            s.push(',');
+        }
+        shape(&mut s, sh)?;
+    }
+    s.push_str("],\"stats\":");
+    part(&mut s, &doc.stats)?;
+    s.push_str("}\n");
+    Ok(s.into_bytes())
+}
+
+/// Appends a value through its `serde` derive.
+fn part<T: Serialize + ?Sized>(s: &mut String, v: &T) -> Result<(), CliError> {
+    s.push_str(&serde_json::to_string(v).map_err(|e| CliError::Io(format!("cannot encode JSON: {e}")))?);
+    Ok(())
+}
+
+/// Appends `[x,y]`.
+fn pair(s: &mut String, v: [f64; 2]) {
+    s.push('[');
+    push_json(s, v[0]);
+    s.push(',');
+    push_json(s, v[1]);
+    s.push(']');
+}
+
+/// Appends one shape, its fields in the order of [`ShapeDoc`] and absent ones left out.
+fn shape(s: &mut String, sh: &ShapeDoc) -> Result<(), CliError> {
+    s.push_str("{\"index\":");
+    push_int(s, sh.index);
+    s.push_str(",\"kind\":");
+    if sh.kind.bytes().all(|b| b.is_ascii_alphanumeric()) {
+        s.push('"');
+        s.push_str(sh.kind);
+        s.push('"');
+    } else {
+        part(s, sh.kind)?;
+    }
+    s.push_str(",\"center\":");
+    pair(s, sh.center);
+    for (key, v) in [
+        (",\"radius\":", sh.radius),
+        (",\"inner_radius\":", sh.inner_radius),
+        (",\"angle\":", sh.angle),
+        (",\"area\":", Some(sh.area)),
+    ] {
+        if let Some(v) = v {
+            s.push_str(key);
+            push_json(s, v);
+        }
+    }
+    s.push_str(",\"trials\":");
+    push_int(s, sh.trials);
+    if let Some(vs) = &sh.vertices {
+        s.push_str(",\"vertices\":[");
+        for (i, v) in vs.iter().enumerate() {
+            if i > 0 {
+                s.push(',');
+            }
+            pair(s, *v);
+        }
+        s.push(']');
+    }
+    s.push('}');
+    Ok(())
 }

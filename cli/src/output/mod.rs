@@ -5,6 +5,8 @@
 //! The 3D writers ([`mesh`], [`stl`], [`obj`], [`glb`], [`render3d`]) take solids
 //! ([`crate::model::solid`]); the `space` command will call them.
 
+#[doc(hidden)]
+pub mod control;
 pub mod csv;
 pub mod digest;
 pub mod gcode;
@@ -13,6 +15,7 @@ pub mod height;
 pub mod json;
 pub mod machine;
 pub mod mesh;
+pub mod number;
 pub mod obj;
 pub mod order;
 pub mod palette;
@@ -24,17 +27,9 @@ pub mod svg;
 
 /// A number in mm with at most `places` decimals, no trailing zeros, never `-0`.
 pub fn num(v: f64, places: usize) -> String {
-    let s = format!("{v:.places$}");
-    let s = if s.contains('.') {
-        s.trim_end_matches('0').trim_end_matches('.').to_string()
-    } else {
-        s
-    };
-    if s == "-0" {
-        "0".into()
-    } else {
-        s
-    }
+    let mut s = String::with_capacity(12);
+    number::push_fixed(&mut s, v, places);
+    s
 }
 
 #[cfg(test)]

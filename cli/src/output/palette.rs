@@ -54,16 +54,6 @@ pub fn colour(s: &str) -> Result<Colour, String> {
     })
 }
 
-/// The background of a drawing `width` x `height` mm: a rectangle filled with `colour` from
-/// the origin, to be added before the shapes (`id="background"`).
-pub fn background(colour: &str, width: f64, height: f64) -> svg::node::element::Rectangle {
-    svg::node::element::Rectangle::new()
-        .set("id", "background")
-        .set("width", super::num(width, 4))
-        .set("height", super::num(height, 4))
-        .set("fill", colour)
-}
-
 /// A list of colours.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Palette(pub Vec<Colour>);

@@ -13,12 +13,12 @@
 
 use crate::model::doc::FillDoc;
 use crate::model::fill::{FillLook, LayerSpec};
-use crate::model::picture::{Frame, Item, Paint, Picture, Shape};
+use crate::model::picture::{Frame, Item, Layer, Paint, Picture, Shape};
 use crate::model::{Path, Pt};
-use crate::output::num;
-use svg::node::element::{Circle, ClipPath, Definitions, Description, Element, Group, Line, Path as SvgPath, Polygon, Rectangle, Title};
-use svg::node::Text;
-use svg::{Document, Node};
+use crate::output::{num, number};
+use ::svg::node::element::{ClipPath, Definitions, Description, Element, Group, Rectangle, Title};
+use ::svg::node::Text;
+use ::svg::{Document, Node};
 
 /// How shapes are painted.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -69,190 +69,339 @@ pub struct SvgOptions {
 
 pub use crate::model::picture::PageLayout;
 
-const P: usize = 4;
+/// Decimals of every number on the page (0.1 µm).
+pub const PLACES: usize = 4;
 
-/// A number on the page (four decimals).
-fn n(v: f64) -> String {
-    num(v, P)
+/// Appends a number on the page.
+pub type Num = fn(&mut String, f64);
+
+/// A number on the page: at most [`PLACES`] decimals, no trailing zeros, never `-0`.
+fn n(out: &mut String, v: f64) {
+    number::push_fixed(out, v, PLACES);
+}
+
+/// `x,y` on the page.
+fn xy(out: &mut String, f: &Frame, v: Pt, n: Num) {
+    n(out, f.x(v[0]));
+    out.push(',');
+    n(out, f.y(v[1]));
 }
 
 /// A closed circle as path data (two half arcs), for rings drawn as one even-odd path.
-fn circle_d(f: &Frame, c: Pt, r: f64) -> String {
-    let (x, y, rr) = (n(f.x(c[0] + r)), n(f.y(c[1])), n(f.len(r)));
-    format!("M{x},{y} A{rr},{rr} 0 1 0 {},{y} A{rr},{rr} 0 1 0 {x},{y} Z", n(f.x(c[0] - r)))
+fn circle_d(out: &mut String, f: &Frame, c: Pt, r: f64, n: Num) {
+    out.push('M');
+    let start = out.len();
+    xy(out, f, [c[0] + r, c[1]], n);
+    let first = out.get(start..).unwrap_or("").to_string();
+    let mut arc = String::with_capacity(32);
+    arc.push_str(" A");
+    n(&mut arc, f.len(r));
+    arc.push(',');
+    n(&mut arc, f.len(r));
+    arc.push_str(" 0 1 0 ");
+    out.push_str(&arc);
+    n(out, f.x(c[0] - r));
+    out.push(',');
+    n(out, f.y(c[1]));
+    out.push_str(&arc);
+    out.push_str(&first);
+    out.push_str(" Z");
 }
 
 /// `x,y` pairs on the page, separated by `sep`.
-fn points(f: &Frame, pts: &[Pt], sep: &str) -> String {
-    let body: Vec<String> = pts.iter().map(|v| format!("{},{}", n(f.x(v[0])), n(f.y(v[1])))).collect();
-    body.join(sep)
+fn points(out: &mut String, f: &Frame, pts: &[Pt], sep: &str, n: Num) {
+    for (i, v) in pts.iter().enumerate() {
+        if i > 0 {
+            out.push_str(sep);
+        }
+        xy(out, f, *v, n);
+    }
 }
 
 /// Path data of path pieces (polylines and arcs) on the page.
-fn path_d(paths: &[Path], f: &Frame) -> String {
-    let mut parts = Vec::with_capacity(paths.len());
+fn path_d(out: &mut String, paths: &[Path], f: &Frame, n: Num) {
+    let mut first = true;
     for p in paths {
+        let sep = |out: &mut String, first: &mut bool| {
+            if !std::mem::take(first) {
+                out.push(' ');
+            }
+        };
         match p {
             Path::Polyline { points: pts, closed } => {
                 if !pts.is_empty() {
-                    parts.push(format!("M{}{}", points(f, pts, " L"), if *closed { " Z" } else { "" }));
+                    sep(out, &mut first);
+                    out.push('M');
+                    points(out, f, pts, " L", n);
+                    if *closed {
+                        out.push_str(" Z");
+                    }
                 }
             }
-            Path::Arc { center, radius, sweep, .. } if sweep.abs() >= std::f64::consts::TAU => parts.push(circle_d(f, *center, *radius)),
+            Path::Arc { center, radius, sweep, .. } if sweep.abs() >= std::f64::consts::TAU => {
+                sep(out, &mut first);
+                circle_d(out, f, *center, *radius, n);
+            }
             Path::Arc { radius, sweep, .. } => {
-                let a = p.start_point();
-                parts.push(format!(
-                    "M{},{} {}",
-                    n(f.x(a[0])),
-                    n(f.y(a[1])),
-                    arc_to(f, *radius, *sweep, p.end_point())
-                ));
+                sep(out, &mut first);
+                out.push('M');
+                xy(out, f, p.start_point(), n);
+                out.push(' ');
+                arc_to(out, f, *radius, *sweep, p.end_point(), n);
             }
         }
     }
-    parts.join(" ")
 }
 
 /// An arc's path command from where the pen is to `end`.
-fn arc_to(f: &Frame, radius: f64, sweep: f64, end: Pt) -> String {
+fn arc_to(out: &mut String, f: &Frame, radius: f64, sweep: f64, end: Pt, n: Num) {
     // When y is flipped on the page, a counter-clockwise arc has sweep-flag 0.
-    let large = u8::from(sweep.abs() > std::f64::consts::PI);
-    let flag = u8::from((sweep < 0.0) == f.flips());
-    let rr = n(f.len(radius));
-    format!("A{rr},{rr} 0 {large} {flag} {},{}", n(f.x(end[0])), n(f.y(end[1])))
+    let large = sweep.abs() > std::f64::consts::PI;
+    let flag = (sweep < 0.0) == f.flips();
+    out.push('A');
+    n(out, f.len(radius));
+    out.push(',');
+    n(out, f.len(radius));
+    out.push_str(if large { " 0 1 " } else { " 0 0 " });
+    out.push_str(if flag { "1 " } else { "0 " });
+    xy(out, f, end, n);
 }
 
 /// Path data of closed loops, each a chain of pieces written as one closed subpath.
-fn loops_d(loops: &[Vec<Path>], f: &Frame) -> String {
-    let mut parts = Vec::with_capacity(loops.len());
+fn loops_d(out: &mut String, loops: &[Vec<Path>], f: &Frame, n: Num) {
+    let mut first = true;
     for lp in loops {
+        if lp.is_empty() {
+            continue;
+        }
+        if !std::mem::take(&mut first) {
+            out.push(' ');
+        }
         match lp.as_slice() {
-            [] => {}
-            [one] if one.is_closed() => parts.push(path_d(lp, f)),
-            [first, ..] => {
-                let a = first.start_point();
-                let mut d = format!("M{},{}", n(f.x(a[0])), n(f.y(a[1])));
+            [one] if one.is_closed() => path_d(out, lp, f, n),
+            _ => {
+                if let Some(head) = lp.first() {
+                    out.push('M');
+                    xy(out, f, head.start_point(), n);
+                }
                 for p in lp {
                     match p {
                         Path::Polyline { points: pts, .. } => {
                             for v in pts.iter().skip(1) {
-                                d.push_str(&format!(" L{},{}", n(f.x(v[0])), n(f.y(v[1]))));
+                                out.push_str(" L");
+                                xy(out, f, *v, n);
                             }
                         }
                         Path::Arc { radius, sweep, .. } => {
-                            d.push(' ');
-                            d.push_str(&arc_to(f, *radius, *sweep, p.end_point()));
+                            out.push(' ');
+                            arc_to(out, f, *radius, *sweep, p.end_point(), n);
                         }
                     }
                 }
-                d.push_str(" Z");
-                parts.push(d);
+                out.push_str(" Z");
             }
         }
     }
-    parts.join(" ")
 }
 
-/// Sets the paint's attributes on `e`.
-fn paint<N: Node>(e: &mut N, p: &Paint) {
+/// What receives an element's attributes: an element of the `svg` crate, or the list of them
+/// gathered before their element exists.
+pub trait Attributes {
+    /// Sets attribute `name` to the text `value` appends.
+    fn set(&mut self, name: &'static str, value: impl FnOnce(&mut String));
+
+    /// Sets attribute `name` to `value`.
+    fn text(&mut self, name: &'static str, value: &str) {
+        self.set(name, |s| s.push_str(value));
+    }
+}
+
+/// Sets the paint's attributes.
+pub fn paint(e: &mut impl Attributes, p: &Paint, n: Num) {
     if let Some(v) = &p.fill {
-        e.assign("fill", v.as_str());
+        e.text("fill", v);
     }
     if let Some(v) = &p.stroke {
-        e.assign("stroke", v.as_str());
+        e.text("stroke", v);
     }
     if let Some(v) = p.width {
-        e.assign("stroke-width", n(v));
+        e.set("stroke-width", |s| n(s, v));
     }
     if let Some(v) = p.cap {
-        e.assign("stroke-linecap", v);
+        e.text("stroke-linecap", v);
     }
     if let Some(v) = p.join {
-        e.assign("stroke-linejoin", v);
+        e.text("stroke-linejoin", v);
     }
 }
 
-/// One item as an element (`in_clip`: inside a clip path, where the fill rule is the clip
-/// rule).
-fn element(item: &Item, f: &Frame, in_clip: bool) -> Element {
-    let mut e: Element = match &item.shape {
-        Shape::Circle { c, r } => Circle::new()
-            .set("cx", n(f.x(c[0])))
-            .set("cy", n(f.y(c[1])))
-            .set("r", n(f.len(*r)))
-            .into(),
-        Shape::Polygon(vs) => Polygon::new().set("points", points(f, vs, " ")).into(),
-        Shape::Path(pieces) => SvgPath::new().set("d", path_d(pieces, f)).into(),
-        Shape::Loops(loops) => SvgPath::new().set("d", loops_d(loops, f)).into(),
-        Shape::Line(a, b) => Line::new()
-            .set("x1", n(f.x(a[0])))
-            .set("y1", n(f.y(a[1])))
-            .set("x2", n(f.x(b[0])))
-            .set("y2", n(f.y(b[1])))
-            .into(),
+/// One item's tag and attributes (`in_clip`: inside a clip path, where the fill rule is the
+/// clip rule).
+pub fn item(e: &mut impl Attributes, item: &Item, f: &Frame, in_clip: bool, n: Num) -> &'static str {
+    let tag = match &item.shape {
+        Shape::Circle { c, r } => {
+            e.set("cx", |s| n(s, f.x(c[0])));
+            e.set("cy", |s| n(s, f.y(c[1])));
+            e.set("r", |s| n(s, f.len(*r)));
+            "circle"
+        }
+        Shape::Polygon(vs) => {
+            e.set("points", |s| points(s, f, vs, " ", n));
+            "polygon"
+        }
+        Shape::Path(pieces) => {
+            e.set("d", |s| path_d(s, pieces, f, n));
+            "path"
+        }
+        Shape::Loops(loops) => {
+            e.set("d", |s| loops_d(s, loops, f, n));
+            "path"
+        }
+        Shape::Line(a, b) => {
+            e.set("x1", |s| n(s, f.x(a[0])));
+            e.set("y1", |s| n(s, f.y(a[1])));
+            e.set("x2", |s| n(s, f.x(b[0])));
+            e.set("y2", |s| n(s, f.y(b[1])));
+            "line"
+        }
         Shape::Rect { corner, w, h } => {
-            let mut r = Rectangle::new();
             if let Some(c) = corner {
-                r = r.set("x", n(f.x(c[0]))).set("y", n(f.y(c[1])));
+                e.set("x", |s| n(s, f.x(c[0])));
+                e.set("y", |s| n(s, f.y(c[1])));
             }
-            r.set("width", n(f.len(*w))).set("height", n(f.len(*h))).into()
+            e.set("width", |s| n(s, f.len(*w)));
+            e.set("height", |s| n(s, f.len(*h)));
+            "rect"
         }
     };
     if item.evenodd {
-        e.assign(if in_clip { "clip-rule" } else { "fill-rule" }, "evenodd");
+        e.text(if in_clip { "clip-rule" } else { "fill-rule" }, "evenodd");
     }
     if let Some(id) = item.id {
-        e.assign("id", id);
+        e.text("id", id);
     }
     if let Some(class) = item.class {
-        e.assign("class", class);
+        e.text("class", class);
     }
-    paint(&mut e, &item.paint);
-    e
+    paint(e, &item.paint, n);
+    tag
 }
 
-/// Writes any picture as SVG.
+/// The page's size and `viewBox` (the document's own attributes).
+pub fn page(e: &mut impl Attributes, page_w: f64, page_h: f64, n: Num) {
+    e.text("xmlns", "http://www.w3.org/2000/svg");
+    e.text("xmlns:inkscape", "http://www.inkscape.org/namespaces/inkscape");
+    e.set("width", |s| {
+        n(s, page_w);
+        s.push_str("mm");
+    });
+    e.set("height", |s| {
+        n(s, page_h);
+        s.push_str("mm");
+    });
+    e.set("viewBox", |s| {
+        s.push_str("0 0 ");
+        n(s, page_w);
+        s.push(' ');
+        n(s, page_h);
+    });
+}
+
+/// A background rectangle of `colour` over the page, before the shapes.
+pub fn background(e: &mut impl Attributes, colour: &str, page_w: f64, page_h: f64, n: Num) {
+    e.text("id", "background");
+    e.set("width", |s| n(s, page_w));
+    e.set("height", |s| n(s, page_h));
+    e.text("fill", colour);
+}
+
+/// A layer's group attributes.
+pub fn group(e: &mut impl Attributes, layer: &Layer, n: Num) {
+    if let Some(id) = &layer.id {
+        e.text("id", id);
+    }
+    if let Some(label) = &layer.label {
+        e.text("inkscape:groupmode", "layer");
+        e.text("inkscape:label", label);
+    }
+    paint(e, &layer.paint, n);
+    if let Some(clip) = &layer.clip {
+        e.set("clip-path", |s| {
+            s.push_str("url(#");
+            s.push_str(clip);
+            s.push(')');
+        });
+    }
+}
+
+/// An `svg` crate node receiving attributes.
+struct Crate<'a, N: Node>(&'a mut N);
+
+impl<N: Node> Attributes for Crate<'_, N> {
+    fn set(&mut self, name: &'static str, value: impl FnOnce(&mut String)) {
+        let mut s = String::new();
+        value(&mut s);
+        self.0.assign(name, s);
+    }
+}
+
+/// Attributes gathered before their element exists.
+struct Pairs(Vec<(&'static str, String)>);
+
+impl Attributes for Pairs {
+    fn set(&mut self, name: &'static str, value: impl FnOnce(&mut String)) {
+        let mut s = String::new();
+        value(&mut s);
+        self.0.push((name, s));
+    }
+}
+
+/// Writes any picture as SVG: a tree of `svg` crate elements, printed by it.
 pub fn write(pic: &Picture) -> Vec<u8> {
+    write_with(pic, n)
+}
+
+/// [`write`], with the numbers on the page written by `n`.
+#[doc(hidden)]
+pub fn write_with(pic: &Picture, n: Num) -> Vec<u8> {
     let f = pic.to_page();
     let (page_w, page_h) = pic.page_size();
-    let mut d = Document::new()
-        .set("xmlns:inkscape", "http://www.inkscape.org/namespaces/inkscape")
-        .set("width", format!("{}mm", n(page_w)))
-        .set("height", format!("{}mm", n(page_h)))
-        .set("viewBox", format!("0 0 {} {}", n(page_w), n(page_h)))
+    let element = |it, in_clip| {
+        let mut pairs = Pairs(Vec::new());
+        let mut e = Element::new(item(&mut pairs, it, &f, in_clip, n));
+        for (k, v) in pairs.0 {
+            e.assign(k, v);
+        }
+        e
+    };
+    let mut d = Document::new();
+    page(&mut Crate(&mut d), page_w, page_h, n);
+    d = d
         .add(Title::new("").add(Text::new(pic.title.as_str())))
         .add(Description::new().add(Text::new(pic.desc.as_str())));
     if let Some(bg) = &pic.background {
-        d = d.add(crate::output::palette::background(bg.as_str(), page_w, page_h));
+        let mut r = Rectangle::new();
+        background(&mut Crate(&mut r), bg, page_w, page_h, n);
+        d = d.add(r);
     }
     if !pic.clips.is_empty() {
         let mut defs = Definitions::new();
         for c in &pic.clips {
-            defs = defs.add(ClipPath::new().set("id", c.id.as_str()).add(element(&c.item, &f, true)));
+            defs = defs.add(ClipPath::new().set("id", c.id.as_str()).add(element(&c.item, true)));
         }
         d = d.add(defs);
     }
     for layer in &pic.layers {
         if layer.bare {
-            for item in &layer.items {
-                d.append(element(item, &f, false));
+            for it in &layer.items {
+                d.append(element(it, false));
             }
             continue;
         }
         let mut g = Group::new();
-        if let Some(id) = &layer.id {
-            g.assign("id", id.as_str());
-        }
-        if let Some(label) = &layer.label {
-            g.assign("inkscape:groupmode", "layer");
-            g.assign("inkscape:label", label.as_str());
-        }
-        paint(&mut g, &layer.paint);
-        if let Some(clip) = &layer.clip {
-            g.assign("clip-path", format!("url(#{clip})"));
-        }
-        for item in &layer.items {
-            g.append(element(item, &f, false));
+        group(&mut Crate(&mut g), layer, n);
+        for it in &layer.items {
+            g.append(element(it, false));
         }
         d = d.add(g);
     }

@@ -49,7 +49,8 @@ fn reproduces(dir: &Path, args: &[&str], out: &str, command_of: fn(&str) -> Opti
     first == rerun(dir, &command, &again)
 }
 
-const RUNS: [&[&str]; 9] = [
+const RUNS: [&[&str]; 10] = [
+    &["fill", "--count", "300", "--density", "noise:value:25", "--periodic", "--seed", "4"],
     &["fill", "--count", "400", "--cells", "512", "--seed", "5"],
     &["fill", "--count", "300", "--sampler", "reference", "--seed", "3"],
     &["fill", "--count", "200", "--scalar", "fixed", "--shape", "square"],

@@ -114,6 +114,13 @@ pub struct FillArgs {
     /// fill. Give the board's number to place its shapes.
     #[arg(long, value_parser = clap::value_parser!(u64).range(1..))]
     pub cells: Option<u64>,
+    /// Where centres are wanted: noise:KIND:SCALE, optionally then :OCTAVES:GAIN:CONTRAST
+    /// (KIND value or gradient; a noise field of lattice spacing SCALE mm seeded by --seed,
+    /// tileable with --periodic; density 0.5 + CONTRAST (noise - 0.5), clamped to 0..1;
+    /// defaults 4 octaves, gain 0.5, contrast 2). Each shape is placed with probability
+    /// proportional to the density over the centres where it fits.
+    #[arg(long, value_parser = spec::density)]
+    pub density: Option<spec::DensitySpec>,
     /// Number type of the engine: f64 or fixed (32.32 fixed point).
     #[arg(long, value_enum, default_value = "f64")]
     pub scalar: ScalarArg,

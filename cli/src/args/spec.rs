@@ -4,7 +4,7 @@
 
 use crate::model::doc::shape_name;
 use crate::model::region::RegionSpec;
-use zetafill::{MixOrder, Point, ShapeKind, ShapeList, MAX_MIX};
+use zetafill::{MixOrder, NoiseKind, Point, ShapeKind, ShapeList, MAX_MIX, MAX_OCTAVES};
 
 /// A number that must be finite.
 pub fn finite(s: &str) -> Result<f64, String> {
@@ -245,6 +245,95 @@ fn polygon(list: &str) -> Result<RegionSpec, String> {
         ends.push(points.len());
     }
     Ok(RegionSpec::Polygon { points, ends })
+}
+
+/// `--density`: where shape centres are wanted.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum DensitySpec {
+    /// `noise:KIND:SCALE[:OCTAVES[:GAIN[:CONTRAST]]]`: value or gradient noise of lattice
+    /// spacing SCALE mm, seeded by the fill's seed, as `rho = 0.5 + CONTRAST (noise - 0.5)`
+    /// clamped to `[0, 1]`.
+    Noise {
+        /// Value or gradient noise.
+        kind: NoiseKind,
+        /// The first octave's lattice spacing (mm).
+        scale: f64,
+        /// Octaves (1 to 16).
+        octaves: u32,
+        /// Each octave's weight over the last's, in (0, 1].
+        gain: f64,
+        /// How far the density swings from one half (> 0).
+        contrast: f64,
+    },
+}
+
+impl DensitySpec {
+    /// The spec written in full (the form the JSON and the reproducing command carry).
+    pub fn name(&self) -> String {
+        match *self {
+            DensitySpec::Noise {
+                kind,
+                scale,
+                octaves,
+                gain,
+                contrast,
+            } => {
+                let kind = match kind {
+                    NoiseKind::Value => "value",
+                    NoiseKind::Gradient => "gradient",
+                };
+                format!("noise:{kind}:{scale}:{octaves}:{gain}:{contrast}")
+            }
+        }
+    }
+}
+
+/// The largest `--density noise` contrast: beyond it the density is a hard two-level mask.
+pub const MAX_CONTRAST: f64 = 100.0;
+
+/// `noise:value|gradient:SCALE[:OCTAVES[:GAIN[:CONTRAST]]]` (defaults 4 octaves, gain 0.5,
+/// contrast 2).
+pub fn density(s: &str) -> Result<DensitySpec, String> {
+    const FORM: &str = "noise:value|gradient:SCALE[:OCTAVES[:GAIN[:CONTRAST]]], for example noise:gradient:30:4:0.5:2";
+    let parts: Vec<&str> = s.split(':').collect();
+    let (kind, rest) = match parts.as_slice() {
+        ["noise", "value", rest @ ..] => (NoiseKind::Value, rest),
+        ["noise", "gradient", rest @ ..] => (NoiseKind::Gradient, rest),
+        _ => return Err(format!("unknown density '{s}'; write {FORM}")),
+    };
+    let (scale, octaves, gain, contrast) = match rest {
+        [scale, more @ ..] if more.len() <= 3 => (scale, more.first(), more.get(1), more.get(2)),
+        _ => return Err(format!("'{s}' has {} values after the kind; write {FORM}", rest.len())),
+    };
+    let scale = length(scale).map_err(|e| format!("{s}: the noise SCALE {e}"))?;
+    let octaves = match octaves {
+        None => 4,
+        Some(o) => match o.trim().parse::<u32>() {
+            Ok(v) if (1..=MAX_OCTAVES).contains(&v) => v,
+            _ => return Err(format!("{s}: OCTAVES must be a whole number from 1 to {MAX_OCTAVES} (got {o})")),
+        },
+    };
+    let gain = match gain {
+        None => 0.5,
+        Some(g) => match finite(g) {
+            Ok(v) if v > 0.0 && v <= 1.0 => v,
+            _ => return Err(format!("{s}: GAIN must be above 0 and at most 1 (got {g})")),
+        },
+    };
+    let contrast = match contrast {
+        None => 2.0,
+        Some(k) => match finite(k) {
+            Ok(v) if v > 0.0 && v <= MAX_CONTRAST => v,
+            _ => return Err(format!("{s}: CONTRAST must be above 0 and at most {MAX_CONTRAST} (got {k})")),
+        },
+    };
+    Ok(DensitySpec::Noise {
+        kind,
+        scale,
+        octaves,
+        gain,
+        contrast,
+    })
 }
 
 /// `rect:W:H | circle:R | annulus:R_OUTER:R_INNER | polygon:X1,Y1,...[/...] | svg:FILE` (mm).

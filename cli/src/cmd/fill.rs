@@ -70,6 +70,36 @@ fn geo_f64<S: zetafill::Scalar>(g: &Geo<S>) -> Geo<f64> {
     }
 }
 
+/// `--density noise:...` as a field: the fill's seed, and a period of the region's size when
+/// the fill is periodic.
+struct NoiseField {
+    noise: zetafill::Noise,
+    contrast: f64,
+}
+
+impl zetafill::Density for NoiseField {
+    fn at(&self, x: f64, y: f64) -> f64 {
+        (0.5 + self.contrast * (self.noise.at(x, y) - 0.5)).clamp(0.0, 1.0)
+    }
+}
+
+fn field(d: crate::args::spec::DensitySpec, a: &FillRun) -> Result<NoiseField, CliError> {
+    let crate::args::spec::DensitySpec::Noise {
+        kind,
+        scale,
+        octaves,
+        gain,
+        contrast,
+    } = d;
+    let period = match (&a.region, a.periodic) {
+        (crate::model::region::RegionSpec::Rect { width, height }, true) => Some((*width, *height)),
+        _ => None,
+    };
+    let noise = zetafill::Noise::new(kind, a.seed, scale, octaves, gain, period)
+        .map_err(|e| CliError::arg("--density", format!("{e}: choose a larger SCALE or fewer OCTAVES")))?;
+    Ok(NoiseField { noise, contrast })
+}
+
 /// Runs the engine on scalar `S` with the CLI's storage, progress bar and known-limit checks
 /// (the region and the smallest shape the scalar computes exactly, the first two shapes).
 fn run_engine<S: zetafill::Scalar>(
@@ -94,6 +124,8 @@ fn run_engine<S: zetafill::Scalar>(
     zetafill::check_smallest::<S>(sequence, &params.shape, stop, cap as u64, &region).map_err(|e| too_small_error(e, stop, S::IS_F64))?;
     zetafill::check_largest::<S>(sequence, &params.shape, stop, cap as u64)
         .map_err(|e| too_large_error(e, &params.shape, region.periodic()))?;
+    // The density, made before the engine that borrows it.
+    let density = a.density.map(|d| field(d, a)).transpose()?;
     let mut shapes = vec![Placed::<S>::default(); cap];
     let mut index = vec![0u32; index_words(cap)];
     // Only the paper's sampler asks the coverage bitmap (the cell sampler never does).
@@ -105,6 +137,7 @@ fn run_engine<S: zetafill::Scalar>(
     };
     let mut engine = Engine::<S>::new(params.clone(), region, storage).map_err(param_error)?;
     zetafill::check_first_two(params, &region).map_err(|e| first_two_error(e, params))?;
+    engine.set_density(density.as_ref().map(|d| d as &dyn zetafill::Density));
     let mut rng = zetafill::rng_from_seed(a.seed);
     let bar = stopping::progress_bar(a.quiet, stop.count, SHAPES);
     let mut trials = Vec::with_capacity(cap);
@@ -214,6 +247,7 @@ pub fn compute(a: &FillRun) -> Result<(FillDoc, Option<StepError>), CliError> {
                 sampler: a.names.sampler,
                 scalar: a.names.scalar,
                 cells: a.names.cells,
+                density: a.names.density.clone(),
             },
             gap: params.gap,
             count: stop.count,
@@ -349,5 +383,12 @@ pub fn run(plan: &FillPlan) -> Result<(), CliError> {
     let bytes = render(&doc, plan.format, &plan.draw)?;
     plan.dest.write(&bytes)?;
     let max_trials = plan.run.params.max_trials;
+    if plan.run.density.is_some() {
+        // Where the density is low the candidates are thinned away; where it is zero nothing
+        // goes: the dense parts fill up first.
+        return stopping::outcome(halt, SHAPES, |_, _| {
+            "the --density leaves too little room where it is high: lower its CONTRAST (less empty space), lower --c, or ask for fewer shapes"
+        });
+    }
     stopping::outcome(halt, SHAPES, |index, trials| halt_advice(index, trials < max_trials))
 }

@@ -432,6 +432,9 @@ pub fn command_line(doc: &FillDoc) -> String {
     if let Some(n) = p.of.cells {
         s.push_str(&format!(" --cells {n}"));
     }
+    if let Some(d) = &p.of.density {
+        s.push_str(&format!(" --density {d}"));
+    }
     if let Some(k) = p.count {
         s.push_str(&format!(" --count {k}"));
     }

@@ -57,6 +57,8 @@ pub struct FillRun {
     pub seed: u64,
     /// The paper's sampler (and the coverage bitmap it asks) instead of the cell sampler.
     pub reference_sampler: bool,
+    /// Where centres are wanted (`--density`).
+    pub density: Option<crate::args::spec::DensitySpec>,
     /// The engine computes in 32.32 fixed point instead of f64.
     pub fixed_point: bool,
     /// No progress bar.
@@ -81,6 +83,8 @@ pub struct FillNames {
     pub scalar: &'static str,
     /// `--cells`, when given.
     pub cells: Option<u64>,
+    /// `--density`, written in full, when given.
+    pub density: Option<String>,
 }
 
 /// How the document is drawn.
@@ -251,6 +255,7 @@ pub fn resolve_as(a: &FillArgs, format: Format) -> Result<(FillRun, FillDraw), C
         sampler: a.sampler.name(),
         scalar: a.scalar.name(),
         cells: a.cells,
+        density: a.density.as_ref().map(|d| d.name()),
     };
     let run = FillRun {
         region: a.region.clone(),
@@ -259,6 +264,7 @@ pub fn resolve_as(a: &FillArgs, format: Format) -> Result<(FillRun, FillDraw), C
         stop: crate::plan::stops(&a.run.stop),
         seed,
         reference_sampler: a.sampler == Sampler::Reference,
+        density: a.density,
         fixed_point: a.scalar == ScalarArg::Fixed,
         quiet: a.quiet,
         names,

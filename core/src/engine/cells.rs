@@ -309,6 +309,10 @@ impl<S: Scalar> Engine<'_, S> {
                 cells.note_reject(slot, false);
                 continue;
             }
+            // Thinned by the density: says nothing about the cell.
+            if !self.kept(c, rng) {
+                continue;
+            }
             let known = if slot == usize::MAX { drawn.near() } else { cells.known(slot) };
             match self.try_at(&next, c, angle, trials, Some(&known)) {
                 Ok(placed) => {

@@ -17,6 +17,11 @@
 //! - `cells`: the engine as the cell sampler sees it ([`crate::CellSampler`],
 //!   [`Engine::step_fast`]): same distribution of accepted placements, far fewer trials.
 //!
+//! With a density ([`Engine::set_density`]) both samplers keep each candidate with
+//! probability `rho(centre)` before testing it (one more unit value from the generator, drawn
+//! only when there is a density), so the accepted centre is drawn with probability
+//! proportional to `rho` over the valid centres: see [`Density`].
+//!
 //! The reference sampler may also consult a coverage bitmap (`coverage`)
 //! that rejects candidates whose centre is certainly inside a placed shape; it never rejects a
 //! valid one.
@@ -167,6 +172,63 @@ pub struct Engine<'a, S: Scalar> {
     period: (S, S),
     /// The narrowest shape the scalar resolves in this region ([`crate::Region::magnitude`]).
     min_size: f64,
+    /// Where centres are wanted, when not uniformly.
+    density: Option<Thinning<'a>>,
+}
+
+/// The engine's density (a reference that shows in `Debug` by name only).
+#[derive(Clone, Copy)]
+struct Thinning<'a>(&'a dyn Density);
+
+impl core::fmt::Debug for Thinning<'_> {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.write_str("Density")
+    }
+}
+
+/// A density `rho` over the plane, in `[0, 1]`: the placement of every shape is drawn with
+/// probability proportional to `rho` over the centres where it fits, instead of uniformly
+/// (the paper's rule is `rho = 1`). A zero density is a mask: no centre is drawn there, while
+/// the areas still follow the power law, so a fill fraction counts the masked area too and a
+/// fill halts sooner where the open part fills up.
+///
+/// Both samplers thin their candidates: a candidate at `x` is kept with probability `rho(x)`
+/// (a unit value `u` from the generator, kept when `u < rho(x)`), independently of everything
+/// else, and then tested as before. The candidates the paper's sampler draws are uniform over
+/// the box of centres, those of the cell sampler uniform over its live cells, which hold every
+/// valid centre; a kept, valid candidate is therefore drawn with density proportional to
+/// `rho(x)` over the valid centres in both, the same distribution.
+///
+/// # Examples
+///
+/// ```
+/// use zetafill::{rng_from_seed, index_words, Density, Engine, Params, Placed, Region, Stop, Storage};
+///
+/// /// Only the right half.
+/// struct Right;
+/// impl Density for Right {
+///     fn at(&self, x: f64, _y: f64) -> f64 {
+///         if x > 50.0 { 1.0 } else { 0.0 }
+///     }
+/// }
+/// let mut shapes = [Placed::<f64>::default(); 40];
+/// let mut index = [0u32; index_words(40)];
+/// let storage = Storage { shapes: &mut shapes, index: &mut index, coverage: &mut [] };
+/// let region = Region::Rect { width: 100.0, height: 100.0, periodic: false };
+/// let mut e = Engine::new(Params::circles(1.3, 8.0), region, storage).unwrap();
+/// e.set_density(Some(&Right));
+/// e.run(&mut rng_from_seed(1), &Stop { count: Some(40), ..Stop::default() }, |_| {});
+/// assert!(e.placed().iter().all(|p| p.x > 50.0));
+/// ```
+pub trait Density {
+    /// `rho` at `(x, y)`, in `[0, 1]` (a value above 1 counts as 1; below 0, or NaN, as 0).
+    fn at(&self, x: f64, y: f64) -> f64;
+}
+
+impl Density for crate::Noise {
+    fn at(&self, x: f64, y: f64) -> f64 {
+        crate::Noise::at(self, x, y)
+    }
 }
 
 /// Index words needed for `capacity` shapes: one link each plus `2 * capacity` buckets (the
@@ -287,7 +349,22 @@ impl<'a, S: Scalar> Engine<'a, S> {
             gap,
             period: (S::from_f64(w), S::from_f64(h)),
             min_size: crate::feasibility::min_size::<S>(&region),
+            density: None,
         })
+    }
+
+    /// Draws centres with probability proportional to `density` over the valid ones from the
+    /// next step on (`None`: uniformly, the paper's rule). See [`Density`].
+    pub fn set_density(&mut self, density: Option<&'a dyn Density>) {
+        self.density = density.map(Thinning);
+    }
+
+    /// Whether a candidate centre survives the density's thinning (always, without one; the
+    /// unit value is drawn only with one).
+    fn kept<R: RngCore + ?Sized>(&self, c: Point<S>, rng: &mut R) -> bool {
+        let Some(Thinning(d)) = self.density else { return true };
+        let u: f64 = rng::unit(rng);
+        u < d.at(c.x.to_f64(), c.y.to_f64())
     }
 
     /// The parameters.
@@ -374,7 +451,7 @@ impl<'a, S: Scalar> Engine<'a, S> {
             let uy: S = rng::unit(rng);
             let (x0, x1, y0, y1) = next.range;
             let c = self.region.wrap(Point::new(x0 + ux * (x1 - x0), y0 + uy * (y1 - y0)));
-            if self.coverage.covered(c.x, c.y) {
+            if self.coverage.covered(c.x, c.y) || !self.kept(c, rng) {
                 continue;
             }
             if let Ok(p) = self.try_at(next, c, angle, trials, None) {

@@ -105,7 +105,6 @@ fn bad_fields_are_refused_before_any_work() {
         ("noise:gradient:30:4:1.5", "GAIN"),
         ("noise:gradient:30:4:0.5:0", "CONTRAST"),
         ("noise:gradient:30:4:0.5:2:9", "noise:value|gradient"),
-        ("image:face.png", "noise:value|gradient"),
     ] {
         let o = zf(d, &["fill", "--count", "50", "--density", spec, "-o", "bad.svg"]);
         assert_eq!(o.code, 2, "{spec}: {}", o.stderr);
@@ -157,4 +156,148 @@ fn a_density_that_empties_the_region_halts_with_advice() {
     assert_eq!(o.code, 3, "{}", o.stderr);
     assert!(o.stderr.contains("CONTRAST"), "{}", o.stderr);
     assert!(d.join("h.json").exists());
+}
+
+/// A `w x h` greyscale PNG, black where `dark(x, y)` (pixel centres, y down) and white
+/// elsewhere.
+fn png_picture(path: &std::path::Path, w: u32, h: u32, dark: impl Fn(u32, u32) -> bool) {
+    let data: Vec<u8> = (0..h)
+        .flat_map(|y| (0..w).map(move |x| (x, y)))
+        .map(|(x, y)| if dark(x, y) { 0 } else { 255 })
+        .collect();
+    let file = std::fs::File::create(path).unwrap_or_else(|e| panic!("{e}"));
+    let mut enc = png::Encoder::new(file, w, h);
+    enc.set_color(png::ColorType::Grayscale);
+    enc.set_depth(png::BitDepth::Eight);
+    enc.write_header()
+        .and_then(|mut wr| wr.write_image_data(&data))
+        .unwrap_or_else(|e| panic!("{e}"));
+}
+
+/// The same picture as a JPEG (quality 95).
+fn jpeg_picture(path: &std::path::Path, w: u16, h: u16, dark: impl Fn(u16, u16) -> bool) {
+    let data: Vec<u8> = (0..h)
+        .flat_map(|y| (0..w).map(move |x| (x, y)))
+        .map(|(x, y)| if dark(x, y) { 0 } else { 255 })
+        .collect();
+    let enc = jpeg_encoder::Encoder::new_file(path, 95).unwrap_or_else(|e| panic!("{e}"));
+    enc.encode(&data, w, h, jpeg_encoder::ColorType::Luma)
+        .unwrap_or_else(|e| panic!("{e}"));
+}
+
+/// Dark means dense: a picture dark on its left half puts every centre there (in a 200 mm
+/// square the picture's middle is x = 100; the blend between pixel centres reaches 1.25 mm
+/// past it at 80 pixels), `invert` on the right half, in PNG and in JPEG.
+#[test]
+fn a_picture_draws_where_it_is_dark() {
+    let dir = tmp();
+    let d = dir.path();
+    png_picture(&d.join("left.png"), 80, 60, |x, _| x < 40);
+    jpeg_picture(&d.join("left.jpg"), 80, 60, |x, _| x < 40);
+    let base = [
+        "fill",
+        "--count",
+        "150",
+        "--c",
+        "1.3",
+        "--n-offset",
+        "100",
+        "--seed",
+        "4",
+        "--format",
+        "json",
+        "-o",
+        "-",
+    ];
+    for (file, invert, left) in [("left.png", false, true), ("left.png", true, false), ("left.jpg", false, true)] {
+        let spec = format!("image:{}{}", d.join(file).display(), if invert { ",invert" } else { "" });
+        for sampler in ["fast", "reference"] {
+            let doc = zf_json(d, &[&base[..], &["--density", &spec, "--sampler", sampler]].concat());
+            let c = centres(&doc);
+            assert_eq!(c.len(), 150, "{file} {sampler}");
+            // JPEG blurs the edge a little: allow a few pixels.
+            let edge = if file.ends_with("jpg") { 10.0 } else { 1.25 };
+            let wrong = c
+                .iter()
+                .filter(|&&(x, _)| if left { x > 100.0 + edge } else { x < 100.0 - edge })
+                .count();
+            assert_eq!(wrong, 0, "{file} invert {invert} {sampler}: {wrong} centres on the light side");
+        }
+    }
+    // The check can fail: without the picture, centres are on both sides.
+    let c = centres(&zf_json(d, &base));
+    assert!(c.iter().any(|&(x, _)| x > 110.0) && c.iter().any(|&(x, _)| x < 90.0));
+}
+
+/// The JSON and the `<desc>` command name the picture and its SHA-256; the command makes the
+/// same file again, and refuses once the picture has changed.
+#[test]
+fn the_picture_is_named_by_its_hash() {
+    let dir = tmp();
+    let d = dir.path();
+    let pic = d.join("p.png");
+    png_picture(&pic, 40, 40, |x, y| x + y < 40);
+    let spec = format!("image:{},gamma=2,floor=0.05", pic.display());
+    let args = ["fill", "--count", "200", "--n-offset", "20", "--density", &spec];
+    let doc = zf_json(d, &[&args[..], &["--format", "json", "-o", "-"]].concat());
+    let sha = {
+        use sha2::{Digest, Sha256};
+        Sha256::digest(std::fs::read(&pic).unwrap_or_default())
+            .iter()
+            .map(|b| format!("{b:02x}"))
+            .collect::<String>()
+    };
+    assert_eq!(doc["params"]["density"], format!("image:{},gamma=2,floor=0.05", pic.display()));
+    assert_eq!(doc["params"]["density_sha256"], sha.as_str());
+    common::zf_ok(d, &[&args[..], &["-o", "a.svg"]].concat());
+    let svg = std::fs::read_to_string(d.join("a.svg")).unwrap_or_default();
+    let desc = svg
+        .split("<desc>")
+        .nth(1)
+        .and_then(|s| s.split("</desc>").next())
+        .unwrap_or_default()
+        .to_string();
+    assert!(desc.contains(&format!("--density-sha256 {sha}")), "{desc}");
+    let again: Vec<&str> = desc.split_whitespace().skip(1).chain(["-o", "b.svg"]).collect();
+    common::zf_ok(d, &again);
+    assert_eq!(std::fs::read(d.join("b.svg")).unwrap_or_default(), svg.as_bytes());
+    // Change one pixel: the command refuses, naming the flag, and writes nothing.
+    png_picture(&pic, 40, 40, |x, y| x + y < 40 || (x, y) == (39, 39));
+    let again: Vec<&str> = desc.split_whitespace().skip(1).chain(["-o", "c.svg"]).collect();
+    let o = zf(d, &again);
+    assert_eq!(o.code, 2, "{}", o.stderr);
+    assert!(
+        o.stderr.contains("--density-sha256") && o.stderr.contains("changed"),
+        "{}",
+        o.stderr
+    );
+    assert!(!d.join("c.svg").exists());
+}
+
+#[test]
+fn bad_pictures_are_refused_before_any_work() {
+    let dir = tmp();
+    let d = dir.path();
+    std::fs::write(d.join("empty.png"), b"").unwrap_or_else(|e| panic!("{e}"));
+    std::fs::write(d.join("notes.txt"), b"not a picture").unwrap_or_else(|e| panic!("{e}"));
+    png_picture(&d.join("ok.png"), 4, 4, |_, _| true);
+    let p = |f: &str| d.join(f).display().to_string();
+    for (spec, flag, says) in [
+        (format!("image:{}", p("missing.png")), "--density", "cannot read"),
+        (format!("image:{}", p("empty.png")), "--density", "empty"),
+        (format!("image:{}", p("notes.txt")), "--density", "not a PNG or JPEG"),
+        ("image:/dev/zero".to_string(), "--density", "64 MiB"),
+        (format!("image:{},gamma=0", p("ok.png")), "--density", "gamma"),
+        (format!("image:{},floor=1", p("ok.png")), "--density", "floor"),
+        (format!("image:{},sharp", p("ok.png")), "--density", "unknown option"),
+        ("image:".to_string(), "--density", "needs a file"),
+    ] {
+        let o = zf(d, &["fill", "--count", "20", "--density", &spec, "-o", "bad.svg"]);
+        assert_eq!(o.code, 2, "{spec}: {}", o.stderr);
+        assert!(o.stderr.contains(flag) && o.stderr.contains(says), "{spec}: {}", o.stderr);
+        assert!(!d.join("bad.svg").exists(), "{spec}");
+    }
+    let o = zf(d, &["fill", "--count", "20", "--density-sha256", "00", "-o", "bad.svg"]);
+    assert_eq!(o.code, 2, "{}", o.stderr);
+    assert!(o.stderr.contains("--density-sha256") && !d.join("bad.svg").exists(), "{}", o.stderr);
 }

@@ -26,7 +26,11 @@ fn first_difference(a: &[u8], b: &[u8]) -> Option<usize> {
 fn render(args_file: &Path) -> (PathBuf, Vec<u8>) {
     let text = std::fs::read_to_string(args_file).unwrap_or_default();
     let mut args: Vec<String> = vec!["zetafill".into()];
-    args.extend(text.split_whitespace().map(String::from));
+    // A picture named by a relative path is in the gallery folder.
+    args.extend(text.split_whitespace().map(|a| match a.strip_prefix("image:") {
+        Some(rest) if !rest.starts_with('/') => format!("image:{}", gallery().join(rest).display()),
+        _ => a.to_string(),
+    }));
     use clap::Parser;
     let command = zetafill_cli::Cli::try_parse_from(&args)
         .unwrap_or_else(|e| panic!("{}: {e}", args_file.display()))
@@ -104,6 +108,52 @@ fn gallery_pictures_are_what_the_tool_writes() {
             );
         }
     }
+}
+
+/// The picture `density-image.args` follows, `density-source.png`: a dark, soft-edged letter Z
+/// on white, 240 x 240 pixels, made here so that the gallery needs no download.
+fn density_source() -> Vec<u8> {
+    let (w, h) = (240u32, 240u32);
+    // The strokes of the Z, as segments of a pen 36 pixels wide with 6 pixels of soft edge.
+    let strokes = [
+        ((40.0, 50.0), (200.0, 50.0)),
+        ((200.0, 50.0), (40.0, 190.0)),
+        ((40.0, 190.0), (200.0, 190.0)),
+    ];
+    let dist = |p: (f64, f64), a: (f64, f64), b: (f64, f64)| {
+        let (dx, dy) = (b.0 - a.0, b.1 - a.1);
+        let t = (((p.0 - a.0) * dx + (p.1 - a.1) * dy) / (dx * dx + dy * dy)).clamp(0.0, 1.0);
+        (p.0 - a.0 - t * dx).hypot(p.1 - a.1 - t * dy)
+    };
+    let mut data = Vec::with_capacity((w * h) as usize);
+    for y in 0..h {
+        for x in 0..w {
+            let p = (f64::from(x) + 0.5, f64::from(y) + 0.5);
+            let d = strokes.iter().map(|&(a, b)| dist(p, a, b)).fold(f64::MAX, f64::min);
+            let light = ((d - 18.0) / 6.0).clamp(0.0, 1.0);
+            data.push((255.0 * light).round() as u8);
+        }
+    }
+    let mut out = Vec::new();
+    let mut enc = png::Encoder::new(&mut out, w, h);
+    enc.set_color(png::ColorType::Grayscale);
+    enc.set_depth(png::BitDepth::Eight);
+    enc.write_header()
+        .and_then(|mut wr| wr.write_image_data(&data))
+        .unwrap_or_else(|e| panic!("{e}"));
+    out
+}
+
+/// The committed `density-source.png` is the picture [`density_source`] makes (rewritten with
+/// `ZETAFILL_REGENERATE=1`); the gallery test fills by it.
+#[test]
+fn the_density_source_is_made_by_the_test() {
+    let path = gallery().join("density-source.png");
+    let made = density_source();
+    if std::env::var_os("ZETAFILL_REGENERATE").is_some() {
+        std::fs::write(&path, &made).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    }
+    assert_eq!(first_difference(&std::fs::read(&path).unwrap_or_default(), &made), None);
 }
 
 /// The pin file of `out` and its text: `HEX  NAME` and a newline, as `sha256sum` writes it.

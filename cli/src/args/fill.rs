@@ -121,6 +121,10 @@ pub struct FillArgs {
     /// proportional to the density over the centres where it fits.
     #[arg(long, value_parser = spec::density)]
     pub density: Option<spec::DensitySpec>,
+    /// The SHA-256 the --density picture must have (the command a file carries gives it, so
+    /// a changed picture is refused instead of filling differently).
+    #[arg(long = "density-sha256")]
+    pub density_sha256: Option<String>,
     /// Number type of the engine: f64 or fixed (32.32 fixed point).
     #[arg(long, value_enum, default_value = "f64")]
     pub scalar: ScalarArg,

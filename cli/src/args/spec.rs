@@ -248,8 +248,21 @@ fn polygon(list: &str) -> Result<RegionSpec, String> {
 }
 
 /// `--density`: where shape centres are wanted.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub enum DensitySpec {
+    /// `image:FILE[,invert][,gamma=G][,floor=F]`: a PNG or JPEG over the region's bounding box,
+    /// `rho = F + (1 - F) t^G` with `t` the darkness (one minus the luminance; the luminance
+    /// with `invert`), bilinear between pixel centres.
+    Image {
+        /// The picture.
+        path: std::path::PathBuf,
+        /// Light means dense instead of dark.
+        invert: bool,
+        /// The exponent on the darkness (> 0).
+        gamma: f64,
+        /// The least density, in `[0, 1)`.
+        floor: f64,
+    },
     /// `noise:KIND:SCALE[:OCTAVES[:GAIN[:CONTRAST]]]`: value or gradient noise of lattice
     /// spacing SCALE mm, seeded by the fill's seed, as `rho = 0.5 + CONTRAST (noise - 0.5)`
     /// clamped to `[0, 1]`.
@@ -271,6 +284,16 @@ impl DensitySpec {
     /// The spec written in full (the form the JSON and the reproducing command carry).
     pub fn name(&self) -> String {
         match *self {
+            DensitySpec::Image {
+                ref path,
+                invert,
+                gamma,
+                floor,
+            } => format!(
+                "image:{}{},gamma={gamma},floor={floor}",
+                path.display(),
+                if invert { ",invert" } else { "" }
+            ),
             DensitySpec::Noise {
                 kind,
                 scale,
@@ -294,12 +317,19 @@ pub const MAX_CONTRAST: f64 = 100.0;
 /// `noise:value|gradient:SCALE[:OCTAVES[:GAIN[:CONTRAST]]]` (defaults 4 octaves, gain 0.5,
 /// contrast 2).
 pub fn density(s: &str) -> Result<DensitySpec, String> {
+    if let Some(rest) = s.strip_prefix("image:") {
+        return image_density(rest);
+    }
     const FORM: &str = "noise:value|gradient:SCALE[:OCTAVES[:GAIN[:CONTRAST]]], for example noise:gradient:30:4:0.5:2";
     let parts: Vec<&str> = s.split(':').collect();
     let (kind, rest) = match parts.as_slice() {
         ["noise", "value", rest @ ..] => (NoiseKind::Value, rest),
         ["noise", "gradient", rest @ ..] => (NoiseKind::Gradient, rest),
-        _ => return Err(format!("unknown density '{s}'; write {FORM}")),
+        _ => {
+            return Err(format!(
+                "unknown density '{s}'; write {FORM}, or image:FILE[,invert][,gamma=G][,floor=F]"
+            ))
+        }
     };
     let (scale, octaves, gain, contrast) = match rest {
         [scale, more @ ..] if more.len() <= 3 => (scale, more.first(), more.get(1), more.get(2)),
@@ -333,6 +363,44 @@ pub fn density(s: &str) -> Result<DensitySpec, String> {
         octaves,
         gain,
         contrast,
+    })
+}
+
+/// `image:FILE[,invert][,gamma=G][,floor=F]` (after `image:`): defaults gamma 1, floor 0.
+fn image_density(rest: &str) -> Result<DensitySpec, String> {
+    let mut parts = rest.split(',');
+    let file = parts.next().unwrap_or("");
+    if file.is_empty() {
+        return Err("image: needs a file, for example image:portrait.png,gamma=1.5".into());
+    }
+    let (mut invert, mut gamma, mut floor) = (false, 1.0, 0.0);
+    for opt in parts {
+        match opt.split_once('=') {
+            None if opt == "invert" => invert = true,
+            Some(("gamma", g)) => {
+                gamma = match finite(g) {
+                    Ok(v) if v > 0.0 && v <= 100.0 => v,
+                    _ => return Err(format!("image:{rest}: gamma must be above 0 and at most 100 (got {g})")),
+                }
+            }
+            Some(("floor", f)) => {
+                floor = match finite(f) {
+                    Ok(v) if (0.0..1.0).contains(&v) => v,
+                    _ => return Err(format!("image:{rest}: floor must be at least 0 and below 1 (got {f})")),
+                }
+            }
+            _ => {
+                return Err(format!(
+                    "image:{rest}: unknown option '{opt}'; use invert, gamma=G or floor=F, separated by commas"
+                ))
+            }
+        }
+    }
+    Ok(DensitySpec::Image {
+        path: file.into(),
+        invert,
+        gamma,
+        floor,
     })
 }
 

@@ -1,6 +1,7 @@
-//! The file system: atomic writes of outputs, and reading the inputs (SVG outlines, with a
-//! size limit for every input file).
+//! The file system: atomic writes of outputs, and reading the inputs (SVG outlines, pictures,
+//! with a size limit for every input file).
 
+pub mod image;
 pub mod read;
 pub mod svgin;
 pub mod write;

@@ -83,6 +83,9 @@ pub struct ShapeParamsDoc {
     /// `--density`, written in full, when given.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub density: Option<String>,
+    /// The SHA-256 of the `--density` picture.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub density_sha256: Option<String>,
 }
 
 /// A region, in its own frame (mm, x right, y up).

@@ -435,6 +435,9 @@ pub fn command_line(doc: &FillDoc) -> String {
     if let Some(d) = &p.of.density {
         s.push_str(&format!(" --density {d}"));
     }
+    if let Some(h) = &p.of.density_sha256 {
+        s.push_str(&format!(" --density-sha256 {h}"));
+    }
     if let Some(k) = p.count {
         s.push_str(&format!(" --count {k}"));
     }

@@ -59,6 +59,8 @@ pub struct FillRun {
     pub reference_sampler: bool,
     /// Where centres are wanted (`--density`).
     pub density: Option<crate::args::spec::DensitySpec>,
+    /// The picture of `--density image:FILE`, read when the run was planned.
+    pub picture: Option<std::sync::Arc<crate::io::image::Grey>>,
     /// The engine computes in 32.32 fixed point instead of f64.
     pub fixed_point: bool,
     /// No progress bar.
@@ -85,6 +87,8 @@ pub struct FillNames {
     pub cells: Option<u64>,
     /// `--density`, written in full, when given.
     pub density: Option<String>,
+    /// The SHA-256 of the `--density` picture.
+    pub density_sha256: Option<String>,
 }
 
 /// How the document is drawn.
@@ -248,6 +252,7 @@ pub fn resolve_as(a: &FillArgs, format: Format) -> Result<(FillRun, FillDraw), C
         gap: a.run.gap,
         max_trials: a.run.max_trials,
     };
+    let picture = density_picture(a)?;
     let names = FillNames {
         shape: a.shape.name(),
         rotate: if params.rotate && a.shape.rotates() { "random" } else { "none" },
@@ -256,6 +261,7 @@ pub fn resolve_as(a: &FillArgs, format: Format) -> Result<(FillRun, FillDraw), C
         scalar: a.scalar.name(),
         cells: a.cells,
         density: a.density.as_ref().map(|d| d.name()),
+        density_sha256: picture.as_ref().map(|p| p.sha256.clone()),
     };
     let run = FillRun {
         region: a.region.clone(),
@@ -264,7 +270,8 @@ pub fn resolve_as(a: &FillArgs, format: Format) -> Result<(FillRun, FillDraw), C
         stop: crate::plan::stops(&a.run.stop),
         seed,
         reference_sampler: a.sampler == Sampler::Reference,
-        density: a.density,
+        density: a.density.clone(),
+        picture,
         fixed_point: a.scalar == ScalarArg::Fixed,
         quiet: a.quiet,
         names,
@@ -313,6 +320,34 @@ pub fn fixed_outline_error(vertices: usize) -> CliError {
             "--scalar fixed tests every edge of the outline on every trial, and this outline has {vertices} vertices (at most {FIXED_MAX_VERTICES}); simplify the outline or use --scalar f64"
         ),
     )
+}
+
+/// The picture of `--density image:FILE`, read now so that a bad file stops the run before any
+/// work, checked against `--density-sha256` when given.
+fn density_picture(a: &FillArgs) -> Result<Option<std::sync::Arc<crate::io::image::Grey>>, CliError> {
+    let Some(crate::args::spec::DensitySpec::Image { path, .. }) = &a.density else {
+        if a.density_sha256.is_some() {
+            return Err(CliError::arg(
+                "--density-sha256",
+                "names the picture of --density image:FILE: drop it, or give an image density",
+            ));
+        }
+        return Ok(None);
+    };
+    let grey = crate::io::image::read_grey(path).map_err(|e| CliError::arg("--density", e))?;
+    if let Some(want) = &a.density_sha256 {
+        if !want.eq_ignore_ascii_case(&grey.sha256) {
+            return Err(CliError::arg(
+                "--density-sha256",
+                format!(
+                    "{} has SHA-256 {}, not {want}: the picture changed since the file was made; drop --density-sha256 to fill with it as it is",
+                    path.display(),
+                    grey.sha256
+                ),
+            ));
+        }
+    }
+    Ok(Some(std::sync::Arc::new(grey)))
 }
 
 /// The fewest cells `--cells` lends: fewer leave the sampler no room to refine at all.

@@ -407,13 +407,7 @@ impl<'c> SpaceCells<'c> {
             return None;
         }
         // Lemire's method: a uniform integer below `total` without bias.
-        let threshold = total.wrapping_neg() % total;
-        let mut r = loop {
-            let m = u128::from(rng.next_u64()) * u128::from(total);
-            if (m as u64) >= threshold {
-                break (m >> 64) as u64;
-            }
-        };
+        let mut r = crate::rng::below(rng, total);
         let units: [f64; 3] = core::array::from_fn(|_| crate::rng::unit::<f64, R>(rng));
         for k in 0..SPACE_CELL_LEVELS {
             let count = (self.start(k + 1) - self.start(k)) as u64;

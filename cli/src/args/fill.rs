@@ -120,7 +120,7 @@ pub struct FillArgs {
     /// defaults 4 octaves, gain 0.5, contrast 2). Each shape is placed with probability
     /// proportional to the density over the centres where it fits.
     #[arg(long, value_parser = spec::density)]
-    pub density: Option<spec::DensitySpec>,
+    pub density: Option<crate::model::density::DensitySpec>,
     /// The SHA-256 the --density picture must have (the command a file carries gives it, so
     /// a changed picture is refused instead of filling differently).
     #[arg(long = "density-sha256")]

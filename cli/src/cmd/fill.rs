@@ -128,7 +128,7 @@ fn bilinear(g: &crate::io::image::Grey, bbox: &(f64, f64, f64, f64), x: f64, y: 
 /// The run's `--density` as a field: noise gets the fill's seed, and a period of the region's
 /// size when the fill is periodic; a picture covers the region's bounding box.
 fn field(a: &FillRun, region: &Region<'_>) -> Result<Option<Field>, CliError> {
-    use crate::args::spec::DensitySpec;
+    use crate::model::density::DensitySpec;
     let Some(d) = &a.density else { return Ok(None) };
     Ok(Some(match *d {
         DensitySpec::Noise {

@@ -58,7 +58,7 @@ pub struct FillRun {
     /// The paper's sampler (and the coverage bitmap it asks) instead of the cell sampler.
     pub reference_sampler: bool,
     /// Where centres are wanted (`--density`).
-    pub density: Option<crate::args::spec::DensitySpec>,
+    pub density: Option<crate::model::density::DensitySpec>,
     /// The picture of `--density image:FILE`, read when the run was planned.
     pub picture: Option<std::sync::Arc<crate::io::image::Grey>>,
     /// The engine computes in 32.32 fixed point instead of f64.
@@ -325,7 +325,7 @@ pub fn fixed_outline_error(vertices: usize) -> CliError {
 /// The picture of `--density image:FILE`, read now so that a bad file stops the run before any
 /// work, checked against `--density-sha256` when given.
 fn density_picture(a: &FillArgs) -> Result<Option<std::sync::Arc<crate::io::image::Grey>>, CliError> {
-    let Some(crate::args::spec::DensitySpec::Image { path, .. }) = &a.density else {
+    let Some(crate::model::density::DensitySpec::Image { path, .. }) = &a.density else {
         if a.density_sha256.is_some() {
             return Err(CliError::arg(
                 "--density-sha256",

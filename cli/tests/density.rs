@@ -156,6 +156,28 @@ fn a_density_that_empties_the_region_halts_with_advice() {
     assert_eq!(o.code, 3, "{}", o.stderr);
     assert!(o.stderr.contains("CONTRAST"), "{}", o.stderr);
     assert!(d.join("h.json").exists());
+    // A picture dark in a small square only, white elsewhere with no floor: the advice names
+    // the picture's floor, not the noise's contrast.
+    png_picture(&d.join("spot.png"), 40, 40, |x, y| (16..24).contains(&x) && (16..24).contains(&y));
+    let o = zf(
+        d,
+        &[
+            "fill",
+            "--count",
+            "3000",
+            "--n-offset",
+            "3",
+            "--max-trials",
+            "100000",
+            "--density",
+            "image:spot.png",
+            "-o",
+            "spot.json",
+        ],
+    );
+    assert_eq!(o.code, 3, "{}", o.stderr);
+    assert!(o.stderr.contains("floor=F") && !o.stderr.contains("CONTRAST"), "{}", o.stderr);
+    assert!(d.join("spot.json").exists());
 }
 
 /// A `w x h` greyscale PNG, black where `dark(x, y)` (pixel centres, y down) and white

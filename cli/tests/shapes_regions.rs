@@ -6,7 +6,7 @@ mod common;
 use common::*;
 use serde_json::Value;
 
-const SHAPES: [&str; 9] = [
+const SHAPES: [&str; 10] = [
     "circle",
     "square",
     "rect:2",
@@ -15,6 +15,7 @@ const SHAPES: [&str; 9] = [
     "star:5:0.45",
     "ring:0.6",
     "blob:0.2",
+    "noisy:0.35:5:2",
     "mix:circle,star:4:0.5,ring:0.5",
 ];
 const REGIONS: [&str; 5] = [
@@ -58,7 +59,7 @@ fn check_kinds(doc: &Value) {
                             10
                         }
                     }
-                    "blob" => 32,
+                    "blob" | "noisy" => 32,
                     other => panic!("unknown kind {other}"),
                 };
                 assert_eq!(vs.len(), want, "{kind}");

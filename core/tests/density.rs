@@ -9,6 +9,10 @@
 //!   two samplers against each other on noise density, and a mask that nothing crosses.
 //! - No density is the paper's rule, bit for bit: the digest with `set_density(None)` is the
 //!   digest of an engine never given one.
+//! - A density that bounds itself over boxes ([`Density::max_over`]) lets the cell sampler draw
+//!   its cells by area times that bound: the same tests pass with bounds (and fail with a bound
+//!   that lies), cells where the bound is 0 are never live, and low-density cells cost fewer
+//!   trials.
 
 mod common;
 
@@ -43,6 +47,98 @@ impl Density for Mask {
             0.0
         } else {
             1.0
+        }
+    }
+}
+
+/// The ramp, with its exact bound over a box: its right edge's value.
+struct BoundedRamp;
+
+impl Density for BoundedRamp {
+    fn at(&self, x: f64, _y: f64) -> f64 {
+        x / SIDE
+    }
+    fn max_over(&self, _x0: f64, _y0: f64, x1: f64, _y1: f64) -> f64 {
+        (x1 / SIDE).clamp(0.0, 1.0)
+    }
+}
+
+/// The ramp with a bound four times too low: a broken density that the tests must catch.
+struct LyingRamp;
+
+impl Density for LyingRamp {
+    fn at(&self, x: f64, _y: f64) -> f64 {
+        x / SIDE
+    }
+    fn max_over(&self, _x0: f64, _y0: f64, x1: f64, _y1: f64) -> f64 {
+        (x1 / SIDE).clamp(0.0, 1.0) / 4.0
+    }
+}
+
+/// Blocks of 10 by 10 mm at six levels from 0 to 1, with the exact bound: the largest level
+/// among the blocks a box touches.
+struct Blocks;
+
+impl Blocks {
+    const LEVELS: [f64; 6] = [0.0, 0.02, 0.1, 0.3, 0.6, 1.0];
+
+    fn block(i: i64, j: i64) -> f64 {
+        let (i, j) = (i.clamp(0, 9), j.clamp(0, 9));
+        Self::LEVELS[((i * 7 + j * 3 + i * j) % 6) as usize]
+    }
+}
+
+impl Density for Blocks {
+    fn at(&self, x: f64, y: f64) -> f64 {
+        Self::block((x / 10.0).floor() as i64, (y / 10.0).floor() as i64)
+    }
+    fn max_over(&self, x0: f64, y0: f64, x1: f64, y1: f64) -> f64 {
+        let (i0, i1) = ((x0 / 10.0).floor() as i64, (x1 / 10.0).floor() as i64);
+        let (j0, j1) = ((y0 / 10.0).floor() as i64, (y1 / 10.0).floor() as i64);
+        let mut m = 0f64;
+        for i in i0.max(0)..=i1.min(9) {
+            for j in j0.max(0)..=j1.min(9) {
+                m = m.max(Self::block(i, j));
+            }
+        }
+        m
+    }
+}
+
+/// Zero left of x = 20, with the exact bound.
+struct BoundedMask;
+
+impl Density for BoundedMask {
+    fn at(&self, x: f64, y: f64) -> f64 {
+        Mask.at(x, y)
+    }
+    fn max_over(&self, _x0: f64, _y0: f64, x1: f64, _y1: f64) -> f64 {
+        if x1 < 20.0 {
+            0.0
+        } else {
+            1.0
+        }
+    }
+}
+
+/// 0.01 left of x = 90, 1 right of it: with `bounded`, its exact bound over boxes.
+struct Sparse {
+    bounded: bool,
+}
+
+impl Density for Sparse {
+    fn at(&self, x: f64, _y: f64) -> f64 {
+        if x < 90.0 {
+            0.01
+        } else {
+            1.0
+        }
+    }
+    fn max_over(&self, _x0: f64, _y0: f64, x1: f64, _y1: f64) -> f64 {
+        if !self.bounded || x1 >= 90.0 {
+            1.0
+        } else {
+            0.01
         }
     }
 }
@@ -196,4 +292,75 @@ fn no_density_is_the_papers_rule_bit_for_bit() {
         };
         assert_eq!(digest_of(false), digest_of(true));
     }
+}
+
+#[test]
+fn cells_drawn_by_their_density_bound_keep_the_distribution() {
+    let chi2 = ramp_chi2(Some(&BoundedRamp), true, 3000);
+    assert!(chi2 < CHI2_9_0001, "bounded ramp: chi-square {chi2:.1}");
+    // A bound below the density breaks it, and the test sees it.
+    let liar = ramp_chi2(Some(&LyingRamp), true, 3000);
+    assert!(liar > 5.0 * CHI2_9_0001, "lying bound: chi-square {liar:.1}");
+}
+
+#[test]
+fn both_samplers_place_the_same_distribution_with_bounded_blocks() {
+    let params = Params::circles(1.3, 2.0);
+    // Placement 12's x and y, and its density, over 300 fills a side.
+    let pick = |fast: bool| {
+        let (mut xs, mut ys, mut rho) = (Vec::new(), Vec::new(), Vec::new());
+        for seed in 0..300 {
+            let c = fill(&params, Some(&Blocks), fast, 9000 + seed, 13);
+            let (x, y) = c[12];
+            xs.push(x);
+            ys.push(y);
+            rho.push(Blocks.at(x, y));
+        }
+        (xs, ys, rho)
+    };
+    let (a, b) = (pick(false), pick(true));
+    for (name, p, q) in [("x", &a.0, &b.0), ("y", &a.1, &b.1), ("rho", &a.2, &b.2)] {
+        let (d, pv) = ks(p, q);
+        assert!(pv > 0.01 / 3.0, "{name}: D {d:.3}, p {pv:.4}");
+    }
+    assert!(b.2.iter().all(|&r| r > 0.0), "a centre where the density is 0");
+}
+
+#[test]
+fn cells_where_the_bound_is_zero_are_never_live() {
+    let live_area = |density: &dyn Density| {
+        let mut b = common::Buffers::<f64>::new(10);
+        let mut e = Engine::new(Params::circles(1.3, 20.0), square(), b.storage(&mut [])).expect("valid");
+        e.set_density(Some(density));
+        let mut pool = vec![[0u64; 4]; cells_for(10)];
+        let mut cells = CellSampler::new(&mut pool).expect("cells");
+        assert!(e.prepare_fast(&mut cells));
+        cells.live_area()
+    };
+    // The level-0 cells are 6.25 mm wide: three columns lie left of x = 20.
+    assert!(live_area(&BoundedMask) <= 8125.0 + 1e-9, "{}", live_area(&BoundedMask));
+    // Without the bound every cell is live (the check can fail).
+    assert!(live_area(&Mask) > 9999.0, "{}", live_area(&Mask));
+}
+
+#[test]
+fn low_density_cells_cost_fewer_trials() {
+    let trials = |bounded: bool| {
+        let mut b = common::Buffers::<f64>::new(200);
+        let mut e = Engine::new(Params::circles(1.3, 20.0), square(), b.storage(&mut [])).expect("valid");
+        let density = Sparse { bounded };
+        e.set_density(Some(&density));
+        let mut pool = vec![[0u64; 4]; cells_for(200)];
+        let mut cells = CellSampler::new(&mut pool).expect("cells");
+        let stop = Stop {
+            count: Some(200),
+            ..Stop::default()
+        };
+        e.run_fast(&mut cells, &mut rng_from_seed(4), &stop, |_| {});
+        e.stats().trials
+    };
+    // Expected about 10000 / 1090 = 9.2 trials a placement at first without the bound, and
+    // (9000 / 8 + 1000) / 1090 = 1.9 with it.
+    let (with, without) = (trials(true), trials(false));
+    assert!(2 * with < without, "{with} trials with the bound, {without} without");
 }

@@ -306,6 +306,15 @@ fn large_shapes_keep_clear_on_fixed_point() {
         (ShapeKind::Star { points: 5, inner: 0.45 }, 1.2, 80),
         (ShapeKind::Ring { inner: 0.5 }, 1.25, 150),
         (ShapeKind::Blob { delta: 0.2 }, 1.25, 100),
+        (
+            ShapeKind::Noisy {
+                amplitude: 0.3,
+                features: 6,
+                octaves: 1,
+            },
+            1.25,
+            100,
+        ),
     ];
     let mut checked = 0;
     for (ri, region) in regions.iter().enumerate() {
@@ -320,7 +329,7 @@ fn large_shapes_keep_clear_on_fixed_point() {
             }
         }
     }
-    assert_eq!(checked, 8 * (4 * 150 + 80 + 100));
+    assert_eq!(checked, 8 * (4 * 150 + 80 + 100 + 100));
 }
 
 /// The checker above finds an overlap (along an edge, at a corner, of crossing bars with no

@@ -221,6 +221,11 @@ fn live_cells_hold_every_valid_centre_of_other_shapes() {
         ShapeKind::Square,
         ShapeKind::Star { points: 5, inner: 0.5 },
         ShapeKind::Blob { delta: 0.1 },
+        ShapeKind::Noisy {
+            amplitude: 0.3,
+            features: 4,
+            octaves: 2,
+        },
         ShapeKind::Ring { inner: 0.5 },
     ] {
         let least = Least {

@@ -125,10 +125,10 @@ fn count(what: &str, s: &str, lo: u8, hi: u8) -> Result<u8, String> {
 }
 
 const SHAPES: &str =
-    "circle, square, rect:ASPECT, triangle, polygon:SIDES, star:POINTS:INNER_RATIO, ring:INNER_RATIO, blob:DELTA or mix:SHAPE,SHAPE,...";
+    "circle, square, rect:ASPECT, triangle, polygon:SIDES, star:POINTS:INNER_RATIO, ring:INNER_RATIO, blob:DELTA, noisy:AMPLITUDE[:FEATURES[:OCTAVES]] or mix:SHAPE,SHAPE,...";
 
 /// One shape: `circle | square | rect:ASPECT | triangle | polygon:SIDES |
-/// star:POINTS:INNER_RATIO | ring:INNER_RATIO | blob:DELTA`.
+/// star:POINTS:INNER_RATIO | ring:INNER_RATIO | blob:DELTA | noisy:AMPLITUDE[:FEATURES[:OCTAVES]]`.
 pub fn one_shape(s: &str) -> Result<ShapeKind, String> {
     let mut parts = s.split(':');
     let name = parts.next().unwrap_or("");
@@ -163,14 +163,40 @@ pub fn one_shape(s: &str) -> Result<ShapeKind, String> {
             }
             ShapeKind::Blob { delta }
         }
+        ("noisy", [a, more @ ..]) if more.len() <= 2 => noisy(a, more.first().copied(), more.get(1).copied())?,
         ("rect", _) => return Err("write rect:ASPECT, for example rect:2 (width twice the height)".into()),
         ("polygon", _) => return Err("write polygon:SIDES, for example polygon:6".into()),
         ("star", _) => return Err("write star:POINTS:INNER_RATIO, for example star:5:0.4".into()),
         ("ring", _) => return Err("write ring:INNER_RATIO, for example ring:0.6".into()),
         ("blob", _) => return Err("write blob:DELTA, for example blob:0.15".into()),
+        ("noisy", _) => return Err("write noisy:AMPLITUDE[:FEATURES[:OCTAVES]], for example noisy:0.3:5:2".into()),
         _ => return Err(format!("unknown shape '{s}'; use {SHAPES}")),
     };
     Ok(k)
+}
+
+/// `noisy:AMPLITUDE[:FEATURES[:OCTAVES]]`: the amplitude, and the features (default 5) and
+/// octaves (default 2) of the noise around the outline.
+fn noisy(a: &str, features: Option<&str>, octaves: Option<&str>) -> Result<ShapeKind, String> {
+    const FORM: &str = "noisy:AMPLITUDE:FEATURES:OCTAVES";
+    let amplitude = finite(a).map_err(|e| format!("{FORM}: AMPLITUDE {e}"))?;
+    if !(0.0..=0.9).contains(&amplitude) {
+        return Err(format!(
+            "{FORM}: AMPLITUDE must be from 0 to 0.9 so that the radius stays positive (got {a})"
+        ));
+    }
+    let features = features.map_or(Ok(5), |f| count(&format!("{FORM}: FEATURES"), f, 2, 16))?;
+    let octaves = octaves.map_or(Ok(2), |o| count(&format!("{FORM}: OCTAVES"), o, 1, 4))?;
+    if u32::from(features) << (octaves - 1) > 16 {
+        return Err(format!(
+            "{FORM}: FEATURES x 2^(OCTAVES - 1) must be at most 16, two of the outline's 32 vertices to a cell of the finest octave (got {features} features and {octaves} octaves); give fewer of either"
+        ));
+    }
+    Ok(ShapeKind::Noisy {
+        amplitude,
+        features,
+        octaves,
+    })
 }
 
 /// `--shape`: one shape, or `mix:SHAPE,SHAPE,...` (up to 8).

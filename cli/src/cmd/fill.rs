@@ -1,5 +1,6 @@
 //! `zetafill fill`: the 2D fractal fill.
 
+mod density;
 pub mod region;
 
 use crate::cmd::stopping;
@@ -70,97 +71,6 @@ fn geo_f64<S: zetafill::Scalar>(g: &Geo<S>) -> Geo<f64> {
     }
 }
 
-/// A `--density` as the core sees it.
-enum Field {
-    /// Noise: `0.5 + contrast (noise - 0.5)`, clamped.
-    Noise { noise: zetafill::Noise, contrast: f64 },
-    /// A picture over the region's bounding box `(x0, y0, x1, y1)`.
-    Picture {
-        grey: std::sync::Arc<crate::io::image::Grey>,
-        bbox: (f64, f64, f64, f64),
-        invert: bool,
-        gamma: f64,
-        floor: f64,
-    },
-}
-
-impl zetafill::Density for Field {
-    fn at(&self, x: f64, y: f64) -> f64 {
-        match self {
-            Field::Noise { noise, contrast } => (0.5 + contrast * (noise.at(x, y) - 0.5)).clamp(0.0, 1.0),
-            Field::Picture {
-                grey,
-                bbox,
-                invert,
-                gamma,
-                floor,
-            } => {
-                let l = bilinear(grey, bbox, x, y);
-                let t = if *invert { l } else { 1.0 - l };
-                floor + (1.0 - floor) * t.clamp(0.0, 1.0).powf(*gamma)
-            }
-        }
-    }
-}
-
-/// The picture's luminance at `(x, y)`: the image stretched over `bbox` (its top row at the
-/// top, y up), bilinear between pixel centres, the edge pixels held beyond them.
-fn bilinear(g: &crate::io::image::Grey, bbox: &(f64, f64, f64, f64), x: f64, y: f64) -> f64 {
-    let (x0, y0, x1, y1) = *bbox;
-    let (w, h) = (g.width as f64, g.height as f64);
-    let u = ((x - x0) / (x1 - x0) * w - 0.5).clamp(0.0, w - 1.0);
-    let v = ((y1 - y) / (y1 - y0) * h - 0.5).clamp(0.0, h - 1.0);
-    let (i, j) = (u.floor() as usize, v.floor() as usize);
-    let (fu, fv) = (u - i as f64, v - j as f64);
-    let px = |i: usize, j: usize| {
-        f64::from(
-            g.luma
-                .get(j.min(g.height - 1) * g.width + i.min(g.width - 1))
-                .copied()
-                .unwrap_or(1.0),
-        )
-    };
-    let top = px(i, j) * (1.0 - fu) + px(i + 1, j) * fu;
-    let bottom = px(i, j + 1) * (1.0 - fu) + px(i + 1, j + 1) * fu;
-    top * (1.0 - fv) + bottom * fv
-}
-
-/// The run's `--density` as a field: noise gets the fill's seed, and a period of the region's
-/// size when the fill is periodic; a picture covers the region's bounding box.
-fn field(a: &FillRun, region: &Region<'_>) -> Result<Option<Field>, CliError> {
-    use crate::model::density::DensitySpec;
-    let Some(d) = &a.density else { return Ok(None) };
-    Ok(Some(match *d {
-        DensitySpec::Noise {
-            kind,
-            scale,
-            octaves,
-            gain,
-            contrast,
-        } => {
-            let period = match (&a.region, a.periodic) {
-                (crate::model::region::RegionSpec::Rect { width, height }, true) => Some((*width, *height)),
-                _ => None,
-            };
-            let noise = zetafill::Noise::new(kind, a.seed, scale, octaves, gain, period)
-                .map_err(|e| CliError::arg("--density", format!("{e}: choose a larger SCALE or fewer OCTAVES")))?;
-            Field::Noise { noise, contrast }
-        }
-        DensitySpec::Image { invert, gamma, floor, .. } => {
-            let Some(grey) = a.picture.clone() else {
-                return Err(CliError::Io("internal: the --density picture was not read".into()));
-            };
-            Field::Picture {
-                grey,
-                bbox: region.bbox(),
-                invert,
-                gamma,
-                floor,
-            }
-        }
-    }))
-}
-
 /// Runs the engine on scalar `S` with the CLI's storage, progress bar and known-limit checks
 /// (the region and the smallest shape the scalar computes exactly, the first two shapes).
 fn run_engine<S: zetafill::Scalar>(
@@ -186,7 +96,7 @@ fn run_engine<S: zetafill::Scalar>(
     zetafill::check_largest::<S>(sequence, &params.shape, stop, cap as u64)
         .map_err(|e| too_large_error(e, &params.shape, region.periodic()))?;
     // The density, made before the engine that borrows it.
-    let density = field(a, &region)?;
+    let density = density::field(a, &region)?;
     let mut shapes = vec![Placed::<S>::default(); cap];
     let mut index = vec![0u32; index_words(cap)];
     // Only the paper's sampler asks the coverage bitmap (the cell sampler never does).
@@ -445,12 +355,18 @@ pub fn run(plan: &FillPlan) -> Result<(), CliError> {
     let bytes = render(&doc, plan.format, &plan.draw)?;
     plan.dest.write(&bytes)?;
     let max_trials = plan.run.params.max_trials;
-    if plan.run.density.is_some() {
+    if let Some(d) = &plan.run.density {
         // Where the density is low the candidates are thinned away; where it is zero nothing
         // goes: the dense parts fill up first.
-        return stopping::outcome(halt, SHAPES, |_, _| {
-            "the --density leaves too little room where it is high: lower its CONTRAST or raise its floor (less empty space), raise --n-offset or lower --c (smaller shapes), or ask for fewer shapes"
-        });
+        let advice = match d {
+            crate::model::density::DensitySpec::Noise { .. } => {
+                "the --density leaves too little room where it is high: lower its CONTRAST (less empty space), raise --n-offset or lower --c (smaller shapes), or ask for fewer shapes"
+            }
+            crate::model::density::DensitySpec::Image { .. } => {
+                "the --density leaves too little room where the picture is dark: raise its floor=F (the density of white; less empty space), raise --n-offset or lower --c (smaller shapes), or ask for fewer shapes"
+            }
+        };
+        return stopping::outcome(halt, SHAPES, |_, _| advice);
     }
     stopping::outcome(halt, SHAPES, |index, trials| halt_advice(index, trials < max_trials))
 }

@@ -257,6 +257,11 @@ pub fn shape_name(k: &ShapeKind) -> String {
         ShapeKind::Star { points, inner } => format!("star:{points}:{inner}"),
         ShapeKind::Ring { inner } => format!("ring:{inner}"),
         ShapeKind::Blob { delta } => format!("blob:{delta}"),
+        ShapeKind::Noisy {
+            amplitude,
+            features,
+            octaves,
+        } => format!("noisy:{amplitude}:{features}:{octaves}"),
     }
 }
 
@@ -271,5 +276,6 @@ pub fn kind_name(k: &ShapeKind) -> &'static str {
         ShapeKind::Star { .. } => "star",
         ShapeKind::Ring { .. } => "ring",
         ShapeKind::Blob { .. } => "blob",
+        ShapeKind::Noisy { .. } => "noisy",
     }
 }

@@ -2,7 +2,7 @@
 //! needs at its centre, signed distances to placed shapes, the nearest shapes to a point, and
 //! the step that draws candidates from the sampler's live cells ([`Engine::step_fast`]).
 
-use super::{Engine, NextShape, Placement};
+use super::{Density, Engine, NextShape, Placement, Thinning};
 use crate::geom::{edges, point_in_poly, seg_dist2, Geo, Point};
 use crate::params::{StepError, Stop, StopReason};
 use crate::region::Region;
@@ -54,6 +54,32 @@ impl<S: Scalar> Field<S> for FieldOf<'_, '_, S> {
     fn gather(&self, c: Point<S>, reach: S, near: &mut [u32; NEAR]) {
         self.0.gather(c, reach, near);
     }
+
+    fn density_key(&self) -> usize {
+        self.0
+            .density
+            .map_or(0, |Thinning(d)| (d as *const dyn Density).cast::<()>() as usize)
+    }
+
+    fn class(&self, bbox: [f64; 4], classes: u32) -> Option<u32> {
+        match self.0.density {
+            Some(Thinning(d)) => density_class(d, bbox, classes),
+            None => Some(0),
+        }
+    }
+}
+
+/// The density class of a box (see [`Field::class`]): one copy for every scalar.
+#[inline(never)]
+fn density_class(d: &dyn Density, bbox: [f64; 4], classes: u32) -> Option<u32> {
+    let [x0, y0, x1, y1] = bbox;
+    let b = d.max_over(x0, y0, x1, y1);
+    if b <= 0.0 {
+        return None;
+    }
+    // NaN, or any bound above 1/2, is class 0.
+    let below = [0.5, 0.25, 0.125, 0.0625].iter().take_while(|&&h| b <= h).count() as u32;
+    Some(below.min(classes.saturating_sub(1)))
 }
 
 impl<S: Scalar> Engine<'_, S> {
@@ -86,6 +112,14 @@ impl<S: Scalar> Engine<'_, S> {
                 // whatever the phases. (With a margin for rounding.)
                 let n = crate::shape::BLOB_VERTICES as f64;
                 let twice_area = n * libm::sin(core::f64::consts::TAU / n) * (1.0 + 1.5 * delta * delta) * (1.0 + 1e-6);
+                let min_scale = crate::scalar::sqrtf(2.0 * next.area / twice_area);
+                next.kind.inradius(S::from_f64(min_scale))
+            }
+            ShapeKind::Noisy { amplitude, .. } => {
+                // Every radius is at most 1 + a, so twice a unit outline's area is at most
+                // n sin(2 pi / n) (1 + a)^2 whatever the noise. (With a margin for rounding.)
+                let n = crate::shape::BLOB_VERTICES as f64;
+                let twice_area = n * libm::sin(core::f64::consts::TAU / n) * (1.0 + amplitude) * (1.0 + amplitude) * (1.0 + 1e-6);
                 let min_scale = crate::scalar::sqrtf(2.0 * next.area / twice_area);
                 next.kind.inradius(S::from_f64(min_scale))
             }
@@ -227,12 +261,13 @@ impl<S: Scalar> Engine<'_, S> {
     /// when the shape has no clearance condition.
     pub(super) fn prepare_cells(&self, next: &NextShape<S>, cells: &mut CellSampler<'_, S>) -> Option<S> {
         let clearance = self.clearance_needed(next)?;
-        if !cells.ready() {
+        let field = FieldOf(self);
+        if !cells.ready(field.density_key()) {
             let (x0, y0, _, _) = self.region.bbox();
             let (w, h) = self.period;
-            cells.init(S::from_f64(x0), S::from_f64(y0), w, h, self.region.periodic(), &FieldOf(self));
+            cells.init(S::from_f64(x0), S::from_f64(y0), w, h, self.region.periodic(), &field);
         }
-        cells.wake(clearance, self.len);
+        cells.wake(clearance, self.len, &field);
         cells.begin_step();
         Some(clearance)
     }
@@ -291,6 +326,7 @@ impl<S: Scalar> Engine<'_, S> {
                 cell: drawn,
                 point: p,
                 quarter,
+                class,
             }) = cells.draw(rng)
             else {
                 continue;
@@ -309,8 +345,9 @@ impl<S: Scalar> Engine<'_, S> {
                 cells.note_reject(slot, false);
                 continue;
             }
-            // Thinned by the density: says nothing about the cell.
-            if !self.kept(c, rng) {
+            // Thinned by the density, over the bound its cell was drawn with: says nothing
+            // about the cell.
+            if !self.kept(c, class, rng) {
                 continue;
             }
             let known = if slot == usize::MAX { drawn.near() } else { cells.known(slot) };

@@ -70,7 +70,7 @@ impl<S: Scalar> Engine<'_, S> {
             // A regular shape's smallest enclosing circle is its circumcircle (a blob's is not
             // known, so only its inscribed circle is used).
             Region::Circle { radius } => {
-                let r = if matches!(kind, ShapeKind::Blob { .. }) {
+                let r = if kind.is_blob() {
                     kind.inradius(scale)
                 } else {
                     kind.bounding_radius(scale)
@@ -121,7 +121,7 @@ impl<S: Scalar> Engine<'_, S> {
             return Err(StepError::TooLarge { index });
         }
         let rotated = self.params.rotate && kind.rotates();
-        let is_blob = matches!(kind, ShapeKind::Blob { .. });
+        let is_blob = kind.is_blob();
         // The centre is drawn uniformly over the positions where the shape can lie inside the
         // region's bounding box: for an unrotated shape its exact extents set the range; a
         // rotated one may lie anywhere its inscribed circle fits, and the exact containment

@@ -223,12 +223,31 @@ impl core::fmt::Debug for Thinning<'_> {
 pub trait Density {
     /// `rho` at `(x, y)`, in `[0, 1]` (a value above 1 counts as 1; below 0, or NaN, as 0).
     fn at(&self, x: f64, y: f64) -> f64;
+
+    /// An upper bound of `rho` over the box `[x0, x1] x [y0, y1]` (by default 1, no bound).
+    ///
+    /// The cell sampler draws its cells by area times this bound (rounded up to a power of
+    /// two) and thins by `rho` over it, so that low-density cells cost few trials; where it
+    /// is 0 no candidate is drawn at all. It must never be below `at` anywhere in the box, or
+    /// the cell sampler no longer draws from the density; a loose bound only costs trials.
+    fn max_over(&self, x0: f64, y0: f64, x1: f64, y1: f64) -> f64 {
+        let _ = (x0, y0, x1, y1);
+        1.0
+    }
 }
 
 impl Density for crate::Noise {
     fn at(&self, x: f64, y: f64) -> f64 {
         crate::Noise::at(self, x, y)
     }
+}
+
+/// Whether a candidate at `(x, y)` drawn where the density is at most `2^-class` is kept, for
+/// the unit value `u`: with probability `rho 2^class` (exact: a power of two scales without
+/// rounding). One copy for every scalar.
+#[inline(never)]
+fn kept_at(d: &dyn Density, x: f64, y: f64, class: u32, u: f64) -> bool {
+    u < d.at(x, y) * f64::from(1u32 << class.min(31))
 }
 
 /// Index words needed for `capacity` shapes: one link each plus `2 * capacity` buckets (the
@@ -360,11 +379,11 @@ impl<'a, S: Scalar> Engine<'a, S> {
     }
 
     /// Whether a candidate centre survives the density's thinning (always, without one; the
-    /// unit value is drawn only with one).
-    fn kept<R: RngCore + ?Sized>(&self, c: Point<S>, rng: &mut R) -> bool {
+    /// unit value is drawn only with one). The candidate was drawn where the density is at
+    /// most `2^-class`, with a weight to match, so it is kept with probability `rho 2^class`.
+    fn kept<R: RngCore + ?Sized>(&self, c: Point<S>, class: u32, rng: &mut R) -> bool {
         let Some(Thinning(d)) = self.density else { return true };
-        let u: f64 = rng::unit(rng);
-        u < d.at(c.x.to_f64(), c.y.to_f64())
+        kept_at(d, c.x.to_f64(), c.y.to_f64(), class, rng::unit(rng))
     }
 
     /// The parameters.
@@ -451,7 +470,7 @@ impl<'a, S: Scalar> Engine<'a, S> {
             let uy: S = rng::unit(rng);
             let (x0, x1, y0, y1) = next.range;
             let c = self.region.wrap(Point::new(x0 + ux * (x1 - x0), y0 + uy * (y1 - y0)));
-            if self.coverage.covered(c.x, c.y) || !self.kept(c, rng) {
+            if self.coverage.covered(c.x, c.y) || !self.kept(c, 0, rng) {
                 continue;
             }
             if let Ok(p) = self.try_at(next, c, angle, trials, None) {

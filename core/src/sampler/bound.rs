@@ -2,7 +2,7 @@
 //! and the bound on the clearance anywhere in a cell from the outside of the region and the
 //! shapes the cell knows (see the module docs of [`crate::CellSampler`] for why it is a bound).
 
-use super::{ceil_u32, far_corner, Cell, CellSampler, Field, LevelGeom, CELL_LEVELS, GRID0, NEAR, NONE};
+use super::{ceil_u32, far_corner, Cell, CellSampler, Field, LevelGeom, CELL_LEVELS, CLASSES, GRID0, NEAR, NONE, RUNS};
 use crate::geom::Point;
 use crate::scalar::Scalar;
 
@@ -70,7 +70,9 @@ impl<S: Scalar> CellSampler<'_, S> {
 
     /// Lays out the level-0 grid over the box `(x0, y0, w, h)` (the period of a torus when
     /// `wraps`), bounding each cell by its distance to the outside of the region, and drops
-    /// the cells outside the region.
+    /// the cells outside the region (and, with a density, those where it is 0). Called again
+    /// when the density changes, it starts the cells afresh: their bounds from the region
+    /// alone are true bounds whatever was placed, and they learn the shapes again.
     pub(crate) fn init(&mut self, x0: S, y0: S, w: S, h: S, wraps: bool, f: &impl Field<S>) {
         let (wf, hf) = (w.to_f64(), h.to_f64());
         let side = wf.max(hf) / f64::from(GRID0);
@@ -97,10 +99,18 @@ impl<S: Scalar> CellSampler<'_, S> {
             cw = cw.half();
             ch = ch.half();
         }
-        self.starts = [0; CELL_LEVELS + 1];
+        self.starts = [0; RUNS + 1];
         self.asleep = 0;
         self.waiting = 0;
         self.weight = 0;
+        self.floor = S::from_f64(f64::MAX);
+        self.flush();
+        self.batch_weight = 0;
+        self.key = f.density_key();
+        self.classes = if self.key == 0 { 1 } else { CLASSES };
+        let g0 = self.lg(0);
+        self.grid_f64 = [x0.to_f64(), y0.to_f64(), g0.w.to_f64(), g0.h.to_f64(), self.slack.to_f64()];
+        (self.lo, self.hi) = (self.runs() as u32, 0);
         for iy in 0..ny {
             for ix in 0..nx {
                 let mut c = Cell {
@@ -110,7 +120,7 @@ impl<S: Scalar> CellSampler<'_, S> {
                 };
                 c.u = Self::bound(f, &c.near, self.centre(&c), &self.lg(0));
                 if self.upper(&c) > S::ZERO {
-                    self.insert_live(c);
+                    self.make_live(c, f);
                 } else {
                     self.stats.dropped += 1;
                 }

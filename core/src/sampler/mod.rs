@@ -114,6 +114,13 @@ pub const CELL_LEVELS: usize = 24;
 /// How many placed shapes a cell keeps track of.
 pub const NEAR: usize = 4;
 
+/// Density classes: with a density, a cell of class `j` has `rho <= 2^-j` all over it (the
+/// last class holds every cell whose bound is at most `2^-(CLASSES - 1)`).
+pub const CLASSES: u32 = 4;
+
+/// Runs of live cells: one per level and density class.
+const RUNS: usize = CELL_LEVELS * CLASSES as usize;
+
 /// At most this many level-0 cells along a side.
 const GRID0: u32 = 16;
 
@@ -194,6 +201,18 @@ pub(crate) trait Field<S: Scalar> {
     fn gather(&self, c: Point<S>, reach: S, near: &mut [u32; NEAR]) {
         let _ = (c, reach, near);
     }
+    /// What identifies the density candidates are thinned by (0: none). Cells are laid out
+    /// again when it changes, since their classes belong to it.
+    fn density_key(&self) -> usize {
+        0
+    }
+    /// The density class of the box `[x0, y0, x1, y1]`, among `classes`: the largest `j`
+    /// below `classes` such that the density is at most `2^-j` all over the box, or None when
+    /// it is 0 all over it (no candidate can be kept there). By default class 0.
+    fn class(&self, bbox: [f64; 4], classes: u32) -> Option<u32> {
+        let _ = (bbox, classes);
+        Some(0)
+    }
 }
 
 #[derive(Clone, Copy, Debug, Default)]
@@ -261,9 +280,19 @@ pub struct CellStats {
 #[derive(Debug)]
 pub struct CellSampler<'c, S> {
     pool: &'c mut [CellWords],
-    /// Level `k`'s live cells are `pool[starts[k]..starts[k + 1]]`; `starts[CELL_LEVELS]` is
-    /// the number of live cells.
-    starts: [u32; CELL_LEVELS + 1],
+    /// Run `r`'s live cells (level `r / classes`, density class `r % classes`) are
+    /// `pool[starts[r]..starts[r + 1]]`; `starts[CELL_LEVELS * classes]` is the number of live
+    /// cells.
+    starts: [u32; RUNS + 1],
+    /// Density classes in use: 1 without a density, [`CLASSES`] with one.
+    classes: u32,
+    /// Every run that holds live cells is in `lo..=hi` (none when `lo > hi`).
+    lo: u32,
+    hi: u32,
+    /// The [`Field::density_key`] the cells were laid out for.
+    key: usize,
+    /// The grid in f64 for the density's bounds: origin, level-0 cell sides, the slack.
+    grid_f64: [f64; 5],
     /// Cells `pool[..main]` hold the live cells (from the start) and the deep sleepers (from
     /// the end); `pool[main..]` holds the waiting heap.
     main: usize,
@@ -283,9 +312,9 @@ pub struct CellSampler<'c, S> {
     origin: Point<S>,
     geom: [LevelGeom<S>; CELL_LEVELS],
     slack: S,
-    /// Cells drawn ahead within the current step (slot and copy as drawn); see
+    /// Cells drawn ahead within the current step (slot, copy as drawn and density class); see
     /// [`CellSampler::draw`].
-    ahead: [(usize, Cell<S>); AHEAD],
+    ahead: [(usize, Cell<S>, u32); AHEAD],
     ahead_len: usize,
     ahead_pos: usize,
     /// The total weight the current batch was drawn from (0: no batch in this step yet).
@@ -337,7 +366,12 @@ impl<'c, S: Scalar> CellSampler<'c, S> {
         Ok(CellSampler {
             main: pool.len() - (pool.len() / 8),
             pool,
-            starts: [0; CELL_LEVELS + 1],
+            starts: [0; RUNS + 1],
+            classes: 1,
+            lo: RUNS as u32,
+            hi: 0,
+            key: 0,
+            grid_f64: [0.0; 5],
             asleep: 0,
             floor: S::from_f64(f64::MAX),
             placed: 0,
@@ -346,7 +380,7 @@ impl<'c, S: Scalar> CellSampler<'c, S> {
             origin: Point::new(S::ZERO, S::ZERO),
             geom: [LevelGeom::default(); CELL_LEVELS],
             slack: S::ZERO,
-            ahead: [(usize::MAX, Cell::default()); AHEAD],
+            ahead: [(usize::MAX, Cell::default(), 0); AHEAD],
             ahead_len: 0,
             ahead_pos: 0,
             batch_weight: 0,
@@ -378,7 +412,12 @@ impl<'c, S: Scalar> CellSampler<'c, S> {
     /// The total area of the live cells.
     pub fn live_area(&self) -> f64 {
         let g = self.lg(CELL_LEVELS as u32 - 1);
-        self.weight as f64 * (g.w * g.h).to_f64()
+        let k = self.classes as usize;
+        let cells = (0..self.runs()).fold(0u64, |sum, r| {
+            let count = (self.start(r + 1) - self.start(r)) as u64;
+            sum + (count << Self::shift(r / k))
+        });
+        cells as f64 * (g.w * g.h).to_f64()
     }
 
     /// The counters so far, for benchmarks and tests
@@ -390,14 +429,14 @@ impl<'c, S: Scalar> CellSampler<'c, S> {
         s
     }
 
-    /// Whether the grid has been laid out.
-    pub(crate) fn ready(&self) -> bool {
-        self.ready
+    /// Whether the grid has been laid out, for the density `key` ([`Field::density_key`]).
+    pub(crate) fn ready(&self, key: usize) -> bool {
+        self.ready && self.key == key
     }
 
     #[inline]
     fn live(&self) -> usize {
-        self.start(CELL_LEVELS)
+        self.start(self.runs())
     }
 
     /// Whether no live cell is left.

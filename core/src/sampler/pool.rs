@@ -1,9 +1,9 @@
-//! Where the cells live in the caller's slice: the live cells at its start, grouped by level
-//! (so a cell is drawn by its level's weight without a search); the deep sleepers at the end
-//! of its first seven eighths; the waiting max-heap in the last eighth. Moving a cell never
-//! loses one: a cell with nowhere to go stays live, which is always exact.
+//! Where the cells live in the caller's slice: the live cells at its start, grouped in runs by
+//! level and density class (so a cell is drawn by its run's weight without a search); the deep
+//! sleepers at the end of its first seven eighths; the waiting max-heap in the last eighth.
+//! Moving a cell never loses one: a cell with nowhere to go stays live, which is always exact.
 
-use super::{Cell, CellSampler, CELLS_BASE, CELL_LEVELS, FLOOR, WAITING_PER_SHAPE};
+use super::{Cell, CellSampler, Field, CELLS_BASE, CELL_LEVELS, FLOOR, WAITING_PER_SHAPE};
 use crate::scalar::Scalar;
 
 impl<S: Scalar> CellSampler<'_, S> {
@@ -12,18 +12,63 @@ impl<S: Scalar> CellSampler<'_, S> {
         self.starts.get(k).map_or(0, |&v| v as usize)
     }
 
-    #[inline]
-    pub(super) fn bump(&mut self, k: usize, up: bool) {
-        if let Some(v) = self.starts.get_mut(k) {
-            *v = if up { v.saturating_add(1) } else { v.saturating_sub(1) };
-        }
-    }
-
     /// A cell of level `level` weighs `4^(CELL_LEVELS - 1 - level)`: its area in cells of the
     /// finest level.
     #[inline]
     pub(super) fn shift(level: usize) -> u32 {
         2 * (CELL_LEVELS - 1 - level) as u32
+    }
+
+    /// The runs of live cells in use: one per level, times the density classes.
+    #[inline]
+    pub(super) fn runs(&self) -> usize {
+        CELL_LEVELS * self.classes as usize
+    }
+
+    /// The run of the cells of `level` and density `class`.
+    #[inline]
+    pub(super) fn run(&self, level: u32, class: u32) -> usize {
+        level as usize * self.classes as usize + class as usize
+    }
+
+    /// A cell of run `r` weighs its area in cells of the finest level times its density bound
+    /// `2^-class`, in units of the lowest bound: `4^(CELL_LEVELS - 1 - level) 2^(classes - 1 -
+    /// class)`.
+    #[inline]
+    pub(super) fn run_shift(&self, r: usize) -> u32 {
+        let k = self.classes as usize;
+        Self::shift(r / k) + (k - 1 - r % k) as u32
+    }
+
+    /// The run that holds the live cell at `slot` (the runs are contiguous, in order).
+    pub(super) fn run_of(&self, slot: usize) -> usize {
+        let (mut lo, mut hi) = (0, self.runs());
+        // The last run whose start is at or before `slot` (empty runs start where the next
+        // one does).
+        while lo + 1 < hi {
+            let mid = (lo + hi) / 2;
+            if self.start(mid) <= slot {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        lo
+    }
+
+    /// The density class of run `r`.
+    #[inline]
+    pub(super) fn class_of_run(&self, r: usize) -> u32 {
+        (r % self.classes as usize) as u32
+    }
+
+    /// The density class of `c` (see [`Field::class`]); None when no centre can be kept
+    /// anywhere in it. Always class 0 without a density.
+    pub(super) fn class_of(&self, f: &impl Field<S>, c: &Cell<S>) -> Option<u32> {
+        if self.classes == 1 {
+            return Some(0);
+        }
+        f.class(cell_box(self.grid_f64, c.level(), c.ix(), c.iy()), self.classes)
     }
 
     /// The cell at `i`.
@@ -54,53 +99,71 @@ impl<S: Scalar> CellSampler<'_, S> {
         self.stats.peak = self.stats.peak.max(self.live() + self.asleep + self.waiting);
     }
 
-    /// Adds a live cell at the end of its level's run, moving one cell of each finer level.
-    /// Returns its slot (cells of its level keep their slots while others of that level are
-    /// added).
-    pub(super) fn insert_live(&mut self, c: Cell<S>) -> usize {
-        let k = c.level() as usize;
-        if self.live() + self.asleep >= self.main || k >= CELL_LEVELS {
+    /// Adds a live cell of density class `class` at the end of its run, moving one cell of
+    /// each later run. Returns its slot (cells of its run keep their slots while others of
+    /// that run are added).
+    pub(super) fn insert_live(&mut self, c: Cell<S>, class: u32) -> usize {
+        let runs = self.runs();
+        let k = self.run(c.level(), class);
+        if self.live() + self.asleep >= self.main || k >= runs {
             return usize::MAX;
         }
-        let mut hole = self.start(CELL_LEVELS);
-        for j in (k + 1..CELL_LEVELS).rev() {
+        // Runs after the last one in use are empty: nothing of theirs moves.
+        let mut hole = self.start(runs);
+        for j in (k + 1..=self.hi as usize).rev() {
             let first = self.start(j);
             if first != hole {
                 self.copy(first, hole);
             }
             hole = first;
-            self.bump(j, true);
+        }
+        for v in self.starts.iter_mut().take(runs + 1).skip(k + 1) {
+            *v = v.wrapping_add(1);
         }
         self.put(hole, c);
-        self.bump(CELL_LEVELS, true);
-        self.weight += 1u64 << Self::shift(k);
+        self.lo = self.lo.min(k as u32);
+        self.hi = self.hi.max(k as u32);
+        self.weight += 1u64 << self.run_shift(k);
         self.stats.finest_level = self.stats.finest_level.max(c.level());
         self.note_peak();
         hole
     }
 
-    /// Removes the live cell at `slot` (of level `k`), filling the gap from the end of its
-    /// level's run and moving one cell of each finer level back.
-    pub(super) fn remove_live(&mut self, slot: usize, k: usize) {
+    /// Removes the live cell at `slot`, filling the gap from the end of its run and moving
+    /// one cell of each later run back. Returns the cell's density class.
+    pub(super) fn remove_live(&mut self, slot: usize) -> u32 {
+        let (k, runs) = (self.run_of(slot), self.runs());
         let mut hole = slot;
-        for j in k..CELL_LEVELS {
+        for j in k..=(self.hi as usize).max(k) {
             let last = self.start(j + 1).saturating_sub(1);
             if last != hole {
                 self.copy(last, hole);
             }
             hole = last;
-            if j + 1 < CELL_LEVELS {
-                self.bump(j + 1, false);
+        }
+        for v in self.starts.iter_mut().take(runs + 1).skip(k + 1) {
+            *v = v.wrapping_sub(1);
+        }
+        self.weight -= 1u64 << self.run_shift(k);
+        // Narrow the runs in use past the ones left empty.
+        if self.live() == 0 {
+            (self.lo, self.hi) = (runs as u32, 0);
+        } else {
+            while self.lo < self.hi && self.start(self.lo as usize) == self.start(self.lo as usize + 1) {
+                self.lo += 1;
+            }
+            while self.hi > self.lo && self.start(self.hi as usize) == self.start(self.hi as usize + 1) {
+                self.hi -= 1;
             }
         }
-        self.bump(CELL_LEVELS, false);
-        self.weight -= 1u64 << Self::shift(k);
+        self.class_of_run(k)
     }
 
-    /// Retires a cell too tight for the current clearance: dropped when it lies inside shape
-    /// material, a deep sleeper when its bound is below the floor, otherwise waiting. (With
-    /// no room left it stays live: never exact to drop a cell that could hold a shape.)
-    pub(super) fn retire(&mut self, c: Cell<S>) {
+    /// Retires a cell (of density class `class`) too tight for the current clearance: dropped
+    /// when it lies inside shape material, a deep sleeper when its bound is below the floor,
+    /// otherwise waiting. (With no room left it stays live: never exact to drop a cell that
+    /// could hold a shape.)
+    pub(super) fn retire(&mut self, c: Cell<S>, class: u32) {
         let u = self.upper(&c);
         if u <= S::ZERO {
             self.stats.dropped += 1;
@@ -111,7 +174,7 @@ impl<S: Scalar> CellSampler<'_, S> {
             self.asleep += 1;
             self.note_peak();
         } else if !self.push_waiting(c) {
-            self.insert_live(c);
+            self.insert_live(c, class);
         }
     }
 
@@ -178,8 +241,8 @@ impl<S: Scalar> CellSampler<'_, S> {
     /// Makes every cell that could hold a shape needing `clearance` live. When `clearance` is below the
     /// floor, one pass over the deep sleepers lowers the floor to a fraction of `clearance` and
     /// moves every cell at or above it out (live, or waiting); then waiting cells whose bound
-    /// reaches `clearance` wake.
-    pub(crate) fn wake(&mut self, clearance: S, placed: usize) {
+    /// reaches `clearance` wake. A cell that wakes gets its density class again from `f`.
+    pub(crate) fn wake(&mut self, clearance: S, placed: usize, f: &impl Field<S>) {
         self.placed = placed;
         if clearance < self.floor {
             self.floor = clearance * S::from_f64(FLOOR);
@@ -193,7 +256,7 @@ impl<S: Scalar> CellSampler<'_, S> {
                     self.copy(self.main - self.asleep, self.main - 1 - i);
                     self.asleep -= 1;
                     if self.upper(&c) >= clearance || !self.push_waiting(c) {
-                        self.insert_live(c);
+                        self.make_live(c, f);
                     }
                 } else {
                     i += 1;
@@ -202,11 +265,19 @@ impl<S: Scalar> CellSampler<'_, S> {
         }
         while self.waiting > 0 && self.waiting_key(0) >= clearance {
             match self.pop_waiting() {
-                Some(c) => {
-                    self.insert_live(c);
-                }
+                Some(c) => self.make_live(c, f),
                 None => break,
             }
+        }
+    }
+
+    /// Makes `c` live in its density class, or drops it where no centre can be kept.
+    pub(super) fn make_live(&mut self, c: Cell<S>, f: &impl Field<S>) {
+        match self.class_of(f, &c) {
+            Some(class) => {
+                self.insert_live(c, class);
+            }
+            None => self.stats.dropped += 1,
         }
     }
 
@@ -215,4 +286,17 @@ impl<S: Scalar> CellSampler<'_, S> {
         self.ahead_len = 0;
         self.ahead_pos = 0;
     }
+}
+
+/// The box `[x0, y0, x1, y1]` of the cell of `level` at `(ix, iy)` in a grid `[x0, y0, w, h,
+/// pad]` (origin, level-0 cell sides, a widening), in f64: one copy for every scalar, widened
+/// by `pad` over the few units of rounding between the grid in f64 and in the scalar's own
+/// arithmetic. (A level's sides are the first's halved, exactly in f64.)
+#[inline(never)]
+fn cell_box(grid: [f64; 5], level: u32, ix: u32, iy: u32) -> [f64; 4] {
+    let [x0, y0, w, h, pad] = grid;
+    let scale = 1.0 / f64::from(1u32 << level.min(31));
+    let (w, h) = (w * scale, h * scale);
+    let (x, y) = (x0 + f64::from(ix) * w - pad, y0 + f64::from(iy) * h - pad);
+    [x, y, x + w + 2.0 * pad, y + h + 2.0 * pad]
 }

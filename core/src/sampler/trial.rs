@@ -15,6 +15,9 @@ pub(crate) struct Drawn<S> {
     pub(crate) cell: Cell<S>,
     pub(crate) point: Point<S>,
     pub(crate) quarter: (bool, bool),
+    /// The cell's density class `j`: it was drawn with weight its area times `2^-j`, and the
+    /// density is at most `2^-j` all over it.
+    pub(crate) class: u32,
 }
 
 /// What a trial learns from the cell it drew.
@@ -48,8 +51,11 @@ impl<S: Scalar> CellSampler<'_, S> {
             inv += self.ahead_pos as f64 / self.batch_weight as f64;
         }
         let g = self.lg(0);
-        // A weight unit is a cell of the finest level: a 4^23th of a level-0 cell.
-        let unit = g.w.to_f64() * g.h.to_f64() / (1u64 << Self::shift(0)) as f64;
+        // A weight unit is a cell of the finest level (a 4^23th of a level-0 cell) times the
+        // lowest density bound: the sum of `|R| / W` over the trials, `W` the live cells'
+        // area weighted by their density bounds, has expectation `|R|` over the integral of
+        // the density over the valid centres, the paper's expected trials with thinning.
+        let unit = g.w.to_f64() * g.h.to_f64() / (1u64 << (Self::shift(0) + self.classes - 1)) as f64;
         let est = if unit > 0.0 { range * inv / unit } else { 0.0 };
         self.last_paper = est;
         self.paper += est;
@@ -65,21 +71,22 @@ impl<S: Scalar> CellSampler<'_, S> {
         self.paper += self.last_paper;
     }
 
-    /// The live cell that weight `r` (below the total weight) falls in.
-    pub(super) fn slot_of(&self, mut r: u64) -> Option<usize> {
-        for k in 0..CELL_LEVELS {
+    /// The live cell that weight `r` (below the total weight) falls in, and its density class.
+    pub(super) fn slot_of(&self, mut r: u64) -> Option<(usize, u32)> {
+        for k in self.lo as usize..=self.hi as usize {
             let count = (self.start(k + 1) - self.start(k)) as u64;
-            let w = count << Self::shift(k);
+            let shift = self.run_shift(k);
+            let w = count << shift;
             if r < w {
-                return Some(self.start(k) + (r >> Self::shift(k)) as usize);
+                return Some((self.start(k) + (r >> shift) as usize, self.class_of_run(k)));
             }
             r -= w;
         }
         None
     }
 
-    /// Draws a live cell with probability proportional to its area (exactly: integer weights
-    /// and an unbiased bounded draw) and a uniform point in it.
+    /// Draws a live cell with probability proportional to its area times its density bound
+    /// (exactly: integer weights and an unbiased bounded draw) and a uniform point in it.
     ///
     /// Cells are drawn [`AHEAD`] at a time, at the first trial and whenever the batch is used
     /// up, and handed out in order. Within a step the live cells only shrink (cells are
@@ -100,7 +107,7 @@ impl<S: Scalar> CellSampler<'_, S> {
             }
             // Lemire's method: a uniform integer below `total` without bias.
             let threshold = total.wrapping_neg() % total;
-            let mut slots = [0usize; AHEAD];
+            let mut slots = [(0usize, 0u32); AHEAD];
             for slot in slots.iter_mut() {
                 let r = loop {
                     let m = u128::from(rng.next_u64()) * u128::from(total);
@@ -111,12 +118,12 @@ impl<S: Scalar> CellSampler<'_, S> {
                 *slot = self.slot_of(r)?;
             }
             // The loads in a loop of their own, so that they are in flight together.
-            for (entry, &slot) in self.ahead.iter_mut().zip(slots.iter()) {
-                *entry = (slot, self.pool.get(slot).map(Cell::load)?);
+            for (entry, &(slot, class)) in self.ahead.iter_mut().zip(slots.iter()) {
+                *entry = (slot, self.pool.get(slot).map(Cell::load)?, class);
             }
             self.ahead_len = AHEAD;
         }
-        let (slot, c) = self.ahead.get(self.ahead_pos).copied()?;
+        let (slot, c, class) = self.ahead.get(self.ahead_pos).copied()?;
         self.ahead_pos += 1;
         let g = self.lg(c.level());
         let ux: S = crate::rng::unit(rng);
@@ -131,6 +138,7 @@ impl<S: Scalar> CellSampler<'_, S> {
             cell: c,
             point: p,
             quarter: (ux >= half, uy >= half),
+            class,
         })
     }
 
@@ -149,8 +157,8 @@ impl<S: Scalar> CellSampler<'_, S> {
         let g = self.lg(level);
         if self.upper(&c) < clearance {
             self.stats.cell_rejects += 1;
-            self.remove_live(slot, level as usize);
-            self.retire(c);
+            let class = self.remove_live(slot);
+            self.retire(c, class);
             return Verdict::Reject;
         }
         let big = g.half_diag > clearance * S::from_f64(SPLIT);
@@ -166,8 +174,19 @@ impl<S: Scalar> CellSampler<'_, S> {
             self.stats.refused_splits += 1;
             return Verdict::Test(slot);
         }
+        self.split(slot, c, quarter, clearance, f)
+    }
+
+    /// Splits the live cell `c` at `slot` into its children (see [`CellSampler::judge`]), and
+    /// says whether the drawn point (in quarter `quarter`) can still be valid, and in which
+    /// live cell it lies. Kept out of line: splits are rare beside trials, and the trial loop
+    /// stays small.
+    #[inline(never)]
+    fn split(&mut self, slot: usize, c: Cell<S>, quarter: (bool, bool), clearance: S, f: &impl Field<S>) -> Verdict {
+        let level = c.level();
+        let g = self.lg(level);
         self.stats.splits += 1;
-        self.remove_live(slot, level as usize);
+        let class = self.remove_live(slot);
         let cg = self.lg(level + 1);
         // A stubborn cell keeps missing: the shapes it learned from its trials do not close
         // it. It looks its neighbours up in the index, and its children are bounded quarter
@@ -196,10 +215,15 @@ impl<S: Scalar> CellSampler<'_, S> {
                 Self::bound(f, &child.near, centre, &cg)
             };
             child.u = b.min(c.u);
+            // The parent's density bound holds over the child too.
+            let Some(child_class) = self.class_of(f, &child).map(|k| k.max(class)) else {
+                self.stats.dropped += 1;
+                continue;
+            };
             if self.upper(&child) < clearance {
-                self.retire(child);
+                self.retire(child, child_class);
             } else {
-                let at = self.insert_live(child);
+                let at = self.insert_live(child, child_class);
                 if (qx, qy) == quarter {
                     verdict = Verdict::Test(at);
                 }
@@ -258,8 +282,8 @@ impl<S: Scalar> CellSampler<'_, S> {
         c.u = c.u.min(f.box_dist(j, centre, g.w.half(), g.h.half()).unwrap_or(dj + g.half_diag));
         self.put(slot, c);
         if self.upper(&c) < clearance {
-            self.remove_live(slot, c.level() as usize);
-            self.retire(c);
+            let class = self.remove_live(slot);
+            self.retire(c, class);
         }
     }
 

@@ -13,8 +13,11 @@
 //! are never approximated: circles and rings are tested as true circles; a blob *is* its
 //! polygon of [`BLOB_VERTICES`] vertices (tested and drawn alike).
 
+mod blob;
+
 use crate::geom::{Geo, Point, Verts, MAX_VERTS};
 use crate::scalar::Scalar;
+use blob::{blob_unit, noisy_unit};
 
 /// Vertices of a blob's polygon.
 pub const BLOB_VERTICES: usize = 32;
@@ -92,6 +95,18 @@ pub enum ShapeKind {
     Blob {
         /// δ in [0, 1/3): r(θ) stays positive for every phase.
         delta: f64,
+    },
+    /// A blob whose radius follows periodic 1D noise: r(θ) = R (1 + a (2 g(θ) - 1)), with g
+    /// Perlin gradient noise in [0, 1] that goes round the outline `features` times (its
+    /// first octave) and is drawn anew at every trial.
+    Noisy {
+        /// a in [0, 0.9]: the radius stays within R (1 ± a).
+        amplitude: f64,
+        /// Lattice cells of the first octave around the outline, 2..=16.
+        features: u8,
+        /// Octaves, 1..=4, with `features << (octaves - 1)` at most 16 (two vertices a cell
+        /// of the finest octave).
+        octaves: u8,
     },
 }
 
@@ -279,6 +294,18 @@ impl ShapeKind {
             ShapeKind::Star { points, inner } => (2..=(MAX_VERTS / 2) as u8).contains(&points) && unit_open(inner),
             ShapeKind::Ring { inner } => unit_open(inner),
             ShapeKind::Blob { delta } => delta.is_finite() && (0.0..1.0 / 3.0).contains(&delta),
+            ShapeKind::Noisy {
+                amplitude,
+                features,
+                octaves,
+            } => {
+                cfg!(feature = "noisy-blob")
+                    && amplitude.is_finite()
+                    && (0.0..=0.9).contains(&amplitude)
+                    && (2..=16).contains(&features)
+                    && (1..=4).contains(&octaves)
+                    && u32::from(features) << (octaves - 1) <= 16
+            }
             ShapeKind::Circle | ShapeKind::Square | ShapeKind::Triangle => true,
         }
     }
@@ -290,7 +317,13 @@ impl ShapeKind {
 
     /// Whether the shape's polygon is convex.
     pub fn convex(&self) -> bool {
-        !matches!(self, ShapeKind::Star { .. } | ShapeKind::Blob { .. })
+        !matches!(self, ShapeKind::Star { .. } | ShapeKind::Blob { .. } | ShapeKind::Noisy { .. })
+    }
+
+    /// Whether the outline is drawn anew at every trial from its angle (a blob or a noisy
+    /// blob): its size is then known only through bounds before the trial.
+    pub fn is_blob(&self) -> bool {
+        matches!(self, ShapeKind::Blob { .. } | ShapeKind::Noisy { .. })
     }
 
     fn aspect(&self) -> f64 {
@@ -317,12 +350,8 @@ impl ShapeKind {
             ShapeKind::Circle => PI,
             ShapeKind::Ring { inner } => PI * (1.0 - inner * inner),
             ShapeKind::Square | ShapeKind::Rect { .. } => 4.0 * self.aspect(),
-            ShapeKind::Triangle | ShapeKind::Polygon { .. } | ShapeKind::Blob { .. } => {
-                let n = if let ShapeKind::Blob { .. } = self {
-                    BLOB_VERTICES
-                } else {
-                    self.sides()
-                } as f64;
+            ShapeKind::Triangle | ShapeKind::Polygon { .. } | ShapeKind::Blob { .. } | ShapeKind::Noisy { .. } => {
+                let n = if self.is_blob() { BLOB_VERTICES } else { self.sides() } as f64;
                 0.5 * n * libm::sin(2.0 * PI / n)
             }
             ShapeKind::Star { points, inner } => f64::from(points) * inner * libm::sin(PI / f64::from(points)),
@@ -343,8 +372,8 @@ impl ShapeKind {
     /// on the angle, through their phases).
     pub fn scale_for<S: Scalar>(&self, area: f64, angle: S) -> S {
         match *self {
-            ShapeKind::Blob { delta } => {
-                let (_, a2) = blob_unit(delta, angle);
+            ShapeKind::Blob { .. } | ShapeKind::Noisy { .. } => {
+                let (_, a2) = self.blob_outline(angle);
                 S::from_f64(crate::scalar::sqrtf(2.0 * area / a2.to_f64()))
             }
             _ => S::from_f64(self.scale_for_area(area)),
@@ -361,6 +390,7 @@ impl ShapeKind {
                 (hw * hw + scale * scale).sqrt()
             }
             ShapeKind::Blob { delta } => scale * S::from_f64(1.0 + 3.0 * delta),
+            ShapeKind::Noisy { amplitude, .. } => scale * S::from_f64(1.0 + amplitude),
             _ => scale,
         };
         let [rel, abs] = S::OUTLINE_SLACK;
@@ -388,6 +418,9 @@ impl ShapeKind {
                 (by / len).min(inner) * 0.999_999
             }
             ShapeKind::Blob { delta } => (1.0 - 3.0 * delta) * libm::cos(PI / BLOB_VERTICES as f64) * 0.999_999,
+            // Every vertex lies at least (1 - a) from the centre, and an edge spans 2 pi / n,
+            // so every point of an edge lies at least (1 - a) cos(pi / n) from it.
+            ShapeKind::Noisy { amplitude, .. } => (1.0 - amplitude) * libm::cos(PI / BLOB_VERTICES as f64) * 0.999_999,
         };
         scale * S::from_f64(f)
     }
@@ -423,6 +456,20 @@ impl ShapeKind {
         }
     }
 
+    /// A blob's or a noisy blob's outline at scale 1 about the origin for `angle`, and twice
+    /// its area (a point for other kinds).
+    fn blob_outline<S: Scalar>(&self, angle: S) -> ([Point<S>; BLOB_VERTICES], S) {
+        match *self {
+            ShapeKind::Noisy {
+                amplitude,
+                features,
+                octaves,
+            } => noisy_unit(amplitude, features, octaves, angle),
+            ShapeKind::Blob { delta } => blob_unit(delta, angle),
+            _ => ([Point::default(); BLOB_VERTICES], S::ZERO),
+        }
+    }
+
     /// The concrete shape at a place.
     pub fn geo<S: Scalar>(&self, c: Point<S>, scale: S, angle: S) -> Geo<S> {
         let mut g = Geo::Circle { c, r: scale };
@@ -435,8 +482,8 @@ impl ShapeKind {
     /// zeroed or copied, which is what most exact tests would spend.
     pub fn geo_into<S: Scalar>(&self, out: &mut Geo<S>, c: Point<S>, scale: S, angle: S) {
         match *self {
-            ShapeKind::Blob { delta } => {
-                let (u, _) = blob_unit(delta, angle);
+            ShapeKind::Blob { .. } | ShapeKind::Noisy { .. } => {
+                let (u, _) = self.blob_outline(angle);
                 set_poly(out, false, |v| {
                     for p in u.iter() {
                         // Cannot fail: BLOB_VERTICES <= MAX_VERTS (checked at compile time).
@@ -503,7 +550,7 @@ impl ShapeKind {
                     }
                 });
             }
-            ShapeKind::Blob { .. } => self.geo_into(out, c, scale, S::ZERO),
+            ShapeKind::Blob { .. } | ShapeKind::Noisy { .. } => self.geo_into(out, c, scale, S::ZERO),
         }
     }
 }
@@ -520,41 +567,6 @@ fn set_poly<S: Scalar>(out: &mut Geo<S>, convex: bool, fill: impl FnOnce(&mut Ve
         *oc = convex;
         fill(v);
     }
-}
-
-/// The blob of eq. 9 at scale 1 about the origin for `angle` (which selects the phases), and
-/// twice its area.
-fn blob_unit<S: Scalar>(delta: f64, angle: S) -> ([Point<S>; BLOB_VERTICES], S) {
-    let tau = S::from_f64(core::f64::consts::TAU);
-    let d = S::from_f64(delta);
-    let key = angle.digest_bits();
-    // Phases φ_2..φ_4 from the angle's bits (angle is uniform per trial, so the phases are new
-    // random values at every trial), and e^{i(jθ_k + φ_j)} advanced by e^{ijΔ} per vertex.
-    let mut z = [Point::default(); 4];
-    let mut step = [Point::default(); 4];
-    let dtheta = tau / S::from_f64(BLOB_VERTICES as f64);
-    for (j, (zj, sj)) in z.iter_mut().zip(step.iter_mut()).enumerate() {
-        let phase = if j == 0 {
-            S::ZERO
-        } else {
-            S::unit(mix64(key ^ (j as u64).wrapping_mul(0xA076_1D64_78BD_642F))) * tau
-        };
-        let (s, c) = phase.sin_cos();
-        *zj = Point::new(c, s);
-        let (s, c) = (dtheta * S::from_f64((j + 1) as f64)).sin_cos();
-        *sj = Point::new(c, s);
-    }
-    let mut out = [Point::default(); BLOB_VERTICES];
-    for o in out.iter_mut() {
-        let (z1, z2, z3, z4) = (z[0], z[1], z[2], z[3]);
-        let r = S::ONE + d * (z2.x + z3.x + z4.x);
-        *o = Point::new(z1.x * r, z1.y * r);
-        for (zj, sj) in z.iter_mut().zip(step.iter()) {
-            *zj = rot(*zj, sj.y, sj.x);
-        }
-    }
-    let a2 = crate::geom::edges(&out).fold(S::ZERO, |s, (a, b)| s + a.cross(b));
-    (out, a2)
 }
 
 #[cfg(test)]

@@ -102,6 +102,9 @@ pub fn kind() -> impl Strategy<Value = ShapeKind> {
         2 => unit_open().prop_map(|inner| ShapeKind::Ring { inner }),
         2 => prop_oneof![3 => 0.0f64..(1.0 / 3.0), 1 => select(vec![0.0, 1e-9, 0.3, 1.0 / 3.0 - 1e-9])]
             .prop_map(|delta| ShapeKind::Blob { delta }),
+        1 => (prop_oneof![3 => 0.0f64..=0.9, 1 => select(vec![0.0, 0.9])], 2u8..=8, 1u8..=2).prop_map(|(amplitude, features, octaves)| {
+            ShapeKind::Noisy { amplitude, features, octaves }
+        }),
     ]
 }
 

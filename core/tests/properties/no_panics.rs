@@ -89,6 +89,11 @@ fn any_shape() -> impl Strategy<Value = ShapeKind> {
         1 => (prop_oneof![any::<u8>(), 2u8..25], any_f64(0.0..1.0)).prop_map(|(points, inner)| ShapeKind::Star { points, inner }),
         1 => any_f64(0.0..1.0).prop_map(|inner| ShapeKind::Ring { inner }),
         1 => any_f64(0.0..0.34).prop_map(|delta| ShapeKind::Blob { delta }),
+        1 => (any_f64(0.0..1.0), any::<u8>(), any::<u8>()).prop_map(|(amplitude, features, octaves)| ShapeKind::Noisy {
+            amplitude,
+            features,
+            octaves
+        }),
     ]
 }
 

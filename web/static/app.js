@@ -123,8 +123,9 @@ function promote(run) {
   page.argv = run.argv;
   $('command').textContent = commandText(['fill', ...run.argv]);
   finalImg.hidden = true;
+  canvas.hidden = false;
   canvas.getContext('2d').clearRect(0, 0, canvas.width, canvas.height);
-  shown = { frame: null, periodic: run.periodic };
+  shown = { frame: null, periodic: run.periodic, outline: run.v.style === 'outline' };
   page.state = 'running';
   page.digest = null;
   page.halt = null;
@@ -165,6 +166,8 @@ function onWorker(run, m) {
     finalImg.onload = () => URL.revokeObjectURL(url);
     finalImg.src = url;
     finalImg.hidden = false;
+    // The picture may be outlines on a clear background: the drawing beneath would show.
+    canvas.hidden = true;
     page.digest = m.digest;
     page.halt = m.halt;
     page.placed = Number(m.digest.split(' ')[0]);
@@ -222,7 +225,13 @@ function draw(shapes) {
     }
     k += kind === 0 ? 4 : kind === 1 ? 5 : 2 + 2 * shapes[k + 1];
   }
-  g.fill(path, 'evenodd');
+  if (shown.outline) {
+    g.lineWidth = 1 / s;
+    g.strokeStyle = '#264653';
+    g.stroke(path);
+  } else {
+    g.fill(path, 'evenodd');
+  }
   g.restore();
 }
 

@@ -106,7 +106,9 @@ if (process.env.DOTSTER) {
       const zs = window.zetaScaled;
       zs.resetClick();
       const t0 = performance.now();
-      while (zs.diskCount < count && zs.doOneDisk() !== undefined) {
+      // At most two minutes.
+      while (zs.diskCount < count && performance.now() - t0 < 120_000) {
+        zs.doOneDisk();
         if (zs.state === 'Exhausted' || zs.state === 'Jammed') break;
       }
       return { placed: zs.diskCount, ms: performance.now() - t0, s: zs.s };

@@ -172,7 +172,7 @@ function onWorker(run, m) {
     page.halt = m.halt;
     page.placed = Number(m.digest.split(' ')[0]);
     page.ms = m.ms;
-    $('state').textContent = `done in ${(m.ms / 1000).toFixed(2)} s`;
+    $('state').textContent = `done in ${(m.ms / 1000).toFixed(2)} s · digest ${m.digest.split(' ')[1]}`;
     if (m.halt) {
       message.textContent = m.halt;
       message.hidden = false;

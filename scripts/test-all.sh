@@ -2,8 +2,9 @@
 # Runs every zetafill test on a fresh machine, installing what it needs first.
 #   bash scripts/test-all.sh
 # Steps: the Cortex-M3 Rust target, qemu-system-arm, defmt-print and the glTF validator (npm); the core built and linted
-# for it (no_std, no alloc, no panicking constructs); the API docs; the firmware run under QEMU; every host
-# test of the workspace in release mode (including host-vs-firmware parity).
+# for it (no_std, no alloc, no panicking constructs); the API docs; the firmware run under QEMU; the browser page
+# built (web/build.sh) and driven in headless Chromium against the CLI's files; every host test of the workspace in
+# release mode (including host-vs-firmware parity).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -63,6 +64,19 @@ step "firmware: the 3D scenes, a second image (2D and 3D together overflow the f
 if cargo clippy --version >/dev/null 2>&1; then
     (cd firmware-sim && env -u CARGO_TARGET_DIR cargo clippy --release -- -D warnings)
 fi
+
+step "the browser page: Chromium (apt), the wasm32 target and wasm-bindgen-cli (web/build.sh), playwright-core (npm)"
+if ! command -v chromium >/dev/null 2>&1; then
+    sudo=""
+    if [ "$(id -u)" -ne 0 ]; then sudo="sudo"; fi
+    $sudo apt-get update
+    $sudo apt-get install -y chromium
+fi
+# Warnings denied in the WebAssembly build (the workspace lints above cover the same code on
+# the host; a separate clippy run for wasm32 would add two minutes).
+RUSTFLAGS="-D warnings" bash web/build.sh
+cargo build --release -p zetafill-cli
+(cd web && npm ci --no-audit --no-fund && npm test)
 
 step "host tests (release)"
 cargo test --workspace --release

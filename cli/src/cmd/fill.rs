@@ -80,6 +80,7 @@ fn run_engine<S: zetafill::Scalar>(
     sequence: &AreaSequence,
     stop: &Stop,
     cap: usize,
+    watch: &mut dyn FnMut(&zetafill::Placement<f64>),
 ) -> Result<EngineRun, CliError> {
     if let Region::Polygon(p) = &region {
         if !S::IS_F64 && p.points().len() > FIXED_MAX_VERTICES {
@@ -117,6 +118,17 @@ fn run_engine<S: zetafill::Scalar>(
         if let Some(b) = &bar {
             b.inc(1);
         }
+        watch(&zetafill::Placement {
+            index: p.index,
+            shape: Placed {
+                x: p.shape.x.to_f64(),
+                y: p.shape.y.to_f64(),
+                scale: p.shape.scale.to_f64(),
+                angle: p.shape.angle.to_f64(),
+            },
+            area: p.area,
+            trials: p.trials,
+        });
     };
     let reason = if a.reference_sampler {
         engine.run(&mut rng, stop, on_place)
@@ -163,6 +175,12 @@ fn run_engine<S: zetafill::Scalar>(
 /// Runs the fill and returns the document (and the halt, if any, after at least one
 /// placement: a first shape that finds no place is a usage error). Nothing is written.
 pub fn compute(a: &FillRun) -> Result<(FillDoc, Option<StepError>), CliError> {
+    compute_watched(a, &mut |_| {})
+}
+
+/// [`compute`], handing each placement to `watch` as it is made (in f64 whatever the
+/// scalar), for a caller that draws the fill as it grows (the browser page).
+pub fn compute_watched(a: &FillRun, watch: &mut dyn FnMut(&zetafill::Placement<f64>)) -> Result<(FillDoc, Option<StepError>), CliError> {
     let data = RegionData::load(&a.region)?;
     let mut scratch = Vec::new();
     let region = data.region(a.periodic, &mut scratch)?;
@@ -172,9 +190,9 @@ pub fn compute(a: &FillRun) -> Result<(FillDoc, Option<StepError>), CliError> {
     stopping::check_min_size(&stop, zetafill::first_shape(&sequence, &params.shape).width, SHAPES)?;
     let cap = stopping::slots(zetafill::shape_capacity(&sequence, &params.shape, &stop, SHAPES.max), SHAPES)? as usize;
     let run = if a.fixed_point {
-        run_engine::<zetafill::Fixed>(a, params, region, &sequence, &stop, cap)?
+        run_engine::<zetafill::Fixed>(a, params, region, &sequence, &stop, cap, watch)?
     } else {
-        run_engine::<f64>(a, params, region, &sequence, &stop, cap)?
+        run_engine::<f64>(a, params, region, &sequence, &stop, cap, watch)?
     };
     let EngineRun {
         shapes: shapes_doc,
@@ -354,8 +372,14 @@ pub fn run(plan: &FillPlan) -> Result<(), CliError> {
     let (doc, halt) = compute(&plan.run)?;
     let bytes = render(&doc, plan.format, &plan.draw)?;
     plan.dest.write(&bytes)?;
-    let max_trials = plan.run.params.max_trials;
-    if let Some(d) = &plan.run.density {
+    outcome(&plan.run, halt)
+}
+
+/// The outcome of a run whose output was made: a halt becomes [`CliError::Halted`] with the
+/// advice that fits the run.
+pub fn outcome(run: &FillRun, halt: Option<StepError>) -> Result<(), CliError> {
+    let max_trials = run.params.max_trials;
+    if let Some(d) = &run.density {
         // Where the density is low the candidates are thinned away; where it is zero nothing
         // goes: the dense parts fill up first.
         let advice = match d {

@@ -58,7 +58,13 @@ pub enum OutlineError {
 
 /// Rings of the outline: vertices, ring after ring, and the exclusive end of each ring.
 pub fn read_outline(path: &Path) -> Result<(Vec<Point<f64>>, Vec<usize>), OutlineError> {
-    let mut data = crate::io::read::read_limited(path, crate::io::read::MAX_SVG_BYTES, "an SVG outline").map_err(OutlineError::Read)?;
+    let data = crate::io::read::read_limited(path, crate::io::read::MAX_SVG_BYTES, "an SVG outline").map_err(OutlineError::Read)?;
+    outline_of(data)
+}
+
+/// Rings of the outline of the bytes of an SVG file, as [`read_outline`] reads them (for a
+/// caller that has the file's bytes but no file system, such as the browser page).
+pub fn outline_of(mut data: Vec<u8>) -> Result<(Vec<Point<f64>>, Vec<usize>), OutlineError> {
     if data.starts_with(&[0x1f, 0x8b]) {
         data = gunzip(&data)?;
     }

@@ -118,6 +118,8 @@ enum Target {
     File(PathBuf),
     /// A character device or a named pipe: written straight into, since nothing can be
     /// renamed over it without destroying it (and atomicity means nothing there).
+    // Only Unix tells these apart (the browser build has no file system at all).
+    #[cfg_attr(not(unix), allow(dead_code))]
     Stream,
     /// A folder, a socket, a block device: never written.
     Other,

@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# Builds the browser page into web/dist/, installing what it needs first:
+#   bash web/build.sh
+# The wasm32-unknown-unknown Rust target (rustup) and wasm-bindgen-cli (cargo, from crates.io) at
+# exactly the version of the wasm-bindgen crate in Cargo.lock. Serve the result with any static
+# file server, for example: python3 -m http.server -d web/dist 8000
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+rustup target add wasm32-unknown-unknown
+
+# The bindings generator must match the wasm-bindgen crate exactly.
+version=$(awk '/^name = "wasm-bindgen"$/ { getline; gsub(/version = |"/, ""); print; exit }' Cargo.lock)
+if [ "$(wasm-bindgen --version 2>/dev/null || true)" != "wasm-bindgen $version" ]; then
+    # --locked first; the registry may lack one of the versions its lock file names, and then
+    # the newest compatible versions are taken.
+    cargo install wasm-bindgen-cli --version "=$version" --locked ||
+        cargo install wasm-bindgen-cli --version "=$version"
+fi
+
+# No debug information in the page (the release profile keeps some for native profiling).
+CARGO_PROFILE_RELEASE_DEBUG=0 \
+    cargo build --release -p zetafill-web --target wasm32-unknown-unknown
+target_dir=$(cargo metadata --format-version 1 --no-deps | sed -n 's/.*"target_directory":"\([^"]*\)".*/\1/p')
+
+rm -rf web/dist
+mkdir -p web/dist
+wasm-bindgen --target web --no-typescript --out-dir web/dist \
+    "$target_dir/wasm32-unknown-unknown/release/zetafill_web.wasm"
+cp web/static/* web/dist/
+echo "built web/dist/ ($(du -sh web/dist | cut -f1)); serve it with: python3 -m http.server -d web/dist 8000"

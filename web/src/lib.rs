@@ -1,0 +1,229 @@
+//! zetafill in the browser: the `fill` command's own code path (clap's parse of the command
+//! line, the plan, the run, the writers) compiled to WebAssembly, so that every file the page
+//! offers is the file `zetafill fill` writes for the command the page shows.
+//!
+//! The page builds a command line from its controls and hands it over word by word; this
+//! crate parses it exactly as the binary does, runs the fill while reporting each batch of
+//! placed shapes for drawing, and renders the finished document in any format the command
+//! line asks for. Only the file system is missing: an SVG outline (`--region svg:FILE`) comes
+//! as the file's bytes, and an output is returned instead of written. Nothing here decides a
+//! produced value; the core computes the same bits on every target.
+
+#![deny(missing_docs)]
+
+use clap::Parser;
+use wasm_bindgen::prelude::*;
+use zetafill::{Geo, Placement, Point};
+use zetafill_cli::args::fill::FillArgs;
+use zetafill_cli::args::{Cli, Command};
+use zetafill_cli::cmd::fill::region::RegionData;
+use zetafill_cli::cmd::fill::{compute_watched, outcome, render};
+use zetafill_cli::error::CliError;
+use zetafill_cli::model::doc::FillDoc;
+use zetafill_cli::model::region::RegionSpec;
+use zetafill_cli::plan::fill::{resolve_as, FillDraw, FillRun};
+use zetafill_cli::plan::format::Format;
+
+/// An error as the command line prints it.
+fn said(e: CliError) -> String {
+    format!("error: {e}")
+}
+
+/// A command line clap refuses, as the binary prints it (usage and all).
+fn refused(e: clap::Error) -> String {
+    e.to_string().trim_end().to_string()
+}
+
+/// `zetafill fill ARGS` parsed as the binary parses it, an SVG outline taken from `outline`
+/// (the bytes of the file the command names), and its format.
+fn parse(argv: &[String], outline: Option<&[u8]>) -> Result<(FillArgs, Format), String> {
+    let words = ["zetafill", "fill"].into_iter().map(String::from).chain(argv.iter().cloned());
+    let mut a = match Cli::try_parse_from(words) {
+        Ok(Cli { command: Command::Fill(a) }) => a,
+        Ok(_) => return Err("error: not a fill command".into()),
+        Err(e) => return Err(refused(e)),
+    };
+    if let RegionSpec::Svg(path) = &a.region {
+        let Some(bytes) = outline else {
+            return Err(format!(
+                "error: --region: no outline file chosen for '{}'; choose an SVG file",
+                path.display()
+            ));
+        };
+        let (points, ends) =
+            zetafill_cli::io::svgin::outline_of(bytes.to_vec()).map_err(|e| said(zetafill_cli::plan::region::outline_error(path, e)))?;
+        // What the binary does with the file's outline once read (`RegionData::load`).
+        a.region = RegionSpec::Polygon { points, ends };
+    }
+    let format = Format::resolve(a.output.format, &a.output.output).map_err(said)?;
+    Ok((a, format))
+}
+
+/// The run and the drawing of a command line.
+fn plan(argv: &[String], outline: Option<&[u8]>) -> Result<(FillRun, FillDraw, Format), String> {
+    let (a, format) = parse(argv, outline)?;
+    let (run, draw) = resolve_as(&a, format).map_err(said)?;
+    Ok((run, draw, format))
+}
+
+/// The region's frame for drawing: its bounding box `[x0, y0, x1, y1]` in mm, and its area.
+fn frame(run: &FillRun) -> Result<[f64; 5], String> {
+    let data = RegionData::load(&run.region).map_err(said)?;
+    let mut scratch = Vec::new();
+    let region = data.region(run.periodic, &mut scratch).map_err(said)?;
+    let (x0, y0, x1, y1) = region.bbox();
+    Ok([x0, y0, x1, y1, region.area()])
+}
+
+/// Appends a shape's outline for the page's canvas: `0 x y r` (a disc), `1 x y r inner` (a
+/// ring), `2 n x1 y1 ... xn yn` (a polygon).
+fn encode(out: &mut Vec<f64>, geo: &Geo<f64>) {
+    match geo {
+        Geo::Circle { c, r } => out.extend_from_slice(&[0.0, c.x, c.y, *r]),
+        Geo::Ring { c, r, inner } => out.extend_from_slice(&[1.0, c.x, c.y, *r, *inner]),
+        Geo::Poly { v, .. } => {
+            out.extend_from_slice(&[2.0, v.len() as f64]);
+            for p in v {
+                out.extend_from_slice(&[p.x, p.y]);
+            }
+        }
+    }
+}
+
+/// Milliseconds between two reports of progress.
+const REPORT_MS: f64 = 40.0;
+
+/// One fill of the page: the command line that sets it, and once run, its document.
+#[wasm_bindgen]
+pub struct Session {
+    argv: Vec<String>,
+    outline: Option<Vec<u8>>,
+    run: FillRun,
+    frame: [f64; 5],
+    doc: Option<FillDoc>,
+    halt: Option<String>,
+}
+
+#[wasm_bindgen]
+impl Session {
+    /// Checks `zetafill fill ARGV` (without the program and subcommand names) as the binary
+    /// does; `outline` holds the bytes of the SVG file of `--region svg:FILE`, if any. The
+    /// error is the binary's message.
+    #[wasm_bindgen(constructor)]
+    pub fn new(argv: Vec<String>, outline: Option<Vec<u8>>) -> Result<Session, String> {
+        let (run, _, _) = plan(&argv, outline.as_deref())?;
+        let frame = frame(&run)?;
+        Ok(Session {
+            argv,
+            outline,
+            run,
+            frame,
+            doc: None,
+            halt: None,
+        })
+    }
+
+    /// The region's bounding box and area: `[x0, y0, x1, y1, area]` (mm, y up).
+    pub fn frame(&self) -> Vec<f64> {
+        self.frame.to_vec()
+    }
+
+    /// Runs the fill, calling `progress(shapes, [placed, trials, area])` every few tens of
+    /// milliseconds with the shapes placed since the last call (see `encode`) and the totals so
+    /// far. A first shape that finds no place is an error; a later halt is kept as
+    /// [`Session::halt`], the shapes placed before it intact.
+    pub fn run(&mut self, progress: &js_sys::Function) -> Result<(), String> {
+        let shapes = self.run.params.shape.clone();
+        let mut batch = Vec::new();
+        let (mut placed, mut trials, mut area) = (0u64, 0u64, 0.0f64);
+        let mut last = js_sys::Date::now();
+        let report = |batch: &mut Vec<f64>, totals: [f64; 3]| {
+            let shapes = js_sys::Float64Array::from(batch.as_slice());
+            let totals = js_sys::Float64Array::from(totals.as_slice());
+            let _ = progress.call2(&JsValue::NULL, &shapes, &totals);
+            batch.clear();
+        };
+        let mut watch = |p: &Placement<f64>| {
+            placed += 1;
+            trials += p.trials;
+            area += p.area;
+            let s = p.shape;
+            encode(&mut batch, &shapes.kind_of(p.index).geo(Point::new(s.x, s.y), s.scale, s.angle));
+            // The clock is read every 16 placements: reading it costs more than a small shape.
+            if placed == 1 || placed % 16 == 0 {
+                let now = js_sys::Date::now();
+                if placed == 1 || now - last >= REPORT_MS {
+                    last = now;
+                    report(&mut batch, [placed as f64, trials as f64, area]);
+                }
+            }
+        };
+        let (doc, halt) = compute_watched(&self.run, &mut watch).map_err(said)?;
+        report(&mut batch, [placed as f64, trials as f64, area]);
+        self.halt = outcome(&self.run, halt).err().map(said);
+        self.doc = Some(doc);
+        Ok(())
+    }
+
+    /// The halt of the finished run, as the binary reports it (exit code 3), if it halted.
+    pub fn halt(&self) -> Option<String> {
+        self.halt.clone()
+    }
+
+    /// The bytes `zetafill fill ARGV` writes, for a command line that runs the same fill as
+    /// this session's (it may differ in its output flags: `-o`, `--format`, `--machine`,
+    /// page and pen flags). The error is the binary's message.
+    pub fn export(&self, argv: Vec<String>) -> Result<Vec<u8>, String> {
+        let doc = self.doc.as_ref().ok_or("error: the fill has not run yet")?;
+        let (run, draw, format) = plan(&argv, self.outline.as_deref())?;
+        if format!("{run:?}") != format!("{:?}", self.run) {
+            return Err(format!(
+                "error: '{}' runs another fill than '{}'",
+                argv.join(" "),
+                self.argv.join(" ")
+            ));
+        }
+        render(doc, format, &draw).map_err(said)
+    }
+}
+
+/// The names of the built-in machine profiles (`zetafill machines list`), for `--machine`.
+#[wasm_bindgen]
+pub fn machines() -> Vec<String> {
+    zetafill_cli::output::machine::Machine::builtin_names()
+        .into_iter()
+        .map(String::from)
+        .collect()
+}
+
+/// The bytes `zetafill ARGV` writes for the commands that have a page of their own but no
+/// progress (`line`, `territory`, `tile`; ARGV starts with the subcommand). A `line` that
+/// halts gives the file the binary writes before it exits with code 3. The error is the
+/// binary's message.
+#[wasm_bindgen]
+pub fn output(argv: Vec<String>) -> Result<Vec<u8>, String> {
+    use zetafill_cli::plan::format::{TerritoryFormat, TileFormat};
+    use zetafill_cli::{cmd, plan};
+    let words = std::iter::once("zetafill".to_string()).chain(argv);
+    let command = Cli::try_parse_from(words).map_err(refused)?.command;
+    let bytes = match command {
+        Command::Line(a) => {
+            let format = Format::resolve(a.output.format, &a.output.output).map_err(said)?;
+            let (run, draw) = plan::line::resolve_as(&a, format).map_err(said)?;
+            let (doc, _) = cmd::line::compute(&run).map_err(said)?;
+            cmd::line::render(&doc, format, &draw)
+        }
+        Command::Territory(a) => {
+            let format = TerritoryFormat::resolve(a.output.format, &a.output.output).map_err(said)?;
+            let (run, draw) = plan::territory::resolve_as(&a, format).map_err(said)?;
+            cmd::territory::output(&run, &draw, format)
+        }
+        Command::Tile(a) => {
+            let format = TileFormat::resolve(a.output.format, &a.output.output).map_err(said)?;
+            let (run, draw) = plan::tile::resolve_as(&a, format).map_err(said)?;
+            cmd::tile::output(&run, &draw, format).map(|(_, bytes)| bytes)
+        }
+        _ => return Err("error: the page runs line, territory and tile here (fill has its own session)".into()),
+    };
+    bytes.map_err(said)
+}

@@ -1,0 +1,67 @@
+// Runs one fill off the page's thread: the page starts a worker per command line and ends it
+// when the command changes. Messages to the page: `progress` (shapes placed since the last one,
+// and the totals), `done` (the finished picture as SVG, the digest, any halt), `error` (the
+// command line's own message), and `bytes` (an export asked for). For the other commands'
+// tabs, `output` carries the one file asked for.
+import init, { Session, output } from './zetafill_web.js';
+
+let session = null;
+
+function fail(e) {
+  postMessage({ type: 'error', message: String(e) });
+}
+
+async function run({ module, argv, digestArgv, outline }) {
+  await init({ module_or_path: module });
+  try {
+    session = new Session(argv, outline ?? undefined);
+  } catch (e) {
+    return fail(e);
+  }
+  const frame = session.frame();
+  const t0 = performance.now();
+  try {
+    session.run((shapes, totals) => {
+      postMessage({ type: 'progress', frame, shapes, totals, ms: performance.now() - t0 }, [shapes.buffer]);
+    });
+  } catch (e) {
+    return fail(e);
+  }
+  const ms = performance.now() - t0;
+  let svg, digest;
+  try {
+    svg = session.export(argv);
+    digest = new TextDecoder().decode(session.export(digestArgv)).trim();
+  } catch (e) {
+    return fail(e);
+  }
+  postMessage({ type: 'done', ms, svg, digest, halt: session.halt() ?? null }, [svg.buffer]);
+}
+
+// One file of `zetafill line`, `territory` or `tile`.
+async function once({ module, argv }) {
+  await init({ module_or_path: module });
+  const t0 = performance.now();
+  try {
+    const bytes = output(argv);
+    postMessage({ type: 'output', bytes, ms: performance.now() - t0 }, [bytes.buffer]);
+  } catch (e) {
+    fail(e);
+  }
+}
+
+onmessage = (ev) => {
+  const m = ev.data;
+  if (m.type === 'output') {
+    once(m).catch(fail);
+  } else if (m.type === 'run') {
+    run(m).catch(fail);
+  } else if (m.type === 'export') {
+    try {
+      const bytes = session.export(m.argv);
+      postMessage({ type: 'bytes', id: m.id, bytes }, [bytes.buffer]);
+    } catch (e) {
+      postMessage({ type: 'bytes', id: m.id, error: String(e) });
+    }
+  }
+};

@@ -37,6 +37,9 @@ impl<S: Scalar> CellSampler<'_, S> {
     #[inline]
     pub(super) fn run_shift(&self, r: usize) -> u32 {
         let k = self.classes as usize;
+        if k == 1 {
+            return Self::shift(r);
+        }
         Self::shift(r / k) + (k - 1 - r % k) as u32
     }
 
@@ -117,8 +120,8 @@ impl<S: Scalar> CellSampler<'_, S> {
             }
             hole = first;
         }
-        for v in self.starts.iter_mut().take(runs + 1).skip(k + 1) {
-            *v = v.wrapping_add(1);
+        if let Some(later) = self.starts.get_mut(k + 1..=runs) {
+            later.iter_mut().for_each(|v| *v = v.wrapping_add(1));
         }
         self.put(hole, c);
         self.lo = self.lo.min(k as u32);
@@ -129,10 +132,12 @@ impl<S: Scalar> CellSampler<'_, S> {
         hole
     }
 
-    /// Removes the live cell at `slot`, filling the gap from the end of its run and moving
-    /// one cell of each later run back. Returns the cell's density class.
-    pub(super) fn remove_live(&mut self, slot: usize) -> u32 {
-        let (k, runs) = (self.run_of(slot), self.runs());
+    /// Removes the live cell (of `level`) at `slot`, filling the gap from the end of its run
+    /// and moving one cell of each later run back. Returns the cell's density class.
+    pub(super) fn remove_live(&mut self, slot: usize, level: u32) -> u32 {
+        // Without a density a level is a run: no search.
+        let k = if self.classes == 1 { level as usize } else { self.run_of(slot) };
+        let runs = self.runs();
         let mut hole = slot;
         for j in k..=(self.hi as usize).max(k) {
             let last = self.start(j + 1).saturating_sub(1);
@@ -141,14 +146,15 @@ impl<S: Scalar> CellSampler<'_, S> {
             }
             hole = last;
         }
-        for v in self.starts.iter_mut().take(runs + 1).skip(k + 1) {
-            *v = v.wrapping_sub(1);
+        if let Some(later) = self.starts.get_mut(k + 1..=runs) {
+            later.iter_mut().for_each(|v| *v = v.wrapping_sub(1));
         }
         self.weight -= 1u64 << self.run_shift(k);
-        // Narrow the runs in use past the ones left empty.
-        if self.live() == 0 {
+        // Narrow the runs in use past the ones left empty (only this one can have emptied).
+        let emptied = self.start(k) == self.start(k + 1);
+        if emptied && self.live() == 0 {
             (self.lo, self.hi) = (runs as u32, 0);
-        } else {
+        } else if emptied {
             while self.lo < self.hi && self.start(self.lo as usize) == self.start(self.lo as usize + 1) {
                 self.lo += 1;
             }

@@ -73,14 +73,21 @@ impl<S: Scalar> CellSampler<'_, S> {
 
     /// The live cell that weight `r` (below the total weight) falls in, and its density class.
     pub(super) fn slot_of(&self, mut r: u64) -> Option<(usize, u32)> {
+        // The run's level and class kept as counters: no division per run.
+        let classes = self.classes;
+        let (mut level, mut class) = (self.lo / classes, self.lo % classes);
         for k in self.lo as usize..=self.hi as usize {
             let count = (self.start(k + 1) - self.start(k)) as u64;
-            let shift = self.run_shift(k);
+            let shift = Self::shift(level as usize) + (classes - 1 - class);
             let w = count << shift;
             if r < w {
-                return Some((self.start(k) + (r >> shift) as usize, self.class_of_run(k)));
+                return Some((self.start(k) + (r >> shift) as usize, class));
             }
             r -= w;
+            class += 1;
+            if class == classes {
+                (level, class) = (level + 1, 0);
+            }
         }
         None
     }
@@ -157,7 +164,7 @@ impl<S: Scalar> CellSampler<'_, S> {
         let g = self.lg(level);
         if self.upper(&c) < clearance {
             self.stats.cell_rejects += 1;
-            let class = self.remove_live(slot);
+            let class = self.remove_live(slot, level);
             self.retire(c, class);
             return Verdict::Reject;
         }
@@ -186,7 +193,7 @@ impl<S: Scalar> CellSampler<'_, S> {
         let level = c.level();
         let g = self.lg(level);
         self.stats.splits += 1;
-        let class = self.remove_live(slot);
+        let class = self.remove_live(slot, level);
         let cg = self.lg(level + 1);
         // A stubborn cell keeps missing: the shapes it learned from its trials do not close
         // it. It looks its neighbours up in the index, and its children are bounded quarter
@@ -282,7 +289,7 @@ impl<S: Scalar> CellSampler<'_, S> {
         c.u = c.u.min(f.box_dist(j, centre, g.w.half(), g.h.half()).unwrap_or(dj + g.half_diag));
         self.put(slot, c);
         if self.upper(&c) < clearance {
-            let class = self.remove_live(slot);
+            let class = self.remove_live(slot, c.level());
             self.retire(c, class);
         }
     }

@@ -3,7 +3,7 @@
 
 mod common;
 
-use common::{tmp, zf, zf_json};
+use common::{png_picture, tmp, zf, zf_json};
 use serde_json::Value;
 use zetafill::{Noise, NoiseKind};
 
@@ -156,22 +156,6 @@ fn a_density_that_empties_the_region_halts_with_advice() {
     assert_eq!(o.code, 3, "{}", o.stderr);
     assert!(o.stderr.contains("CONTRAST"), "{}", o.stderr);
     assert!(d.join("h.json").exists());
-}
-
-/// A `w x h` greyscale PNG, black where `dark(x, y)` (pixel centres, y down) and white
-/// elsewhere.
-fn png_picture(path: &std::path::Path, w: u32, h: u32, dark: impl Fn(u32, u32) -> bool) {
-    let data: Vec<u8> = (0..h)
-        .flat_map(|y| (0..w).map(move |x| (x, y)))
-        .map(|(x, y)| if dark(x, y) { 0 } else { 255 })
-        .collect();
-    let file = std::fs::File::create(path).unwrap_or_else(|e| panic!("{e}"));
-    let mut enc = png::Encoder::new(file, w, h);
-    enc.set_color(png::ColorType::Grayscale);
-    enc.set_depth(png::BitDepth::Eight);
-    enc.write_header()
-        .and_then(|mut wr| wr.write_image_data(&data))
-        .unwrap_or_else(|e| panic!("{e}"));
 }
 
 /// The same picture as a JPEG (quality 95).

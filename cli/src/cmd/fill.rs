@@ -310,6 +310,7 @@ pub fn compute(a: &FillRun) -> Result<(FillDoc, Option<StepError>), CliError> {
                 cells: a.names.cells,
                 density: a.names.density.clone(),
                 density_sha256: a.names.density_sha256.clone(),
+                source: a.names.source.clone(),
             },
             gap: params.gap,
             count: stop.count,

@@ -434,6 +434,10 @@ fn bad_masks_fonts_and_texts_exit_2_naming_their_flag() {
         ),
         (vec!["--region", "text:a", "--text-size", "0", "-o", "out.json"], "--text-size"),
         (vec!["--region", dot.as_str(), "--periodic", "-o", "out.json"], "--periodic"),
+        (
+            vec!["--region", "text:zetafill zetafill", "--text-size", "200000", "-o", "out.json"],
+            "--text-size",
+        ),
     ];
     // The pictures and fonts live in keep/; the run's folder holds only out.json.
     let run_dir = tmp();

@@ -7,6 +7,11 @@
 //! Douglas–Peucker bound, measured to the edge that replaced it). When the given rings are
 //! simple and meet nowhere, so are the rings returned: a ring is left simplified only if none
 //! of its edges touches another edge.
+//!
+//! What is not checked: which side of a ring another ring lies on. A ring swept whole from one
+//! side of a simplified edge to the other would have to lie within the tolerance of that
+//! edge, so be thinner than twice the tolerance (a pixel, for a mask); the region is then still
+//! valid, with that sliver on the other side of the even-odd rule.
 
 use super::trace::Rings;
 use zetafill::Point;

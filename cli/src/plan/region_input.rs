@@ -11,7 +11,7 @@ use crate::args::fill::RegionInputArgs;
 use crate::error::CliError;
 use crate::geometry::{simplify, trace};
 use crate::io::font::{FontError, Setting};
-use crate::io::svgin::{MAX_RINGS, MAX_VERTICES};
+use crate::io::svgin::{MAX_COORDINATE_MM, MAX_RINGS, MAX_VERTICES};
 use crate::model::region::{polygon_region, RegionSource, RegionSpec};
 use crate::output::machine::printable;
 use std::path::Path;
@@ -145,6 +145,7 @@ fn mask(path: &Path, threshold: f64, a: &RegionInputArgs, spec: &RegionSpec) -> 
         )));
     }
     let points = to_region(&rings.points, grey.width, grey.height, width);
+    within_reach(&points, "--region-width", "a smaller --region-width")?;
     let source = RegionSource {
         region: spec.input_name().unwrap_or_default(),
         region_width: Some(width),
@@ -163,6 +164,23 @@ pub fn to_region(points: &[Point<f64>], width_px: usize, height_px: usize, width
     let s = width / width_px as f64;
     let h = height_px as f64;
     points.iter().map(|p| Point::new(p.x * s, (h - p.y) * s)).collect()
+}
+
+/// Refuses a region reaching farther from the origin than any region may (as an SVG outline),
+/// naming `flag` and suggesting `fix`.
+fn within_reach(points: &[Point<f64>], flag: &str, fix: &str) -> Result<(), CliError> {
+    let far = points.iter().map(|p| p.x.abs().max(p.y.abs())).fold(0.0, f64::max);
+    if far > MAX_COORDINATE_MM {
+        return Err(CliError::arg(
+            flag,
+            format!(
+                "the region would reach {} mm from the origin, beyond {} mm; use {fix}",
+                crate::error::num(far),
+                crate::error::num(MAX_COORDINATE_MM)
+            ),
+        ));
+    }
+    Ok(())
 }
 
 /// A text's letters as rings in mm.
@@ -189,6 +207,11 @@ fn text(lines: &[String], a: &RegionInputArgs, spec: &RegionSpec) -> Result<(Reg
         max_rings: MAX_RINGS,
     };
     let letters = crate::io::font::lay_out(bytes, lines, set).map_err(|e| font_error(e, a.font.as_deref()))?;
+    within_reach(
+        &letters.points,
+        "--text-size",
+        "a smaller --text-size or --letter-spacing, or a shorter text",
+    )?;
     let mut scratch = Vec::new();
     if let Err(e) = polygon_region(&letters.points, &letters.ends, &mut scratch) {
         return Err(letters_error(&letters, e, a.font.is_some()));
@@ -271,4 +294,46 @@ fn font_error(e: FontError, path: Option<&Path>) -> CliError {
         ),
     };
     CliError::arg(flag, printable(&msg))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::io::font::Letters;
+
+    /// A ring as (x, y) pairs.
+    type Ring<'a> = &'a [(f64, f64)];
+
+    /// Letters from (character, its rings).
+    fn letters(glyphs: &[(char, &[Ring<'_>])]) -> Letters {
+        let mut l = Letters::default();
+        for (ch, rings) in glyphs {
+            for r in *rings {
+                l.points.extend(r.iter().map(|&(x, y)| Point::new(x, y)));
+                l.ends.push(l.points.len());
+            }
+            l.glyphs.push((*ch, l.ends.len()));
+        }
+        l
+    }
+
+    #[test]
+    fn touching_letters_and_broken_glyphs_are_told_apart() {
+        let square: &[(f64, f64)] = &[(0.0, 0.0), (10.0, 0.0), (10.0, 10.0), (0.0, 10.0)];
+        let moved: &[(f64, f64)] = &[(8.0, 0.0), (18.0, 0.0), (18.0, 10.0), (8.0, 10.0)];
+        let bow: &[(f64, f64)] = &[(30.0, 0.0), (40.0, 10.0), (40.0, 0.0), (30.0, 10.0)];
+        let e = zetafill::RegionError::SelfIntersecting;
+        let overlap = letters_error(&letters(&[('a', &[square]), ('b', &[moved])]), e, false).to_string();
+        assert!(overlap.contains("--region") && overlap.contains("--letter-spacing"), "{overlap}");
+        let broken = letters_error(&letters(&[('a', &[square]), ('x', &[bow])]), e, true).to_string();
+        assert!(broken.starts_with("--font") && broken.contains("'x'"), "{broken}");
+        let builtin = letters_error(&letters(&[('x', &[bow]), ('a', &[moved])]), e, false).to_string();
+        assert!(builtin.starts_with("--region") && builtin.contains("'x'"), "{builtin}");
+    }
+
+    #[test]
+    fn pixels_become_mm_with_y_up() {
+        let p = to_region(&[Point::new(0.0, 0.0), Point::new(40.0, 10.0)], 40, 20, 200.0);
+        assert_eq!(p, [Point::new(0.0, 100.0), Point::new(200.0, 50.0)]);
+    }
 }

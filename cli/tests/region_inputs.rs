@@ -7,35 +7,28 @@
 
 mod common;
 
-use common::{png_picture, tmp, zf, zf_json, zf_ok};
+use common::{jpeg_picture, png_picture, tmp, zf, zf_json, zf_ok};
 use serde_json::Value;
 use std::path::{Path, PathBuf};
 use zetafill::Point;
 use zetafill_cli::geometry::{simplify, trace};
 
+/// Whether pixel `(x, y)` (its centre) is in the annulus of radii 40 and 90 about (100, 100).
+fn in_annulus(x: f64, y: f64) -> bool {
+    let r = (x + 0.5 - 100.0).hypot(y + 0.5 - 100.0);
+    r > 40.0 && r < 90.0
+}
+
 /// An annulus of radii 40 and 90 pixels about the centre of a 200 x 200 picture.
 fn annulus(dir: &Path) -> PathBuf {
     let p = dir.join("annulus.png");
-    png_picture(&p, 200, 200, |x, y| {
-        let r = (f64::from(x) + 0.5 - 100.0).hypot(f64::from(y) + 0.5 - 100.0);
-        r > 40.0 && r < 90.0
-    });
+    png_picture(&p, 200, 200, |x, y| in_annulus(f64::from(x), f64::from(y)));
     p
 }
 
-/// A fill of the annulus of [`annulus`] (made already in `d`) with `args`, as JSON.
-fn annulus_fill(d: &Path, args: &[&str]) -> Value {
-    let base = [
-        "fill",
-        "--region",
-        "mask:annulus.png",
-        "--n-offset",
-        "5",
-        "--format",
-        "json",
-        "-o",
-        "-",
-    ];
+/// A fill of `--region REGION` (a picture in `d`) with `args`, as JSON.
+fn mask_fill(d: &Path, region: &str, args: &[&str]) -> Value {
+    let base = ["fill", "--region", region, "--n-offset", "5", "--format", "json", "-o", "-"];
     zf_json(d, &[&base[..], args].concat())
 }
 
@@ -105,7 +98,7 @@ fn an_annulus_traces_to_one_outline_and_one_hole_of_its_area() {
     let dir = tmp();
     let d = dir.path();
     annulus(d);
-    let doc = annulus_fill(d, &["--count", "200"]);
+    let doc = mask_fill(d, "mask:annulus.png", &["--count", "200"]);
     assert_eq!((rings_of(&doc, "outers").len(), rings_of(&doc, "holes").len()), (0, 1));
     // One pixel is 1 mm: the traced area is the analytic one within half a pixel along the
     // two rims.
@@ -124,8 +117,13 @@ fn an_annulus_traces_to_one_outline_and_one_hole_of_its_area() {
         (Some("mask:annulus.png:0.5"), Some(200.0))
     );
     assert_eq!(p["region_sha256"].as_str().map(str::len), Some(64));
+    // The same picture as a JPEG traces to the same two rings, within its compression's blur.
+    jpeg_picture(&d.join("annulus.jpg"), 200, 200, |x, y| in_annulus(f64::from(x), f64::from(y)));
+    let jpeg = mask_fill(d, "mask:annulus.jpg", &["--count", "50"]);
+    assert_eq!((rings_of(&jpeg, "outers").len(), rings_of(&jpeg, "holes").len()), (0, 1));
+    assert!(near(area(&all_rings(&jpeg)), 90.0, 40.0));
     // Half the width, half the sizes.
-    let small = annulus_fill(d, &["--region-width", "100", "--count", "50"]);
+    let small = mask_fill(d, "mask:annulus.png", &["--region-width", "100", "--count", "50"]);
     assert!(near(area(&all_rings(&small)) * 4.0, 90.0, 40.0));
 }
 
@@ -170,7 +168,7 @@ fn a_fill_on_a_mask_keeps_out_of_the_hole_and_the_light() {
     let dir = tmp();
     let d = dir.path();
     annulus(d);
-    let doc = annulus_fill(d, &["--count", "600"]);
+    let doc = mask_fill(d, "mask:annulus.png", &["--count", "600"]);
     let rings = all_rings(&doc);
     assert_eq!(common::shapes(&doc).len(), 600);
     assert_eq!(strays(&doc, &rings), Vec::<String>::new());

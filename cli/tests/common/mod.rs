@@ -73,6 +73,17 @@ pub fn png_picture(path: &Path, w: u32, h: u32, dark: impl Fn(u32, u32) -> bool)
         .unwrap_or_else(|e| panic!("{e}"));
 }
 
+/// The same picture as [`png_picture`] draws, as a JPEG (quality 95).
+pub fn jpeg_picture(path: &Path, w: u16, h: u16, dark: impl Fn(u16, u16) -> bool) {
+    let data: Vec<u8> = (0..h)
+        .flat_map(|y| (0..w).map(move |x| (x, y)))
+        .map(|(x, y)| if dark(x, y) { 0 } else { 255 })
+        .collect();
+    let enc = jpeg_encoder::Encoder::new_file(path, 95).unwrap_or_else(|e| panic!("{e}"));
+    enc.encode(&data, w, h, jpeg_encoder::ColorType::Luma)
+        .unwrap_or_else(|e| panic!("{e}"));
+}
+
 /// A fresh temporary folder.
 pub fn tmp() -> tempfile::TempDir {
     tempfile::Builder::new()

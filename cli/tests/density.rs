@@ -3,7 +3,7 @@
 
 mod common;
 
-use common::{tmp, zf, zf_json};
+use common::{jpeg_picture, png_picture, tmp, zf, zf_json};
 use serde_json::Value;
 use zetafill::{Noise, NoiseKind};
 
@@ -178,33 +178,6 @@ fn a_density_that_empties_the_region_halts_with_advice() {
     assert_eq!(o.code, 3, "{}", o.stderr);
     assert!(o.stderr.contains("floor=F") && !o.stderr.contains("CONTRAST"), "{}", o.stderr);
     assert!(d.join("spot.json").exists());
-}
-
-/// A `w x h` greyscale PNG, black where `dark(x, y)` (pixel centres, y down) and white
-/// elsewhere.
-fn png_picture(path: &std::path::Path, w: u32, h: u32, dark: impl Fn(u32, u32) -> bool) {
-    let data: Vec<u8> = (0..h)
-        .flat_map(|y| (0..w).map(move |x| (x, y)))
-        .map(|(x, y)| if dark(x, y) { 0 } else { 255 })
-        .collect();
-    let file = std::fs::File::create(path).unwrap_or_else(|e| panic!("{e}"));
-    let mut enc = png::Encoder::new(file, w, h);
-    enc.set_color(png::ColorType::Grayscale);
-    enc.set_depth(png::BitDepth::Eight);
-    enc.write_header()
-        .and_then(|mut wr| wr.write_image_data(&data))
-        .unwrap_or_else(|e| panic!("{e}"));
-}
-
-/// The same picture as a JPEG (quality 95).
-fn jpeg_picture(path: &std::path::Path, w: u16, h: u16, dark: impl Fn(u16, u16) -> bool) {
-    let data: Vec<u8> = (0..h)
-        .flat_map(|y| (0..w).map(move |x| (x, y)))
-        .map(|(x, y)| if dark(x, y) { 0 } else { 255 })
-        .collect();
-    let enc = jpeg_encoder::Encoder::new_file(path, 95).unwrap_or_else(|e| panic!("{e}"));
-    enc.encode(&data, w, h, jpeg_encoder::ColorType::Luma)
-        .unwrap_or_else(|e| panic!("{e}"));
 }
 
 /// Dark means dense: a picture dark on its left half puts every centre there (in a 200 mm

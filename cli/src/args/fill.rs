@@ -81,6 +81,31 @@ impl ScalarArg {
     }
 }
 
+/// The flags that only `--region mask:` and `--region text:` read.
+#[derive(Debug, Args, Default)]
+pub struct RegionInputArgs {
+    /// mask: the width in mm the picture's width becomes (square pixels; default 200).
+    #[arg(long = "region-width", value_parser = spec::length, allow_hyphen_values = true)]
+    pub region_width: Option<f64>,
+    /// mask: the SHA-256 the picture must have (the command a file carries gives it, so a
+    /// changed picture is refused instead of filling differently).
+    #[arg(long = "region-sha256")]
+    pub region_sha256: Option<String>,
+    /// text: a TrueType or OpenType font file (default: the built-in DejaVu Sans Bold).
+    #[arg(long)]
+    pub font: Option<std::path::PathBuf>,
+    /// text: the SHA-256 the --font file must have.
+    #[arg(long = "font-sha256")]
+    pub font_sha256: Option<String>,
+    /// text: the size of the font's em in mm (default 50: capitals about 36 mm tall).
+    #[arg(long = "text-size", value_parser = spec::length, allow_hyphen_values = true)]
+    pub text_size: Option<f64>,
+    /// text: space added after every character, in mm (default 0), to part letters that
+    /// touch.
+    #[arg(long = "letter-spacing", value_parser = spec::length_or_zero, allow_hyphen_values = true)]
+    pub letter_spacing: Option<f64>,
+}
+
 /// Arguments of `zetafill fill`.
 #[derive(Debug, Args)]
 pub struct FillArgs {
@@ -95,9 +120,13 @@ pub struct FillArgs {
     #[arg(long, value_enum)]
     pub rotate: Option<Rotate>,
     /// rect:W:H | circle:R | annulus:R_OUTER:R_INNER | polygon:X1,Y1,X2,Y2,...[/X1,Y1,...] (rings,
-    /// even-odd) | svg:FILE (mm).
-    #[arg(long, default_value = "rect:200:200", value_parser = spec::region)]
+    /// even-odd) | svg:FILE (mm) | mask:FILE or mask:FILE:THRESHOLD (the dark areas of a PNG
+    /// or JPEG, luminance below THRESHOLD, default 0.5) | text:STRING (letters; \n starts a line).
+    #[arg(long, default_value = "rect:200:200", value_parser = spec::fill_region)]
     pub region: RegionSpec,
+    /// The flags of mask: and text: regions.
+    #[command(flatten)]
+    pub input: RegionInputArgs,
     /// Periodic (toroidal) boundary: the fill tiles seamlessly (rect regions only).
     #[arg(long)]
     pub periodic: bool,

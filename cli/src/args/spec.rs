@@ -367,6 +367,80 @@ fn image_density(rest: &str) -> Result<DensitySpec, String> {
     })
 }
 
+/// A fill's `--region`: every form of [`region`], and `mask:FILE[:THRESHOLD]` (default
+/// threshold 0.5) and `text:STRING` (`\n` starts a new line, `\\` is a backslash).
+pub fn fill_region(s: &str) -> Result<RegionSpec, String> {
+    if let Some(rest) = s.strip_prefix("mask:") {
+        return mask(rest);
+    }
+    if let Some(rest) = s.strip_prefix("text:") {
+        return text(rest);
+    }
+    region(s).map_err(|e| {
+        if e.starts_with("unknown region") {
+            format!(
+                "unknown region '{s}'; use rect:W:H, circle:R, annulus:R_OUTER:R_INNER, polygon:X1,Y1,X2,Y2,..., svg:FILE (sizes in mm), mask:FILE[:THRESHOLD] or text:STRING"
+            )
+        } else {
+            e
+        }
+    })
+}
+
+/// `FILE[:THRESHOLD]` after `mask:`: a last part that reads as a number is the threshold.
+fn mask(rest: &str) -> Result<RegionSpec, String> {
+    let (path, threshold) = match rest.rsplit_once(':') {
+        Some((file, t)) if t.trim().parse::<f64>().is_ok() => {
+            let v = finite(t).map_err(|e| format!("mask:FILE:THRESHOLD: {e}"))?;
+            if !(v > 0.0 && v < 1.0) {
+                return Err(format!(
+                    "mask:FILE:THRESHOLD: the threshold is a luminance between 0 and 1, exclusive (got {t}); pixels darker than it are inside"
+                ));
+            }
+            (file, v)
+        }
+        _ => (rest, 0.5),
+    };
+    if path.is_empty() {
+        return Err("mask: needs a PNG or JPEG file, for example mask:logo.png or mask:logo.png:0.4".into());
+    }
+    Ok(RegionSpec::Mask {
+        path: path.into(),
+        threshold,
+    })
+}
+
+/// `STRING` after `text:`: lines split at `\n` (or a line break), `\\` a backslash.
+fn text(rest: &str) -> Result<RegionSpec, String> {
+    if rest.is_empty() {
+        return Err("text: needs a string, for example text:zeta".into());
+    }
+    let mut lines = vec![String::new()];
+    let mut chars = rest.chars();
+    while let Some(c) = chars.next() {
+        let line = match c {
+            '\\' => match chars.clone().next() {
+                Some('n') => {
+                    chars.next();
+                    None
+                }
+                Some('\\') => {
+                    chars.next();
+                    Some('\\')
+                }
+                _ => Some('\\'),
+            },
+            '\n' => None,
+            c => Some(c),
+        };
+        match (line, lines.last_mut()) {
+            (Some(c), Some(l)) => l.push(c),
+            _ => lines.push(String::new()),
+        }
+    }
+    Ok(RegionSpec::Text { lines })
+}
+
 /// `rect:W:H | circle:R | annulus:R_OUTER:R_INNER | polygon:X1,Y1,...[/...] | svg:FILE` (mm).
 pub fn region(s: &str) -> Result<RegionSpec, String> {
     if let Some(file) = s.strip_prefix("svg:") {
@@ -453,6 +527,28 @@ mod tests {
         assert!(region("polygon:0,0,9,0,9,9/1,1,2").is_err());
         assert!(region("polygon:0,0,9,0,9,9/").is_err());
         assert!(region("circle:0").is_err());
+    }
+
+    #[test]
+    fn masks_and_texts_parse_and_name_round_trip() {
+        let mask = |s: &str| fill_region(s).ok().and_then(|r| r.input_name());
+        assert_eq!(mask("mask:a.png").as_deref(), Some("mask:a.png:0.5"));
+        assert_eq!(mask("mask:dir:x/a.png:0.25").as_deref(), Some("mask:dir:x/a.png:0.25"));
+        assert_eq!(mask("mask:a.png:0.25:0.5").as_deref(), Some("mask:a.png:0.25:0.5"));
+        for bad in ["mask:", "mask:a.png:1", "mask:a.png:0", "mask:a.png:nan", "mask::0.5", "text:"] {
+            assert!(fill_region(bad).is_err(), "{bad}");
+        }
+        let Ok(RegionSpec::Text { lines }) = fill_region("text:a\\nb\\\\n\\q") else {
+            panic!("text refused");
+        };
+        assert_eq!(lines, ["a", "b\\n\\q"]);
+        for t in ["text:zeta", "text:a\\nb", "text:back\\\\slash", "text:x\\y"] {
+            let name = mask(t).unwrap_or_default();
+            assert_eq!(mask(&name).as_deref(), Some(name.as_str()), "{t}");
+        }
+        assert_eq!(mask("text:a\nb").as_deref(), Some("text:a\\nb"));
+        assert!(fill_region("hexagon").err().unwrap_or_default().contains("text:STRING"));
+        assert!(region("text:zeta").is_err());
     }
 
     #[test]

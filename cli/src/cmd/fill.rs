@@ -238,6 +238,7 @@ pub fn compute_watched(a: &FillRun, watch: &mut dyn FnMut(&zetafill::Placement<f
                 cells: a.names.cells,
                 density: a.names.density.clone(),
                 density_sha256: a.names.density_sha256.clone(),
+                source: a.names.source.clone(),
             },
             gap: params.gap,
             count: stop.count,

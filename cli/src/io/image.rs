@@ -1,4 +1,4 @@
-//! Pictures read as luminance (`--density image:FILE`): PNG through the `png` crate (grey or
+//! Pictures read as luminance (`--density image:FILE`, `--region mask:FILE`): PNG through the `png` crate (grey or
 //! colour, with or without alpha, palette, 1 to 16 bits) and JPEG through `zune-jpeg`.
 //!
 //! A pixel's luminance is `0.2126 R + 0.7152 G + 0.0722 B` of its stored (gamma-encoded)
@@ -28,10 +28,7 @@ pub struct Grey {
 pub fn read_grey(path: &Path) -> Result<Grey, String> {
     let bytes =
         crate::io::read::read_limited(path, MAX_IMAGE_BYTES, "a picture").map_err(|e| format!("cannot read {}: {e}", path.display()))?;
-    let sha256 = {
-        use sha2::{Digest, Sha256};
-        Sha256::digest(&bytes).iter().map(|b| format!("{b:02x}")).collect::<String>()
-    };
+    let sha256 = crate::io::read::sha256_hex(&bytes);
     let (width, height, luma) = if bytes.starts_with(b"\x89PNG\r\n\x1a\n") {
         png_luma(&bytes)?
     } else if bytes.starts_with(&[0xff, 0xd8, 0xff]) {
@@ -55,7 +52,7 @@ pub fn read_grey(path: &Path) -> Result<Grey, String> {
 fn check_size(w: u64, h: u64) -> Result<(), String> {
     if w.saturating_mul(h) > MAX_PIXELS {
         return Err(format!(
-            "the picture is {w} x {h} pixels, more than the {MAX_PIXELS} a density map may have: scale it down"
+            "the picture is {w} x {h} pixels, more than the {MAX_PIXELS} a picture may have: scale it down"
         ));
     }
     Ok(())

@@ -26,6 +26,13 @@ pub fn read_limited(path: &Path, limit: u64, what: &str) -> std::io::Result<Vec<
     Ok(bytes)
 }
 
+/// The SHA-256 of `bytes` in lower-case hex: how a picture or font input is named in the
+/// command that reproduces a file.
+pub fn sha256_hex(bytes: &[u8]) -> String {
+    use sha2::{Digest, Sha256};
+    Sha256::digest(bytes).iter().map(|b| format!("{b:02x}")).collect()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

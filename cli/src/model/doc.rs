@@ -86,6 +86,10 @@ pub struct ShapeParamsDoc {
     /// The SHA-256 of the `--density` picture.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub density_sha256: Option<String>,
+    /// For a region made from a picture or a text: `region` (the `--region` argument) and the
+    /// flags that go with it.
+    #[serde(flatten, skip_serializing_if = "Option::is_none")]
+    pub source: Option<super::region::RegionSource>,
 }
 
 /// A region, in its own frame (mm, x right, y up).

@@ -413,7 +413,12 @@ pub fn write_with(pic: &Picture, n: Num) -> Vec<u8> {
 /// The `zetafill fill` command line that reproduces the document.
 pub fn command_line(doc: &FillDoc) -> String {
     let p = &doc.params;
-    let region = doc.region.arg();
+    // A region made from a picture or a text is named by its input (and that input's digest);
+    // any other travels as its rings.
+    let region = match &p.of.source {
+        Some(src) => format!("{}{}", crate::model::region::shell_word(&src.region), src.flags()),
+        None => doc.region.arg(),
+    };
     let mut s = format!(
         "zetafill fill --shape {}{} --rotate {} --region {}{} --c {} --n-offset {} --gap {} --max-trials {} --seed {} --sampler {}{}",
         p.of.shape,

@@ -45,7 +45,8 @@ pub struct FillPlan {
 /// What the engine runs.
 #[derive(Debug, Clone)]
 pub struct FillRun {
-    /// The region (loaded when the run starts: an SVG region is a file).
+    /// The region (an SVG region is read when the run starts; a mask or a text is already
+    /// rings).
     pub region: RegionSpec,
     /// Periodic boundary.
     pub periodic: bool,
@@ -89,6 +90,8 @@ pub struct FillNames {
     pub density: Option<String>,
     /// The SHA-256 of the `--density` picture.
     pub density_sha256: Option<String>,
+    /// A region made from a picture or a text: the flags that make it again.
+    pub source: Option<crate::model::region::RegionSource>,
 }
 
 /// How the document is drawn.
@@ -179,9 +182,7 @@ fn check_plot(p: &PlotArgs, format: Format) -> Result<(), CliError> {
 pub fn resolve(a: &FillArgs) -> Result<FillPlan, CliError> {
     let dest = Dest::parse(&a.output.output);
     let mut inputs: Vec<&std::path::Path> = a.plot.machine_file().into_iter().collect();
-    if let RegionSpec::Svg(p) = &a.region {
-        inputs.push(p.as_path());
-    }
+    inputs.extend(crate::plan::region_input::inputs(&a.region, &a.input));
     dest.check("--output", &inputs)?;
     let format = Format::resolve(a.output.format, &a.output.output)?;
     let (run, draw) = resolve_as(a, format)?;
@@ -253,6 +254,7 @@ pub fn resolve_as(a: &FillArgs, format: Format) -> Result<(FillRun, FillDraw), C
         max_trials: a.run.max_trials,
     };
     let picture = density_picture(a)?;
+    let (region, source) = crate::plan::region_input::resolve(&a.region, &a.input)?;
     let names = FillNames {
         shape: a.shape.name(),
         rotate: if params.rotate && a.shape.rotates() { "random" } else { "none" },
@@ -262,9 +264,10 @@ pub fn resolve_as(a: &FillArgs, format: Format) -> Result<(FillRun, FillDraw), C
         cells: a.cells,
         density: a.density.as_ref().map(|d| d.name()),
         density_sha256: picture.as_ref().map(|p| p.sha256.clone()),
+        source,
     };
     let run = FillRun {
-        region: a.region.clone(),
+        region,
         periodic: a.periodic,
         params,
         stop: crate::plan::stops(&a.run.stop),
@@ -335,18 +338,7 @@ fn density_picture(a: &FillArgs) -> Result<Option<std::sync::Arc<crate::io::imag
         return Ok(None);
     };
     let grey = crate::io::image::read_grey(path).map_err(|e| CliError::arg("--density", e))?;
-    if let Some(want) = &a.density_sha256 {
-        if !want.eq_ignore_ascii_case(&grey.sha256) {
-            return Err(CliError::arg(
-                "--density-sha256",
-                format!(
-                    "{} has SHA-256 {}, not {want}: the picture changed since the file was made; drop --density-sha256 to fill with it as it is",
-                    path.display(),
-                    grey.sha256
-                ),
-            ));
-        }
-    }
+    crate::plan::region_input::check_digest("--density-sha256", path, &grey.sha256, a.density_sha256.as_ref(), "picture")?;
     Ok(Some(std::sync::Arc::new(grey)))
 }
 

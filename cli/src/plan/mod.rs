@@ -11,6 +11,7 @@ pub mod machines;
 pub mod plot;
 pub mod raster;
 pub mod region;
+pub mod region_input;
 pub mod space;
 pub mod stats;
 pub mod territory;

@@ -57,6 +57,33 @@ pub fn zf_json(dir: &Path, args: &[&str]) -> Value {
         .unwrap_or_else(|e| panic!("{args:?}: not one JSON object ({e}): {}", String::from_utf8_lossy(&o.stdout)))
 }
 
+/// A `w x h` greyscale PNG, black where `dark(x, y)` (pixel centres, y down) and white
+/// elsewhere.
+pub fn png_picture(path: &Path, w: u32, h: u32, dark: impl Fn(u32, u32) -> bool) {
+    let data: Vec<u8> = (0..h)
+        .flat_map(|y| (0..w).map(move |x| (x, y)))
+        .map(|(x, y)| if dark(x, y) { 0 } else { 255 })
+        .collect();
+    let file = std::fs::File::create(path).unwrap_or_else(|e| panic!("{e}"));
+    let mut enc = png::Encoder::new(file, w, h);
+    enc.set_color(png::ColorType::Grayscale);
+    enc.set_depth(png::BitDepth::Eight);
+    enc.write_header()
+        .and_then(|mut wr| wr.write_image_data(&data))
+        .unwrap_or_else(|e| panic!("{e}"));
+}
+
+/// The same picture as [`png_picture`] draws, as a JPEG (quality 95).
+pub fn jpeg_picture(path: &Path, w: u16, h: u16, dark: impl Fn(u16, u16) -> bool) {
+    let data: Vec<u8> = (0..h)
+        .flat_map(|y| (0..w).map(move |x| (x, y)))
+        .map(|(x, y)| if dark(x, y) { 0 } else { 255 })
+        .collect();
+    let enc = jpeg_encoder::Encoder::new_file(path, 95).unwrap_or_else(|e| panic!("{e}"));
+    enc.encode(&data, w, h, jpeg_encoder::ColorType::Luma)
+        .unwrap_or_else(|e| panic!("{e}"));
+}
+
 /// A fresh temporary folder.
 pub fn tmp() -> tempfile::TempDir {
     tempfile::Builder::new()

@@ -5,9 +5,9 @@
 
 use crate::error::CliError;
 use crate::model::doc::RegionDoc;
-use crate::model::region::RegionSpec;
+use crate::model::region::{polygon_region as polygon, RegionSpec};
 use crate::plan::region::{area_too_small, not_periodic, outline_error, polygon_error};
-use zetafill::{Point, PolygonRegion, Region};
+use zetafill::{Point, Region};
 
 /// A region resolved from its flag: owns the outline vertices the core borrows.
 #[derive(Debug, Clone)]
@@ -46,7 +46,9 @@ impl RegionData {
                 inner: *inner,
             },
             RegionSpec::Polygon { points, ends } => Region::Polygon(polygon(points, ends, scratch).map_err(polygon_error)?),
-            RegionSpec::Svg(_) => return Err(CliError::Io("internal: SVG region not loaded".into())),
+            RegionSpec::Svg(_) | RegionSpec::Mask { .. } | RegionSpec::Text { .. } => {
+                return Err(CliError::Io("internal: the region's input was not read".into()))
+            }
         };
         // Sizes of 1e-160 mm and less give an area that rounds to nothing (or to a number
         // without full precision), from which no shape's size can be computed.
@@ -85,13 +87,6 @@ impl RegionData {
             }
         }
     }
-}
-
-/// The polygon region over `points`, its edge grid in `scratch` (resized to fit).
-fn polygon<'s>(points: &'s [Point<f64>], ends: &'s [usize], scratch: &'s mut Vec<u32>) -> Result<PolygonRegion<'s>, zetafill::RegionError> {
-    scratch.clear();
-    scratch.resize(PolygonRegion::scratch_words(points.len()), 0);
-    PolygonRegion::new_in(points, ends, scratch)
 }
 
 /// The rings reordered as the JSON lists them (the outer outlines, then the holes, each in

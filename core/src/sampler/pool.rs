@@ -37,9 +37,6 @@ impl<S: Scalar> CellSampler<'_, S> {
     #[inline]
     pub(super) fn run_shift(&self, r: usize) -> u32 {
         let k = self.classes as usize;
-        if k == 1 {
-            return Self::shift(r);
-        }
         Self::shift(r / k) + (k - 1 - r % k) as u32
     }
 

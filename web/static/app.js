@@ -347,7 +347,6 @@ function showTab(name, args) {
     return;
   }
   document.querySelectorAll('.tab-name').forEach((e) => { e.textContent = name; });
-  $('tile-note').hidden = name !== 'tile';
   otherArgs.value = args ?? EXAMPLES[name];
   $('other-picture').removeAttribute('src');
   otherChanged();

@@ -234,13 +234,11 @@ test('a refused value shows the CLI message and keeps the last good fill', async
 });
 
 // The other commands' tabs: the drawing shown, and each file the CLI's.
-// The tile's drawing clips its edge discs with the platform's sine and cosine, which differ in
-// the last bit between the browser and the C library: only its JSON is the CLI's (see
-// docs/web.md).
 const TABS = [
   ['line', '--count 300 --render circles --seed 4', ['svg', 'png', 'json']],
   ['territory', '--sites 3 --points 3000 --seed 3 --render filled', ['svg', 'png', 'json']],
-  ['tile', '--seed 2 --radius 8 --spacing 2 --tries 1500 --style filled', ['json']],
+  ['tile', '--seed 2 --radius 8 --spacing 2 --tries 1500 --style filled', ['svg', 'png', 'json']],
+  ['tile', '--seed 5 --layout planet --rows 3 --tries 800 --radius 8 --spacing 2', ['svg', 'png']],
 ];
 
 for (const [tab, args, exts] of TABS) {

@@ -27,13 +27,13 @@ pub struct Tag {
 /// Points on the circle `(c, r)` from angle `a0` to `a1` (counter-clockwise), both ends
 /// included, with chords within [`TOLERANCE`] of the arc.
 fn arc_points(c: Pt, r: f64, a0: f64, a1: f64) -> Vec<Pt> {
-    let step = 2.0 * (1.0 - (TOLERANCE / r).min(1.0)).acos();
+    let step = 2.0 * libm::acos(1.0 - (TOLERANCE / r).min(1.0));
     let n = (((a1 - a0) / step.max(1e-3)).ceil() as usize).clamp(2, 4096);
     (0..=n)
         .map(|k| {
             // The ends exactly: a crossing point must be the same in every piece that uses it.
             let a = if k == n { a1 } else { a0 + (a1 - a0) * k as f64 / n as f64 };
-            [c[0] + r * a.cos(), c[1] + r * a.sin()]
+            [c[0] + r * libm::cos(a), c[1] + r * libm::sin(a)]
         })
         .collect()
 }
@@ -55,7 +55,7 @@ fn crossings(c: Pt, r: f64, w: f64, h: f64) -> Vec<f64> {
                 continue;
             }
             let (dx, dy) = if axis == 0 { (d, s) } else { (s, d) };
-            out.push(norm(dy.atan2(dx)));
+            out.push(norm(libm::atan2(dy, dx)));
         }
     }
     out.sort_by(f64::total_cmp);
@@ -83,7 +83,7 @@ fn disc_pieces(c: Pt, r: f64, w: f64, h: f64, style: Style, out: &mut Vec<Path>)
         return;
     }
     let inside = |a: f64| {
-        let p = [c[0] + r * a.cos(), c[1] + r * a.sin()];
+        let p = [c[0] + r * libm::cos(a), c[1] + r * libm::sin(a)];
         p[0] >= 0.0 && p[0] <= w && p[1] >= 0.0 && p[1] <= h
     };
     let n = cuts.len();

@@ -103,7 +103,7 @@ impl Arrangement {
     fn polar(&self, w: f64, h: f64, p: Pt) -> Pt {
         let theta = TAU * p[0] / (f64::from(self.columns) * w);
         let rho = self.radius - (2.0 * h - p[1]) * self.ring_height(w, h) / h;
-        [self.radius + rho * theta.cos(), self.radius + rho * theta.sin()]
+        [self.radius + rho * libm::cos(theta), self.radius + rho * libm::sin(theta)]
     }
 
     /// The copies of the tile's picture, on the sheet.
@@ -185,11 +185,11 @@ impl Arrangement {
             Path::Arc { center: c, radius: r, .. } => {
                 // As many sides as the circle needs at its drawn size (at least 12).
                 let drawn = r * s * self.ring_height(w, h) / h;
-                let n = ((PI / (1.0 - (TOLERANCE / drawn).min(1.0)).acos()).ceil() as usize).clamp(12, 256);
+                let n = ((PI / libm::acos(1.0 - (TOLERANCE / drawn).min(1.0))).ceil() as usize).clamp(12, 256);
                 let ring: Vec<Pt> = (0..n)
                     .map(|k| {
                         let a = TAU * k as f64 / n as f64;
-                        map([c[0] + r * a.cos(), c[1] + r * a.sin()])
+                        map([c[0] + r * libm::cos(a), c[1] + r * libm::sin(a)])
                     })
                     .collect();
                 Path::polyline(ring, true)

@@ -171,7 +171,7 @@ impl Session {
     }
 
     /// The bytes `zetafill fill ARGV` writes, for a command line that runs the same fill as
-    /// this session's (it may differ in its output flags: `-o`, `--format`, `--machine`,
+    /// this one's (it may differ in its output flags: `-o`, `--format`, `--machine`,
     /// page and pen flags). The error is the binary's message.
     pub fn export(&self, argv: Vec<String>) -> Result<Vec<u8>, String> {
         let doc = self.doc.as_ref().ok_or("error: the fill has not run yet")?;

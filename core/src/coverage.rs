@@ -193,7 +193,7 @@ impl<'a, S: Scalar> Coverage<'a, S> {
         if cx1 - cx0 < 2 || cy1 - cy0 < 2 {
             return;
         }
-        let clamp = |v: i64| v.clamp(0, self.g - 1);
+        let clamp = |v: i64| v.min(self.g - 1).max(0);
         let (cx0, cx1, cy0, cy1) = (clamp(cx0), clamp(cx1), clamp(cy0), clamp(cy1));
         for cy in cy0..=cy1 {
             let ya = self.cell_y(cy);

@@ -370,7 +370,7 @@ fn poly_poly<S: Scalar>(pa: &[Point<S>], ca: bool, pb: &[Point<S>], cb: bool, ga
         }
         for &k in &near_b {
             let k = usize::from(k);
-            let (Some(&b1), Some(&b2)) = (pb.get(k), pb.get((k + 1) % pb.len())) else {
+            let (Some(&b1), Some(&b2)) = (pb.get(k), pb.get((k + 1).checked_rem(pb.len()).unwrap_or(0))) else {
                 continue;
             };
             if !boxes_meet(ea, seg_box(b1, b2), reach) {

@@ -133,8 +133,11 @@ fn fade(t: f64) -> f64 {
 fn wrap(i: i64, n: u64) -> u64 {
     if n == 0 {
         i as u64
+    } else if i >= 0 {
+        i as u64 % n
     } else {
-        i.rem_euclid(n as i64) as u64
+        // `!i = -1 - i` is not negative: no overflow for any `i` and `n`.
+        n - 1 - (!i as u64) % n
     }
 }
 
@@ -247,6 +250,19 @@ mod tests {
     use super::*;
 
     const PINNED: u64 = 17_005_825_372_383_369_978;
+
+    #[test]
+    fn wrap_is_the_euclidean_remainder_without_overflow() {
+        for n in [1u64, 2, 3, 7, 64, 1 << 40] {
+            for i in [-130i64, -65, -64, -7, -3, -1, 0, 1, 6, 7, 129, i64::MAX - 1, i64::MIN + 1] {
+                assert_eq!(wrap(i, n), i.rem_euclid(n as i64) as u64, "i {i} n {n}");
+            }
+        }
+        // Where `rem_euclid` itself would overflow or misread `n`.
+        assert_eq!(wrap(i64::MIN, u64::MAX), (i64::MIN as i128).rem_euclid(u64::MAX as i128) as u64);
+        assert_eq!(wrap(-1, u64::MAX), u64::MAX - 1);
+        assert_eq!(wrap(-5, 0), (-5i64) as u64);
+    }
 
     fn field(kind: NoiseKind, period: Option<(f64, f64)>) -> Noise {
         Noise::new(kind, 42, 10.0, 5, 0.5, period).unwrap_or_else(|e| panic!("{e}"))

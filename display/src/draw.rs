@@ -278,7 +278,11 @@ impl View {
             }
             Geo::Poly { .. } => {
                 let vs = geo.vertices();
-                let px = |i: usize| vs.get(i % vs.len()).map(|p| self.pixel(p.x.to_f64() + dx, p.y.to_f64() + dy));
+                let px = |i: usize| {
+                    i.checked_rem(vs.len())
+                        .and_then(|j| vs.get(j))
+                        .map(|p| self.pixel(p.x.to_f64() + dx, p.y.to_f64() + dy))
+                };
                 for i in 0..vs.len() {
                     if let (Some(a), Some(b)) = (px(i), px(i + 1)) {
                         Line::new(a, b).into_styled(style).draw(target)?;

@@ -379,17 +379,27 @@ fn the_comparisons_can_fail() {
     assert!(compare_pbm(&host["circles"].pbm, &host["squares"].pbm).is_err());
 }
 
-/// Flash bytes the ELF loads: the file sizes of its PT_LOAD segments with a flash address.
-fn elf_flash_bytes(elf: &[u8]) -> u64 {
-    let u16_at = |o: usize| u64::from(u16::from_le_bytes([elf[o], elf[o + 1]]));
-    let u32_at = |o: usize| u64::from(u32::from_le_bytes([elf[o], elf[o + 1], elf[o + 2], elf[o + 3]]));
+/// The flash segments of the ELF (the PT_LOAD segments with a flash address): their contents.
+fn elf_flash_segments(elf: &[u8]) -> Vec<&[u8]> {
+    let u16_at = |o: usize| usize::from(u16::from_le_bytes([elf[o], elf[o + 1]]));
+    let u32_at = |o: usize| u32::from_le_bytes([elf[o], elf[o + 1], elf[o + 2], elf[o + 3]]) as usize;
     assert_eq!(&elf[..6], b"\x7fELF\x01\x01", "not a little-endian ELF32");
-    let (phoff, phentsize, phnum) = (u32_at(0x1c) as usize, u16_at(0x2a) as usize, u16_at(0x2c) as usize);
+    let (phoff, phentsize, phnum) = (u32_at(0x1c), u16_at(0x2a), u16_at(0x2c));
     (0..phnum)
         .map(|i| phoff + i * phentsize)
         .filter(|&ph| u32_at(ph) == 1 && u32_at(ph + 12) < 0x2000_0000)
-        .map(|ph| u32_at(ph + 16))
-        .sum()
+        .map(|ph| &elf[u32_at(ph + 4)..u32_at(ph + 4) + u32_at(ph + 16)])
+        .collect()
+}
+
+/// Flash bytes the ELF loads.
+fn elf_flash_bytes(elf: &[u8]) -> u64 {
+    elf_flash_segments(elf).iter().map(|s| s.len() as u64).sum()
+}
+
+/// Whether any flash segment holds `needle` (a path of the checkout, say).
+fn flash_holds(elf: &[u8], needle: &[u8]) -> bool {
+    elf_flash_segments(elf).iter().any(|s| s.windows(needle.len()).any(|w| w == needle))
 }
 
 #[test]
@@ -437,6 +447,30 @@ fn a_1024_shape_engine_fits_the_board() {
         from_elf.abs_diff(flash) <= 64,
         "ELF loads {from_elf} B of flash, firmware says {flash} B"
     );
+}
+
+/// The image's size must not depend on where the repository is checked out: no source path of
+/// the checkout (a panic location, say) may sit in flash, where a longer path costs bytes of the
+/// budget.
+#[test]
+fn flash_holds_no_path_of_the_checkout() {
+    let root = firmware_dir().canonicalize().expect("the firmware's directory");
+    let root = root.parent().expect("the repository");
+    let needle = root.to_str().expect("a UTF-8 path").as_bytes();
+    for fw in [firmware(), space_firmware()] {
+        let elf = std::fs::read(&fw.elf).expect("ELF");
+        assert!(
+            !flash_holds(&elf, needle),
+            "{}: flash holds the checkout's path {}",
+            fw.elf.display(),
+            root.display()
+        );
+        // The check can fail: the same image with the path written into its first flash segment.
+        let first = elf_flash_segments(&elf)[0].as_ptr() as usize - elf.as_ptr() as usize;
+        let mut planted = elf.clone();
+        planted[first + 0x400..first + 0x400 + needle.len()].copy_from_slice(needle);
+        assert!(flash_holds(&planted, needle));
+    }
 }
 
 #[test]

@@ -2,9 +2,10 @@
 //! and the bound on the clearance anywhere in a cell from the outside of the region and the
 //! shapes the cell knows (see the module docs of [`crate::CellSampler`] for why it is a bound).
 
-use super::{ceil_u32, far_corner, Cell, CellSampler, Field, LevelGeom, CELL_LEVELS, CLASSES, GRID0, NEAR, NONE, RUNS};
+use super::{ceil_u32, far_corner, Cell, CellSampler, Field, LevelGeom, CELL_LEVELS, CLASSES_NZ, GRID0, NEAR, NONE, RUNS};
 use crate::geom::Point;
 use crate::scalar::Scalar;
+use core::num::NonZeroUsize;
 
 impl<S: Scalar> CellSampler<'_, S> {
     #[inline]
@@ -107,7 +108,7 @@ impl<S: Scalar> CellSampler<'_, S> {
         self.flush();
         self.batch_weight = 0;
         self.key = f.density_key();
-        self.classes = if self.key == 0 { 1 } else { CLASSES };
+        self.classes = if self.key == 0 { NonZeroUsize::MIN } else { CLASSES_NZ };
         let g0 = self.lg(0);
         self.grid_f64 = [x0.to_f64(), y0.to_f64(), g0.w.to_f64(), g0.h.to_f64(), self.slack.to_f64()];
         (self.lo, self.hi) = (self.runs() as u32, 0);

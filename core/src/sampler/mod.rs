@@ -106,6 +106,7 @@ mod trial;
 use crate::geom::Point;
 use crate::scalar::Scalar;
 pub(crate) use cell::Cell;
+use core::num::NonZeroUsize;
 pub(crate) use trial::{Drawn, Verdict};
 
 /// Number of cell levels (a level-0 cell split 23 times at most).
@@ -120,6 +121,11 @@ pub const CLASSES: u32 = 4;
 
 /// Runs of live cells: one per level and density class.
 const RUNS: usize = CELL_LEVELS * CLASSES as usize;
+/// [`CLASSES`] as the divisor of a run's index.
+const CLASSES_NZ: NonZeroUsize = match NonZeroUsize::new(CLASSES as usize) {
+    Some(k) => k,
+    None => NonZeroUsize::MIN,
+};
 
 /// At most this many level-0 cells along a side.
 const GRID0: u32 = 16;
@@ -285,7 +291,7 @@ pub struct CellSampler<'c, S> {
     /// cells.
     starts: [u32; RUNS + 1],
     /// Density classes in use: 1 without a density, [`CLASSES`] with one.
-    classes: u32,
+    classes: NonZeroUsize,
     /// Every run that holds live cells is in `lo..=hi` (none when `lo > hi`).
     lo: u32,
     hi: u32,
@@ -367,7 +373,7 @@ impl<'c, S: Scalar> CellSampler<'c, S> {
             main: pool.len() - (pool.len() / 8),
             pool,
             starts: [0; RUNS + 1],
-            classes: 1,
+            classes: NonZeroUsize::MIN,
             lo: RUNS as u32,
             hi: 0,
             key: 0,
@@ -412,7 +418,7 @@ impl<'c, S: Scalar> CellSampler<'c, S> {
     /// The total area of the live cells.
     pub fn live_area(&self) -> f64 {
         let g = self.lg(CELL_LEVELS as u32 - 1);
-        let k = self.classes as usize;
+        let k = self.classes;
         let cells = (0..self.runs()).fold(0u64, |sum, r| {
             let count = (self.start(r + 1) - self.start(r)) as u64;
             sum + (count << Self::shift(r / k))

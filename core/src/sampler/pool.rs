@@ -22,13 +22,13 @@ impl<S: Scalar> CellSampler<'_, S> {
     /// The runs of live cells in use: one per level, times the density classes.
     #[inline]
     pub(super) fn runs(&self) -> usize {
-        CELL_LEVELS * self.classes as usize
+        CELL_LEVELS * self.classes.get()
     }
 
     /// The run of the cells of `level` and density `class`.
     #[inline]
     pub(super) fn run(&self, level: u32, class: u32) -> usize {
-        level as usize * self.classes as usize + class as usize
+        level as usize * self.classes.get() + class as usize
     }
 
     /// A cell of run `r` weighs its area in cells of the finest level times its density bound
@@ -36,8 +36,8 @@ impl<S: Scalar> CellSampler<'_, S> {
     /// class)`.
     #[inline]
     pub(super) fn run_shift(&self, r: usize) -> u32 {
-        let k = self.classes as usize;
-        Self::shift(r / k) + (k - 1 - r % k) as u32
+        let k = self.classes;
+        Self::shift(r / k) + (k.get() - 1 - r % k) as u32
     }
 
     /// The run that holds the live cell at `slot` (the runs are contiguous, in order).
@@ -59,16 +59,16 @@ impl<S: Scalar> CellSampler<'_, S> {
     /// The density class of run `r`.
     #[inline]
     pub(super) fn class_of_run(&self, r: usize) -> u32 {
-        (r % self.classes as usize) as u32
+        (r % self.classes) as u32
     }
 
     /// The density class of `c` (see [`Field::class`]); None when no centre can be kept
     /// anywhere in it. Always class 0 without a density.
     pub(super) fn class_of(&self, f: &impl Field<S>, c: &Cell<S>) -> Option<u32> {
-        if self.classes == 1 {
+        if self.classes.get() == 1 {
             return Some(0);
         }
-        f.class(cell_box(self.grid_f64, c.level(), c.ix(), c.iy()), self.classes)
+        f.class(cell_box(self.grid_f64, c.level(), c.ix(), c.iy()), self.classes.get() as u32)
     }
 
     /// The cell at `i`.
@@ -133,7 +133,11 @@ impl<S: Scalar> CellSampler<'_, S> {
     /// and moving one cell of each later run back. Returns the cell's density class.
     pub(super) fn remove_live(&mut self, slot: usize, level: u32) -> u32 {
         // Without a density a level is a run: no search.
-        let k = if self.classes == 1 { level as usize } else { self.run_of(slot) };
+        let k = if self.classes.get() == 1 {
+            level as usize
+        } else {
+            self.run_of(slot)
+        };
         let runs = self.runs();
         let mut hole = slot;
         for j in k..=(self.hi as usize).max(k) {

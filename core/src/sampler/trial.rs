@@ -55,7 +55,7 @@ impl<S: Scalar> CellSampler<'_, S> {
         // lowest density bound: the sum of `|R| / W` over the trials, `W` the live cells'
         // area weighted by their density bounds, has expectation `|R|` over the integral of
         // the density over the valid centres, the paper's expected trials with thinning.
-        let unit = g.w.to_f64() * g.h.to_f64() / (1u64 << (Self::shift(0) + self.classes - 1)) as f64;
+        let unit = g.w.to_f64() * g.h.to_f64() / (1u64 << (Self::shift(0) + self.classes.get() as u32 - 1)) as f64;
         let est = if unit > 0.0 { range * inv / unit } else { 0.0 };
         self.last_paper = est;
         self.paper += est;
@@ -76,7 +76,7 @@ impl<S: Scalar> CellSampler<'_, S> {
         let classes = self.classes;
         // Without a density a run is a level: a shorter loop, on hosts (a board keeps the flash
         // it would take; both find the same cell).
-        if classes == 1 && cfg!(not(target_os = "none")) {
+        if classes.get() == 1 && cfg!(not(target_os = "none")) {
             for k in self.lo as usize..=self.hi as usize {
                 let count = (self.start(k + 1) - self.start(k)) as u64;
                 let w = count << Self::shift(k);
@@ -88,17 +88,17 @@ impl<S: Scalar> CellSampler<'_, S> {
             return None;
         }
         // The run's level and class kept as counters: no division per run.
-        let (mut level, mut class) = (self.lo / classes, self.lo % classes);
+        let (mut level, mut class) = (self.lo as usize / classes, self.lo as usize % classes);
         for k in self.lo as usize..=self.hi as usize {
             let count = (self.start(k + 1) - self.start(k)) as u64;
-            let shift = Self::shift(level as usize) + (classes - 1 - class);
+            let shift = Self::shift(level) + (classes.get() - 1 - class) as u32;
             let w = count << shift;
             if r < w {
-                return Some((self.start(k) + (r >> shift) as usize, class));
+                return Some((self.start(k) + (r >> shift) as usize, class as u32));
             }
             r -= w;
             class += 1;
-            if class == classes {
+            if class == classes.get() {
                 (level, class) = (level + 1, 0);
             }
         }

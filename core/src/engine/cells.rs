@@ -331,6 +331,19 @@ impl<S: Scalar> Engine<'_, S> {
             else {
                 continue;
             };
+            // On hosts, a new batch's known shapes are loaded together: their memory
+            // latencies overlap (a board's memory has none to hide).
+            if cfg!(not(target_os = "none")) {
+                if let Some(known) = cells.batch_known() {
+                    let mut sum = S::ZERO;
+                    for j in known {
+                        if let Some(s) = self.shapes.get(j as usize) {
+                            sum = sum + s.scale;
+                        }
+                    }
+                    core::hint::black_box(sum);
+                }
+            }
             let angle = if next.rotated { rng::angle::<S, R>(rng) } else { S::ZERO };
             if cells.overhangs(p) {
                 continue;

@@ -250,15 +250,17 @@ fn kept_at(d: &dyn Density, x: f64, y: f64, class: u32, u: f64) -> bool {
     u < d.at(x, y) * f64::from(1u32 << class.min(31))
 }
 
-/// Index words needed for `capacity` shapes: one link each plus `2 * capacity` buckets (the
-/// length of [`Storage::index`]).
+/// Index words needed for `capacity` shapes: one link each plus at least `2 * capacity`
+/// buckets, a power of two of them (the length of [`Storage::index`]; the hash uses the
+/// largest power of two of buckets the index holds, so a length of `3 * capacity` would leave
+/// up to half its buckets unused).
 ///
 /// # Examples
 ///
 /// ```
 /// use zetafill::{index_words, rng_from_seed, Engine, Params, Placed, Region, Stop, Storage};
 ///
-/// assert_eq!(index_words(1000), 3001);
+/// assert_eq!(index_words(1000), 1000 + 2048);
 /// // Any index longer than the shape slots works: fewer buckets only make queries slower.
 /// let fill = |index: &mut [u32]| {
 ///     let mut shapes = [Placed::<f64>::default(); 50];
@@ -271,7 +273,11 @@ fn kept_at(d: &dyn Density, x: f64, y: f64, class: u32, u: f64) -> bool {
 /// assert_eq!(fill(&mut [0; index_words(50)]), fill(&mut [0; 51]));
 /// ```
 pub const fn index_words(capacity: usize) -> usize {
-    capacity * 3 + 1
+    let buckets = match capacity.saturating_mul(2).checked_next_power_of_two() {
+        Some(b) => b,
+        None => usize::MAX,
+    };
+    capacity.saturating_add(buckets)
 }
 
 /// The caller-owned storage of an engine: a static array on a microcontroller, a `Vec` on a

@@ -255,6 +255,19 @@ impl<S: Scalar> CellSampler<'_, S> {
         verdict
     }
 
+    /// The shapes known to the cells of a batch drawn by the last [`CellSampler::draw`], when
+    /// that call drew a new batch: the engine loads their records then, all at once, rather
+    /// than one by one as each trial needs them.
+    pub(crate) fn batch_known(&self) -> Option<impl Iterator<Item = u32> + '_> {
+        (self.ahead_pos == 1).then(|| {
+            self.ahead
+                .iter()
+                .take(self.ahead_len)
+                .flat_map(|(_, c, _)| c.near)
+                .filter(|&j| j != NONE)
+        })
+    }
+
     /// The shapes the live cell at `slot` knows of.
     pub(crate) fn known(&self, slot: usize) -> [u32; NEAR] {
         self.cell(slot).map_or([NONE; NEAR], |c| c.near)

@@ -47,6 +47,19 @@ impl<S: Scalar> Field<S> for FieldOf<'_, '_, S> {
         self.0.shape_dist(j, p)
     }
 
+    fn dists(&self, j: u32, ps: &[Point<S>; 4]) -> [S; 4] {
+        let e = self.0;
+        match e.shapes.get(j as usize) {
+            // On hosts a polygon's outline is built once for the four points, as
+            // `shape_dist` builds it for one (a board keeps the flash this would take).
+            Some(s) if cfg!(not(target_os = "none")) && !matches!(e.kind_of(u64::from(j)), ShapeKind::Circle | ShapeKind::Ring { .. }) => {
+                let outline = e.kind_of(u64::from(j)).geo(Point::new(s.x, s.y), s.scale, s.angle);
+                ps.map(|p| poly_dist(&outline, e.image_near(p, s)))
+            }
+            _ => ps.map(|p| e.shape_dist(j, p)),
+        }
+    }
+
     fn disc(&self, j: u32, p: Point<S>) -> Option<(Point<S>, S)> {
         self.0.disc(j, p)
     }

@@ -58,10 +58,14 @@ impl<S: Scalar> CellSampler<'_, S> {
         // Each known shape is looked up once for the four quarters.
         for &j in near.iter().filter(|&&j| j != NONE) {
             let disc = f.disc(j, centre);
-            for (ui, &p) in u.iter_mut().zip(quarters.iter()) {
-                let d = match disc {
-                    Some((o, r)) => far_corner(o, p, hw, hh) - r,
-                    None => f.dist(j, p) + q.half_diag,
+            // On hosts the four distances to a polygon come from one outline (a board keeps
+            // the flash the batch would take).
+            let batch = (cfg!(not(target_os = "none")) && disc.is_none()).then(|| f.dists(j, &quarters));
+            for (k, (ui, &p)) in u.iter_mut().zip(quarters.iter()).enumerate() {
+                let d = match (disc, batch.and_then(|b| b.get(k).copied())) {
+                    (Some((o, r)), _) => far_corner(o, p, hw, hh) - r,
+                    (None, Some(d)) => d + q.half_diag,
+                    (None, None) => f.dist(j, p) + q.half_diag,
                 };
                 *ui = ui.min(d);
             }

@@ -190,6 +190,11 @@ pub(crate) trait Field<S: Scalar> {
     fn edge(&self, p: Point<S>) -> S;
     /// An upper bound of the signed distance from `p` to the material of shape `j`.
     fn dist(&self, j: u32, p: Point<S>) -> S;
+    /// [`Field::dist`] from each of four points: the same values, where a shape's outline is
+    /// built once for the four.
+    fn dists(&self, j: u32, ps: &[Point<S>; 4]) -> [S; 4] {
+        ps.map(|p| self.dist(j, p))
+    }
     /// When shape `j` is a disc, its centre (in the periodic image nearest `p`) and radius.
     fn disc(&self, j: u32, p: Point<S>) -> Option<(Point<S>, S)> {
         let _ = (j, p);

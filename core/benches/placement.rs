@@ -19,13 +19,8 @@ use std::time::Instant;
 use zetafill::internals::sampler::CellStats;
 use zetafill::{cells_for, index_words, CellSampler, Engine, Params, Placed, Region, Stop, StopReason, Storage};
 
-/// The thread's CPU time in seconds (Linux), or the wall time since `start`.
-fn cpu_seconds(start: Instant) -> f64 {
-    std::fs::read_to_string("/proc/thread-self/schedstat")
-        .ok()
-        .and_then(|s| s.split_whitespace().next().and_then(|ns| ns.parse::<f64>().ok()))
-        .map_or_else(|| start.elapsed().as_secs_f64(), |ns| ns * 1e-9)
-}
+mod common;
+use common::cpu_seconds;
 
 struct Run {
     secs: f64,

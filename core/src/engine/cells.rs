@@ -166,6 +166,15 @@ impl<S: Scalar> Engine<'_, S> {
             if best.iter().any(|b| b.1 == j) {
                 return;
             }
+            // With every place taken, a polygon whose bounding disc lies beyond the farthest
+            // kept (by far more than any rounding) cannot take a place: on hosts its outline
+            // is not built (a board keeps the flash).
+            if cfg!(not(target_os = "none")) && best.is_full() && self.kind_of(u64::from(j)) != ShapeKind::Circle {
+                let far = best.iter().fold(S::from_f64(f64::MIN), |m, b| m.max(b.0));
+                if self.dist_floor(j, c).is_some_and(|lo| lo > far + S::from_f64(1e-6)) {
+                    return;
+                }
+            }
             let d = self.shape_dist(j, c);
             if d < reach && best.push((d, j)).is_err() {
                 let far = best.iter_mut().fold(None, |m: Option<&mut (S, u32)>, b| match m {
@@ -206,6 +215,14 @@ impl<S: Scalar> Engine<'_, S> {
         for (n, j) in near.iter_mut().zip(kept) {
             *n = j;
         }
+    }
+
+    /// A lower bound of [`Engine::shape_dist`] from `p` to placed shape `j`: the distance to
+    /// its centre (of its image nearest `p`) less its bounding radius.
+    fn dist_floor(&self, j: u32, p: Point<S>) -> Option<S> {
+        let s = self.shapes.get(j as usize)?;
+        let q = self.image_near(p, s);
+        Some(Point::new(s.x, s.y).dist2(q).sqrt() - self.kind_of(u64::from(j)).bounding_radius(s.scale))
     }
 
     /// `p`, or on a torus its copy nearest the centre of `s`.

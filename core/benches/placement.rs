@@ -15,58 +15,14 @@
 //! a cache simulator is the fill's own memory traffic. It measures; it asserts nothing about
 //! time.
 
-use std::time::Instant;
-use zetafill::internals::sampler::CellStats;
-use zetafill::{cells_for, index_words, CellSampler, Engine, Params, Placed, Region, Stop, StopReason, Storage};
+use zetafill::Params;
 
 mod common;
-use common::cpu_seconds;
-
-struct Run {
-    secs: f64,
-    placed: u64,
-    trials: u64,
-    cells: CellStats,
-}
+use common::{cell_fill, CellFill};
 
 /// One fill of `count` circles with the storage for `cap`, as the CLI lends it.
-fn fill(cap: usize, count: u64) -> Run {
-    let mut shapes = vec![Placed::<f64>::default(); cap];
-    let mut index = vec![0u32; index_words(cap)];
-    let mut pool = vec![[0u64; 4]; cells_for(cap)];
-    let mut params = Params::circles(1.3, 1.0);
-    params.max_trials = 1_000_000_000;
-    let region = Region::Rect {
-        width: 200.0,
-        height: 200.0,
-        periodic: false,
-    };
-    let storage = Storage {
-        shapes: &mut shapes,
-        index: &mut index,
-        coverage: &mut [],
-    };
-    let stop = Stop {
-        count: Some(count),
-        ..Stop::default()
-    };
-    let t = Instant::now();
-    let start = cpu_seconds(t);
-    let mut e = Engine::<f64>::new(params, region, storage).expect("valid parameters");
-    let mut rng = zetafill::rng_from_seed(1);
-    let mut cells = CellSampler::new(&mut pool).expect("cells");
-    let reason = e.run_fast(&mut cells, &mut rng, &stop, |_| {});
-    let secs = cpu_seconds(t) - start;
-    if reason != StopReason::Count {
-        eprintln!("n {count}: stopped early: {reason:?}");
-    }
-    let s = e.stats();
-    Run {
-        secs,
-        placed: s.placed,
-        trials: s.trials,
-        cells: cells.stats(),
-    }
+fn fill(cap: usize, count: u64) -> CellFill {
+    cell_fill(Params::circles(1.3, 1.0), cap, count)
 }
 
 fn arg<T: std::str::FromStr>(name: &str) -> Option<T> {

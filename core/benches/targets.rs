@@ -1,0 +1,185 @@
+//! The fills the speed targets are set for, in one run: for each, the thread's CPU seconds
+//! (`/proc/thread-self/schedstat` on Linux, else wall time) against its target, microseconds
+//! and trials per placement, and the bytes per shape of the storage used at its peak (shape
+//! record, index words and, for the cell sampler, its cells at their peak; the 1D gap
+//! sampler's gap slots). 2D fills are in the 200 x 200 rect, the 1D fill in a 200 mm
+//! interval, seed 1, with the default samplers (the cell sampler, the gap sampler).
+//!
+//!     cargo bench -p zetafill --bench targets [-- --scale 10] [-- --one NAME]
+//!
+//! `--scale K` divides every count by K (a quick look); `--one NAME` runs one row (for a
+//! profiler: `circles`, `circles-1.4`, `squares`, `stars`, `segments`). It measures; it asserts
+//! nothing about time.
+
+use std::time::Instant;
+use zetafill::{
+    line_gaps_for, line_index_words, rng_from_seed, CellWords, Interval, LineEngine, LineGap, LineGaps, LineParams, LineStorage, Params,
+    Segment, ShapeKind, Stop,
+};
+
+mod common;
+use common::{cell_fill, cpu_seconds};
+
+/// One fill the targets name.
+struct Target {
+    name: &'static str,
+    what: &'static str,
+    count: u64,
+    /// The target, in CPU seconds.
+    secs: f64,
+    c: f64,
+    n_offset: f64,
+    shape: Option<ShapeKind>,
+}
+
+const TARGETS: [Target; 5] = [
+    Target {
+        name: "circles",
+        what: "circles, c 1.3, N 1",
+        count: 1_000_000,
+        secs: 2.0,
+        c: 1.3,
+        n_offset: 1.0,
+        shape: Some(ShapeKind::Circle),
+    },
+    Target {
+        name: "circles-1.4",
+        what: "circles, c 1.4, N 2",
+        count: 1_000_000,
+        secs: 10.0,
+        c: 1.4,
+        n_offset: 2.0,
+        shape: Some(ShapeKind::Circle),
+    },
+    Target {
+        name: "squares",
+        what: "squares, random rotation, c 1.3, N 1",
+        count: 100_000,
+        secs: 1.0,
+        c: 1.3,
+        n_offset: 1.0,
+        shape: Some(ShapeKind::Square),
+    },
+    Target {
+        name: "stars",
+        what: "stars 5:0.45, random rotation, c 1.2, N 3",
+        count: 100_000,
+        secs: 5.0,
+        c: 1.2,
+        n_offset: 3.0,
+        shape: Some(ShapeKind::Star { points: 5, inner: 0.45 }),
+    },
+    Target {
+        name: "segments",
+        what: "segments (`line`), c 1.4, N 1",
+        count: 1_000_000,
+        secs: 0.5,
+        c: 1.4,
+        n_offset: 1.0,
+        shape: None,
+    },
+];
+
+/// What one fill measured.
+struct Measured {
+    secs: f64,
+    placed: u64,
+    trials: u64,
+    bytes_per_shape: f64,
+}
+
+/// A 2D fill of `t` with the cell sampler and the storage the CLI lends.
+fn fill_2d(t: &Target, kind: ShapeKind, count: u64) -> Measured {
+    let mut params = Params::circles(t.c, t.n_offset);
+    params.shape = kind.into();
+    params.rotate = kind != ShapeKind::Circle;
+    let r = cell_fill(params, count as usize, count);
+    let cells = r.cells.peak as f64 * std::mem::size_of::<CellWords>() as f64 / r.placed.max(1) as f64;
+    Measured {
+        secs: r.secs,
+        placed: r.placed,
+        trials: r.trials,
+        bytes_per_shape: r.record_bytes + cells,
+    }
+}
+
+/// A 1D fill of `t` with the gap sampler.
+fn fill_1d(t: &Target, count: u64) -> Measured {
+    let n = count as usize;
+    let mut segments = vec![Segment::<f64>::default(); n];
+    let mut index = vec![0u32; line_index_words(n)];
+    let mut slots = vec![LineGap::default(); line_gaps_for(n)];
+    let storage = LineStorage {
+        segments: &mut segments,
+        index: &mut index,
+    };
+    let interval = Interval {
+        length: 200.0,
+        periodic: false,
+    };
+    let stop = Stop {
+        count: Some(count),
+        ..Stop::default()
+    };
+    let clock = Instant::now();
+    let start = cpu_seconds(clock);
+    let mut e = LineEngine::new(LineParams::new(t.c, t.n_offset), interval, storage).expect("valid parameters");
+    let mut rng = rng_from_seed(1);
+    let mut gaps = LineGaps::new(&mut slots).expect("slots");
+    let mut trials = 0u64;
+    let mut placed = 0u64;
+    e.run_fast(&mut gaps, &mut rng, &stop, |p| {
+        trials += p.trials;
+        placed += 1;
+    });
+    let secs = cpu_seconds(clock) - start;
+    let bytes = std::mem::size_of::<Segment<f64>>() as f64
+        + 4.0 * line_index_words(n) as f64 / n as f64
+        + (std::mem::size_of::<LineGap>() * line_gaps_for(n)) as f64 / n as f64;
+    Measured {
+        secs,
+        placed,
+        trials,
+        bytes_per_shape: bytes,
+    }
+}
+
+fn measure(t: &Target, scale: u64) -> Measured {
+    let count = (t.count / scale).max(1);
+    match t.shape {
+        Some(kind) => fill_2d(t, kind, count),
+        None => fill_1d(t, count),
+    }
+}
+
+fn arg(name: &str) -> Option<String> {
+    std::env::args().skip_while(|a| a != name).nth(1)
+}
+
+fn main() {
+    let scale: u64 = arg("--scale").and_then(|s| s.parse().ok()).unwrap_or(1).max(1);
+    if let Some(name) = arg("--one") {
+        let t = TARGETS.iter().find(|t| t.name == name).expect("a target's name");
+        let m = measure(t, scale);
+        println!("{}: {} placed, {} trials, {:.3} s", t.name, m.placed, m.trials, m.secs);
+        return;
+    }
+    println!("| fill | n | CPU s | target s | x target | us/placement | trials/placement | bytes/shape |");
+    println!("|---|---:|---:|---:|---:|---:|---:|---:|");
+    for t in &TARGETS {
+        let m = measure(t, scale);
+        let placed = m.placed.max(1) as f64;
+        // A target scaled down with the count, as the time per placement would be if flat.
+        let target = t.secs / scale as f64;
+        println!(
+            "| {} | {} | {:.2} | {target:.2} | {:.1} | {:.2} | {:.1} | {:.0} |",
+            t.what,
+            m.placed,
+            m.secs,
+            m.secs / target,
+            m.secs * 1e6 / placed,
+            m.trials as f64 / placed,
+            m.bytes_per_shape,
+        );
+    }
+}

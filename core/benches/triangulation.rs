@@ -547,21 +547,23 @@ impl Fill {
                 v: [s, d, qv],
                 n: [uq, tp, t],
             };
-            if up != NONE {
-                let x = &mut self.tris[up as usize];
-                let i = x.n.iter().position(|&y| y == u).expect("neighbours point at each other");
-                x.n[i] = t;
-            }
-            if tp != NONE {
-                let x = &mut self.tris[tp as usize];
-                let i = x.n.iter().position(|&y| y == t).expect("neighbours point at each other");
-                x.n[i] = u;
-            }
+            self.repoint(up, u, t);
+            self.repoint(tp, t, u);
             touched.push(t);
             touched.push(u);
             stack.push((t, s));
             stack.push((u, s));
         }
+    }
+
+    /// Makes triangle `nbr` (none on the hull) name `new` where it named `old` as a neighbour.
+    fn repoint(&mut self, nbr: u32, old: u32, new: u32) {
+        if nbr == NONE {
+            return;
+        }
+        let x = &mut self.tris[nbr as usize];
+        let i = x.n.iter().position(|&y| y == old).expect("neighbours point at each other");
+        x.n[i] = new;
     }
 
     fn insert(&mut self, s: u32, t: u32, need: f64) {
@@ -582,13 +584,8 @@ impl Fill {
             v: [a, b, s],
             n: [t, t1, nc],
         };
-        for (nbr, new) in [(nb, t1), (nc, t2)] {
-            if nbr != NONE {
-                let x = &mut self.tris[nbr as usize];
-                let i = x.n.iter().position(|&y| y == t).expect("neighbours point at each other");
-                x.n[i] = new;
-            }
-        }
+        self.repoint(nb, t, t1);
+        self.repoint(nc, t, t2);
         let mut touched = vec![t, t1, t2];
         let mut stack = vec![(t, s), (t1, s), (t2, s)];
         self.legalize(&mut stack, &mut touched);

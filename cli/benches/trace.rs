@@ -7,6 +7,8 @@
 //! outline wobbles round the picture's centre. Run with `cargo bench -p zetafill-cli --bench
 //! trace`; prints a Markdown table for docs/performance.md. Measures only; the test suite
 //! asserts nothing about time.
+// Checks may use the platform's maths: only what the tool writes must go through libm.
+#![allow(clippy::disallowed_methods)]
 
 use std::time::Instant;
 use zetafill_cli::geometry::{simplify, trace};

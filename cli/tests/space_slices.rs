@@ -3,6 +3,8 @@
 //! inside the drawn outline (even-odd) exactly when it is inside the solid. The checker has
 //! twins fed broken sections that must fail. The sheets are written as SVG (read back by
 //! usvg) and as G-code, like any picture.
+// Checks may use the platform's maths: only what the tool writes must go through libm.
+#![allow(clippy::disallowed_methods)]
 
 use std::f64::consts::TAU;
 use zetafill_cli::model::picture::{Item, Shape};

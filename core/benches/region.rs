@@ -11,6 +11,8 @@
 //! vertices or squares), `--way WAY` (`before`, `pairs`, `tree` or `fill`: one way only, for
 //! `valgrind --tool=callgrind --toggle-collect='*legacy::validate*'` or
 //! `'*PolygonRegion::new_in*'`). Prints Markdown. It measures; it asserts nothing about time.
+// Checks may use the platform's maths: only what the tool writes must go through libm.
+#![allow(clippy::disallowed_methods)]
 
 use std::time::Instant;
 use zetafill::internals::region::legacy;

@@ -8,6 +8,8 @@
 //! And the cell sampler halts with certainty only where nothing fits: before, its bounds on the
 //! clearance fell far below the truth for large polygons (a squared cross product saturated),
 //! and it gave up on triangles at placement 9 that the reference sampler places to 2,000.
+// Checks may use the platform's maths: only what the tool writes must go through libm.
+#![allow(clippy::disallowed_methods)]
 
 mod common;
 

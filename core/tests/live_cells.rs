@@ -1,5 +1,7 @@
 //! The invariant the cell sampler's exactness rests on, checked by brute force: through whole
 //! fills in every kind of region, every valid centre of the next shape lies in a live cell.
+// Checks may use the platform's maths: only what the tool writes must go through libm.
+#![allow(clippy::disallowed_methods)]
 
 mod common;
 

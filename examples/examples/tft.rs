@@ -47,7 +47,7 @@ fn main() -> std::io::Result<()> {
         Rgb565::new(30, 40, 12),
         Rgb565::new(29, 27, 10),
     ];
-    let band = |i: u64| ((((i + 1) as f64).ln() / (CAP as f64).ln() * 5.0) as usize).min(4);
+    let band = |i: u64| ((libm::log((i + 1) as f64) / libm::log(CAP as f64) * 5.0) as usize).min(4);
     let mut tft = Tft::new();
     let view = View::new(&region, W as u32, H as u32);
     let mut rng = zetafill::rng_from_seed(5);

@@ -266,7 +266,7 @@ mod tests {
         (0..n)
             .map(|k| {
                 let t = k as f64 / n as f64 * std::f64::consts::TAU;
-                Point::new(cx + r * t.cos(), cy + r * t.sin())
+                Point::new(cx + r * libm::cos(t), cy + r * libm::sin(t))
             })
             .collect()
     }

@@ -135,7 +135,7 @@ fn clip_arc(c: Pt, rad: f64, start: f64, sweep: f64, r: &Bounds) -> Vec<Path> {
     for (x, vertical) in [(r.x0, true), (r.x1, true), (r.y0, false), (r.y1, false)] {
         let d = if vertical { x - c[0] } else { x - c[1] };
         if d.abs() < rad {
-            let base = if vertical { (d / rad).acos() } else { (d / rad).asin() };
+            let base = if vertical { libm::acos(d / rad) } else { libm::asin(d / rad) };
             if vertical {
                 add(base);
                 add(-base);
@@ -387,7 +387,7 @@ mod tests {
                     sweep,
                 } => {
                     let (t0, t1) = (*start, start + sweep);
-                    a += 0.5 * (r * c[0] * (t1.sin() - t0.sin()) - r * c[1] * (t1.cos() - t0.cos()) + r * r * sweep);
+                    a += 0.5 * (r * c[0] * (libm::sin(t1) - libm::sin(t0)) - r * c[1] * (libm::cos(t1) - libm::cos(t0)) + r * r * sweep);
                 }
             }
         }

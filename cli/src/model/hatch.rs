@@ -67,7 +67,7 @@ impl Hatch {
 
     /// Unit direction of the lines and their normal.
     fn frame(&self) -> (Pt, Pt) {
-        let (s, c) = self.angle.to_radians().sin_cos();
+        let (s, c) = libm::sincos(self.angle.to_radians());
         ([c, s], [-s, c])
     }
 
@@ -179,7 +179,7 @@ mod tests {
     use super::*;
 
     fn len(s: &[Pt; 2]) -> f64 {
-        (s[1][0] - s[0][0]).hypot(s[1][1] - s[0][1])
+        libm::hypot(s[1][0] - s[0][0], s[1][1] - s[0][1])
     }
 
     #[test]
@@ -208,7 +208,7 @@ mod tests {
         assert_eq!(segs.len(), 16, "lines at k s within 4 mm of width");
         for s in &segs {
             for p in s {
-                assert!(((p[0] - c[0]).hypot(p[1] - c[1]) - r).abs() < 1e-12);
+                assert!((libm::hypot(p[0] - c[0], p[1] - c[1]) - r).abs() < 1e-12);
             }
         }
         // Area by the midpoint rule approximates the disc.
@@ -225,10 +225,10 @@ mod tests {
         };
         for s in h.annulus([0.0, 0.0], 2.0, 1.0) {
             let mid = [(s[0][0] + s[1][0]) / 2.0, (s[0][1] + s[1][1]) / 2.0];
-            let d = mid[0].hypot(mid[1]);
+            let d = libm::hypot(mid[0], mid[1]);
             assert!((1.0 - 1e-12..=2.0 + 1e-12).contains(&d), "{s:?}");
             for p in s {
-                let d = p[0].hypot(p[1]);
+                let d = libm::hypot(p[0], p[1]);
                 assert!((d - 1.0).abs() < 1e-12 || (d - 2.0).abs() < 1e-12);
             }
         }
@@ -245,7 +245,7 @@ mod tests {
         let vs = [[0.0, 0.0], [3.0, 0.0], [3.0, 2.0], [0.0, 2.0]];
         let (a, b) = (one.polygon(&vs), both.polygon(&vs));
         assert_eq!(&b[..a.len()], &a[..], "the first family is unchanged");
-        let dir = |s: &[Pt; 2]| (s[1][1] - s[0][1]).atan2(s[1][0] - s[0][0]).to_degrees().rem_euclid(180.0);
+        let dir = |s: &[Pt; 2]| libm::atan2(s[1][1] - s[0][1], s[1][0] - s[0][0]).to_degrees().rem_euclid(180.0);
         assert!(
             b[a.len()..].iter().all(|s| (dir(s) - 105.0).abs() < 1e-9),
             "the second at 105 degrees"

@@ -84,7 +84,7 @@ impl Bounds {
 
 /// The distance between two points.
 pub(crate) fn dist(a: Pt, b: Pt) -> f64 {
-    (a[0] - b[0]).hypot(a[1] - b[1])
+    libm::hypot(a[0] - b[0], a[1] - b[1])
 }
 
 impl Path {
@@ -249,7 +249,7 @@ impl Path {
 
 /// The point at angle `a` on the circle.
 pub fn polar(c: Pt, r: f64, a: f64) -> Pt {
-    [c[0] + r * a.cos(), c[1] + r * a.sin()]
+    [c[0] + r * libm::cos(a), c[1] + r * libm::sin(a)]
 }
 
 /// The multiples of π/2 strictly inside an arc's sweep (where x or y is extreme).

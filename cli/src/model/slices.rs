@@ -334,8 +334,8 @@ pub fn disc_union(discs: &[(Pt, f64)]) -> Vec<Vec<Path>> {
                 }
                 continue;
             }
-            let a = (cj[1] - ci[1]).atan2(cj[0] - ci[0]);
-            let h = ((ri * ri + d * d - rj * rj) / (2.0 * ri * d)).clamp(-1.0, 1.0).acos();
+            let a = libm::atan2(cj[1] - ci[1], cj[0] - ci[0]);
+            let h = libm::acos(((ri * ri + d * d - rj * rj) / (2.0 * ri * d)).clamp(-1.0, 1.0));
             let s = (a - h).rem_euclid(TAU);
             if s + 2.0 * h > TAU {
                 covered.push((s, TAU, j));

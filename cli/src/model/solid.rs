@@ -188,7 +188,7 @@ pub fn axis_angle(a: V3, angle: f64) -> Mat3 {
         return [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
     }
     let [x, y, z] = a.map(|v| v / n);
-    let (s, c) = angle.sin_cos();
+    let (s, c) = libm::sincos(angle);
     let t = 1.0 - c;
     [
         [t * x * x + c, t * x * y - s * z, t * x * z + s * y],
@@ -205,14 +205,14 @@ pub fn is_rotation(m: &Mat3, eps: f64) -> bool {
 
 /// The distance from `q` (local frame) to the circle of radius `major` in the xy plane.
 pub fn circle_distance(q: V3, major: f64) -> f64 {
-    (q[0].hypot(q[1]) - major).hypot(q[2])
+    libm::hypot(libm::hypot(q[0], q[1]) - major, q[2])
 }
 
 /// The tube of the largest smooth torus about the bead circle that a bead torus holds (the argument is in
 /// `output::mesh`); `None` when the beads are too far apart to hold one.
 pub fn bead_torus_tube(major: f64, minor: f64, beads: u32) -> Option<f64> {
     // t² + 2k t + (2 R k - r²) = 0 with k = R (1 - cos β).
-    let k = major * (1.0 - (PI / f64::from(beads)).cos());
+    let k = major * (1.0 - libm::cos(PI / f64::from(beads)));
     let disc = k * k - 2.0 * major * k + minor * minor;
     let t = disc.sqrt() - k;
     (disc > 0.0 && t > 0.0).then_some(t)
@@ -289,7 +289,7 @@ impl SolidKind {
             SolidKind::BeadTorus { major, beads, .. } => (0..beads)
                 .map(|k| {
                     let a = 2.0 * PI * f64::from(k) / f64::from(beads);
-                    [major * a.cos(), major * a.sin(), 0.0]
+                    [major * libm::cos(a), major * libm::sin(a), 0.0]
                 })
                 .collect(),
             _ => Vec::new(),

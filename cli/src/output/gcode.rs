@@ -189,7 +189,7 @@ impl Writer<'_> {
     }
 
     fn grid_mm(&self, a: Q, b: Q) -> f64 {
-        ((a[0] - b[0]) as f64).hypot((a[1] - b[1]) as f64) / self.k
+        libm::hypot((a[0] - b[0]) as f64, (a[1] - b[1]) as f64) / self.k
     }
 
     /// Rapid to the profile's park position, if it has one and the head is elsewhere.
@@ -293,7 +293,7 @@ impl Writer<'_> {
     fn chords(&mut self, c: Pt, r: f64, start: f64, sweep: f64) {
         let sweep = sweep.clamp(-TAU, TAU);
         let tol = self.o.chord_tolerance.min(r);
-        let step = 2.0 * (1.0 - tol / r).clamp(-1.0, 1.0).acos();
+        let step = 2.0 * libm::acos((1.0 - tol / r).clamp(-1.0, 1.0));
         let min_n = if sweep.abs() >= TAU { 8 } else { 1 };
         let n = ((sweep.abs() / step.max(1e-9)).ceil() as usize).clamp(min_n, 100_000);
         let pts: Vec<Pt> = (0..=n)
@@ -311,13 +311,13 @@ impl Writer<'_> {
         let (sy, _, _) = self.m.bed_to_machine();
         // Direction on the machine: a mirrored y turns the arc the other way.
         let ccw = (sweep > 0.0) == (sy > 0.0);
-        let rq = ((qs[0] - qc[0]) as f64).hypot((qs[1] - qc[1]) as f64);
+        let rq = libm::hypot((qs[0] - qc[0]) as f64, (qs[1] - qc[1]) as f64);
         let ok = self.o.arcs && rq >= 10.0 && {
-            let a_s = ((qs[1] - qc[1]) as f64).atan2((qs[0] - qc[0]) as f64);
+            let a_s = libm::atan2((qs[1] - qc[1]) as f64, (qs[0] - qc[0]) as f64);
             let (a_from, span) = if full {
                 (a_s, TAU)
             } else {
-                let a_e = ((qe[1] - qc[1]) as f64).atan2((qe[0] - qc[0]) as f64);
+                let a_e = libm::atan2((qe[1] - qc[1]) as f64, (qe[0] - qc[0]) as f64);
                 let span = if ccw {
                     (a_e - a_s).rem_euclid(TAU)
                 } else {
@@ -329,8 +329,8 @@ impl Writer<'_> {
             // a controller reads as a full circle) and stay inside the bed.
             let sane = full || (qs != qe && (span - sweep.abs()).abs() < 1e-3 && span > 1e-3);
             let extremes_in = arc_extremes(a_from, span).into_iter().all(|a| {
-                let x = qc[0] as f64 + rq * a.cos();
-                let y = qc[1] as f64 + rq * a.sin();
+                let x = qc[0] as f64 + rq * libm::cos(a);
+                let y = qc[1] as f64 + rq * libm::sin(a);
                 x >= self.lo[0] as f64 && x <= self.hi[0] as f64 && y >= self.lo[1] as f64 && y <= self.hi[1] as f64
             });
             sane && extremes_in

@@ -162,7 +162,14 @@ pub fn uv_sphere(radius: f64, n: u32) -> Mesh {
         let theta = PI * f64::from(i) / f64::from(bands);
         for j in 0..n {
             let phi = 2.0 * PI * f64::from(j) / f64::from(n);
-            vertices.push(scale([theta.sin() * phi.cos(), theta.sin() * phi.sin(), theta.cos()], radius));
+            vertices.push(scale(
+                [
+                    libm::sin(theta) * libm::cos(phi),
+                    libm::sin(theta) * libm::sin(phi),
+                    libm::cos(theta),
+                ],
+                radius,
+            ));
         }
     }
     vertices.push([0.0, 0.0, -radius]);
@@ -222,7 +229,7 @@ pub fn triangle_distance(t: [V3; 3], p: V3) -> f64 {
 /// with `n` segments around its ring: `minor - major (1 - cos(π / n))` (see the module's
 /// argument); `None` when nothing is left.
 pub fn torus_mesh_tube(major: f64, minor: f64, n: u32) -> Option<f64> {
-    let t = minor - major * (1.0 - (PI / f64::from(n)).cos());
+    let t = minor - major * (1.0 - libm::cos(PI / f64::from(n)));
     (t > 0.0).then_some(t)
 }
 
@@ -235,8 +242,8 @@ pub fn torus_mesh(major: f64, tube: f64, n: u32) -> Mesh {
         let u = 2.0 * PI * f64::from(i) / f64::from(n);
         for j in 0..m {
             let v = 2.0 * PI * f64::from(j) / f64::from(m);
-            let rho = major + tube * v.cos();
-            vertices.push([rho * u.cos(), rho * u.sin(), tube * v.sin()]);
+            let rho = major + tube * libm::cos(v);
+            vertices.push([rho * libm::cos(u), rho * libm::sin(u), tube * libm::sin(v)]);
         }
     }
     let at = |i: u32, j: u32| (i % n) * m + j % m;
@@ -552,7 +559,7 @@ mod tests {
         let t = bead_torus_tube(3.0, 1.0, 16).expect("overlapping beads");
         // Midway between two beads on the outer side, the smooth torus touches the union.
         let b = PI / 16.0;
-        let p = [(3.0 + t) * b.cos(), (3.0 + t) * b.sin(), 0.0];
+        let p = [(3.0 + t) * libm::cos(b), (3.0 + t) * libm::sin(b), 0.0];
         assert!(kind.contains_local(p, 1e-12) && !kind.contains_local(scale(p, 1.0 + 1e-9), 0.0));
         assert_eq!(bead_torus_tube(3.0, 0.3, 8), None);
     }

@@ -169,7 +169,7 @@ fn greedy(paths: &[Path], home: Pt) -> Vec<(usize, Entry)> {
         let p = &paths[i];
         let e = if let Some((c, _)) = full_circle(p) {
             let (dx, dy) = (pen[0] - c[0], pen[1] - c[1]);
-            let a = if dx == 0.0 && dy == 0.0 { 0.0 } else { dy.atan2(dx) };
+            let a = if dx == 0.0 && dy == 0.0 { 0.0 } else { libm::atan2(dy, dx) };
             Entry::Angle(a, false)
         } else if closed_polyline(p).is_some() {
             Entry::Vertex(tag as usize, false)
@@ -408,7 +408,7 @@ fn polish(paths: &[Path], seq: &mut [(usize, Entry)], home: Pt) {
             }
             Entry::Angle(_, rev) => {
                 if let Some((c, _)) = full_circle(p) {
-                    let ang = |q: Pt| (q[1] - c[1]).atan2(q[0] - c[0]);
+                    let ang = |q: Pt| libm::atan2(q[1] - c[1], q[0] - c[0]);
                     consider(Entry::Angle(ang(prev), rev));
                     if let Some(x) = next {
                         consider(Entry::Angle(ang(x), rev));

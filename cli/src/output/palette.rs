@@ -88,12 +88,12 @@ pub fn random_pick(seed: u64, index: u64, k: usize) -> usize {
 pub fn log_bands(sizes: &[f64], k: usize) -> Vec<usize> {
     let k = k.max(1);
     let (max, min) = sizes.iter().fold((0.0f64, f64::INFINITY), |(a, b), &v| (a.max(v), b.min(v)));
-    let span = if min > 0.0 && max > min { (max / min).ln() } else { 0.0 };
+    let span = if min > 0.0 && max > min { libm::log(max / min) } else { 0.0 };
     sizes
         .iter()
         .map(|&v| {
             if span > 0.0 && v > 0.0 {
-                ((k as f64 * (max / v).ln() / span).floor() as usize).min(k - 1)
+                ((k as f64 * libm::log(max / v) / span).floor() as usize).min(k - 1)
             } else {
                 0
             }

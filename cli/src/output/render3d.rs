@@ -198,7 +198,7 @@ impl<'a> Scene<'a> {
         }
         let ext = sub(hi, lo).map(|x| x.max(1e-9));
         let target = (4 * entries.len()).clamp(1, 1 << 21) as f64;
-        let h = (ext[0] * ext[1] * ext[2] / target).cbrt();
+        let h = libm::cbrt(ext[0] * ext[1] * ext[2] / target);
         let dims = ext.map(|x| ((x / h).ceil() as usize).clamp(1, 256));
         let cell = [0, 1, 2].map(|k| ext[k] / dims[k] as f64);
         let index = |p: V3, k: usize| (((p[k] - lo[k]) / cell[k]).floor().max(0.0) as usize).min(dims[k] - 1);
@@ -356,7 +356,7 @@ impl<'a> Scene<'a> {
                     let q = add(lo, scale(ld, t));
                     let dist = circle_distance(q, major) - minor;
                     if dist < 1e-7 * rr {
-                        let rho = q[0].hypot(q[1]).max(f64::MIN_POSITIVE);
+                        let rho = libm::hypot(q[0], q[1]).max(f64::MIN_POSITIVE);
                         let n = unit(sub(q, [major * q[0] / rho, major * q[1] / rho, 0.0]));
                         return (t > 0.0).then(|| (t, mul(&s.rotation, n)));
                     }

@@ -40,7 +40,7 @@ impl Field {
     fn of_luma(l: f64, invert: bool, gamma: f64, floor: f64) -> f64 {
         let t = (if invert { l } else { 1.0 - l }).clamp(0.0, 1.0);
         // `t^1` is `t` exactly: the common case skips the power.
-        floor + (1.0 - floor) * if gamma == 1.0 { t } else { t.powf(gamma) }
+        floor + (1.0 - floor) * if gamma == 1.0 { t } else { libm::pow(t, gamma) }
     }
 }
 

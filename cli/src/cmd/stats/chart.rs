@@ -45,7 +45,7 @@ fn thin_log(points: &[(f64, f64)]) -> Vec<(f64, f64)> {
     let mut out: Vec<(f64, f64)> = Vec::new();
     let mut last_step = i64::MIN;
     for &p in points {
-        let step = (p.0.log10() * 400.0).floor() as i64;
+        let step = (libm::log10(p.0) * 400.0).floor() as i64;
         if step != last_step {
             out.push(p);
             last_step = step;
@@ -90,7 +90,7 @@ pub fn trials_chart(series: &[TrialsSeries], title: &str) -> Result<Vec<u8>, Cli
                 .label(s.label.clone())
                 .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], col.stroke_width(2)));
             if let Some((k, a, n0, n1)) = s.fit {
-                let line = [(n0, a * n0.powf(k)), (n1, a * n1.powf(k))];
+                let line = [(n0, a * libm::pow(n0, k)), (n1, a * libm::pow(n1, k))];
                 chart
                     .draw_series(LineSeries::new(line, BLACK.stroke_width(1)))
                     .map_err(chart_error)?;

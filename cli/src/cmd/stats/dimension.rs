@@ -467,7 +467,7 @@ pub fn estimate(set: &FillSet, c: f64, range: &BoxRange) -> Result<DimensionDoc,
     let pts: Vec<(f64, f64)> = boxes
         .iter()
         .filter(|b| b.used && b.count > 0)
-        .map(|b| ((1.0 / b.size).ln(), (b.count as f64).ln()))
+        .map(|b| (libm::log(1.0 / b.size), libm::log(b.count as f64)))
         .collect();
     let d = zetafill::internals::stats::least_squares(&pts)
         .map(|(k, _)| k)

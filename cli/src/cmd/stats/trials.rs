@@ -138,9 +138,9 @@ fn fit(cum: &[(f64, f64)], from: f64) -> Option<(f64, f64)> {
     let pts: Vec<(f64, f64)> = cum
         .iter()
         .filter(|p| p.0 >= from && p.1 > 0.0)
-        .map(|p| (p.0.ln(), p.1.ln()))
+        .map(|p| (libm::log(p.0), libm::log(p.1)))
         .collect();
-    zetafill::internals::stats::least_squares(&pts).map(|(k, b)| (k, b.exp()))
+    zetafill::internals::stats::least_squares(&pts).map(|(k, b)| (k, libm::exp(b)))
 }
 
 /// `zetafill stats trials`.

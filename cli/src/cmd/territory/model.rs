@@ -428,7 +428,7 @@ impl Model {
 
 /// m = floor(log2(s i)), at least 1.
 pub fn bucket_side(s: f64, i: usize) -> usize {
-    let v = (s * i as f64).log2().floor();
+    let v = libm::log2(s * i as f64).floor();
     if v.is_finite() && v >= 1.0 {
         (v as usize).min(4096)
     } else {

@@ -299,6 +299,54 @@ const otherArgs = $('other-args');
 function splitWords(text) {
   return [...text.matchAll(/'([^']*)'|"([^"]*)"|(\S+)/g)].map((m) => m[1] ?? m[2] ?? m[3]);
 }
+
+// The tab's controls: each owns one flag of the command line. A checkbox is a flag alone;
+// any other control a flag and its value, where an empty value leaves the flag out.
+const otherForm = () => document.querySelector(`.other-controls[data-for="${tab}"]`);
+const isSwitch = (el) => el.type === 'checkbox';
+
+// Where `--flag` stands in `words` (also as `--flag=value`), and the words it takes.
+function flagAt(words, flag, from, takesValue) {
+  for (let i = from; i < words.length; i++) {
+    if (words[i] === `--${flag}`) return [i, takesValue && i + 1 < words.length ? 2 : 1];
+    if (takesValue && words[i].startsWith(`--${flag}=`)) return [i, 1];
+  }
+  return null;
+}
+
+// The value of `el`'s flag in `words`: its last one (as clap takes it), or '' (or false).
+function flagValue(words, el) {
+  let value = isSwitch(el) ? false : '';
+  for (let at = flagAt(words, el.dataset.flag, 0, !isSwitch(el)); at; at = flagAt(words, el.dataset.flag, at[0] + at[1], !isSwitch(el))) {
+    const w = words[at[0]];
+    value = isSwitch(el) ? true : w.includes('=') ? w.slice(w.indexOf('=') + 1) : (words[at[0] + 1] ?? '');
+  }
+  return value;
+}
+
+// The command line with `el`'s flag set from `el`: every earlier use of the flag goes, and
+// the control's value (if any) is added at the end.
+function withControl(text, el) {
+  const words = splitWords(text);
+  for (let at; (at = flagAt(words, el.dataset.flag, 0, !isSwitch(el)));) words.splice(at[0], at[1]);
+  if (isSwitch(el) ? el.checked : el.value.trim() !== '') {
+    words.push(`--${el.dataset.flag}`);
+    if (!isSwitch(el)) words.push(el.value.trim());
+  }
+  return words.map(shellWord).join(' ');
+}
+
+// Sets the tab's controls from the command line.
+function controlsFromArgs() {
+  const words = splitWords(otherArgs.value);
+  for (const el of otherForm()?.querySelectorAll('[data-flag]') ?? []) {
+    const v = flagValue(words, el);
+    if (isSwitch(el)) el.checked = v;
+    // A value a select does not offer stays in the command line; the select shows the default.
+    else if (el.tagName === 'SELECT') el.value = [...el.options].some((o) => o.value === v) ? v : '';
+    else el.value = v;
+  }
+}
 const otherArgv = (ext) => [tab, ...splitWords(otherArgs.value), '-o', `${tab}.${ext}`];
 
 function otherRun(ext) {
@@ -347,13 +395,26 @@ function showTab(name, args) {
     return;
   }
   document.querySelectorAll('.tab-name').forEach((e) => { e.textContent = name; });
+  document.querySelectorAll('.other-controls').forEach((f) => { f.hidden = f.dataset.for !== name; });
   otherArgs.value = args ?? EXAMPLES[name];
+  controlsFromArgs();
   $('other-picture').removeAttribute('src');
   otherChanged();
 }
 
 document.querySelectorAll('[data-tab]').forEach((b) => b.addEventListener('click', () => showTab(b.dataset.tab)));
-otherArgs.addEventListener('input', otherChanged);
+otherArgs.addEventListener('input', () => {
+  controlsFromArgs();
+  otherChanged();
+});
+document.querySelectorAll('.other-controls').forEach((f) => {
+  f.addEventListener('input', (ev) => {
+    if (!ev.target.dataset.flag) return;
+    otherArgs.value = withControl(otherArgs.value, ev.target);
+    otherChanged();
+  });
+  f.addEventListener('submit', (ev) => ev.preventDefault());
+});
 document.querySelectorAll('[data-other]').forEach((b) => b.addEventListener('click', async () => {
   const ext = b.dataset.other;
   try {

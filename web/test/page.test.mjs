@@ -257,3 +257,69 @@ for (const [tab, args, exts] of TABS) {
     await page.close();
   });
 }
+
+/** The bytes the CLI writes for the other tabs' `argv` (as `otherArgv` gives it). */
+function otherFile(argv) {
+  const out = join(work, argv.at(-1));
+  const r = cli([...argv.slice(0, -1), out], work);
+  assert.ok(r.status === 0 || r.status === 3, `zetafill ${argv.join(' ')}: ${r.stderr}`);
+  return readFileSync(out);
+}
+
+test("the other tabs' controls and their command line set each other", async () => {
+  const page = await openPage(`?${new URLSearchParams({ tab: 'tile', args: '--seed 2 --radius 8 --spacing 2 --tries 800' })}`);
+  const args = () => page.inputValue('#other-args');
+  // Waits for a drawing other than `before` to be shown and returns its address.
+  const drawn = async (before) => {
+    await page.waitForFunction((b) => {
+      const src = document.getElementById('other-picture').getAttribute('src');
+      return src && src !== b && /^done/.test(document.getElementById('other-state').textContent);
+    }, before, { timeout: 120_000 });
+    return page.getAttribute('#other-picture', 'src');
+  };
+  let src = await drawn(null);
+  const tile = (flag) => `#controls-tile [data-flag=${flag}]`;
+  // The command line sets the controls; only the tab's own are shown.
+  assert.equal(await page.inputValue(tile('seed')), '2');
+  assert.equal(await page.inputValue(tile('radius')), '8');
+  assert.equal(await page.inputValue(tile('layout')), '');
+  assert.equal(await page.isVisible('#controls-tile'), true);
+  assert.equal(await page.isVisible('#controls-line'), false);
+  // A control rewrites its own flag, and the files are the CLI's for the new command line.
+  await page.selectOption(tile('layout'), 'mosaic');
+  assert.equal(await args(), '--seed 2 --radius 8 --spacing 2 --tries 800 --layout mosaic');
+  src = await drawn(src);
+  const before = await bytesFrom(page, 'otherBytes', 'svg');
+  await page.fill(tile('seed'), '5');
+  assert.equal(await args(), '--radius 8 --spacing 2 --tries 800 --layout mosaic --seed 5');
+  src = await drawn(src);
+  const argv = await page.evaluate(() => window.zetafill.otherArgv('svg'));
+  assert.deepEqual(argv, ['tile', '--radius', '8', '--spacing', '2', '--tries', '800', '--layout', 'mosaic', '--seed', '5', '-o', 'tile.svg']);
+  const bytes = await bytesFrom(page, 'otherBytes', 'svg');
+  sameBytes(bytes, otherFile(argv), `svg of zetafill ${argv.join(' ')}`);
+  // The comparison can fail: the seed's control changed the drawing.
+  assert.throws(() => sameBytes(before, bytes, 'seed 2 against seed 5'), /first difference/);
+  // An emptied control leaves its flag out (the CLI's default).
+  await page.fill(tile('seed'), '');
+  assert.equal(await args(), '--radius 8 --spacing 2 --tries 800 --layout mosaic');
+  // An edit of the command line sets the controls, `--flag=value` included.
+  await page.fill('#other-args', '--seed=7 --radius 8 --spacing 2 --tries 800 --layout planet --rows 3 --style filled');
+  assert.equal(await page.inputValue(tile('seed')), '7');
+  assert.equal(await page.inputValue(tile('layout')), 'planet');
+  assert.equal(await page.inputValue(tile('rows')), '3');
+  assert.equal(await page.inputValue(tile('style')), 'filled');
+  // The line tab: a checkbox is a flag alone.
+  await page.click('[data-tab=line]');
+  assert.equal(await page.isVisible('#controls-line'), true);
+  assert.equal(await page.isVisible('#controls-tile'), false);
+  assert.equal(await page.inputValue('#controls-line [data-flag=render]'), 'bars');
+  await page.check('#controls-line [data-flag=periodic]');
+  await page.selectOption('#controls-line [data-flag=render]', 'circles');
+  assert.match(await args(), / --periodic --render circles$/);
+  src = await drawn(src);
+  const lineArgv = await page.evaluate(() => window.zetafill.otherArgv('svg'));
+  sameBytes(await bytesFrom(page, 'otherBytes', 'svg'), otherFile(lineArgv), `svg of zetafill ${lineArgv.join(' ')}`);
+  await page.uncheck('#controls-line [data-flag=periodic]');
+  assert.doesNotMatch(await args(), /--periodic/);
+  await page.close();
+});

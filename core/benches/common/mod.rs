@@ -34,11 +34,17 @@ pub struct CellFill {
 /// `count` shapes of `params` in [`RECT`], seed 1, with the cell sampler and the storage the
 /// CLI lends it for `cap` shapes (`cells_for(cap)` cells, no coverage bitmap).
 #[allow(dead_code)] // (not every benchmark fills in 2D)
-pub fn cell_fill(mut params: Params, cap: usize, count: u64) -> CellFill {
+pub fn cell_fill(params: Params, cap: usize, count: u64) -> CellFill {
+    cell_fill_lent(params, cap, count, cells_for(cap.max(1)))
+}
+
+/// [`cell_fill`] with `cells` cells lent to the sampler instead (`zetafill fill --cells`).
+#[allow(dead_code)] // (not every benchmark fills in 2D)
+pub fn cell_fill_lent(mut params: Params, cap: usize, count: u64, cells: usize) -> CellFill {
     let cap = cap.max(1);
     let mut shapes = vec![Placed::<f64>::default(); cap];
     let mut index = vec![0u32; index_words(cap)];
-    let mut pool = vec![[0u64; 4]; cells_for(cap)];
+    let mut pool = vec![[0u64; 4]; cells.max(1)];
     params.max_trials = 1_000_000_000;
     let storage = Storage {
         shapes: &mut shapes,

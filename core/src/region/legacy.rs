@@ -9,13 +9,9 @@
 //! largest coordinate) as crossing, four nearly collinear points far apart: it rejects those
 //! outlines, the region accepts them.
 
+use super::polygon::ring_slices;
 use super::RegionError;
 use crate::geom::{edges, point_in_poly, segments_intersect, Point};
-
-fn ring_slices<'a>(points: &'a [Point<f64>], ends: &'a [usize]) -> impl Iterator<Item = &'a [Point<f64>]> + 'a {
-    let starts = core::iter::once(0).chain(ends.iter().copied());
-    starts.zip(ends.iter().copied()).map(move |(a, b)| points.get(a..b).unwrap_or(&[]))
-}
 
 /// Validates rings as the region did before the edge tree and returns the area (holes
 /// subtracted), or the same errors in the same order of checks.

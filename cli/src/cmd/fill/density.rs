@@ -112,21 +112,29 @@ fn bilinear(g: &Grey, bbox: &(f64, f64, f64, f64), x: f64, y: f64) -> f64 {
 }
 
 /// The densest pixel (the darkest, or the lightest when `light`) of every aligned block of
-/// `2^L x 2^L` pixels, level by level (level 0 the pixels themselves), for range queries in
-/// constant time.
+/// `2^L x 2^L` pixels, level by level (level 0 the pixels themselves, shared with the picture
+/// rather than copied: a picture of 64 million pixels would take 256 MB more), for range
+/// queries in constant time.
 pub(super) struct Pyramid {
     /// Whether the densest pixel is the lightest.
     light: bool,
-    /// Level `L`: its width and height in blocks, and the densest pixel block by block, row by row.
+    /// Level 0: the picture.
+    grey: Arc<Grey>,
+    /// Levels 1 and up: width and height in blocks, and the densest pixel block by block, row
+    /// by row.
     levels: Vec<(usize, usize, Vec<f32>)>,
 }
 
 impl Pyramid {
     /// The pyramid of `g`, up to a single block; its densest pixels are the lightest when
     /// `light`.
-    pub(super) fn new(g: &Grey, light: bool) -> Self {
-        let mut levels = vec![(g.width.max(1), g.height.max(1), g.luma.clone())];
-        while let Some((w, h, prev)) = levels.last().filter(|(w, h, _)| *w > 1 || *h > 1) {
+    pub(super) fn new(g: Arc<Grey>, light: bool) -> Self {
+        let mut p = Pyramid {
+            light,
+            grey: g,
+            levels: Vec::new(),
+        };
+        while let Some((w, h, prev)) = p.level(p.levels.len()).filter(|(w, h, _)| *w > 1 || *h > 1) {
             let (nw, nh) = (w.div_ceil(2), h.div_ceil(2));
             let mut next = Vec::with_capacity(nw * nh);
             for j in 0..nh {
@@ -134,14 +142,22 @@ impl Pyramid {
                     let block = [(0, 0), (1, 0), (0, 1), (1, 1)].map(|(di, dj)| (2 * i + di, 2 * j + dj));
                     let values = block
                         .iter()
-                        .filter(|(x, y)| x < w && y < h)
+                        .filter(|(x, y)| x < &w && y < &h)
                         .filter_map(|(x, y)| prev.get(y * w + x));
                     next.push(Self::densest(light, values.copied()));
                 }
             }
-            levels.push((nw, nh, next));
+            p.levels.push((nw, nh, next));
         }
-        Pyramid { light, levels }
+        p
+    }
+
+    /// Level `l`: its width and height in blocks and its blocks, row by row.
+    fn level(&self, l: usize) -> Option<(usize, usize, &[f32])> {
+        match l.checked_sub(1) {
+            None => Some((self.grey.width.max(1), self.grey.height.max(1), &self.grey.luma)),
+            Some(k) => self.levels.get(k).map(|(w, h, v)| (*w, *h, v.as_slice())),
+        }
     }
 
     /// The densest of `values` (darkest, or lightest when `light`); the densest possible when
@@ -168,8 +184,8 @@ impl Pyramid {
         if (i1 >> level) > (i0 >> level) + 1 || (j1 >> level) > (j0 >> level) + 1 {
             level += 1;
         }
-        let level = level.min(self.levels.len().saturating_sub(1));
-        let Some((w, h, blocks)) = self.levels.get(level) else {
+        let level = level.min(self.levels.len());
+        let Some((w, h, blocks)) = self.level(level) else {
             return if self.light { 1.0 } else { 0.0 };
         };
         let (bi0, bi1) = ((i0 >> level).min(w - 1), (i1 >> level).min(w - 1));
@@ -205,7 +221,7 @@ pub(super) fn field(a: &FillRun, region: &Region<'_>) -> Result<Option<Field>, C
                 return Err(CliError::Io("internal: the --density picture was not read".into()));
             };
             Field::Picture {
-                pyramid: Pyramid::new(&grey, invert),
+                pyramid: Pyramid::new(grey.clone(), invert),
                 grey,
                 bbox: region.bbox(),
                 invert,
@@ -233,7 +249,7 @@ mod tests {
 
     fn field_of(grey: Arc<Grey>, bbox: (f64, f64, f64, f64), invert: bool, gamma: f64, floor: f64) -> Field {
         Field::Picture {
-            pyramid: Pyramid::new(&grey, invert),
+            pyramid: Pyramid::new(grey.clone(), invert),
             grey,
             bbox,
             invert,
@@ -295,7 +311,7 @@ mod tests {
     #[test]
     fn the_pyramid_finds_the_extremes_of_a_range() {
         let grey = picture(13, 9, |i, j| ((i * 31 + j * 17) % 101) as f32 / 100.0);
-        let (dark, light) = (Pyramid::new(&grey, false), Pyramid::new(&grey, true));
+        let (dark, light) = (Pyramid::new(grey.clone(), false), Pyramid::new(grey.clone(), true));
         let mut state = 7;
         let mut exact = 0;
         for _ in 0..500 {

@@ -11,6 +11,9 @@
 //! profiler: `circles`, `circles-lean`, `circles-1.4`, `squares`, `stars`, `segments`). It
 //! measures; it asserts nothing about time.
 //!
+//! `-- --budgets` fills the first target's circles lent `cells_for(n)`, then 12, 8, 4 and 2.3
+//! cells a shape, and prints a row for each.
+//!
 //! `circles-lean` is the first fill with 2.3 cells a shape lent to the sampler (`zetafill fill
 //! --cells`) instead of `cells_for(n)`: the budget that keeps its storage within the memory
 //! target of 120 bytes a shape. Lent less, the sampler stops splitting sooner and stays exact;
@@ -181,8 +184,34 @@ fn arg(name: &str) -> Option<String> {
     std::env::args().skip_while(|a| a != name).nth(1)
 }
 
+/// Circles at c 1.3 (the first target's fill) with each number of cells a shape lent, and
+/// with `cells_for(n)`: the time and memory a budget buys (`-- --budgets`).
+fn budgets(scale: u64) {
+    let t = &TARGETS[0];
+    let count = (t.count / scale).max(1);
+    println!("| cells lent a shape | CPU s | us/placement | trials/placement | bytes/shape |");
+    println!("|---|---:|---:|---:|---:|");
+    for k in [None, Some(12.0), Some(8.0), Some(4.0), Some(2.3)] {
+        let lent = Target { cells_per_shape: k, ..*t };
+        let m = fill_2d(&lent, ShapeKind::Circle, count);
+        let placed = m.placed.max(1) as f64;
+        let what = k.map_or("`cells_for(n)`".to_string(), |k| format!("{k}"));
+        println!(
+            "| {what} | {:.2} | {:.2} | {:.1} | {:.0} |",
+            m.secs,
+            m.secs * 1e6 / placed,
+            m.trials as f64 / placed,
+            m.bytes_per_shape
+        );
+    }
+}
+
 fn main() {
     let scale: u64 = arg("--scale").and_then(|s| s.parse().ok()).unwrap_or(1).max(1);
+    if std::env::args().any(|a| a == "--budgets") {
+        budgets(scale);
+        return;
+    }
     if let Some(name) = arg("--one") {
         let t = TARGETS.iter().find(|t| t.name == name).expect("a target's name");
         let m = measure(t, scale);

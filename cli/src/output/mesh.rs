@@ -162,14 +162,8 @@ pub fn uv_sphere(radius: f64, n: u32) -> Mesh {
         let theta = PI * f64::from(i) / f64::from(bands);
         for j in 0..n {
             let phi = 2.0 * PI * f64::from(j) / f64::from(n);
-            vertices.push(scale(
-                [
-                    libm::sin(theta) * libm::cos(phi),
-                    libm::sin(theta) * libm::sin(phi),
-                    libm::cos(theta),
-                ],
-                radius,
-            ));
+            let (st, sp) = (libm::sin(theta), libm::sin(phi));
+            vertices.push(scale([st * libm::cos(phi), st * sp, libm::cos(theta)], radius));
         }
     }
     vertices.push([0.0, 0.0, -radius]);

@@ -14,6 +14,10 @@
 //! `-- --budgets` fills the first target's circles lent `cells_for(n)`, then 12, 8, 4 and 2.3
 //! cells a shape, and prints a row for each.
 //!
+//! `-- --latency` measures what the placements wait on: the time of a load that depends on the
+//! one before (a chase through a random cycle of 64-byte lines, one chain), and of loads that
+//! do not (eight chains at once), in working sets from 16 KiB to 512 MiB.
+//!
 //! `circles-lean` is the first fill with 2.3 cells a shape lent to the sampler (`zetafill fill
 //! --cells`) instead of `cells_for(n)`: the budget that keeps its storage within the memory
 //! target of 120 bytes a shape. Lent less, the sampler stops splitting sooner and stays exact;
@@ -184,6 +188,56 @@ fn arg(name: &str) -> Option<String> {
     std::env::args().skip_while(|a| a != name).nth(1)
 }
 
+/// Nanoseconds a load takes in a working set of `bytes`, one 64-byte line a step through a
+/// random cycle (Sattolo's shuffle, so the cycle holds every line): with `chains` walks at
+/// once, each load depends only on the one before in its own chain.
+fn chase(bytes: usize, chains: usize) -> f64 {
+    use rand_core::RngCore;
+    const LINE: usize = 8; // u64 words a 64-byte line
+    let lines = bytes / 64;
+    let mut next = vec![0u64; lines * LINE];
+    let mut order: Vec<usize> = (0..lines).collect();
+    let mut rng = rng_from_seed(7);
+    for i in (1..lines).rev() {
+        let j = (rng.next_u64() % i as u64) as usize;
+        order.swap(i, j);
+    }
+    for k in 0..lines {
+        next[order[k] * LINE] = (order[(k + 1) % lines] * LINE) as u64;
+    }
+    let steps = 20_000_000 / chains;
+    // Chains start a cycle's share apart, so they do not share lines.
+    let mut at: Vec<usize> = (0..chains).map(|c| order[c * lines / chains] * LINE).collect();
+    let t = Instant::now();
+    let before = cpu_seconds(t);
+    for _ in 0..steps {
+        for a in at.iter_mut() {
+            *a = next[*a] as usize;
+        }
+    }
+    let secs = cpu_seconds(t) - before;
+    std::hint::black_box(&at);
+    secs * 1e9 / (steps * chains) as f64
+}
+
+/// The load times placements wait on, by working set (`-- --latency`).
+fn latency() {
+    println!("| working set | ns a dependent load | ns a load, eight chains at once |");
+    println!("|---:|---:|---:|");
+    for (label, bytes) in [
+        ("16 KiB", 16 << 10),
+        ("512 KiB", 512 << 10),
+        ("4 MiB", 4 << 20),
+        ("8 MiB", 8 << 20),
+        ("16 MiB", 16 << 20),
+        ("32 MiB", 32 << 20),
+        ("128 MiB", 128 << 20),
+        ("512 MiB", 512 << 20),
+    ] {
+        println!("| {label} | {:.1} | {:.1} |", chase(bytes, 1), chase(bytes, 8));
+    }
+}
+
 /// Circles at c 1.3 (the first target's fill) with each number of cells a shape lent, and
 /// with `cells_for(n)`: the time and memory a budget buys (`-- --budgets`).
 fn budgets(scale: u64) {
@@ -210,6 +264,10 @@ fn main() {
     let scale: u64 = arg("--scale").and_then(|s| s.parse().ok()).unwrap_or(1).max(1);
     if std::env::args().any(|a| a == "--budgets") {
         budgets(scale);
+        return;
+    }
+    if std::env::args().any(|a| a == "--latency") {
+        latency();
         return;
     }
     if let Some(name) = arg("--one") {

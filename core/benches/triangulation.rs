@@ -5,8 +5,8 @@
 //! blocks of 64 triangles); a triangle with no room waits until the need falls to the largest
 //! clearance its three discs leave in it (a three-disc Apollonius centre, or a point of an
 //! edge where two of the distances meet). A candidate is kept when it lies in its triangle,
-//! clear of the three discs and of the edge, and passes an exact test through a multi-level
-//! grid. Circles only, in the 200 x 200 rect, `f64`; not the library's sampler.
+//! clear of the three discs and of the edge, and passes an exact test through the library's
+//! spatial hash (the engine's). Circles only, in the 200 x 200 rect, `f64`; not the library's sampler.
 //!
 //!     cargo bench -p zetafill --bench triangulation -- N [C N_OFFSET EPS] [--sweep] [--check]
 //!
@@ -23,6 +23,7 @@ use rand_core::{RngCore, SeedableRng};
 use rand_xoshiro::Xoshiro256PlusPlus as Rng;
 use std::collections::BinaryHeap;
 use std::time::Instant;
+use zetafill::internals::spatial::SpatialHash;
 
 const NONE: u32 = u32::MAX;
 
@@ -188,11 +189,8 @@ struct Fill {
     unit: f64,
     w: f64,
     h: f64,
-    // hash
-    heads: Vec<u32>,
-    next: Vec<u32>,
-    r0: f64,
-    level_count: [u32; 64],
+    // The library's spatial hash, the one the engine's exact tests use.
+    hash: SpatialHash<'static, f64>,
     st: Stats,
     eps: f64,
     epochs: bool,
@@ -454,56 +452,34 @@ impl Fill {
         self.rt[t as usize] = self.max_clear(t) * (1.0 + 1e-9) + 1e-12;
     }
 
-    fn level(&self, r: f64) -> usize {
-        ((self.r0 / r).log2().floor() as i64).clamp(0, 63) as usize
-    }
-
-    fn key(&self, k: usize, ix: i64, iy: i64) -> usize {
-        let h = (ix as u64).wrapping_mul(0x9E3779B97F4A7C15)
-            ^ (iy as u64).wrapping_mul(0xC2B2AE3D27D4EB4F)
-            ^ (k as u64).wrapping_mul(0x165667B19E3779F9);
-        ((h ^ (h >> 29)) as usize) & (self.heads.len() - 1)
-    }
-
     fn hash_insert(&mut self, s: u32) {
         let (x, y, r) = self.p(s);
-        let k = self.level(r);
-        let cs = 4.0 * self.r0 / (1u64 << k) as f64;
-        let b = self.key(k, (x / cs).floor() as i64, (y / cs).floor() as i64);
-        self.next[s as usize] = self.heads[b];
-        self.heads[b] = s;
-        self.level_count[k] += 1;
+        self.hash.insert(s, x, y, r);
     }
 
     fn blocked(&mut self, x: f64, y: f64, r: f64, skip: [u32; 3]) -> bool {
-        let kmax = self.level(r);
-        for k in 0..=kmax {
-            if self.level_count[k] == 0 {
-                continue;
-            }
-            let rmax = self.r0 / (1u64 << k) as f64;
-            let cs = 4.0 * rmax;
-            let reach = r + rmax;
-            let (x0, x1) = (((x - reach) / cs).floor() as i64, ((x + reach) / cs).floor() as i64);
-            let (y0, y1) = (((y - reach) / cs).floor() as i64, ((y + reach) / cs).floor() as i64);
-            for iy in y0..=y1 {
-                for ix in x0..=x1 {
-                    let mut j = self.heads[self.key(k, ix, iy)];
-                    while j != NONE {
-                        self.st.hash_shapes += 1;
-                        if !skip.contains(&j) {
-                            let (cx, cy, cr) = self.p(j);
-                            let s = cr + r;
-                            if (cx - x).powi(2) + (cy - y).powi(2) < s * s {
-                                return true;
-                            }
-                        }
-                        j = self.next[j as usize];
-                    }
+        let total = self.sites.len() as u32;
+        let mut visits = 0u64;
+        let mut hit = false;
+        for (level, max_r) in self.hash.occupied() {
+            let reach = r + max_r;
+            let sites = &self.sites;
+            self.hash.query(level, [x - reach, y - reach, x + reach, y + reach], total, |j| {
+                visits += 1;
+                if skip.contains(&j) {
+                    return true;
                 }
+                let [cx, cy, cr] = sites[j as usize];
+                let s = cr + r;
+                hit = (cx - x).powi(2) + (cy - y).powi(2) < s * s;
+                !hit
+            });
+            if hit {
+                break;
             }
         }
-        false
+        self.st.hash_shapes += visits;
+        hit
     }
 
     fn legalize(&mut self, stack: &mut Vec<(u32, u32)>, touched: &mut Vec<u32>) {
@@ -649,10 +625,12 @@ fn main() {
         unit: w * h / (1u64 << 40) as f64,
         w,
         h,
-        heads: vec![NONE; (2 * n + 8).next_power_of_two()],
-        next: vec![NONE; n + 8],
-        r0,
-        level_count: [0; 64],
+        hash: SpatialHash::new(
+            Vec::leak(vec![NONE; (2 * n + 8).next_power_of_two()]),
+            Vec::leak(vec![NONE; n + 8]),
+            w.max(h),
+        )
+        .expect("buckets"),
         st: Stats::default(),
         eps,
         epochs: flag("--sweep"),

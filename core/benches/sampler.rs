@@ -43,8 +43,9 @@ fn run(c: f64, n_offset: f64, n: u64, sampler: Sampler) -> Row {
     let cap = n as usize;
     let mut shapes = vec![Placed::<f64>::default(); cap];
     let mut index = vec![0u32; index_words(cap)];
-    let mut coverage = vec![0u64; if sampler == Sampler::PaperHash { 0 } else { COVERAGE_WORDS }];
-    // The pool the CLI lends: 16 cells per shape slot, at least 2^16.
+    // The storage the CLI lends each sampler: the bitmap to the reference only (the cell
+    // sampler never reads it), `cells_for(n)` cells to the cell sampler.
+    let mut coverage = vec![0u64; if sampler == Sampler::Reference { COVERAGE_WORDS } else { 0 }];
     let mut pool = vec![[0u64; 4]; if fast { cells_for(cap) } else { 1 }];
     let mut params = Params::circles(c, n_offset);
     params.max_trials = 1_000_000_000;

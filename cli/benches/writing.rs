@@ -10,11 +10,11 @@ use std::time::Instant;
 use zetafill_cli::output::{control, csv, json, svg};
 use zetafill_cli::plan::format::Format;
 
-/// CPU seconds of this thread so far, from `/proc/thread-self/schedstat` (nanoseconds on the
-/// CPU), so that other work on the machine does not count.
+/// CPU seconds of this thread so far, to the nanosecond (`CLOCK_THREAD_CPUTIME_ID`), so that
+/// other work on the machine does not count.
 fn cpu() -> f64 {
-    let stat = std::fs::read_to_string("/proc/thread-self/schedstat").unwrap_or_default();
-    stat.split_whitespace().next().and_then(|x| x.parse::<f64>().ok()).unwrap_or(0.0) / 1e9
+    let t = rustix::time::clock_gettime(rustix::time::ClockId::ThreadCPUTime);
+    t.tv_sec as f64 + t.tv_nsec as f64 * 1e-9
 }
 
 /// Runs `f`, returning its result and (wall, CPU) seconds.

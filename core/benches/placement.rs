@@ -1,12 +1,13 @@
 //! Placement benchmark: what one placement of the cell sampler (the default 2D sampler) costs
 //! as the fill grows. Circles at c = 1.3, N = 1 in a 200 x 200 rect, seed 1, with the storage
 //! the CLI lends (no coverage bitmap, `cells_for(n)` cells), for n = 10^3 ... 10^6. For each n
-//! it prints a Markdown row: the thread's CPU seconds (from `/proc/thread-self/schedstat` on
-//! Linux, else wall time; fastest of three runs up to 10^5, one run at 10^6), microseconds per
-//! placement and their growth over n = 10^3, trials per placement, the acceptance per draw
-//! (placements over trials), and where the rejected trials went (`CellSampler::stats`: by a
-//! shape the drawn cell knew, by the cell's bound, by a shape the cell then learned; the rest,
-//! the region's and the candidates that left the grid, by difference).
+//! it prints a Markdown row: the thread's CPU seconds (`CLOCK_THREAD_CPUTIME_ID`, the storage's
+//! pages touched before the clock starts; fastest of three runs up to 10^5, one run at 10^6),
+//! microseconds per placement and their growth over n = 10^3, trials per placement, the
+//! acceptance per draw (placements over trials), and where the rejected trials went
+//! (`CellSampler::stats`: by a shape the drawn cell knew, by the cell's bound, by a shape the
+//! cell then learned; the rest, the region's and the candidates that left the grid, by
+//! difference).
 //!
 //!     cargo bench -p zetafill --bench placement [-- MAX_N]
 //!

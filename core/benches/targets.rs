@@ -1,5 +1,5 @@
 //! The fills the speed targets are set for, in one run: for each, the thread's CPU seconds
-//! (`/proc/thread-self/schedstat` on Linux, else wall time) against its target, microseconds
+//! (`CLOCK_THREAD_CPUTIME_ID`) against its target, microseconds
 //! and trials per placement, and the bytes per shape of the storage used at its peak (shape
 //! record, index words and, for the cell sampler, its cells at their peak; the 1D gap
 //! sampler's gap slots). 2D fills are in the 200 x 200 rect, the 1D fill in a 200 mm
@@ -23,7 +23,6 @@
 //! target of 120 bytes a shape. Lent less, the sampler stops splitting sooner and stays exact;
 //! its fill is another one, equally reproducible.
 
-use std::time::Instant;
 use zetafill::{
     line_gaps_for, line_index_words, rng_from_seed, CellWords, Interval, LineEngine, LineGap, LineGaps, LineParams, LineStorage, Params,
     Segment, ShapeKind, Stop,
@@ -153,8 +152,7 @@ fn fill_1d(t: &Target, count: u64) -> Measured {
         count: Some(count),
         ..Stop::default()
     };
-    let clock = Instant::now();
-    let start = cpu_seconds(clock);
+    let start = cpu_seconds();
     let mut e = LineEngine::new(LineParams::new(t.c, t.n_offset), interval, storage).expect("valid parameters");
     let mut rng = rng_from_seed(1);
     let mut gaps = LineGaps::new(&mut slots).expect("slots");
@@ -164,7 +162,7 @@ fn fill_1d(t: &Target, count: u64) -> Measured {
         trials += p.trials;
         placed += 1;
     });
-    let secs = cpu_seconds(clock) - start;
+    let secs = cpu_seconds() - start;
     let bytes = std::mem::size_of::<Segment<f64>>() as f64
         + 4.0 * line_index_words(n) as f64 / n as f64
         + (std::mem::size_of::<LineGap>() * line_gaps_for(n)) as f64 / n as f64;
@@ -208,14 +206,13 @@ fn chase(bytes: usize, chains: usize) -> f64 {
     let steps = 20_000_000 / chains;
     // Chains start a cycle's share apart, so they do not share lines.
     let mut at: Vec<usize> = (0..chains).map(|c| order[c * lines / chains] * LINE).collect();
-    let t = Instant::now();
-    let before = cpu_seconds(t);
+    let before = cpu_seconds();
     for _ in 0..steps {
         for a in at.iter_mut() {
             *a = next[*a] as usize;
         }
     }
-    let secs = cpu_seconds(t) - before;
+    let secs = cpu_seconds() - before;
     std::hint::black_box(&at);
     secs * 1e9 / (steps * chains) as f64
 }

@@ -533,7 +533,7 @@ impl ShapeKind {
             }
             ShapeKind::Triangle | ShapeKind::Polygon { .. } | ShapeKind::Star { .. } => {
                 let n = self.sides().min(MAX_VERTS);
-                let (ss, cs) = S::from_f64(core::f64::consts::TAU / n as f64).sin_cos();
+                let (ss, cs) = S::turn_step(n);
                 let inner = match *self {
                     ShapeKind::Star { inner, .. } => S::from_f64(inner),
                     _ => S::ONE,

@@ -101,12 +101,32 @@ impl<S: Scalar> Engine<'_, S> {
     /// the smallest scale it can take), plus the gap. `None` when no such disc exists: a ring
     /// whose hole could hold an earlier shape or a hole of the region.
     pub(super) fn clearance_needed(&self, next: &NextShape<S>) -> Option<S> {
-        let r = match next.kind {
+        self.clearance_of(next.kind, next.area, next.base_scale)
+    }
+
+    /// The least clearance any shape the storage has room for will need: that of the last,
+    /// the smallest, over the kinds it may take (zero when none has a clearance condition).
+    /// Areas fall with the index, and a kind's clearance with its area.
+    fn lowest_clearance(&self) -> S {
+        let area = self.area_of(self.shapes.len().saturating_sub(1) as u64);
+        self.params
+            .shape
+            .kinds()
+            .iter()
+            .filter_map(|&kind| self.clearance_of(kind, area, kind.scale_for(area, S::ZERO)))
+            .fold(None, |m: Option<S>, c| Some(m.map_or(c, |m| m.min(c))))
+            .unwrap_or(S::ZERO)
+    }
+
+    /// [`Engine::clearance_needed`] for a shape of `kind` and `area` at the base scale
+    /// `base_scale`.
+    fn clearance_of(&self, kind: ShapeKind, area: f64, base_scale: S) -> Option<S> {
+        let r = match kind {
             ShapeKind::Ring { inner } => {
                 // Earlier shapes are larger than this ring's material, so none fits in a hole
                 // of at most that area.
                 let hole_small = inner * inner <= 1.0 - inner * inner;
-                let hole_r = next.base_scale * S::from_f64(inner);
+                let hole_r = base_scale * S::from_f64(inner);
                 let region_simple = match self.region {
                     Region::Annulus { inner: hole, .. } => hole_r < S::from_f64(hole) + self.gap,
                     Region::Polygon(p) => p.ring_ends().len() <= 1,
@@ -115,7 +135,7 @@ impl<S: Scalar> Engine<'_, S> {
                 if !(hole_small && region_simple) {
                     return None;
                 }
-                next.base_scale
+                base_scale
             }
             ShapeKind::Blob { delta } => {
                 // The smallest scale over all phases. A unit blob's vertices sit at equal
@@ -125,18 +145,18 @@ impl<S: Scalar> Engine<'_, S> {
                 // whatever the phases. (With a margin for rounding.)
                 let n = crate::shape::BLOB_VERTICES as f64;
                 let twice_area = n * libm::sin(core::f64::consts::TAU / n) * (1.0 + 1.5 * delta * delta) * (1.0 + 1e-6);
-                let min_scale = crate::scalar::sqrtf(2.0 * next.area / twice_area);
-                next.kind.inradius(S::from_f64(min_scale))
+                let min_scale = crate::scalar::sqrtf(2.0 * area / twice_area);
+                kind.inradius(S::from_f64(min_scale))
             }
             ShapeKind::Noisy { amplitude, .. } => {
                 // Every radius is at most 1 + a, so twice a unit outline's area is at most
                 // n sin(2 pi / n) (1 + a)^2 whatever the noise. (With a margin for rounding.)
                 let n = crate::shape::BLOB_VERTICES as f64;
                 let twice_area = n * libm::sin(core::f64::consts::TAU / n) * (1.0 + amplitude) * (1.0 + amplitude) * (1.0 + 1e-6);
-                let min_scale = crate::scalar::sqrtf(2.0 * next.area / twice_area);
-                next.kind.inradius(S::from_f64(min_scale))
+                let min_scale = crate::scalar::sqrtf(2.0 * area / twice_area);
+                kind.inradius(S::from_f64(min_scale))
             }
-            _ => next.kind.inradius(next.base_scale),
+            _ => kind.inradius(base_scale),
         };
         Some(r + self.gap)
     }
@@ -296,6 +316,7 @@ impl<S: Scalar> Engine<'_, S> {
             let (x0, y0, _, _) = self.region.bbox();
             let (w, h) = self.period;
             cells.init(S::from_f64(x0), S::from_f64(y0), w, h, self.region.periodic(), &field);
+            cells.set_lowest(self.lowest_clearance(), self.shapes.len());
         }
         cells.wake(clearance, self.len, &field);
         cells.begin_step();

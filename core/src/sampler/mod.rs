@@ -249,6 +249,9 @@ pub struct CellStats {
     pub refused_splits: u64,
     /// Cells dropped for good (inside shape material or outside the region).
     pub dropped: u64,
+    /// Cells too tight for every shape the engine has room for, not kept (with ample
+    /// storage only; see [`cells_for`]).
+    pub outlived: u64,
     /// The finest level in use.
     pub finest_level: u32,
     /// Trials rejected by their cell alone (too tight, or in a too tight quarter).
@@ -312,6 +315,16 @@ pub struct CellSampler<'c, S> {
     asleep: usize,
     /// Every deep sleeper's bound is below this.
     floor: S,
+    /// Whether the pool holds [`cells_for`] the engine's capacity (see
+    /// [`CellSampler::set_lowest`]): then the deep sleepers sit at its end, and share the
+    /// room past `main` with the waiting heap.
+    ample: bool,
+    /// With ample storage, a cell whose bound is below this is too tight for every shape the
+    /// engine has room for: it is not kept, only counted in `outlived`. Zero otherwise.
+    never: S,
+    /// Cells too tight for every shape the engine has room for. They count as held, as they
+    /// would if they were kept, so that the budget's decisions do not depend on the capacity.
+    outlived: usize,
     /// Shapes placed when the current step began (for the budget).
     placed: usize,
     /// Waiting cells, a max-heap by bound in `pool[main..main + waiting]`: too tight for the
@@ -385,6 +398,9 @@ impl<'c, S: Scalar> CellSampler<'c, S> {
             grid_f64: [0.0; 5],
             asleep: 0,
             floor: S::from_f64(f64::MAX),
+            ample: false,
+            never: S::ZERO,
+            outlived: 0,
             placed: 0,
             waiting: 0,
             weight: 0,

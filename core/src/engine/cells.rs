@@ -101,32 +101,12 @@ impl<S: Scalar> Engine<'_, S> {
     /// the smallest scale it can take), plus the gap. `None` when no such disc exists: a ring
     /// whose hole could hold an earlier shape or a hole of the region.
     pub(super) fn clearance_needed(&self, next: &NextShape<S>) -> Option<S> {
-        self.clearance_of(next.kind, next.area, next.base_scale)
-    }
-
-    /// The least clearance any shape the storage has room for will need: that of the last,
-    /// the smallest, over the kinds it may take (zero when none has a clearance condition).
-    /// Areas fall with the index, and a kind's clearance with its area.
-    fn lowest_clearance(&self) -> S {
-        let area = self.area_of(self.shapes.len().saturating_sub(1) as u64);
-        self.params
-            .shape
-            .kinds()
-            .iter()
-            .filter_map(|&kind| self.clearance_of(kind, area, kind.scale_for(area, S::ZERO)))
-            .fold(None, |m: Option<S>, c| Some(m.map_or(c, |m| m.min(c))))
-            .unwrap_or(S::ZERO)
-    }
-
-    /// [`Engine::clearance_needed`] for a shape of `kind` and `area` at the base scale
-    /// `base_scale`.
-    fn clearance_of(&self, kind: ShapeKind, area: f64, base_scale: S) -> Option<S> {
-        let r = match kind {
+        let r = match next.kind {
             ShapeKind::Ring { inner } => {
                 // Earlier shapes are larger than this ring's material, so none fits in a hole
                 // of at most that area.
                 let hole_small = inner * inner <= 1.0 - inner * inner;
-                let hole_r = base_scale * S::from_f64(inner);
+                let hole_r = next.base_scale * S::from_f64(inner);
                 let region_simple = match self.region {
                     Region::Annulus { inner: hole, .. } => hole_r < S::from_f64(hole) + self.gap,
                     Region::Polygon(p) => p.ring_ends().len() <= 1,
@@ -135,7 +115,7 @@ impl<S: Scalar> Engine<'_, S> {
                 if !(hole_small && region_simple) {
                     return None;
                 }
-                base_scale
+                next.base_scale
             }
             ShapeKind::Blob { delta } => {
                 // The smallest scale over all phases. A unit blob's vertices sit at equal
@@ -145,20 +125,38 @@ impl<S: Scalar> Engine<'_, S> {
                 // whatever the phases. (With a margin for rounding.)
                 let n = crate::shape::BLOB_VERTICES as f64;
                 let twice_area = n * libm::sin(core::f64::consts::TAU / n) * (1.0 + 1.5 * delta * delta) * (1.0 + 1e-6);
-                let min_scale = crate::scalar::sqrtf(2.0 * area / twice_area);
-                kind.inradius(S::from_f64(min_scale))
+                let min_scale = crate::scalar::sqrtf(2.0 * next.area / twice_area);
+                next.kind.inradius(S::from_f64(min_scale))
             }
             ShapeKind::Noisy { amplitude, .. } => {
                 // Every radius is at most 1 + a, so twice a unit outline's area is at most
                 // n sin(2 pi / n) (1 + a)^2 whatever the noise. (With a margin for rounding.)
                 let n = crate::shape::BLOB_VERTICES as f64;
                 let twice_area = n * libm::sin(core::f64::consts::TAU / n) * (1.0 + amplitude) * (1.0 + amplitude) * (1.0 + 1e-6);
-                let min_scale = crate::scalar::sqrtf(2.0 * area / twice_area);
-                kind.inradius(S::from_f64(min_scale))
+                let min_scale = crate::scalar::sqrtf(2.0 * next.area / twice_area);
+                next.kind.inradius(S::from_f64(min_scale))
             }
-            _ => kind.inradius(base_scale),
+            _ => next.kind.inradius(next.base_scale),
         };
         Some(r + self.gap)
+    }
+
+    /// A lower bound of the clearance any shape the storage has room for will need
+    /// ([`Engine::clearance_needed`]): that of the last, the smallest, over the kinds it may
+    /// take, as areas fall with the index and a kind's inscribed disc with its area. Zero
+    /// (no bound) when a ring, blob or noisy outline may come, whose clearance is found
+    /// otherwise.
+    fn lowest_clearance(&self) -> S {
+        let area = self.area_of(self.shapes.len().saturating_sub(1) as u64);
+        let mut lowest: Option<S> = None;
+        for &kind in self.params.shape.kinds() {
+            if matches!(kind, ShapeKind::Ring { .. } | ShapeKind::Blob { .. } | ShapeKind::Noisy { .. }) {
+                return S::ZERO;
+            }
+            let r = kind.inradius(kind.scale_for(area, S::ZERO)) + self.gap;
+            lowest = Some(lowest.map_or(r, |m| m.min(r)));
+        }
+        lowest.unwrap_or(S::ZERO)
     }
 
     /// When shape `j` is a circle, its centre in the periodic image nearest `p` (seen from

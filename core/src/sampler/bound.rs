@@ -2,7 +2,7 @@
 //! and the bound on the clearance anywhere in a cell from the outside of the region and the
 //! shapes the cell knows (see the module docs of [`crate::CellSampler`] for why it is a bound).
 
-use super::{cells_for, ceil_u32, far_corner, Cell, CellSampler, Field, LevelGeom, CELL_LEVELS, CLASSES_NZ, GRID0, NEAR, NONE, RUNS};
+use super::{ceil_u32, cells_for, far_corner, Cell, CellSampler, Field, LevelGeom, CELL_LEVELS, CLASSES_NZ, GRID0, NEAR, NONE, RUNS};
 use crate::geom::Point;
 use crate::scalar::Scalar;
 use core::num::NonZeroUsize;

@@ -79,7 +79,11 @@ fn cells_that_outlive_the_fill_take_no_memory() {
     let (_, ample) = fill(p.clone(), n, cells_for(n), n as u64);
     let (_, older) = fill(p, n, cells_for(n) - 1, n as u64);
     let per_shape = |s: &CellStats| s.peak as f64 / n as f64;
-    println!("cells a shape at the peak: {:.2} ample, {:.2} older", per_shape(&ample), per_shape(&older));
+    println!(
+        "cells a shape at the peak: {:.2} ample, {:.2} older",
+        per_shape(&ample),
+        per_shape(&older)
+    );
     assert!(
         per_shape(&ample) < 0.4 * per_shape(&older),
         "{:.1} cells a shape at the peak against {:.1}",

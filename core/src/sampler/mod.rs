@@ -92,6 +92,17 @@
 //! cell with nowhere to go would take its valid centres out of the union). Nothing allocates
 //! or panics.
 //!
+//! Lent [`cells_for`] the engine's capacity or more, the sampler keeps no cell whose bound is
+//! below the clearance of the smallest shape the engine has room for (less the slack): no
+//! shape of the fill can use it. Such a cell still counts as held, so the budget decides as if
+//! it were kept. The deep sleepers then sit at the pool's end and the waiting heap starts at
+//! the end of the first seven eighths (which the budget keeps the live cells below); the heap
+//! moves when the sleepers, or the live cells, need the other side's room. Every cell that wakes goes through the heap,
+//! whose order (bound, then position word) is total, so cells wake in an order that depends
+//! only on which wake, not on which cells were kept: the fill is the same whatever the capacity
+//! and whatever the storage beyond `cells_for`. Lent less, every sleeper is kept in the layout
+//! above, and deep sleepers that a pass finds due go live at once.
+//!
 //! ## Where things are
 //! This file holds the sampler and its public face; `cell` packs a cell into its four
 //! words; `pool` keeps the live cells, the sleepers and the waiting heap in the caller's

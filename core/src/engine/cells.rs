@@ -141,6 +141,24 @@ impl<S: Scalar> Engine<'_, S> {
         Some(r + self.gap)
     }
 
+    /// A lower bound of the clearance any shape the storage has room for will need
+    /// ([`Engine::clearance_needed`]): that of the last, the smallest, over the kinds it may
+    /// take, as areas fall with the index and a kind's inscribed disc with its area. Zero
+    /// (no bound) when a ring, blob or noisy outline may come, whose clearance is found
+    /// otherwise.
+    fn lowest_clearance(&self) -> S {
+        let area = self.area_of(self.shapes.len().saturating_sub(1) as u64);
+        let mut lowest: Option<S> = None;
+        for &kind in self.params.shape.kinds() {
+            if matches!(kind, ShapeKind::Ring { .. } | ShapeKind::Blob { .. } | ShapeKind::Noisy { .. }) {
+                return S::ZERO;
+            }
+            let r = kind.inradius(kind.scale_for(area, S::ZERO)) + self.gap;
+            lowest = Some(lowest.map_or(r, |m| m.min(r)));
+        }
+        lowest.unwrap_or(S::ZERO)
+    }
+
     /// When shape `j` is a circle, its centre in the periodic image nearest `p` (seen from
     /// `p`) and its radius. None for other kinds: their inscribed discs give looser cell
     /// bounds than their distances do.
@@ -296,6 +314,7 @@ impl<S: Scalar> Engine<'_, S> {
             let (x0, y0, _, _) = self.region.bbox();
             let (w, h) = self.period;
             cells.init(S::from_f64(x0), S::from_f64(y0), w, h, self.region.periodic(), &field);
+            cells.set_lowest(self.lowest_clearance(), self.shapes.len());
         }
         cells.wake(clearance, self.len, &field);
         cells.begin_step();

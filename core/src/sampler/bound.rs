@@ -2,7 +2,7 @@
 //! and the bound on the clearance anywhere in a cell from the outside of the region and the
 //! shapes the cell knows (see the module docs of [`crate::CellSampler`] for why it is a bound).
 
-use super::{ceil_u32, far_corner, Cell, CellSampler, Field, LevelGeom, CELL_LEVELS, CLASSES_NZ, GRID0, NEAR, NONE, RUNS};
+use super::{ceil_u32, cells_for, far_corner, Cell, CellSampler, Field, LevelGeom, CELL_LEVELS, CLASSES_NZ, GRID0, NEAR, NONE, RUNS};
 use crate::geom::Point;
 use crate::scalar::Scalar;
 use core::num::NonZeroUsize;
@@ -21,6 +21,15 @@ impl<S: Scalar> CellSampler<'_, S> {
             self.origin.x + (S::from_f64(f64::from(c.ix())) + half) * g.w,
             self.origin.y + (S::from_f64(f64::from(c.iy())) + half) * g.h,
         )
+    }
+
+    /// Tells the sampler, after [`CellSampler::init`], the least clearance any shape of the
+    /// engine's `capacity` will need. With ample storage ([`cells_for`] the capacity) a cell
+    /// too tight for all of them is then counted instead of kept asleep.
+    pub(crate) fn set_lowest(&mut self, clearance: S, capacity: usize) {
+        self.ample = self.pool.len() >= cells_for(capacity);
+        let never = clearance - self.slack;
+        self.never = if self.ample && never > S::ZERO { never } else { S::ZERO };
     }
 
     /// The bound on the clearance anywhere in the cell (with the rounding slack).
@@ -105,8 +114,10 @@ impl<S: Scalar> CellSampler<'_, S> {
             ch = ch.half();
         }
         self.starts = [0; RUNS + 1];
+        self.main = self.pool.len() - self.pool.len() / 8;
         self.asleep = 0;
         self.waiting = 0;
+        (self.ample, self.never, self.outlived) = (false, S::ZERO, 0);
         self.weight = 0;
         self.floor = S::from_f64(f64::MAX);
         self.flush();

@@ -92,6 +92,17 @@
 //! cell with nowhere to go would take its valid centres out of the union). Nothing allocates
 //! or panics.
 //!
+//! Lent [`cells_for`] the engine's capacity or more, the sampler keeps no cell whose bound is
+//! below the clearance of the smallest shape the engine has room for (less the slack): no
+//! shape of the fill can use it. Such a cell still counts as held, so the budget decides as if
+//! it were kept. The deep sleepers then sit at the pool's end and the waiting heap starts at
+//! the end of the first seven eighths (which the budget keeps the live cells below); the heap
+//! moves when the sleepers, or the live cells, need the other side's room. Every cell that wakes goes through the heap,
+//! whose order (bound, then position word) is total, so cells wake in an order that depends
+//! only on which wake, not on which cells were kept: the fill is the same whatever the capacity
+//! and whatever the storage beyond `cells_for`. Lent less, every sleeper is kept in the layout
+//! above, and deep sleepers that a pass finds due go live at once.
+//!
 //! ## Where things are
 //! This file holds the sampler and its public face; `cell` packs a cell into its four
 //! words; `pool` keeps the live cells, the sleepers and the waiting heap in the caller's
@@ -249,6 +260,9 @@ pub struct CellStats {
     pub refused_splits: u64,
     /// Cells dropped for good (inside shape material or outside the region).
     pub dropped: u64,
+    /// Cells too tight for every shape the engine has room for, not kept (with ample
+    /// storage only; see [`cells_for`]).
+    pub outlived: u64,
     /// The finest level in use.
     pub finest_level: u32,
     /// Trials rejected by their cell alone (too tight, or in a too tight quarter).
@@ -312,6 +326,16 @@ pub struct CellSampler<'c, S> {
     asleep: usize,
     /// Every deep sleeper's bound is below this.
     floor: S,
+    /// Whether the pool holds [`cells_for`] the engine's capacity (see
+    /// [`CellSampler::set_lowest`]): then the deep sleepers sit at its end, and share the
+    /// room past `main` with the waiting heap.
+    ample: bool,
+    /// With ample storage, a cell whose bound is below this is too tight for every shape the
+    /// engine has room for: it is not kept, only counted in `outlived`. Zero otherwise.
+    never: S,
+    /// Cells too tight for every shape the engine has room for. They count as held, as they
+    /// would if they were kept, so that the budget's decisions do not depend on the capacity.
+    outlived: usize,
     /// Shapes placed when the current step began (for the budget).
     placed: usize,
     /// Waiting cells, a max-heap by bound in `pool[main..main + waiting]`: too tight for the
@@ -385,6 +409,9 @@ impl<'c, S: Scalar> CellSampler<'c, S> {
             grid_f64: [0.0; 5],
             asleep: 0,
             floor: S::from_f64(f64::MAX),
+            ample: false,
+            never: S::ZERO,
+            outlived: 0,
             placed: 0,
             waiting: 0,
             weight: 0,

@@ -105,7 +105,7 @@ impl<S: Scalar> CellSampler<'_, S> {
     pub(super) fn insert_live(&mut self, c: Cell<S>, class: u32) -> usize {
         let runs = self.runs();
         let k = self.run(c.level(), class);
-        if self.live() + self.asleep >= self.main || k >= runs {
+        if k >= runs || !self.live_room() {
             return usize::MAX;
         }
         // Runs after the last one in use are empty: nothing of theirs moves.
@@ -176,8 +176,13 @@ impl<S: Scalar> CellSampler<'_, S> {
             self.stats.dropped += 1;
             return;
         }
-        if u < self.floor && self.live() + self.asleep < self.main {
-            self.put(self.main - 1 - self.asleep, c);
+        if u < self.never {
+            self.outlived += 1;
+            self.stats.outlived += 1;
+            return;
+        }
+        if u < self.floor && self.deep_room() {
+            self.put(self.deep_top() - 1 - self.asleep, c);
             self.asleep += 1;
             self.note_peak();
         } else if !self.push_waiting(c) {
@@ -185,8 +190,84 @@ impl<S: Scalar> CellSampler<'_, S> {
         }
     }
 
+    /// Where the deep sleepers end: entry `i` is `pool[deep_top() - 1 - i]`. At `main`, below
+    /// the waiting heap; with ample storage at the end of the pool, above it.
+    #[inline]
+    fn deep_top(&self) -> usize {
+        if self.ample {
+            self.pool.len()
+        } else {
+            self.main
+        }
+    }
+
+    /// Whether a deep sleeper can be added.
+    fn deep_room(&mut self) -> bool {
+        if self.ample {
+            self.sleeper_room()
+        } else {
+            self.live() + self.asleep < self.main
+        }
+    }
+
+    /// With ample storage, whether a sleeper (deep or waiting) can be added, moving the
+    /// boundary `main` with the live cells down when their side has room to spare.
+    fn sleeper_room(&mut self) -> bool {
+        if self.main + self.waiting + self.asleep < self.pool.len() {
+            return true;
+        }
+        let spare = self.main.saturating_sub(self.live());
+        self.move_heap(false, spare.div_ceil(2))
+    }
+
+    /// Whether a live cell can be added; with ample storage, moving `main` up when the
+    /// sleepers' side has room to spare.
+    fn live_room(&mut self) -> bool {
+        if !self.ample {
+            return self.live() + self.asleep < self.main;
+        }
+        if self.live() < self.main {
+            return true;
+        }
+        let spare = self.pool.len().saturating_sub(self.main + self.waiting + self.asleep);
+        self.move_heap(true, spare.div_ceil(2))
+    }
+
+    /// Moves the waiting heap, and `main` with it, `by` cells up or down (ample storage:
+    /// nothing else lies between the live cells and the deep sleepers). False when `by` is 0.
+    fn move_heap(&mut self, up: bool, by: usize) -> bool {
+        if by == 0 {
+            return false;
+        }
+        let from = self.main;
+        if up {
+            for k in (0..self.waiting).rev() {
+                self.copy(from + k, from + by + k);
+            }
+            self.main += by;
+        } else {
+            for k in 0..self.waiting {
+                self.copy(from + k, from - by + k);
+            }
+            self.main -= by;
+        }
+        true
+    }
+
     pub(super) fn waiting_key(&self, k: usize) -> S {
         self.pool.get(self.main + k).map_or(S::ZERO, |w| S::from_word(w[3]) + self.slack)
+    }
+
+    /// Whether waiting cell `a` wakes before `b`: the higher bound, and with ample storage,
+    /// between equal bounds (siblings often share their parent's), the higher position word,
+    /// so that cells wake in an order that depends only on which of them wake, not on where
+    /// the heap keeps them.
+    fn wakes_before(&self, a: usize, b: usize) -> bool {
+        let (Some(wa), Some(wb)) = (self.pool.get(self.main + a), self.pool.get(self.main + b)) else {
+            return false;
+        };
+        let (ka, kb) = (S::from_word(wa[3]) + self.slack, S::from_word(wb[3]) + self.slack);
+        ka > kb || (self.ample && ka == kb && wa[0] > wb[0])
     }
 
     pub(super) fn swap_waiting(&mut self, a: usize, b: usize) {
@@ -198,7 +279,12 @@ impl<S: Scalar> CellSampler<'_, S> {
 
     /// Adds a waiting cell; false when the heap is full.
     pub(super) fn push_waiting(&mut self, c: Cell<S>) -> bool {
-        if self.waiting >= WAITING_PER_SHAPE.saturating_mul(self.placed.saturating_add(CELLS_BASE)) {
+        let full = if self.ample {
+            !self.sleeper_room()
+        } else {
+            self.waiting >= WAITING_PER_SHAPE.saturating_mul(self.placed.saturating_add(CELLS_BASE))
+        };
+        if full {
             return false;
         }
         let Some(slot) = self.pool.get_mut(self.main + self.waiting) else {
@@ -209,7 +295,7 @@ impl<S: Scalar> CellSampler<'_, S> {
         self.waiting += 1;
         while i > 0 {
             let parent = (i - 1) / 2;
-            if self.waiting_key(parent) >= self.waiting_key(i) {
+            if !self.wakes_before(i, parent) {
                 break;
             }
             self.swap_waiting(parent, i);
@@ -230,10 +316,10 @@ impl<S: Scalar> CellSampler<'_, S> {
         loop {
             let (l, r) = (2 * i + 1, 2 * i + 2);
             let mut big = i;
-            if l < self.waiting && self.waiting_key(l) > self.waiting_key(big) {
+            if l < self.waiting && self.wakes_before(l, big) {
                 big = l;
             }
-            if r < self.waiting && self.waiting_key(r) > self.waiting_key(big) {
+            if r < self.waiting && self.wakes_before(r, big) {
                 big = r;
             }
             if big == i {
@@ -253,16 +339,20 @@ impl<S: Scalar> CellSampler<'_, S> {
         self.placed = placed;
         if clearance < self.floor {
             self.floor = clearance * S::from_f64(FLOOR);
+            let top = self.deep_top();
             let mut i = 0;
             while i < self.asleep {
-                let Some(c) = self.cell(self.main - 1 - i) else {
+                let Some(c) = self.cell(top - 1 - i) else {
                     break;
                 };
                 if self.upper(&c) >= self.floor {
-                    // Fill entry i with the last deep sleeper, then move c up.
-                    self.copy(self.main - self.asleep, self.main - 1 - i);
+                    // Fill entry i with the last deep sleeper, then move c up. With ample
+                    // storage every such cell waits, so that the cells that wake now do so
+                    // in the heap's order, whichever of them were deep.
+                    self.copy(top - self.asleep, top - 1 - i);
                     self.asleep -= 1;
-                    if self.upper(&c) >= clearance || !self.push_waiting(c) {
+                    let now = self.upper(&c) >= clearance && !self.ample;
+                    if now || !self.push_waiting(c) {
                         self.make_live(c, f);
                     }
                 } else {
@@ -306,4 +396,64 @@ fn cell_box(grid: [f64; 5], level: u32, ix: u32, iy: u32) -> [f64; 4] {
     let (w, h) = (w * scale, h * scale);
     let (x, y) = (x0 + f64::from(ix) * w - pad, y0 + f64::from(iy) * h - pad);
     [x, y, x + w + 2.0 * pad, y + h + 2.0 * pad]
+}
+
+#[cfg(test)]
+#[allow(clippy::unwrap_used, clippy::indexing_slicing, clippy::panic)]
+mod tests {
+    use super::super::{NEAR, NONE};
+    use super::*;
+
+    /// Forty cells at distinct positions, their bounds repeating (as siblings share their
+    /// parent's), in no order.
+    fn cells() -> [Cell<f64>; 40] {
+        core::array::from_fn(|i| Cell {
+            xl: i as u32,
+            yr: 0,
+            near: [NONE; NEAR],
+            u: ((i * 7) % 13) as f64,
+        })
+    }
+
+    /// Pushes the cells (with ample storage, into a pool of 64 cells, so that the heap has to
+    /// move; otherwise into one with room for them), moves the heap up and back, and pops
+    /// them all: their bounds and positions in the order they woke.
+    fn wake_order(ample: bool) -> [(f64, u32); 40] {
+        let mut pool = [[0u64; 4]; 400];
+        let len = if ample { 64 } else { 400 };
+        let mut s = CellSampler::<f64>::new(&mut pool[..len]).unwrap();
+        s.ample = ample;
+        for c in cells() {
+            assert!(s.push_waiting(c));
+        }
+        if ample {
+            // Forty waiting cells do not fit past `main` (56 of 64): the heap moved down.
+            assert!(s.main <= 64 - 40, "main {}", s.main);
+            assert!(s.move_heap(true, 3) && s.move_heap(false, 2));
+            assert!(!s.move_heap(true, 0));
+        }
+        let mut woke = [(0.0, 0); 40];
+        for w in woke.iter_mut() {
+            let c = s.pop_waiting().unwrap();
+            *w = (c.u, c.xl);
+        }
+        assert!(s.pop_waiting().is_none());
+        woke
+    }
+
+    #[test]
+    fn the_heap_moves_whole_and_wakes_in_one_order() {
+        let woke = wake_order(true);
+        // Every cell, the highest bound first and equal bounds by the higher position:
+        // strictly decreasing pairs.
+        assert!(woke.windows(2).all(|w| w[0] > w[1]), "{woke:?}");
+        let mut xs = woke.map(|(_, x)| x);
+        xs.sort_unstable();
+        assert_eq!(xs, core::array::from_fn(|i| i as u32));
+        // The control: without ample storage equal bounds wake in the heap's own order,
+        // which the same check tells apart.
+        let older = wake_order(false);
+        assert!(older.windows(2).all(|w| w[0].0 >= w[1].0));
+        assert!(!older.windows(2).all(|w| w[0] > w[1]), "{older:?}");
+    }
 }

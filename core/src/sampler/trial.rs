@@ -188,9 +188,12 @@ impl<S: Scalar> CellSampler<'_, S> {
         // Every cell held must fit in the live and deep-sleeper part of the pool, waiting ones
         // included: a waiting cell that wakes needs a place there, and a cell with nowhere to
         // go would leave the union without its valid centres.
-        let held = self.live() + self.asleep + self.waiting + 3;
+        // With ample storage the cells that outlived the fill count too, and only the budget
+        // limits (it always leaves room in the pool).
+        let held = self.live() + self.asleep + self.waiting + self.outlived + 3;
         let budget = CELLS_PER_SHAPE.saturating_mul(self.placed.saturating_add(CELLS_BASE));
-        if held > self.main || held > budget {
+        let room = if self.ample { self.pool.len() } else { self.main };
+        if held > room || held > budget {
             self.stats.refused_splits += 1;
             return Verdict::Test(slot);
         }

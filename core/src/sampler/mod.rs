@@ -97,10 +97,10 @@
 //! shape of the fill can use it. Such a cell still counts as held, so the budget decides as if
 //! it were kept. The deep sleepers then sit at the pool's end and the waiting heap starts at
 //! the end of the first seven eighths (which the budget keeps the live cells below); the heap
-//! moves when the sleepers, or the live cells, need the other side's room. Every cell that wakes goes through the heap,
-//! whose order (bound, then position word) is total, so cells wake in an order that depends
-//! only on which wake, not on which cells were kept: the fill is the same whatever the capacity
-//! and whatever the storage beyond `cells_for`. Lent less, every sleeper is kept in the layout
+//! moves when the sleepers, or the live cells, need the other side's room. Every cell that
+//! wakes goes through the heap, whose order (bound, then position word) is total, so cells
+//! wake in an order that depends only on which wake, not on which cells were kept: the fill is
+//! the same whatever the capacity and whatever the storage beyond `cells_for`. Lent less, every sleeper is kept in the layout
 //! above, and deep sleepers that a pass finds due go live at once.
 //!
 //! ## Where things are

@@ -44,8 +44,11 @@ where
     }
 }
 
-/// Runs a parsed command.
+/// Runs a parsed command. First, for every command alike, an output that is one of the
+/// command's inputs is refused (nothing is read, computed or written).
 pub fn run(cli: Cli) -> Result<(), CliError> {
+    io::inputs::forget_reads();
+    io::inputs::refuse_overwrites(&plan::files::of(&cli.command))?;
     match cli.command {
         Command::Fill(a) => cmd::fill::run(&plan::fill::resolve(&a)?),
         Command::Line(a) => cmd::line::run(&plan::line::resolve(&a)?),

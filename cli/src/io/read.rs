@@ -13,10 +13,15 @@ pub const MAX_SVG_BYTES: u64 = 64 << 20;
 pub const MAX_JSON_BYTES: u64 = 1 << 30;
 
 /// The bytes of `path`, or an error if it cannot be read or holds more than `limit` bytes
-/// (`what` names the input in that error). Reads at most `limit + 1` bytes.
+/// (`what` names the input in that error). Reads at most `limit + 1` bytes, and notes the file
+/// as an input of the run, which no output may replace ([`crate::io::inputs`]).
 pub fn read_limited(path: &Path, limit: u64, what: &str) -> std::io::Result<Vec<u8>> {
     let mut bytes = Vec::new();
-    std::fs::File::open(path)?.take(limit.saturating_add(1)).read_to_end(&mut bytes)?;
+    let file = std::fs::File::open(path)?;
+    if let Ok(m) = file.metadata() {
+        crate::io::inputs::note_read_file(path, &m);
+    }
+    file.take(limit.saturating_add(1)).read_to_end(&mut bytes)?;
     if bytes.len() as u64 > limit {
         return Err(std::io::Error::other(format!(
             "it holds more than {} MiB, the most {what} may be",

@@ -135,11 +135,12 @@ impl Dest {
         }
     }
 
-    /// Checks before any work that the destination can be written: not a directory, none
-    /// of `inputs`, a file (or the file a symbolic link points to) whose folder exists and
-    /// takes new files and which is not read-only, or else a character device or a named
-    /// pipe. Every refusal is a usage error naming `arg`.
-    pub fn check(&self, arg: &str, inputs: &[&Path]) -> Result<(), CliError> {
+    /// Checks before any work that the destination can be written: not a directory, a file
+    /// (or the file a symbolic link points to) whose folder exists and takes new files and
+    /// which is not read-only, or else a character device or a named pipe. Every refusal is a
+    /// usage error naming `arg`. That no output is an input is checked once for every command
+    /// ([`crate::io::inputs::refuse_overwrites`]).
+    pub fn check(&self, arg: &str) -> Result<(), CliError> {
         let Dest::File(p) = self else { return Ok(()) };
         if p.is_dir() {
             return Err(CliError::arg(arg, format!("'{}' is a directory; give a file name", p.display())));
@@ -149,14 +150,6 @@ impl Dest {
                 arg,
                 format!("'{}' names a folder (it ends in a slash); give a file name", p.display()),
             ));
-        }
-        for i in inputs {
-            if same_file(p, i) {
-                return Err(CliError::arg(
-                    arg,
-                    format!("'{}' is also an input; choose another output path", p.display()),
-                ));
-            }
         }
         let target = resolve(p).map_err(|e| CliError::arg(arg, format!("cannot use '{}': {e}; choose another path", p.display())))?;
         match target {
@@ -201,7 +194,12 @@ impl Dest {
                     .map_err(|e| CliError::Io(format!("writing to standard output: {e}")))
             }
             Dest::File(p) => match resolve(p).map_err(|e| CliError::Io(format!("cannot use '{}': {e}", p.display())))? {
-                Target::File(t) => write_atomic(&t, bytes),
+                Target::File(t) => {
+                    // The last guard of the rule that no input is replaced, for an input a
+                    // command did not declare.
+                    crate::io::inputs::refuse_read("--output", &t)?;
+                    write_atomic(&t, bytes)
+                }
                 Target::Stream => write_stream(p, bytes),
                 Target::Other => Err(CliError::Io(format!(
                     "'{}' is not a file, a character device or a named pipe; nothing written",
@@ -216,22 +214,6 @@ fn parent_dir(p: &Path) -> PathBuf {
     match p.parent() {
         Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
         _ => PathBuf::from("."),
-    }
-}
-
-/// Whether `a` and `b` are the same existing file (the same inode on Unix, so hard and
-/// symbolic links are seen through).
-fn same_file(a: &Path, b: &Path) -> bool {
-    #[cfg(unix)]
-    {
-        use std::os::unix::fs::MetadataExt;
-        if let (Ok(x), Ok(y)) = (std::fs::metadata(a), std::fs::metadata(b)) {
-            return x.dev() == y.dev() && x.ino() == y.ino();
-        }
-    }
-    match (std::fs::canonicalize(a), std::fs::canonicalize(b)) {
-        (Ok(x), Ok(y)) => x == y,
-        _ => false,
     }
 }
 
@@ -334,5 +316,28 @@ mod tests {
         }
         assert_eq!(resolve(&d.join("new.svg")).ok(), Some(Target::File(d.join("new.svg"))));
         assert_eq!(resolve(&d.join("sub")).ok(), Some(Target::Other));
+    }
+
+    #[test]
+    fn a_file_read_as_an_input_is_never_written_over() {
+        let dir = tempfile::tempdir().expect("tempdir");
+        let p = dir.path().join("in.png");
+        std::fs::write(&p, b"picture").expect("write");
+        let dest = Dest::File(p.clone());
+        // The control: before it is read, the file may be written over.
+        assert!(dest.write(b"first").is_ok());
+        assert_eq!(std::fs::read(&p).ok().as_deref(), Some(&b"first"[..]));
+        crate::io::read::read_limited(&p, 1 << 10, "a test input").expect("read");
+        let e = dest.write(b"second").err().map(|e| (e.exit_code(), e.to_string()));
+        assert!(
+            e.as_ref().is_some_and(|(code, m)| *code == 2 && m.starts_with("--output: ")),
+            "{e:?}"
+        );
+        assert_eq!(std::fs::read(&p).ok().as_deref(), Some(&b"first"[..]));
+        assert_eq!(
+            std::fs::read_dir(dir.path()).map(|d| d.count()).ok(),
+            Some(1),
+            "no temporary file is left"
+        );
     }
 }

@@ -181,9 +181,7 @@ fn check_plot(p: &PlotArgs, format: Format) -> Result<(), CliError> {
 /// nothing is read but the machine profile.
 pub fn resolve(a: &FillArgs) -> Result<FillPlan, CliError> {
     let dest = Dest::parse(&a.output.output);
-    let mut inputs: Vec<&std::path::Path> = a.plot.machine_file().into_iter().collect();
-    inputs.extend(crate::plan::region_input::inputs(&a.region, &a.input));
-    dest.check("--output", &inputs)?;
+    dest.check("--output")?;
     let format = Format::resolve(a.output.format, &a.output.output)?;
     let (run, draw) = resolve_as(a, format)?;
     Ok(FillPlan { dest, format, run, draw })

@@ -132,8 +132,7 @@ impl From<RenderArg> for Render {
 pub fn resolve(a: &LineArgs) -> Result<LinePlan, CliError> {
     check_zoom(a)?;
     let dest = Dest::parse(&a.output.output);
-    let inputs: Vec<&std::path::Path> = a.plot.machine_file().into_iter().collect();
-    dest.check("--output", &inputs)?;
+    dest.check("--output")?;
     let format = Format::resolve(a.output.format, &a.output.output)?;
     let (run, draw) = resolve_format(a, format)?;
     Ok(LinePlan { dest, format, run, draw })

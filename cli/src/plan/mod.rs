@@ -4,6 +4,7 @@
 //! write what the plan says, and never look at a flag again.
 
 pub mod colour;
+pub mod files;
 pub mod fill;
 pub mod format;
 pub mod line;

@@ -194,7 +194,12 @@ impl PlotArgs {
 
     /// The machine with every command-line override applied and checked.
     pub fn machine(&self) -> Result<machine::Machine, CliError> {
-        machine::Machine::load(self.machine.as_deref().unwrap_or(DEFAULT_MACHINE)).map_err(|e| CliError::arg("--machine", e))
+        let m = machine::Machine::load(self.machine.as_deref().unwrap_or(DEFAULT_MACHINE)).map_err(|e| CliError::arg("--machine", e))?;
+        // A profile file is an input: no output may replace it.
+        if let Some(p) = self.machine_file() {
+            crate::io::inputs::note_read(p);
+        }
+        Ok(m)
     }
 
     /// The G-code options for `m`, every override checked against the profile.

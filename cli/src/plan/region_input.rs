@@ -50,17 +50,6 @@ pub fn resolve(spec: &RegionSpec, a: &RegionInputArgs) -> Result<(RegionSpec, Op
     }
 }
 
-/// The files `spec` and `a` read (so the output may not overwrite one).
-pub fn inputs<'a>(spec: &'a RegionSpec, a: &'a RegionInputArgs) -> Vec<&'a Path> {
-    let mut v = Vec::new();
-    match spec {
-        RegionSpec::Svg(p) | RegionSpec::Mask { path: p, .. } => v.push(p.as_path()),
-        _ => {}
-    }
-    v.extend(a.font.as_deref());
-    v
-}
-
 /// Refuses `flag`, given with a region other than `region`.
 fn only_for(given: bool, flag: &str, region: &str) -> Result<(), CliError> {
     if given {

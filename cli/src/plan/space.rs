@@ -142,7 +142,7 @@ fn unit_kind(s: &Solid) -> SolidKind {
 /// Checks the flags of `zetafill space` and resolves them into a plan. Nothing runs.
 pub fn resolve(a: &SpaceArgs) -> Result<SpacePlan, CliError> {
     let dest = Dest::parse(&a.output.output);
-    dest.check("--output", &[])?;
+    dest.check("--output")?;
     let format = SpaceFormat::resolve(a.output.format, &a.output.output)?;
     let (run, draw) = resolve_as(a, format)?;
     Ok(SpacePlan { dest, format, run, draw })

@@ -258,7 +258,7 @@ pub fn chart_output(a: &ChartArgs, name: &str) -> Result<ChartOutput, CliError> 
             ))
         }
     };
-    dest.check("--output", &[])?;
+    dest.check("--output")?;
     Ok(Some((dest, f)))
 }
 

@@ -138,14 +138,7 @@ const COLOUR_BY: ColorBy = ColorBy::Cycle;
 /// nothing is read but the machine profile.
 pub fn resolve(a: &TerritoryArgs) -> Result<TerritoryPlan, CliError> {
     let dest = Dest::parse(&a.output.output);
-    let mut inputs: Vec<&Path> = a.plot.machine_file().into_iter().collect();
-    if let Some(p) = &a.sites_from {
-        inputs.push(p.as_path());
-    }
-    if let RegionSpec::Svg(p) = &a.region {
-        inputs.push(p.as_path());
-    }
-    dest.check("--output", &inputs)?;
+    dest.check("--output")?;
     let format = TerritoryFormat::resolve(a.output.format, &a.output.output)?;
     let (run, draw) = resolve_as(a, format)?;
     Ok(TerritoryPlan { dest, format, run, draw })

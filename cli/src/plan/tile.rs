@@ -106,8 +106,7 @@ const VORONOI_BAND: f64 = 0.25;
 /// nothing is read but the machine profile.
 pub fn resolve(a: &TileArgs) -> Result<TilePlan, CliError> {
     let dest = Dest::parse(&a.output.output);
-    let inputs: Vec<&std::path::Path> = a.plot.machine_file().into_iter().collect();
-    dest.check("--output", &inputs)?;
+    dest.check("--output")?;
     let format = TileFormat::resolve(a.output.format, &a.output.output)?;
     let (run, draw) = resolve_as(a, format)?;
     Ok(TilePlan { dest, format, run, draw })

@@ -61,7 +61,22 @@ const CASES: &[Case] = &[
     Case {
         input: "f.ttf",
         flag: "--font",
-        args: &["fill", "-q", "--count", "30", "--region", "text:ab", "--n-offset", "20", "--font", "f.ttf", "--format", "svg", "-o", "OUT"],
+        args: &[
+            "fill",
+            "-q",
+            "--count",
+            "30",
+            "--region",
+            "text:ab",
+            "--n-offset",
+            "20",
+            "--font",
+            "f.ttf",
+            "--format",
+            "svg",
+            "-o",
+            "OUT",
+        ],
     },
     Case {
         input: "pen.toml",

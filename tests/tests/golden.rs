@@ -42,16 +42,29 @@ fn coverage_bitmap_never_changes_a_result() {
     }
 }
 
-#[test]
-fn digest_detects_a_one_bit_change() {
-    let scene = &CANONICAL[0];
-    let (_, h, shapes) = run_scene(scene, 0);
+/// The digest of `shapes` recomputed here from the scene's area sequence, with bit 0 of shape
+/// `flip`'s x flipped when given.
+fn recomputed(scene: &zetafill_tests::Scene, shapes: &[zetafill::Placed<f64>], flip: Option<usize>) -> u64 {
+    let total = scene.size.0 * scene.size.1;
+    let zeta = zetafill::internals::zeta::zeta(scene.c, scene.n).unwrap_or(f64::NAN);
     let mut d = zetafill::digest::Fnv1a::default();
     for (i, p) in shapes.iter().enumerate() {
-        let x = if i == 7 { f64::from_bits(p.x.to_bits() ^ 1) } else { p.x };
-        let area =
-            40000.0 / (zetafill::internals::zeta::zeta(1.3, 1.0).unwrap_or(1.0) * zetafill::internals::scalar::powf(i as f64 + 1.0, 1.3));
+        let x = if flip == Some(i) { f64::from_bits(p.x.to_bits() ^ 1) } else { p.x };
+        let area = total / (zeta * zetafill::internals::scalar::powf(i as f64 + scene.n, scene.c));
         zetafill::digest::add_shape(&mut d, x, p.y, area, p.angle);
     }
-    assert_ne!(d.finish(), h);
+    d.finish()
+}
+
+/// A flipped bit changes the digest. Its control comes first: the digest recomputed from the
+/// same shapes without the flip equals the engine's, so the inequality after the flip is the
+/// flip's doing (a recomputation that differed for any other reason would pass blindly).
+#[test]
+fn digest_detects_a_one_bit_change() {
+    for scene in &CANONICAL {
+        let (_, h, shapes) = run_scene(scene, 0);
+        assert!(shapes.len() > 7, "{}: too few shapes", scene.name);
+        assert_eq!(recomputed(scene, &shapes, None), h, "{}: the control", scene.name);
+        assert_ne!(recomputed(scene, &shapes, Some(7)), h, "{}", scene.name);
+    }
 }

@@ -105,7 +105,12 @@ fn identity(m: &std::fs::Metadata) -> Option<Identity> {
     #[cfg(unix)]
     {
         use std::os::unix::fs::MetadataExt;
-        Some((m.dev(), m.ino(), m.len(), m.mtime().saturating_mul(1_000_000_000).saturating_add(m.mtime_nsec())))
+        Some((
+            m.dev(),
+            m.ino(),
+            m.len(),
+            m.mtime().saturating_mul(1_000_000_000).saturating_add(m.mtime_nsec()),
+        ))
     }
     #[cfg(not(unix))]
     {

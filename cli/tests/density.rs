@@ -298,3 +298,53 @@ fn bad_pictures_are_refused_before_any_work() {
     assert_eq!(o.code, 2, "{}", o.stderr);
     assert!(o.stderr.contains("--density-sha256") && !d.join("bad.svg").exists(), "{}", o.stderr);
 }
+
+/// Bug pinned here: a density that is zero everywhere (an all-white picture, or a noise that
+/// never rises above 0.5 - 0.5/CONTRAST over the region) was blamed on `--c`: "the first
+/// circle ... does not fit; lower --c or raise --n-offset". The density is named now: at once
+/// for a picture, and after the fill placed nothing for noise. The controls: the same picture
+/// with a floor, and the same noise at another seed, fill.
+#[test]
+fn a_density_zero_everywhere_is_named_not_c() {
+    let dir = tmp();
+    let d = dir.path();
+    png_picture(&d.join("white.png"), 8, 8, |_, _| false);
+    png_picture(&d.join("black.png"), 8, 8, |_, _| true);
+    let refused = [
+        vec!["--c", "1.05", "--n-offset", "1000", "--density", "image:white.png"],
+        vec!["--density", "image:black.png,invert"],
+        vec![
+            "--region",
+            "rect:1:1",
+            "--density",
+            "noise:value:1000:1:0.5:50",
+            "--seed",
+            "4",
+            "--max-trials",
+            "20000",
+        ],
+    ];
+    for args in &refused {
+        let mut a = vec!["fill", "-q", "--count", "10"];
+        a.extend(args);
+        a.extend(["-o", "w.svg"]);
+        let o = zf(d, &a);
+        assert_eq!(o.code, 2, "{a:?}: {}", o.stderr);
+        assert!(
+            o.stderr.starts_with("error: --density: ") && !o.stderr.contains("--c"),
+            "{a:?}: {}",
+            o.stderr
+        );
+        assert!(!d.join("w.svg").exists(), "{a:?} wrote a file");
+    }
+    for args in [
+        vec!["--density", "image:white.png,floor=0.2"],
+        vec!["--region", "rect:1:1", "--density", "noise:value:1000:1:0.5:50", "--seed", "1"],
+    ] {
+        let mut a = vec!["fill", "-q", "--count", "10"];
+        a.extend(args);
+        a.extend(["-o", "ok.svg"]);
+        let o = zf(d, &a);
+        assert_eq!(o.code, 0, "{a:?}: {}", o.stderr);
+    }
+}

@@ -98,6 +98,9 @@ fn run_engine<S: zetafill::Scalar>(
         .map_err(|e| too_large_error(e, &params.shape, region.periodic()))?;
     // The density, made before the engine that borrows it.
     let density = density::field(a, &region)?;
+    if let Some(d) = &density {
+        density::refuse_zero(d, &region, false)?;
+    }
     let mut shapes = vec![Placed::<S>::default(); cap];
     let mut index = vec![0u32; index_words(cap)];
     // Only the paper's sampler asks the coverage bitmap (the cell sampler never does).
@@ -210,11 +213,15 @@ pub fn compute_watched(a: &FillRun, watch: &mut dyn FnMut(&zetafill::Placement<f
             return Err(first_shape_error(params, &zetafill::first_shape(&sequence, &params.shape), None))
         }
         StopReason::Step(StepError::Halted { index: 0, trials }) => {
+            // Nothing placed: a density of zero everywhere is the reason, not the size.
+            if let Some(d) = density::field(a, &region)? {
+                density::refuse_zero(&d, &region, true)?;
+            }
             return Err(first_shape_error(
                 params,
                 &zetafill::first_shape(&sequence, &params.shape),
                 Some(trials),
-            ))
+            ));
         }
         StopReason::Step(e @ StepError::Halted { .. }) => ("halted", Some(e)),
         StopReason::Step(e @ (StepError::CannotFit { .. } | StepError::TooSmall { .. } | StepError::TooLarge { .. })) => {

@@ -232,6 +232,58 @@ pub(super) fn field(a: &FillRun, region: &Region<'_>) -> Result<Option<Field>, C
     }))
 }
 
+/// Points per side of the grid on which a noise density is looked at when nothing could be
+/// placed (a noise has no bound below 1, so only a look can tell that it is zero).
+const NOISE_GRID: usize = 256;
+
+/// Refuses, naming `--density`, a density that is zero over the whole region, where no
+/// shape can ever go: exactly for a picture (its densest pixel, from the pyramid), before the
+/// fill; for noise, after a fill that placed nothing, when it is zero at every point of a
+/// grid over the region (`after_halt`; before one, noise is taken as able to place).
+pub(super) fn refuse_zero(field: &Field, region: &Region<'_>, after_halt: bool) -> Result<(), CliError> {
+    use zetafill::Density;
+    let (x0, y0, x1, y1) = region.bbox();
+    match field {
+        Field::Picture { invert, floor, .. } => {
+            if field.max_over(x0, y0, x1, y1) > 0.0 {
+                return Ok(());
+            }
+            let (none, add) = if *invert {
+                ("no light pixel", "use a picture with light areas, or drop invert")
+            } else {
+                ("no dark pixel", "use a picture with dark areas, or add invert")
+            };
+            Err(CliError::arg(
+                "--density",
+                format!(
+                    "the picture has {none}, so the density is zero everywhere (floor={floor}) and no shape can go anywhere; {add}, or raise floor=F above 0"
+                ),
+            ))
+        }
+        Field::Noise { contrast, .. } => {
+            if !after_halt {
+                return Ok(());
+            }
+            let n = NOISE_GRID as f64;
+            let positive = (0..NOISE_GRID).any(|j| {
+                let y = y0 + (y1 - y0) * (j as f64 + 0.5) / n;
+                (0..NOISE_GRID).any(|i| field.at(x0 + (x1 - x0) * (i as f64 + 0.5) / n, y) > 0.0)
+            });
+            if positive {
+                return Ok(());
+            }
+            Err(CliError::arg(
+                "--density",
+                format!(
+                    "the noise never rises above {} (0.5 - 0.5 / CONTRAST) over the region, so the density is zero at every one of {} points looked at and no shape found a place; lower its CONTRAST ({contrast})",
+                    0.5 - 0.5 / contrast,
+                    NOISE_GRID * NOISE_GRID
+                ),
+            ))
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

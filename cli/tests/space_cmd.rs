@@ -422,3 +422,88 @@ fn a_c_beyond_the_first_two_solids_limit_is_refused() {
     );
     assert_ne!(o.code, 2, "rotated cubes were refused: {}", o.stderr);
 }
+
+/// Bug pinned here: in a periodic box a first solid wider than the period was not refused up
+/// front. `space --periodic --c 1.8` spent 25 s of CPU on 10^7 trials (each candidate met its
+/// own image) before exit 2; the same case without `--periodic`, or in 2D, was refused at
+/// once. Now it is refused before the fill, with the largest c that works, which then runs.
+#[test]
+fn a_first_solid_wider_than_the_period_is_refused_up_front() {
+    let dir = tmp();
+    let d = dir.path();
+    // (A cube never exceeds the period: its volume is below the box's.)
+    for shape in ["sphere", "shell:0.5", "octahedron", "tetrahedron"] {
+        // A low trial limit, so that a refusal left to the fill shows as a halt, not a wait.
+        let o = zf(
+            d,
+            &[
+                "space",
+                "-q",
+                "--count",
+                "50",
+                "--periodic",
+                "--shape",
+                shape,
+                "--c",
+                "4",
+                "--max-trials",
+                "1000",
+                "-o",
+                "p.json",
+            ],
+        );
+        assert_eq!(o.code, 2, "{shape}: {}", o.stderr);
+        assert!(
+            o.stderr.starts_with("error: --c: the first solid is wider than the period") && o.stderr.contains("lower --c to at most"),
+            "{shape}: {}",
+            o.stderr
+        );
+        assert!(!d.join("p.json").exists());
+        // For a sphere or a shell the limit is exact: the c it names works, the first solid is
+        // placed. (A polyhedron narrower than the period may still meet an image in every
+        // orientation: the refusal is certain, its limit only necessary.)
+        if !matches!(shape, "sphere" | "shell:0.5") {
+            continue;
+        }
+        let at_most = o.stderr.split("at most ").nth(1).and_then(|t| t.split(',').next()).unwrap_or("");
+        let c: f64 = at_most.parse().unwrap_or_else(|e| panic!("{shape}: {at_most:?}: {e}"));
+        let ok = format!("{}", c - 1e-3);
+        let o = zf(
+            d,
+            &[
+                "space",
+                "-q",
+                "--count",
+                "1",
+                "--periodic",
+                "--shape",
+                shape,
+                "--c",
+                &ok,
+                "-o",
+                "p.json",
+            ],
+        );
+        assert_eq!(o.code, 0, "{shape} at c {ok}: {}", o.stderr);
+        std::fs::remove_file(d.join("p.json")).unwrap_or_else(|e| panic!("{e}"));
+    }
+}
+
+/// Bug pinned here: `space --max-trials 1` was refused under `--c` without a word about
+/// `--max-trials`; the 2D message says to raise it. Both now have one shape: the first piece
+/// with its size, what happened, and the advice, `--max-trials` last.
+#[test]
+fn a_first_solid_out_of_trials_names_max_trials_as_in_2d() {
+    let dir = tmp();
+    let d = dir.path();
+    let o3 = zf(d, &["space", "-q", "--count", "5", "--max-trials", "1", "-o", "a.json"]);
+    let o2 = zf(d, &["fill", "-q", "--count", "5", "--max-trials", "1", "-o", "a.json"]);
+    for (o, first) in [(&o3, "sphere"), (&o2, "circle")] {
+        assert_eq!(o.code, 2, "{}", o.stderr);
+        let msg = o.stderr.trim_end();
+        assert!(msg.starts_with(&format!("error: --c: the first {first} (")), "{msg}");
+        assert!(msg.contains("never fit in the region (1 trials found no place for it)"), "{msg}");
+        assert!(msg.ends_with("; if it does fit, raise --max-trials"), "{msg}");
+    }
+    assert!(!d.join("a.json").exists());
+}

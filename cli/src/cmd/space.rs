@@ -113,8 +113,8 @@ pub fn compute(a: &SpaceRun) -> Result<(SpaceDoc, Option<StepError>), CliError> 
         StopReason::Count => ("count", None),
         StopReason::Fill => ("fill", None),
         StopReason::MinSize => ("min-size", None),
-        StopReason::Step(StepError::CannotFit { index: 0 }) => return Err(first_solid_error(None, &a.params)),
-        StopReason::Step(StepError::Halted { index: 0, trials }) => return Err(first_halt_error(trials)),
+        StopReason::Step(StepError::CannotFit { index: 0 }) => return Err(first_solid_error(None, &a.params, &a.region)),
+        StopReason::Step(StepError::Halted { index: 0, trials }) => return Err(first_halt_error(a, trials)),
         StopReason::Step(e @ StepError::Capacity { .. }) => return Err(CliError::Io(format!("internal: {e}"))),
         StopReason::Step(e) => ("halted", Some(e)),
     };

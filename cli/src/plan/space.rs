@@ -3,7 +3,7 @@
 //! resolution, the render, the sheets). Also the messages of the run's own outcomes that name
 //! a flag: a first solid that does not fit, a halt.
 
-use crate::args::fill::{Rotate, Sampler, ScalarArg};
+use crate::args::fill::{Rotate, Sampler, ScalarArg, DEFAULT_MAX_TRIALS};
 use crate::args::space::{solid_name, CutArg, SpaceArgs};
 use crate::error::{num, CliError};
 use crate::io::write::Dest;
@@ -264,7 +264,7 @@ pub fn resolve_as(a: &SpaceArgs, format: SpaceFormat) -> Result<(SpaceRun, Space
     let sequence = crate::plan::sequence(region.volume(), params.c, params.n_offset)?;
     let first = params.solids.kind_of(0);
     crate::plan::check_min_size(&stop, first.min_width(first.scale_for_volume(sequence.area(0))), SOLIDS)?;
-    check_first_solid(&params, &region).map_err(|e| first_solid_error(e.max_c, &params))?;
+    check_first_solid(&params, &region).map_err(|e| first_solid_error(e.max_c, &params, &region))?;
     check_first_two_solids(&params, &region).map_err(|e| first_two_error(e.max_c, &params))?;
     let slots = crate::plan::slots(space_capacity(&sequence, &params.solids, &stop, SOLIDS.max), SOLIDS)? as usize;
     let names = SolidParamsDoc {
@@ -346,20 +346,26 @@ fn cut_name(c: CutArg) -> &'static str {
 }
 
 /// The usage error of a first solid that cannot fit the region: `max_c` is the largest c at
-/// which it does, when one does.
-pub fn first_solid_error(max_c: Option<f64>, params: &SpaceParams) -> CliError {
+/// which it does, when one does. In a periodic box the solid is too wide for the period: it
+/// would meet its own image.
+pub fn first_solid_error(max_c: Option<f64>, params: &SpaceParams, region: &SpaceRegion) -> CliError {
+    let what = if region.periodic() {
+        "wider than the period (it would meet its own image)"
+    } else {
+        "larger than the region"
+    };
     match max_c {
         Some(c) => CliError::arg(
             "--c",
             format!(
-                "the first solid is larger than the region at c = {}; lower --c to at most {c:.4}, raise --n-offset or use a larger --region",
+                "the first solid is {what} at c = {}; lower --c to at most {c:.4}, raise --n-offset or use a larger --region",
                 params.c
             ),
         ),
         None => CliError::arg(
             "--n-offset",
             format!(
-                "the first solid is larger than the region at any c; raise --n-offset{} or use a larger --region",
+                "the first solid is {what} at any c; raise --n-offset{} or use a larger --region",
                 if params.gap > 0.0 { ", lower --gap" } else { "" }
             ),
         ),
@@ -367,11 +373,33 @@ pub fn first_solid_error(max_c: Option<f64>, params: &SpaceParams) -> CliError {
 }
 
 /// The usage error of a first solid that found no place in `trials` trials (nothing is
-/// written: an output with no solid is no fill).
-pub fn first_halt_error(trials: u64) -> CliError {
+/// written: an output with no solid is no fill), in the words of the 2D fill's
+/// ([`crate::plan::fill::first_shape_error`]): the solid, what happened, and what to change,
+/// `--max-trials` included when the limit was lowered and reached.
+pub fn first_halt_error(run: &SpaceRun, trials: u64) -> CliError {
+    let params = &run.params;
+    let kind = params.solids.kind_of(0);
+    let volume = run.sequence.area(0);
+    let width = kind.min_width(kind.scale_for_volume(volume));
+    let what = if trials < params.max_trials {
+        "does not fit anywhere in the region".to_string()
+    } else {
+        format!("never fit in the region ({trials} trials found no place for it)")
+    };
+    let mut advice = String::from("lower --c or raise --n-offset (a smaller first solid)");
+    if params.gap > 0.0 {
+        advice.push_str(", lower --gap");
+    }
+    advice.push_str(" or use a larger --region");
+    if trials >= params.max_trials && params.max_trials < DEFAULT_MAX_TRIALS {
+        advice.push_str("; if it does fit, raise --max-trials");
+    }
     CliError::arg(
         "--c",
-        format!("the first solid found no place in {trials} trials; lower --c or raise --n-offset (a smaller first solid), or use a larger --region"),
+        format!(
+            "the first {} ({width:.4} mm wide, volume {volume:.4} mm³) {what}; {advice}",
+            solid_name(&kind)
+        ),
     )
 }
 

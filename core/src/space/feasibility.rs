@@ -30,7 +30,8 @@ pub fn space_capacity(seq: &AreaSequence, solids: &SolidList, stop: &Stop, max: 
 }
 
 /// The first solid cannot fit in the region's box with its gap (it is wider, in every
-/// orientation, than the box's smallest side): `max_c` is the largest c (60 halvings of
+/// orientation, than the box's smallest side; in a periodic box, so wide that it meets its own
+/// image one period away): `max_c` is the largest c (60 halvings of
 /// `[1 + 1e-9, c]`) at which it fits, if any.
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
@@ -51,8 +52,9 @@ impl core::fmt::Display for FirstSolidError {
 impl core::error::Error for FirstSolidError {}
 
 /// Whether the first solid fits in the region's box with its gap (a necessary condition,
-/// what [`crate::SpaceEngine::step`] reports as [`crate::StepError::CannotFit`]); the
-/// parameters are assumed valid ([`crate::SpaceEngine::new`] checks them).
+/// what [`crate::SpaceEngine::step`] reports as [`crate::StepError::CannotFit`]), or, in a
+/// periodic box, clears its own image one period away by the gap (else every trial would be
+/// refused); the parameters are assumed valid ([`crate::SpaceEngine::new`] checks them).
 ///
 /// # Examples
 ///
@@ -66,14 +68,18 @@ impl core::error::Error for FirstSolidError {}
 /// assert!(check_first_solid(&SpaceParams::spheres(c, 1.0), &region).is_ok());
 /// ```
 pub fn check_first_solid(params: &SpaceParams, region: &SpaceRegion) -> Result<(), FirstSolidError> {
-    if region.periodic() {
-        return Ok(());
-    }
     let side = region.extent().iter().fold(f64::MAX, |m, &e| m.min(e));
     let kind = params.solids.kind_of(0);
+    let periodic = region.periodic();
     let fits = |c: f64| {
         let v = region.volume() / (zeta::zeta(c, params.n_offset).unwrap_or(f64::MAX) * libm::pow(params.n_offset, c));
-        2.0 * (kind.support(kind.scale_for_volume(v)) + params.gap) <= side
+        let scale = kind.scale_for_volume(v);
+        if periodic {
+            // Its image one period away must clear it by the gap too.
+            self_width(&kind, scale) + params.gap <= side
+        } else {
+            2.0 * (kind.support(scale) + params.gap) <= side
+        }
     };
     if fits(params.c) {
         return Ok(());
@@ -92,6 +98,19 @@ pub fn check_first_solid(params: &SpaceParams, region: &SpaceRegion) -> Result<(
         }
     }
     Err(FirstSolidError { max_c: Some(lo) })
+}
+
+/// A width below which a solid meets every copy of itself shifted by less, in any direction
+/// and orientation: then a periodic box with a shorter side holds it nowhere, as it meets its
+/// own image. For a convex solid that is its narrowest width (the copy shifted by `t` meets it
+/// exactly when `t` lies in the solid's difference body, which holds the ball of that
+/// radius); for a torus of beads, twice the beads' radius (each bead meets its own copy). A
+/// shell meets its copy while the outer spheres cross: twice its outer radius.
+fn self_width(kind: &Solid, scale: f64) -> f64 {
+    match *kind {
+        Solid::Shell { .. } => 2.0 * scale,
+        _ => kind.min_width(scale),
+    }
 }
 
 /// The first two solids certainly cannot both be placed (every run would halt at placement
@@ -196,4 +215,29 @@ pub fn check_first_two_solids(params: &SpaceParams, region: &SpaceRegion) -> Res
         }
     }
     Err(FirstTwoSolidsError { max_c: Some(lo) })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_periodic_first_sphere_must_clear_its_own_image() {
+        let region = SpaceRegion::Box {
+            width: 100.0,
+            height: 100.0,
+            depth: 100.0,
+            periodic: true,
+        };
+        // Control: a small first sphere passes.
+        assert!(check_first_solid(&SpaceParams::spheres(1.3, 1.0), &region).is_ok());
+        let e = check_first_solid(&SpaceParams::spheres(1.8, 1.0), &region);
+        let c = e.err().and_then(|e| e.max_c).unwrap_or(0.0);
+        assert!(c > 1.3 && c < 1.8, "{c}");
+        // At the limit the diameter is the period.
+        let v = region.volume() / (zeta::zeta(c, 1.0).unwrap_or(f64::MAX));
+        let d = 2.0 * Solid::Sphere.scale_for_volume(v);
+        assert!((d - 100.0).abs() < 1e-6 && d <= 100.0, "{d}");
+        assert!(check_first_solid(&SpaceParams::spheres(c, 1.0), &region).is_ok());
+    }
 }

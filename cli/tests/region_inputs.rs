@@ -456,3 +456,35 @@ fn bad_masks_fonts_and_texts_exit_2_naming_their_flag() {
     assert_eq!(o.code, 0, "{}", o.stderr);
     assert!(run_dir.path().join("good.json").exists());
 }
+
+/// Bug pinned here: a tiny `--text-size` or `--region-width` blamed something else: 1e-300
+/// said the font's outline of 'a' was not simple, or that the outline enclosed no area, and
+/// 1e-100 spent 10^7 trials and blamed `--c`. Below 1e-6 mm both are refused naming their
+/// flag and the smallest size that works; at 1e-6 mm the fill runs (the control).
+#[test]
+fn tiny_text_and_mask_sizes_name_their_flag() {
+    let dir = tmp();
+    let d = dir.path();
+    png_picture(&d.join("m.png"), 40, 40, |x, y| {
+        (x as i32 - 20).pow(2) + (y as i32 - 20).pow(2) < 200
+    });
+    let fill = ["fill", "-q", "--count", "100", "--c", "1.25", "--n-offset", "30"];
+    for (flag, region) in [("--text-size", "text:ab"), ("--region-width", "mask:m.png")] {
+        for size in ["1e-300", "1e-100", "9e-7"] {
+            let mut a = fill.to_vec();
+            a.extend(["--region", region, flag, size, "-o", "t.svg"]);
+            let o = zf(d, &a);
+            assert_eq!(o.code, 2, "{a:?}: {}", o.stderr);
+            assert!(
+                o.stderr.starts_with(&format!("error: {flag}: ")) && o.stderr.contains("at least 0.000001 mm"),
+                "{a:?}: {}",
+                o.stderr
+            );
+            assert!(!d.join("t.svg").exists());
+        }
+        let mut a = fill.to_vec();
+        a.extend(["--region", region, flag, "1e-6", "-o", "t.json"]);
+        let o = zf(d, &a);
+        assert_eq!(o.code, 0, "{a:?}: {}", o.stderr);
+    }
+}

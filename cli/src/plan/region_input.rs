@@ -24,6 +24,25 @@ pub const DEFAULT_REGION_WIDTH: f64 = 200.0;
 /// short word about as wide as the default 200 mm region.
 pub const DEFAULT_TEXT_SIZE: f64 = 50.0;
 
+/// The smallest `--region-width` and `--text-size`, in mm. Far smaller sizes round the
+/// outline's vertices onto each other, or leave the shapes below what the engine resolves;
+/// this one still fills as the same outline at 200 mm does.
+pub const MIN_INPUT_SIZE: f64 = 1e-6;
+
+/// Refuses a size below [`MIN_INPUT_SIZE`], naming `flag` and the smallest that works.
+fn at_least(flag: &str, v: Option<f64>) -> Result<(), CliError> {
+    match v {
+        Some(v) if v < MIN_INPUT_SIZE => Err(CliError::arg(
+            flag,
+            format!(
+                "{} mm is too small for an outline; give at least {MIN_INPUT_SIZE} mm",
+                crate::error::num(v)
+            ),
+        )),
+        _ => Ok(()),
+    }
+}
+
 /// How far a simplified ring may stray from the traced one, in pixels.
 pub const MASK_TOLERANCE: f64 = 0.5;
 
@@ -91,6 +110,7 @@ pub fn check_digest(flag: &str, path: &Path, actual: &str, want: Option<&String>
 
 /// A picture's dark areas as rings in mm.
 fn mask(path: &Path, threshold: f64, a: &RegionInputArgs, spec: &RegionSpec) -> Result<(RegionSpec, Option<RegionSource>), CliError> {
+    at_least("--region-width", a.region_width)?;
     let grey = crate::io::image::read_grey(path).map_err(|e| CliError::arg("--region", printable(&e)))?;
     check_digest("--region-sha256", path, &grey.sha256, a.region_sha256.as_ref(), "picture")?;
     let width = a.region_width.unwrap_or(DEFAULT_REGION_WIDTH);
@@ -174,6 +194,7 @@ fn within_reach(points: &[Point<f64>], flag: &str, fix: &str) -> Result<(), CliE
 
 /// A text's letters as rings in mm.
 fn text(lines: &[String], a: &RegionInputArgs, spec: &RegionSpec) -> Result<(RegionSpec, Option<RegionSource>), CliError> {
+    at_least("--text-size", a.text_size)?;
     let file = match &a.font {
         Some(path) => {
             let f = crate::io::font::read_font(path).map_err(|e| font_error(e, Some(path)))?;

@@ -424,3 +424,47 @@ fn ten_thousand_solids_render() {
     let img = render3d::pixels(&solids, &region(), &opt).expect("renders");
     assert_eq!(img.len(), 320 * 240 * 3);
 }
+
+/// Bug pinned here: the GLB keyed its meshes by the bits of a solid's ratio of radii, which is
+/// computed from the two radii, so shells of one `--shape` at different sizes got ratios one
+/// unit in the last place apart (0.3 and 0.29999999999999993) and one mesh each, though their
+/// vertices round to the same 32-bit floats. A whole fill of them now shares one mesh; a different ratio (the control)
+/// still gets its own.
+#[test]
+fn glb_ratios_that_differ_in_the_last_bit_share_one_mesh() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let d = dir.path();
+    let run = |shape: &str, out: &str| {
+        let o = Command::new(env!("CARGO_BIN_EXE_zetafill"))
+            .args([
+                "space",
+                "-q",
+                "--shape",
+                shape,
+                "--c",
+                "1.15",
+                "--n-offset",
+                "3",
+                "--count",
+                "60",
+                "-o",
+                out,
+            ])
+            .current_dir(d)
+            .output()
+            .expect("runs");
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        std::fs::read(d.join(out)).expect("written")
+    };
+    let doc: serde_json::Value = serde_json::from_slice(&run("shell:0.45", "s.json")).expect("JSON");
+    let ratios: std::collections::BTreeSet<u64> = doc["solids"]
+        .as_array()
+        .expect("solids")
+        .iter()
+        .map(|s| (s["inner_radius"].as_f64().unwrap_or(0.0) / s["size"].as_f64().unwrap_or(1.0)).to_bits())
+        .collect();
+    assert!(ratios.len() > 1, "the scene must hold ratios that differ in their bits: {ratios:?}");
+    let meshes = |bytes: &[u8]| gltf::Gltf::from_slice(bytes).expect("the gltf crate reads it").meshes().count();
+    assert_eq!(meshes(&run("shell:0.45", "s.glb")), 1, "one shell ratio, one mesh");
+    assert_eq!(meshes(&run("mix:shell:0.45,shell:0.451", "m.glb")), 2, "two ratios, two meshes");
+}

@@ -447,8 +447,11 @@ impl ScenePlan {
 pub struct MeshKey {
     /// The kind: 0 sphere, 1 shell, 2 cube, 3 tetrahedron, 4 octahedron, 5 torus, 6 bead torus.
     pub kind: u8,
-    /// The bits of the shape's ratio (inner / outer, minor / major; 0 otherwise).
-    pub ratio: u64,
+    /// The bits of the shape's ratio (inner / outer, minor / major; 0 otherwise) rounded to
+    /// 32 bits, the precision of a mesh's coordinates: the ratio of a solid is computed from
+    /// its two radii, so solids of one `--shape shell:0.3` give 0.3 and 0.29999999999999993,
+    /// whose meshes round to the same vertices and are one mesh.
+    pub ratio: u32,
     /// The beads of a bead torus (0 otherwise).
     pub beads: u32,
 }
@@ -457,7 +460,7 @@ pub struct MeshKey {
 pub fn unit_kind(kind: &SolidKind) -> (MeshKey, SolidKind, f64) {
     let key = |kind: u8, ratio: f64, beads: u32| MeshKey {
         kind,
-        ratio: ratio.to_bits(),
+        ratio: (ratio as f32).to_bits(),
         beads,
     };
     match *kind {

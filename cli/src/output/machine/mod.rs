@@ -3,7 +3,8 @@
 //! the writer can trust every field. Unknown or missing fields are errors that name the field.
 //!
 //! All lengths are mm and all feeds mm/min in the profile, whatever `units` says: `units`
-//! only chooses what the G-code is written in (G21 mm with 3 decimals, G20 inch with 4).
+//! only chooses what the G-code is written in (G21 mm with 3 decimals and whole mm/min
+//! feeds; G20 inch with 5 decimals, feeds too).
 //! The bed frame has (0, 0) at the bed's front-left corner, x right, y away from the user;
 //! `origin` says where the machine's (0, 0) is and which way its y points.
 
@@ -31,9 +32,10 @@ pub const BUILTINS: &[(&str, &str)] = &[
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "lowercase")]
 pub enum Units {
-    /// Millimetres (G21), 3 decimals.
+    /// Millimetres (G21), 3 decimals, feeds in whole mm/min.
     Mm,
-    /// Inches (G20), 4 decimals.
+    /// Inches (G20), 5 decimals (0.254 µm, finer than the mm grid), feeds in in/min with 5
+    /// decimals too (within 0.013 % of any feed from 1 mm/min up).
     Inch,
 }
 
@@ -50,7 +52,15 @@ impl Units {
     pub fn decimals(self) -> u32 {
         match self {
             Units::Mm => 3,
-            Units::Inch => 4,
+            Units::Inch => 5,
+        }
+    }
+
+    /// Decimals of every feed (`F` word).
+    pub fn feed_decimals(self) -> u32 {
+        match self {
+            Units::Mm => 0,
+            Units::Inch => 5,
         }
     }
 }

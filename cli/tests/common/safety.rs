@@ -80,10 +80,16 @@ pub struct Profile {
     pub tool: ToolModel,
 }
 
+/// A number of the profile at `path`; a table's field may also be written as an array of its
+/// fields in order, `[bed]` as `bed = [width, height]`.
 fn toml_f(v: &toml::Value, path: &[&str]) -> f64 {
     let mut cur = v;
     for k in path {
-        cur = cur.get(k).unwrap_or_else(|| panic!("profile lacks {path:?}"));
+        cur = match (cur.as_array(), *k) {
+            (Some(a), "width") => &a[0],
+            (Some(a), "height") => &a[1],
+            _ => cur.get(k).unwrap_or_else(|| panic!("profile lacks {path:?}")),
+        };
     }
     cur.as_float()
         .or_else(|| cur.as_integer().map(|i| i as f64))

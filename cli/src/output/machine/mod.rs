@@ -9,6 +9,7 @@
 //! `origin` says where the machine's (0, 0) is and which way its y points.
 
 mod blocks;
+mod lists;
 
 use crate::model::{Bounds, Pt};
 pub use blocks::{printable, MAX_FEED, MIN_FEED};
@@ -137,8 +138,8 @@ pub struct Machine {
     /// Travel moves.
     #[serde(default)]
     pub travel: Travel,
-    /// Machine position to rapid to at the end, if any.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
+    /// Machine position to rapid to at the end, if any: exactly `[x, y]`.
+    #[serde(default, skip_serializing_if = "Option::is_none", deserialize_with = "lists::park")]
     pub park: Option<[f64; 2]>,
     /// Lines written once before drawing.
     pub start: String,
@@ -153,11 +154,13 @@ pub struct Machine {
     /// Lines written once at the end.
     pub end: String,
     /// The bed.
+    #[serde(deserialize_with = "lists::table")]
     pub bed: Bed,
     /// Feeds.
+    #[serde(deserialize_with = "lists::table")]
     pub feed: Feeds,
     /// Laser power range (lasers only).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none", deserialize_with = "lists::optional_table")]
     pub power: Option<Power>,
 }
 

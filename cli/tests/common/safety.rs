@@ -7,7 +7,11 @@
 //! - every coordinate inside the bed, arcs included (their extreme points);
 //! - the tool off for every G0, at every pause and at the end of the program;
 //! - a feed set before the first cutting move;
-//! - plain decimals with fixed precision (no exponent, NaN or -0).
+//! - plain decimals with fixed precision (no exponent, NaN or -0): 3 decimals in mm, 5 in
+//!   inches.
+//!
+//! It also records the feed in force at every G1/G2/G3 move ([`Replay::feeds`]), which
+//! [`feed_faults`] compares with the feeds that were asked for.
 //!
 //! `cli/tests/gcode.rs` (`checkers_fail_on_broken_programs`) shows that each check can fail.
 
@@ -76,10 +80,16 @@ pub struct Profile {
     pub tool: ToolModel,
 }
 
+/// A number of the profile at `path`; a table's field may also be written as an array of its
+/// fields in order, `[bed]` as `bed = [width, height]`.
 fn toml_f(v: &toml::Value, path: &[&str]) -> f64 {
     let mut cur = v;
     for k in path {
-        cur = cur.get(k).unwrap_or_else(|| panic!("profile lacks {path:?}"));
+        cur = match (cur.as_array(), *k) {
+            (Some(a), "width") => &a[0],
+            (Some(a), "height") => &a[1],
+            _ => cur.get(k).unwrap_or_else(|| panic!("profile lacks {path:?}")),
+        };
     }
     cur.as_float()
         .or_else(|| cur.as_integer().map(|i| i as f64))
@@ -155,7 +165,7 @@ pub fn profile_from_toml(text: &str) -> Profile {
         }
     };
     Profile {
-        decimals: if inch { 4 } else { 3 },
+        decimals: if inch { 5 } else { 3 },
         bed,
         tool,
     }
@@ -194,6 +204,9 @@ pub struct Replay {
     pub drawn: [f64; 4],
     /// At each program pause (`M0`, `M1`: a pen change), the number of cutting segments so far.
     pub pauses: Vec<usize>,
+    /// Every G1/G2/G3 move in X or Y: its line, whether the tool was on, and the feed in force
+    /// (output units per minute).
+    pub feeds: Vec<(usize, bool, f64)>,
 }
 
 /// A plain decimal: `-?\d+(\.\d+)?` with exactly `decimals` decimals when given.
@@ -430,6 +443,9 @@ pub fn replay(text: &str, p: &Profile) -> Replay {
             visit(pos, "start point", &mut r);
         }
         visit(to, "end point", &mut r);
+        if let (1.., Some(f)) = (m, feed) {
+            r.feeds.push((line, on, f));
+        }
         let len = (to[0] - pos[0]).hypot(to[1] - pos[1]);
         match m {
             0 => {
@@ -501,4 +517,28 @@ pub fn assert_safe(text: &str, p: &Profile, what: &str) -> Replay {
     );
     assert!(r.cuts > 0, "{what}: nothing drawn");
     r
+}
+
+/// The moves of a replay whose feed is not what was asked: `draw` for every move with the tool
+/// on, and one of `off` for every G1 with it off (mm/min: the travel feed; a profile whose
+/// blocks the interpreter reads as leaving the pen up while the writer cuts may add `draw`).
+/// Each is read back in mm/min (`per_mm` output units per mm: 1, or 1 / 25.4 in inches)
+/// within the relative tolerance `rel`, or within `abs` mm/min (for the whole mm/min of mm
+/// programs).
+pub fn feed_faults(r: &Replay, per_mm: f64, draw: f64, off: &[f64], rel: f64, abs: f64) -> Vec<String> {
+    let mut out = Vec::new();
+    let ok = |got: f64, want: f64| (got - want).abs() <= rel * want || (got - want).abs() <= abs;
+    for &(line, on, f) in &r.feeds {
+        let got = f / per_mm;
+        let fine = if on { ok(got, draw) } else { off.iter().any(|&w| ok(got, w)) };
+        if !fine {
+            let what = if on {
+                format!("drawing feed, asked {draw}")
+            } else {
+                format!("travel feed, asked {off:?}")
+            };
+            out.push(format!("line {line}: {got} mm/min (F{f}) as {what} mm/min"));
+        }
+    }
+    out
 }

@@ -187,7 +187,12 @@ pub fn resolve_as(a: &SpaceArgs, format: SpaceFormat) -> Result<(SpaceRun, Space
             if n > MAX_SHEETS as f64 {
                 return Err(CliError::arg(
                     "--slices",
-                    format!("{} mm makes {n} sheets, more than {MAX_SHEETS}; give thicker sheets", num(t)),
+                    format!(
+                        "{} mm makes {} sheets, more than {MAX_SHEETS}; give sheets at least {} mm thick",
+                        num(t),
+                        num(n),
+                        num(depth / MAX_SHEETS as f64)
+                    ),
                 ));
             }
             Some(SliceOptions::new(t))

@@ -16,6 +16,9 @@ use crate::plan::fill::FillRun;
 use std::sync::Arc;
 use zetafill::Region;
 
+/// The most lattice cells of a noise across the region (the core's limit for a periodic one).
+const MAX_NOISE_CELLS: f64 = (1u64 << 40) as f64;
+
 /// A bound leaves this relative margin above the darkest blend, so the rounding of a blend
 /// (a few units in the last place) never takes the density above it.
 const MARGIN: f64 = 1e-12;
@@ -212,6 +215,20 @@ pub(super) fn field(a: &FillRun, region: &Region<'_>) -> Result<Option<Field>, C
                 (crate::model::region::RegionSpec::Rect { width, height }, true) => Some((*width, *height)),
                 _ => None,
             };
+            // As many lattice cells across the region as a periodic noise may have (2^40 at
+            // the finest octave): beyond that the lattice's coordinates lose their integer
+            // precision and the noise is no longer noise.
+            let (x0, y0, x1, y1) = region.bbox();
+            let across = (x1 - x0).max(y1 - y0) / scale * f64::from(1u32 << octaves.saturating_sub(1).min(31));
+            if !(across <= MAX_NOISE_CELLS) {
+                return Err(CliError::arg(
+                    "--density",
+                    format!(
+                        "a SCALE of {} mm puts more than 2^40 lattice cells across the region at the finest octave; choose a larger SCALE or fewer OCTAVES",
+                        crate::error::num(scale)
+                    ),
+                ));
+            }
             let noise = zetafill::Noise::new(kind, a.seed, scale, octaves, gain, period)
                 .map_err(|e| CliError::arg("--density", format!("{e}: choose a larger SCALE or fewer OCTAVES")))?;
             Field::Noise { noise, contrast }

@@ -18,8 +18,13 @@
 //!   `--feed` and `--travel-feed` from 1 to 1,000,000 mm/min: the G-code is safe and every
 //!   feed read back is within 0.1 % of what was asked in inches (the whole mm/min in mm).
 //!
+//! - pictures (`--density image:FILE`, `--region mask:FILE`, `io::image`): arbitrary bytes
+//!   behind a signature and mutated pictures of every PNG colour type and depth and JPEG
+//!   decode to sound luminances or a readable error; as a density or a mask the tool exits 0,
+//!   2 or 3 and a refusal names its flag.
+//!
 //! The targets live in `fuzz/`, one file each (`specs.rs`, `svg.rs`, `machines.rs`,
-//! `feeds.rs`), under the shared runner and generators of this file.
+//! `feeds.rs`, `pictures.rs`), under the shared runner and generators of this file.
 //!
 //! `ZETAFILL_FUZZ_CASES` sets the number of cases of each test (default: a few hundred to a
 //! few thousand, a few seconds in release mode); `ZETAFILL_FUZZ_SEED` changes the seed
@@ -45,6 +50,7 @@ use zetafill_cli::model::region::RegionSpec;
 mod fuzz {
     mod feeds;
     mod machines;
+    mod pictures;
     mod specs;
     mod svg;
 }

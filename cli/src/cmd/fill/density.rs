@@ -220,7 +220,7 @@ pub(super) fn field(a: &FillRun, region: &Region<'_>) -> Result<Option<Field>, C
             // precision and the noise is no longer noise.
             let (x0, y0, x1, y1) = region.bbox();
             let across = (x1 - x0).max(y1 - y0) / scale * f64::from(1u32 << octaves.saturating_sub(1).min(31));
-            if !(across <= MAX_NOISE_CELLS) {
+            if across.is_nan() || across > MAX_NOISE_CELLS {
                 return Err(CliError::arg(
                     "--density",
                     format!(

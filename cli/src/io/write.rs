@@ -1,6 +1,8 @@
 //! Output destinations: a file written atomically (a temporary file in the same folder,
 //! renamed into place), a stream written straight into (a character device such as
-//! `/dev/null`, or a named pipe), or standard output for `-`. A failure or Ctrl-C never leaves
+//! `/dev/null`, or a named pipe), or standard output for `-`. An output is streamed into its
+//! destination through a buffer as it is made ([`Dest::write_with`], [`Dest::write_output`]),
+//! so no file has to fit in memory. A failure or Ctrl-C never leaves
 //! a truncated file and never destroys an existing one; a symbolic link is followed (the file
 //! it points to is replaced, the link stays), and a device or pipe is never replaced.
 //!

@@ -377,8 +377,8 @@ pub fn output(pic: &Picture) -> Result<super::stream::Output<'static>, crate::er
     use std::io::Write as _;
     let d = document(pic, n);
     let mut c = Counter(0);
-    write!(c, "{d}\n").map_err(io_error)?;
-    Ok(Output::stream(Size::Exact(c.0), move |w| write!(w, "{d}\n").map_err(io_error)))
+    writeln!(c, "{d}").map_err(io_error)?;
+    Ok(Output::stream(Size::Exact(c.0), move |w| writeln!(w, "{d}").map_err(io_error)))
 }
 
 /// The tree of `svg` crate elements of a picture.

@@ -32,6 +32,11 @@ impl CliError {
     }
 }
 
+/// The error of a write into an output that failed.
+pub fn io_error(e: std::io::Error) -> CliError {
+    CliError::Io(format!("cannot write the output: {e}"))
+}
+
 /// A number as a message shows it: as Rust writes it in the usual range, in exponent form when
 /// its size is extreme (so that 1e-300 is not written with three hundred digits).
 pub fn num(v: f64) -> String {

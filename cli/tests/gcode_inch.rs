@@ -128,7 +128,7 @@ fn check_program(d: &Path, profile: &str, feeds: (Option<f64>, Option<f64>), cir
     checked
 }
 
-/// Bug (issue 35): in inches every feed was written as whole inches per minute: `--feed 30`
+/// Bug pinned here: in inches every feed was written as whole inches per minute: `--feed 30`
 /// (mm/min) became `F1` (25.4 mm/min, -15 %), 1 to 13 mm/min all `F1` (up to 25 times too
 /// fast), 37 became `F1` (-31 %) and 1000 became `F39`.
 #[test]

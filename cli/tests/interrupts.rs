@@ -144,3 +144,60 @@ fn the_checker_sees_a_file_left_by_sigkill() {
     }
     panic!("SIGKILL never caught a temporary file: the checker cannot be shown to fail");
 }
+
+/// A streamed output is interrupted too: SIGINT in the middle of a 1 GB STL, written one solid
+/// at a time into its temporary file, removes that file and leaves the old output. The write
+/// takes seconds, so the signal is sent once the temporary file holds a few MB (well before
+/// its end), and a run or two is enough.
+#[test]
+fn ctrl_c_in_the_middle_of_a_streamed_mesh_removes_the_temporary_file() {
+    let dir = tmp();
+    let d = dir.path();
+    // 80 spheres of 512 * 510 triangles: 1.04 GB.
+    let full = 84 + 50 * 80 * 512 * 510;
+    for _ in 0..3 {
+        std::fs::write(d.join("out.stl"), OLD).unwrap_or_else(|e| panic!("{e}"));
+        let mut child = Command::new(env!("CARGO_BIN_EXE_zetafill"))
+            .args(["space", "-q", "--count", "80", "--segments", "512", "-o", "out.stl"])
+            .current_dir(d)
+            .stdout(Stdio::null())
+            .stderr(Stdio::null())
+            .spawn()
+            .unwrap_or_else(|e| panic!("cannot run zetafill: {e}"));
+        let deadline = Instant::now() + Duration::from_secs(300);
+        let mut part = None;
+        let status = loop {
+            if let Some(s) = child.try_wait().unwrap_or_else(|e| panic!("{e}")) {
+                break s;
+            }
+            let grown = temporaries(d)
+                .iter()
+                .filter_map(|p| std::fs::metadata(p).ok())
+                .map(|m| m.len())
+                .max();
+            if part.is_none() && grown.is_some_and(|n| n > 4 << 20) {
+                let ok = Command::new("kill")
+                    .args(["-INT", &child.id().to_string()])
+                    .status()
+                    .is_ok_and(|s| s.success());
+                assert!(ok, "kill -INT failed");
+                part = grown;
+            }
+            assert!(Instant::now() < deadline, "the write did not end");
+            std::thread::sleep(Duration::from_millis(2));
+        };
+        let left = temporaries(d);
+        assert!(left.is_empty(), "temporary files left behind: {left:?}");
+        let len = std::fs::metadata(d.join("out.stl")).map(|m| m.len()).ok();
+        if status.signal() == Some(2) && part.is_some_and(|n| n < full) {
+            assert!(
+                read(&d.join("out.stl")) == OLD,
+                "the old output survives a streamed write cut short"
+            );
+            return;
+        }
+        // Not cut short (the signal came late): the old output or the complete new one.
+        assert!(len == Some(full) || read(&d.join("out.stl")) == OLD, "{status:?}: {len:?} bytes");
+    }
+    panic!("no run was interrupted while the mesh was being written");
+}

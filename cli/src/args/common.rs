@@ -82,4 +82,51 @@ pub struct OutputArgs<F: clap::ValueEnum + Clone + Send + Sync + 'static> {
     /// Output format (overrides the extension).
     #[arg(long, value_enum)]
     pub format: Option<F>,
+    /// The largest output written, in bytes (or with K, M, G, T: KiB, MiB, GiB, TiB); a
+    /// larger one is refused before anything is written (exit 2).
+    #[arg(long = "max-output-size", value_name = "BYTES", default_value = "4G", value_parser = byte_size)]
+    pub max_output_size: u64,
+}
+
+/// Parses `--max-output-size`: a whole number of bytes, at least 1, optionally followed by
+/// K, M, G or T (powers of 1024, also written KiB, MiB, GiB, TiB).
+pub fn byte_size(s: &str) -> Result<u64, String> {
+    let t = s.trim();
+    let split = t.find(|c: char| !c.is_ascii_digit()).unwrap_or(t.len());
+    let (digits, unit) = t.split_at(split);
+    let shift = match unit.strip_suffix("iB").unwrap_or(unit) {
+        "" if unit.is_empty() => 0,
+        "K" | "k" => 10,
+        "M" => 20,
+        "G" => 30,
+        "T" => 40,
+        _ => {
+            return Err(format!(
+                "'{s}': give a number of bytes, optionally followed by K, M, G or T (KiB, MiB, GiB, TiB)"
+            ))
+        }
+    };
+    let n: u64 = digits.parse().map_err(|_| format!("'{s}' is not a number of bytes"))?;
+    match n.checked_mul(1u64 << shift) {
+        Some(0) => Err("the output limit must be at least 1 byte".into()),
+        Some(v) => Ok(v),
+        None => Err(format!("'{s}' is more bytes than can be counted")),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::byte_size;
+
+    #[test]
+    fn byte_sizes_parse_in_binary_units() {
+        assert_eq!(byte_size("4G"), Ok(4 << 30));
+        assert_eq!(byte_size("4GiB"), Ok(4 << 30));
+        assert_eq!(byte_size("1000"), Ok(1000));
+        assert_eq!(byte_size("3k"), Ok(3072));
+        assert_eq!(byte_size("2T"), Ok(2 << 40));
+        for bad in ["", "0", "G", "1.5G", "-1", "4GB", "4 G", "99999999999T"] {
+            assert!(byte_size(bad).is_err(), "{bad}");
+        }
+    }
 }

@@ -7,6 +7,7 @@ use crate::cmd::stopping;
 use crate::error::CliError;
 use crate::model::doc::{kind_name, FillDoc, ParamsDoc, ShapeDoc, ShapeParamsDoc, StatsDoc};
 use crate::output;
+use crate::output::stream::{Output, Size};
 use crate::plan::fill::{
     first_shape_error, first_two_error, fixed_outline_error, halt_advice, param_error, too_large_error, too_small_error, FillDraw,
     FillPlan, FillRun, FIXED_MAX_VERTICES, SHAPES,
@@ -339,29 +340,38 @@ fn no_gcode() -> CliError {
 
 /// Renders a document in a format.
 pub fn render(doc: &FillDoc, format: Format, d: &FillDraw) -> Result<Vec<u8>, CliError> {
+    output(doc, format, d)?.into_bytes()
+}
+
+/// A document in a format, ready to be streamed: the JSON and the CSV are written a few
+/// shapes at a time, the SVG's tree and the G-code's paths are made once and printed straight
+/// into the destination; a PNG is made whole.
+pub fn output<'a>(doc: &'a FillDoc, format: Format, d: &FillDraw) -> Result<Output<'a>, CliError> {
     if d.voronoi {
         let look = cobble_look(doc, d);
         return match format {
-            Format::Png => d.raster.render(&crate::cmd::cobble::svg(doc, &look)?).map_err(png_error),
-            _ => crate::cmd::cobble::svg(doc, &look),
+            Format::Png => Ok(Output::bytes(
+                d.raster.render(&crate::cmd::cobble::svg(doc, &look)?).map_err(png_error)?,
+            )),
+            _ => output::svg::output(&crate::cmd::cobble::picture(doc, &look)?),
         };
     }
     Ok(match format {
-        Format::Svg => output::svg::render(doc, &svg_options(doc, d)?),
+        Format::Svg => output::svg::output(&output::svg::picture(doc, &svg_options(doc, d)?))?,
         Format::Gcode => {
             let gcode = d.gcode.as_ref().ok_or_else(no_gcode)?;
             match (&d.palette, d.colour_layers) {
                 (Some(p), true) => {
                     let colours = shape_colours(doc, d, &p.0);
-                    crate::cmd::plot::render_gcode_pens(doc, gcode, Some((&colours, &p.0, d.colour_flags.clone())), d.quiet)?
+                    crate::cmd::plot::gcode_pens_output(doc, gcode, Some((&colours, &p.0, d.colour_flags.clone())), d.quiet)?
                 }
-                _ => crate::cmd::plot::render_gcode(doc, gcode, d.quiet)?,
+                _ => crate::cmd::plot::gcode_pens_output(doc, gcode, None, d.quiet)?,
             }
         }
-        Format::Json => output::json::render(doc)?,
-        Format::Csv => output::csv::render(doc),
-        Format::Digest => output::digest::render(doc),
-        Format::Png => match d.relief {
+        Format::Json => Output::stream(Size::AtMost(output::json::max_size(doc)?), move |w| output::json::write(doc, w)),
+        Format::Csv => Output::stream(Size::AtMost(output::csv::max_size(doc)), move |w| output::csv::write(doc, w)),
+        Format::Digest => Output::bytes(output::digest::render(doc)),
+        Format::Png => Output::bytes(match d.relief {
             Some(relief) => {
                 let command = format!("{} --relief {}{}", output::svg::command_line(doc), relief.name(), d.raster.flag());
                 let size = output::height::grid(doc.extent(), &d.raster).map_err(height_map_error)?;
@@ -371,15 +381,20 @@ pub fn render(doc: &FillDoc, format: Format, d: &FillDraw) -> Result<Vec<u8>, Cl
                 let svg = output::svg::render(doc, &svg_options(doc, d)?);
                 d.raster.render(&svg).map_err(png_error)?
             }
-        },
+        }),
     })
 }
+
+/// What makes the output of a 2D fill smaller, for the refusal of one above
+/// `--max-output-size`.
+pub const SMALLER: &str = "ask for fewer shapes (--count, --fill, --min-size)";
 
 /// `zetafill fill`: runs the plan and writes its output.
 pub fn run(plan: &FillPlan) -> Result<(), CliError> {
     let (doc, halt) = compute(&plan.run)?;
-    let bytes = render(&doc, plan.format, &plan.draw)?;
-    plan.dest.write(&bytes)?;
+    let out = output(&doc, plan.format, &plan.draw)?;
+    let what = output::stream::file_of(plan.format.name());
+    crate::cmd::write_output(&plan.dest, &out, plan.max_output_size, &what, SMALLER)?;
     outcome(&plan.run, halt)
 }
 

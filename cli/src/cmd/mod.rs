@@ -11,3 +11,16 @@ pub mod stats;
 pub mod stopping;
 pub mod territory;
 pub mod tile;
+
+use crate::error::CliError;
+use crate::io::write::Dest;
+use crate::output::stream::{too_large, Output};
+
+/// Writes `out` to `dest` unless it has more than `limit` bytes: then nothing is written (no
+/// temporary file is made) and the error is [`too_large`] with `what` and `advice`.
+pub fn write_output(dest: &Dest, out: &Output<'_>, limit: u64, what: &str, advice: &str) -> Result<(), CliError> {
+    if let Err(size) = out.fits(limit)? {
+        return Err(too_large(what, size, limit, advice));
+    }
+    dest.write_with(|w| out.write_to(w))
+}

@@ -6,6 +6,7 @@ use crate::model::doc::FillDoc;
 use crate::model::fill::{FillLook, LayerSpec};
 use crate::model::{Bounds, Drawing};
 use crate::output::gcode;
+use crate::output::stream::{Output, Size};
 use crate::plan::plot::{gcode_error, GcodePlan};
 
 /// `--format gcode` of a fill: its drawing (outlines, hatching) placed on the bed by the
@@ -22,6 +23,16 @@ pub fn render_gcode_pens(
     pens: Option<(&[crate::output::palette::Colour], &[crate::output::palette::Colour], String)>,
     quiet: bool,
 ) -> Result<Vec<u8>, CliError> {
+    gcode_pens_output(doc, a, pens, quiet)?.into_bytes()
+}
+
+/// [`render_gcode_pens`], ready to be streamed.
+pub fn gcode_pens_output(
+    doc: &FillDoc,
+    a: &GcodePlan,
+    pens: Option<(&[crate::output::palette::Colour], &[crate::output::palette::Colour], String)>,
+    quiet: bool,
+) -> Result<Output<'static>, CliError> {
     let mut look = FillLook {
         build: a.build,
         ..FillLook::default()
@@ -33,7 +44,7 @@ pub fn render_gcode_pens(
         (look.layers, look.layer_of) = LayerSpec::colours(palette, colours);
     }
     let layers = crate::model::fill::picture(doc, &look).pens();
-    pens_gcode(&layers, &Bounds { x0, y0, x1, y1 }, a, vec![header], quiet)
+    pens_output(&layers, &Bounds { x0, y0, x1, y1 }, a, vec![header], quiet)
 }
 
 /// G-code of any drawing with the plotter plan `a` (machine, feeds, power, passes, arcs,
@@ -54,6 +65,18 @@ pub fn pens_gcode(
     header: Vec<String>,
     quiet: bool,
 ) -> Result<Vec<u8>, CliError> {
+    pens_output(pens, frame, a, header, quiet)?.into_bytes()
+}
+
+/// [`pens_gcode`], ready to be streamed: the program is checked, ordered and counted (and
+/// its figures go to stderr) before a byte is written.
+pub fn pens_output(
+    pens: &[(String, Drawing)],
+    frame: &Bounds,
+    a: &GcodePlan,
+    header: Vec<String>,
+    quiet: bool,
+) -> Result<Output<'static>, CliError> {
     let m = &a.machine;
     let mut opts = a.options.clone();
     let pl = a.place(frame)?;
@@ -63,9 +86,10 @@ pub fn pens_gcode(
         "plot: machine {} order {:?} passes {} hatch {} min-feature {} scale {} shift {} {}",
         m.name, opts.order, opts.passes, a.hatch, a.min_feature, pl.scale, pl.dx, pl.dy
     ));
-    let out = gcode::write_pens(&pens, m, &opts).map_err(gcode_error)?;
+    let program = gcode::program(&pens, m, &opts).map_err(gcode_error)?;
+    drop(pens);
     if !quiet {
-        eprintln!("{}", out.figures);
+        eprintln!("{}", program.figures);
     }
-    Ok(out.bytes)
+    Ok(Output::stream(Size::Exact(program.len()), move |w| program.write_to(w)))
 }

@@ -8,6 +8,7 @@ use crate::model::slices;
 use crate::model::space::{scene, SolidDoc, SpaceDoc};
 use crate::output;
 use crate::output::mesh::MeshOptions;
+use crate::output::stream::{Output, Size};
 use crate::plan::format::SpaceFormat;
 use crate::plan::space::{first_halt_error, first_solid_error, halt_advice, SpaceDraw, SpacePlan, SpaceRun, SOLIDS};
 use zetafill::digest::space_digest;
@@ -158,35 +159,66 @@ fn write_error(e: impl std::fmt::Display) -> CliError {
 
 /// Renders a document in a format.
 pub fn render(doc: &SpaceDoc, format: SpaceFormat, d: &SpaceDraw) -> Result<Vec<u8>, CliError> {
+    output(doc, format, d)?.into_bytes()
+}
+
+/// A document in a format, ready to be streamed: the meshes, the JSON and the CSV are
+/// written one solid at a time as they are made; the render, the GLB (one mesh per kind of
+/// solid) and the sheets are made whole first.
+pub fn output<'a>(doc: &'a SpaceDoc, format: SpaceFormat, d: &SpaceDraw) -> Result<Output<'a>, CliError> {
     let region = doc.region.region3();
     Ok(match format {
-        SpaceFormat::Json => output::space::json(doc)?,
-        SpaceFormat::Csv => output::space::csv(doc),
-        SpaceFormat::Digest => output::space::digest(doc),
+        SpaceFormat::Json => Output::stream(Size::AtMost(output::space::json_max_size(doc)?), move |w| {
+            output::space::json_to(doc, w)
+        }),
+        SpaceFormat::Csv => Output::stream(Size::AtMost(output::space::csv_max_size(doc)), move |w| {
+            output::space::csv_to(doc, w)
+        }),
+        SpaceFormat::Digest => Output::bytes(output::space::digest(doc)),
         SpaceFormat::Stl => {
             let solids = scene(doc);
-            output::stl::to_bytes(&solids, &MeshOptions::for_scene(&solids, d.segments)).map_err(write_error)?
+            let opt = MeshOptions::for_scene(&solids, d.segments);
+            let size = output::stl::size(&solids, &opt).map_err(write_error)?;
+            Output::stream(Size::Exact(size), move |mut w| {
+                output::stl::write(&solids, &opt, &mut w).map_err(write_error)
+            })
         }
         SpaceFormat::Obj => {
             let solids = scene(doc);
-            output::obj::to_bytes(&solids, &MeshOptions::for_scene(&solids, d.segments)).map_err(write_error)?
+            let opt = MeshOptions::for_scene(&solids, d.segments);
+            let size = output::obj::max_size(&solids, &opt).map_err(write_error)?;
+            Output::stream(Size::AtMost(size), move |mut w| {
+                output::obj::write(&solids, &opt, &mut w).map_err(write_error)
+            })
         }
-        SpaceFormat::Glb => output::glb::to_bytes(&scene(doc), d.segments).map_err(write_error)?,
-        SpaceFormat::Png => output::render3d::render(&scene(doc), &region, &d.render).map_err(write_error)?,
+        SpaceFormat::Glb => Output::bytes(output::glb::to_bytes(&scene(doc), d.segments).map_err(write_error)?),
+        SpaceFormat::Png => Output::bytes(output::render3d::render(&scene(doc), &region, &d.render).map_err(write_error)?),
         SpaceFormat::Svg => {
             let opt = d.slices.ok_or_else(|| CliError::Io("internal: an SVG without --slices".into()))?;
             let sheets = slices::slices(&scene(doc), &region, &opt).map_err(write_error)?;
             let mut picture = slices::stacked(&sheets).ok_or_else(|| write_error("no sheet"))?;
             picture.desc = format!("{}{}", doc.command, d.flags);
-            output::svg::write(&picture)
+            output::svg::output(&picture)?
         }
     })
+}
+
+/// What makes a 3D output smaller, for the refusal of one above `--max-output-size`.
+fn smaller(format: SpaceFormat) -> &'static str {
+    match format {
+        SpaceFormat::Stl | SpaceFormat::Obj | SpaceFormat::Glb => {
+            "place fewer solids (--count, --fill, --min-size) or use fewer --segments"
+        }
+        SpaceFormat::Svg => "place fewer solids or cut thicker --slices",
+        _ => "place fewer solids (--count, --fill, --min-size)",
+    }
 }
 
 /// `zetafill space`: runs the plan and writes its output.
 pub fn run(plan: &SpacePlan) -> Result<(), CliError> {
     let (doc, halt) = compute(&plan.run)?;
-    let bytes = render(&doc, plan.format, &plan.draw)?;
-    plan.dest.write(&bytes)?;
+    let out = output(&doc, plan.format, &plan.draw)?;
+    let what = output::stream::file_of(plan.format.name());
+    crate::cmd::write_output(&plan.dest, &out, plan.max_output_size, &what, smaller(plan.format))?;
     stopping::outcome(halt, SOLIDS, |index, _| halt_advice(index))
 }

@@ -1,6 +1,8 @@
 //! Output destinations: a file written atomically (a temporary file in the same folder,
 //! renamed into place), a stream written straight into (a character device such as
-//! `/dev/null`, or a named pipe), or standard output for `-`. A failure or Ctrl-C never leaves
+//! `/dev/null`, or a named pipe), or standard output for `-`. An output is streamed into its
+//! destination through a buffer as it is made ([`Dest::write_with`]; a size limit first: `cmd::write_output`),
+//! so no file has to fit in memory. A failure or Ctrl-C never leaves
 //! a truncated file and never destroys an existing one; a symbolic link is followed (the file
 //! it points to is replaced, the link stays), and a device or pipe is never replaced.
 //!
@@ -11,7 +13,7 @@
 //! file is created and listed under the lock, and renamed and unlisted under it, so a signal
 //! either finds it listed or finds it gone.
 
-use crate::error::CliError;
+use crate::error::{io_error, CliError};
 use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::sync::{Mutex, MutexGuard};
@@ -186,21 +188,33 @@ impl Dest {
 
     /// Writes `bytes`: atomically for a file, straight into a device or a pipe.
     pub fn write(&self, bytes: &[u8]) -> Result<(), CliError> {
+        self.write_with(|w| w.write_all(bytes).map_err(io_error))
+    }
+
+    /// Writes what `write` gives, through a buffer, as it comes: into a temporary file beside
+    /// a file, renamed into place only when `write` succeeded (an error or an interrupt
+    /// leaves the old file and no temporary one); straight into a device, a pipe or standard
+    /// output. An I/O error is reported with the destination's name.
+    pub fn write_with(&self, write: impl FnOnce(&mut dyn Write) -> Result<(), CliError>) -> Result<(), CliError> {
         match self {
             Dest::Stdout => {
-                let mut out = std::io::stdout().lock();
-                out.write_all(bytes)
-                    .and_then(|_| out.flush())
-                    .map_err(|e| CliError::Io(format!("writing to standard output: {e}")))
+                let out = std::io::stdout().lock();
+                stream_into(out, write, |e| CliError::Io(format!("writing to standard output: {e}")))
             }
             Dest::File(p) => match resolve(p).map_err(|e| CliError::Io(format!("cannot use '{}': {e}", p.display())))? {
                 Target::File(t) => {
                     // The last guard of the rule that no input is replaced, for an input a
                     // command did not declare.
                     crate::io::inputs::refuse_read("--output", &t)?;
-                    write_atomic(&t, bytes)
+                    write_atomic_with(&t, write)
                 }
-                Target::Stream => write_stream(p, bytes),
+                Target::Stream => {
+                    let f = std::fs::OpenOptions::new()
+                        .write(true)
+                        .open(p)
+                        .map_err(|e| CliError::Io(format!("cannot open '{}': {e}", p.display())))?;
+                    stream_into(f, write, |e| CliError::Io(format!("cannot write '{}': {e}", p.display())))
+                }
                 Target::Other => Err(CliError::Io(format!(
                     "'{}' is not a file, a character device or a named pipe; nothing written",
                     p.display()
@@ -208,6 +222,71 @@ impl Dest {
             },
         }
     }
+}
+
+/// A buffered writer that keeps the first I/O error it meets, so the destination can name
+/// itself in the message whatever the output's writer made of the error.
+struct Recording<W: Write> {
+    inner: std::io::BufWriter<W>,
+    error: Option<std::io::Error>,
+}
+
+impl<W: Write> Recording<W> {
+    fn new(w: W) -> Recording<W> {
+        Recording {
+            inner: std::io::BufWriter::with_capacity(1 << 16, w),
+            error: None,
+        }
+    }
+
+    fn keep<T>(&mut self, r: std::io::Result<T>) -> std::io::Result<T> {
+        r.map_err(|e| {
+            let copy = std::io::Error::new(e.kind(), e.to_string());
+            self.error.get_or_insert(e);
+            copy
+        })
+    }
+
+    /// The outcome of `write` followed by a flush, an I/O error reported by `io`.
+    fn finish(mut self, done: Result<(), CliError>, io: impl Fn(std::io::Error) -> CliError) -> Result<std::io::BufWriter<W>, CliError> {
+        let done = done.and_then(|()| {
+            let r = self.inner.flush();
+            self.keep(r).map_err(io_error)
+        });
+        match (done, self.error) {
+            (Ok(()), _) => Ok(self.inner),
+            (Err(_), Some(e)) => Err(io(e)),
+            (Err(e), None) => Err(e),
+        }
+    }
+}
+
+impl<W: Write> Write for Recording<W> {
+    fn write(&mut self, buf: &[u8]) -> std::io::Result<usize> {
+        let r = self.inner.write(buf);
+        self.keep(r)
+    }
+
+    fn write_all(&mut self, buf: &[u8]) -> std::io::Result<()> {
+        let r = self.inner.write_all(buf);
+        self.keep(r)
+    }
+
+    fn flush(&mut self) -> std::io::Result<()> {
+        let r = self.inner.flush();
+        self.keep(r)
+    }
+}
+
+/// Runs `write` into `w` through a buffer and flushes it.
+fn stream_into<W: Write>(
+    w: W,
+    write: impl FnOnce(&mut dyn Write) -> Result<(), CliError>,
+    io: impl Fn(std::io::Error) -> CliError,
+) -> Result<(), CliError> {
+    let mut rec = Recording::new(w);
+    let done = write(&mut rec);
+    rec.finish(done, io).map(drop)
 }
 
 fn parent_dir(p: &Path) -> PathBuf {
@@ -263,25 +342,25 @@ fn temp_in(dir: &Path) -> std::io::Result<Temporary> {
     Temporary::new_in(dir)
 }
 
-/// Writes `bytes` into a character device or a named pipe (opened for writing, never
-/// created, truncated or renamed over).
-fn write_stream(path: &Path, bytes: &[u8]) -> Result<(), CliError> {
-    let io = |what: &str, e: std::io::Error| CliError::Io(format!("{what} '{}': {e}", path.display()));
-    let mut f = std::fs::OpenOptions::new()
-        .write(true)
-        .open(path)
-        .map_err(|e| io("cannot open", e))?;
-    f.write_all(bytes).and_then(|_| f.flush()).map_err(|e| io("cannot write", e))
-}
-
 /// Writes `bytes` to a temporary file beside `path`, syncs it, and renames it over `path`.
 /// `path` must not be a symbolic link (the link would be replaced): [`Dest::write`] passes
 /// the file a link points to.
 pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), CliError> {
+    write_atomic_with(path, |w| w.write_all(bytes).map_err(io_error))
+}
+
+/// [`write_atomic`] of what `write` gives, streamed into the temporary file through a buffer;
+/// nothing is renamed into place when `write` fails (the temporary file is removed).
+fn write_atomic_with(path: &Path, write: impl FnOnce(&mut dyn Write) -> Result<(), CliError>) -> Result<(), CliError> {
     let dir = parent_dir(path);
     let io = |what: &str, e: std::io::Error| CliError::Io(format!("{what} '{}': {e}", path.display()));
     let mut tmp = temp_in(&dir).map_err(|e| io("cannot create a temporary file for", e))?;
-    tmp.file().and_then(|f| f.write_all(bytes)).map_err(|e| io("cannot write", e))?;
+    {
+        let file = tmp.file().map_err(|e| io("cannot write", e))?;
+        let mut rec = Recording::new(&mut *file);
+        let done = write(&mut rec);
+        rec.finish(done, |e| io("cannot write", e))?;
+    }
     // Temporary files are private (0600); the output gets the mode a new file would get
     // (0644 here) or keeps the mode of the file it replaces.
     #[cfg(unix)]

@@ -1,7 +1,8 @@
 //! JSON output: the [`FillDoc`] as DESIGN section 3 specifies, numbers in shortest
 //! round-trip form (full f64 precision), on one line with a trailing newline.
 //!
-//! The shapes, nearly all of the bytes, are written directly into one buffer; the small parts
+//! The shapes, nearly all of the bytes, are written directly into a buffer handed on every
+//! 64 KiB; the small parts
 //! (parameters, region, statistics) through their `serde` derive. The bytes are those of
 //! `serde_json::to_vec(doc)`: the same number formatter ([`push_json`]), the same
 //! field order and omissions (`cli/tests/writers.rs` compares the two on every shape kind).
@@ -9,12 +10,19 @@
 use crate::error::CliError;
 use crate::model::doc::{FillDoc, ShapeDoc};
 use crate::output::number::{push_int, push_json};
+use crate::output::stream::{TextSink, MAX_JSON_NUMBER, MAX_U64};
 use serde::Serialize;
 
 /// Serialises a fill.
 pub fn render(doc: &FillDoc) -> Result<Vec<u8>, CliError> {
-    let vertices: usize = doc.shapes.iter().map(|s| s.vertices.as_ref().map_or(0, Vec::len)).sum();
-    let mut s = String::with_capacity(1024 + 150 * doc.shapes.len() + 40 * vertices);
+    let mut v = Vec::new();
+    write(doc, &mut v)?;
+    Ok(v)
+}
+
+/// What comes before the shapes and after them, each as one string.
+fn frame(doc: &FillDoc) -> Result<(String, String), CliError> {
+    let mut s = String::with_capacity(1024);
     s.push_str("{\"version\":");
     push_int(&mut s, u64::from(doc.version));
     s.push_str(",\"mode\":");
@@ -28,16 +36,48 @@ pub fn render(doc: &FillDoc) -> Result<Vec<u8>, CliError> {
     s.push_str(",\"zeta\":");
     push_json(&mut s, doc.zeta);
     s.push_str(",\"shapes\":[");
+    let mut tail = String::from("],\"stats\":");
+    part(&mut tail, &doc.stats)?;
+    tail.push_str("}\n");
+    Ok((s, tail))
+}
+
+/// Writes a fill into `out`, a few shapes at a time.
+pub fn write(doc: &FillDoc, out: &mut dyn std::io::Write) -> Result<(), CliError> {
+    let (head, tail) = frame(doc)?;
+    let mut sink = TextSink::new(out);
+    sink.buf.push_str(&head);
     for (i, sh) in doc.shapes.iter().enumerate() {
         if i > 0 {
-            s.push(',');
+            sink.buf.push(',');
         }
-        shape(&mut s, sh)?;
+        shape(&mut sink.buf, sh)?;
+        sink.maybe_flush()?;
     }
-    s.push_str("],\"stats\":");
-    part(&mut s, &doc.stats)?;
-    s.push_str("}\n");
-    Ok(s.into_bytes())
+    sink.buf.push_str(&tail);
+    sink.flush()
+}
+
+/// An upper bound on the size of [`write`]'s bytes: all but the shapes exactly, and each
+/// shape with its keys, a comma, two `u64` and every number at [`MAX_JSON_NUMBER`] bytes (its
+/// kind escaped at worst six bytes a byte).
+pub fn max_size(doc: &FillDoc) -> Result<u64, CliError> {
+    let (head, tail) = frame(doc)?;
+    let keys = "{\"index\":,\"kind\":\"\",\"center\":[,],\"radius\":,\"inner_radius\":,\"angle\":,\"area\":,\"trials\":},";
+    let shapes: u64 = doc
+        .shapes
+        .iter()
+        .map(|sh| {
+            let vertices = sh.vertices.as_ref().map_or(0, |v| v.len() as u64);
+            let list = if vertices > 0 {
+                ",\"vertices\":[]".len() as u64 + vertices * (2 * MAX_JSON_NUMBER + 4)
+            } else {
+                0
+            };
+            keys.len() as u64 + 6 * sh.kind.len() as u64 + 2 * MAX_U64 + 6 * MAX_JSON_NUMBER + list
+        })
+        .sum();
+    Ok(head.len() as u64 + tail.len() as u64 + shapes)
 }
 
 /// Appends a value through its `serde` derive.

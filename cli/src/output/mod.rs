@@ -23,6 +23,7 @@ pub mod png;
 pub mod render3d;
 pub mod space;
 pub mod stl;
+pub mod stream;
 pub mod svg;
 
 /// A number in mm with at most `places` decimals, no trailing zeros, never `-0`.

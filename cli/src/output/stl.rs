@@ -53,6 +53,18 @@ pub fn write(solids: &[Solid], opt: &MeshOptions, out: &mut impl Write) -> Resul
     Ok(())
 }
 
+/// The size of the binary STL of `triangles` triangles: the 80-byte header, the 4-byte count
+/// and 50 bytes a triangle.
+pub fn file_size(triangles: u64) -> u64 {
+    84 + 50 * triangles
+}
+
+/// The exact size of the solids' binary STL (every solid is checked, none is meshed).
+pub fn size(solids: &[Solid], opt: &MeshOptions) -> Result<u64, StlError> {
+    let plan = ScenePlan::new(solids, opt).map_err(StlError::Mesh)?;
+    Ok(file_size(plan.triangles))
+}
+
 /// The solids as binary STL bytes.
 pub fn to_bytes(solids: &[Solid], opt: &MeshOptions) -> Result<Vec<u8>, StlError> {
     let mut v = Vec::new();

@@ -364,6 +364,25 @@ pub fn write(pic: &Picture) -> Vec<u8> {
 /// [`write`], with the numbers on the page written by `n`.
 #[doc(hidden)]
 pub fn write_with(pic: &Picture, n: Num) -> Vec<u8> {
+    let mut s = document(pic, n).to_string();
+    s.push('\n');
+    s.into_bytes()
+}
+
+/// Any picture as SVG, ready to be streamed: the tree of elements is built once and printed
+/// straight into the destination (its size is counted by printing it into a
+/// [`Counter`](super::stream::Counter) first, which costs little beside building it).
+pub fn output(pic: &Picture) -> Result<super::stream::Output<'static>, crate::error::CliError> {
+    use super::stream::{io_error, Counter, Output, Size};
+    use std::io::Write as _;
+    let d = document(pic, n);
+    let mut c = Counter(0);
+    writeln!(c, "{d}").map_err(io_error)?;
+    Ok(Output::stream(Size::Exact(c.0), move |w| writeln!(w, "{d}").map_err(io_error)))
+}
+
+/// The tree of `svg` crate elements of a picture.
+fn document(pic: &Picture, n: Num) -> Document {
     let f = pic.to_page();
     let (page_w, page_h) = pic.page_size();
     let element = |it, in_clip| {
@@ -405,9 +424,7 @@ pub fn write_with(pic: &Picture, n: Num) -> Vec<u8> {
         }
         d = d.add(g);
     }
-    let mut s = d.to_string();
-    s.push('\n');
-    s.into_bytes()
+    d
 }
 
 /// The `zetafill fill` command line that reproduces the document.

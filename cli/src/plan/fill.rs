@@ -34,6 +34,8 @@ pub const SHAPES: Unit = Unit {
 pub struct FillPlan {
     /// Where the output goes.
     pub dest: Dest,
+    /// `--max-output-size`: the largest output written, in bytes.
+    pub max_output_size: u64,
     /// The output format.
     pub format: Format,
     /// The run.
@@ -184,7 +186,13 @@ pub fn resolve(a: &FillArgs) -> Result<FillPlan, CliError> {
     dest.check("--output")?;
     let format = Format::resolve(a.output.format, &a.output.output)?;
     let (run, draw) = resolve_as(a, format)?;
-    Ok(FillPlan { dest, format, run, draw })
+    Ok(FillPlan {
+        dest,
+        max_output_size: a.output.max_output_size,
+        format,
+        run,
+        draw,
+    })
 }
 
 /// The run and the drawing of `a` written as `format`: every rule between the flags, but

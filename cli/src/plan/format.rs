@@ -40,6 +40,18 @@ pub enum TileFormat {
     Gcode,
 }
 
+impl TileFormat {
+    /// The format's name.
+    pub fn name(self) -> &'static str {
+        match self {
+            TileFormat::Svg => "svg",
+            TileFormat::Png => "png",
+            TileFormat::Json => "json",
+            TileFormat::Gcode => "gcode",
+        }
+    }
+}
+
 /// What `territory` writes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum TerritoryFormat {
@@ -51,6 +63,18 @@ pub enum TerritoryFormat {
     Json,
     /// G-code for a plotter or laser.
     Gcode,
+}
+
+impl TerritoryFormat {
+    /// The format's name.
+    pub fn name(self) -> &'static str {
+        match self {
+            TerritoryFormat::Svg => "svg",
+            TerritoryFormat::Png => "png",
+            TerritoryFormat::Json => "json",
+            TerritoryFormat::Gcode => "gcode",
+        }
+    }
 }
 
 /// What `space` writes.

@@ -29,6 +29,8 @@ pub const SEGMENTS: Unit = Unit {
 pub struct LinePlan {
     /// Where the output goes.
     pub dest: Dest,
+    /// `--max-output-size`: the largest output written, in bytes.
+    pub max_output_size: u64,
     /// The output format.
     pub format: Format,
     /// The run.
@@ -135,7 +137,13 @@ pub fn resolve(a: &LineArgs) -> Result<LinePlan, CliError> {
     dest.check("--output")?;
     let format = Format::resolve(a.output.format, &a.output.output)?;
     let (run, draw) = resolve_format(a, format)?;
-    Ok(LinePlan { dest, format, run, draw })
+    Ok(LinePlan {
+        dest,
+        max_output_size: a.output.max_output_size,
+        format,
+        run,
+        draw,
+    })
 }
 
 /// The run and the drawing of `a` written as `format`: every rule between the flags, but

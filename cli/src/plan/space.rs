@@ -33,6 +33,8 @@ pub const DEFAULT_C: f64 = 1.15;
 pub struct SpacePlan {
     /// Where the output goes.
     pub dest: Dest,
+    /// `--max-output-size`: the largest output written, in bytes.
+    pub max_output_size: u64,
     /// The output format.
     pub format: SpaceFormat,
     /// The run.
@@ -145,7 +147,13 @@ pub fn resolve(a: &SpaceArgs) -> Result<SpacePlan, CliError> {
     dest.check("--output")?;
     let format = SpaceFormat::resolve(a.output.format, &a.output.output)?;
     let (run, draw) = resolve_as(a, format)?;
-    Ok(SpacePlan { dest, format, run, draw })
+    Ok(SpacePlan {
+        dest,
+        max_output_size: a.output.max_output_size,
+        format,
+        run,
+        draw,
+    })
 }
 
 /// The run and the drawing of `a` written as `format`: every rule between the flags, but none
@@ -214,10 +222,12 @@ pub fn resolve_as(a: &SpaceArgs, format: SpaceFormat) -> Result<(SpaceRun, Space
             format!("{}: a mesh needs {} to {} segments", a.segments, SEGMENTS.start(), SEGMENTS.end()),
         ));
     }
+    let stop = crate::plan::stops(&a.run.stop);
     if matches!(format, SpaceFormat::Stl | SpaceFormat::Obj | SpaceFormat::Glb) {
         let mesher = Mesher::new(&MeshOptions::new(a.segments)).map_err(|e| CliError::arg("--segments", e))?;
+        let mut fewest = u64::MAX;
         for s in &a.shape.0 {
-            mesher.plan(&unit_kind(s)).map_err(|e| {
+            let plan = mesher.plan(&unit_kind(s)).map_err(|e| {
                 CliError::arg(
                     "--segments",
                     format!(
@@ -227,9 +237,10 @@ pub fn resolve_as(a: &SpaceArgs, format: SpaceFormat) -> Result<(SpaceRun, Space
                     ),
                 )
             })?;
+            fewest = fewest.min(mesher.triangles(&plan) as u64);
         }
+        check_mesh_size(a, format, &stop, fewest)?;
     }
-    let stop = crate::plan::stops(&a.run.stop);
     if stop.count.is_some_and(|k| k > SOLIDS.max) {
         return Err(CliError::arg(
             "--count",
@@ -339,6 +350,37 @@ pub fn resolve_as(a: &SpaceArgs, format: SpaceFormat) -> Result<(SpaceRun, Space
         flags,
     };
     Ok((run, draw))
+}
+
+/// Refuses, before the fill, a mesh that `--count` solids of at least `fewest` triangles each
+/// make larger than `--max-output-size` (when the count is the only stop, the run places that
+/// many solids unless it halts). The fill's own check after the run covers the rest.
+fn check_mesh_size(a: &SpaceArgs, format: SpaceFormat, stop: &Stop, fewest: u64) -> Result<(), CliError> {
+    let (Some(k), None, None) = (stop.count, stop.fill, stop.min_size) else {
+        return Ok(());
+    };
+    let least = match format {
+        SpaceFormat::Stl => crate::output::stl::file_size(k.saturating_mul(fewest)),
+        // A line "f A B C" of at least 8 bytes a triangle.
+        SpaceFormat::Obj => k.saturating_mul(8 * fewest),
+        _ => return Ok(()),
+    };
+    let limit = a.output.max_output_size;
+    if least <= limit {
+        return Ok(());
+    }
+    let bytes = crate::output::stream::bytes_text;
+    Err(CliError::arg(
+        "--max-output-size",
+        format!(
+            "{k} solids at {} segments make an {} file of {}{}, more than the limit of {}: ask for fewer solids (--count) or use fewer --segments, or raise --max-output-size",
+            a.segments,
+            format.name().to_ascii_uppercase(),
+            if format == SpaceFormat::Stl { "" } else { "at least " },
+            bytes(least),
+            bytes(limit)
+        ),
+    ))
 }
 
 /// `--cut` as written.

@@ -27,6 +27,8 @@ use std::path::{Path, PathBuf};
 pub struct TerritoryPlan {
     /// Where the output goes.
     pub dest: Dest,
+    /// `--max-output-size`: the largest output written, in bytes.
+    pub max_output_size: u64,
     /// The output format.
     pub format: TerritoryFormat,
     /// The run.
@@ -141,7 +143,13 @@ pub fn resolve(a: &TerritoryArgs) -> Result<TerritoryPlan, CliError> {
     dest.check("--output")?;
     let format = TerritoryFormat::resolve(a.output.format, &a.output.output)?;
     let (run, draw) = resolve_as(a, format)?;
-    Ok(TerritoryPlan { dest, format, run, draw })
+    Ok(TerritoryPlan {
+        dest,
+        max_output_size: a.output.max_output_size,
+        format,
+        run,
+        draw,
+    })
 }
 
 /// The run and the drawing of `a` written as `format`: every rule between the flags, but

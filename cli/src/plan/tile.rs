@@ -23,6 +23,8 @@ use crate::plan::raster::{self, only_png};
 pub struct TilePlan {
     /// Where the output goes.
     pub dest: Dest,
+    /// `--max-output-size`: the largest output written, in bytes.
+    pub max_output_size: u64,
     /// The output format.
     pub format: TileFormat,
     /// The tile.
@@ -109,7 +111,13 @@ pub fn resolve(a: &TileArgs) -> Result<TilePlan, CliError> {
     dest.check("--output")?;
     let format = TileFormat::resolve(a.output.format, &a.output.output)?;
     let (run, draw) = resolve_as(a, format)?;
-    Ok(TilePlan { dest, format, run, draw })
+    Ok(TilePlan {
+        dest,
+        max_output_size: a.output.max_output_size,
+        format,
+        run,
+        draw,
+    })
 }
 
 /// The tile and the drawing of `a` written as `format`: every rule between the flags, but

@@ -460,7 +460,7 @@ fn array_profile() -> impl Strategy<Value = (String, &'static str, usize, usize)
         })
 }
 
-/// Bug (issue 35): arrays with more numbers than their fields (`park = [0.0, 0.0, 5.0]`)
+/// Bug pinned here: arrays with more numbers than their fields (`park = [0.0, 0.0, 5.0]`)
 /// were read with the rest dropped. An array of the right length reads, number for number;
 /// any other is refused with the line of its key named.
 #[test]

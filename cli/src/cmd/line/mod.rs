@@ -4,6 +4,7 @@
 
 use crate::cmd::stopping;
 use crate::error::CliError;
+use crate::output::stream::{io_error, Output, Size, TextSink, MAX_F64_DISPLAY, MAX_JSON_NUMBER, MAX_U64};
 use crate::plan::format::Format;
 use crate::plan::line::{first_segment_error, halt_advice, param_error, LineDraw, LinePlan, LineRun, SEGMENTS};
 use crate::plan::plot::GcodePlan;
@@ -121,18 +122,56 @@ pub fn render_svg(doc: &LineDoc, opt: &LineSvgOptions) -> Vec<u8> {
 
 /// JSON (version 1), numbers in shortest round-trip form, one line.
 pub fn render_json(doc: &LineDoc) -> Result<Vec<u8>, CliError> {
-    let mut v = serde_json::to_vec(doc).map_err(|e| CliError::Io(format!("cannot encode JSON: {e}")))?;
-    v.push(b'\n');
+    let mut v = Vec::new();
+    json_to(doc, &mut v)?;
     Ok(v)
 }
+
+/// [`render_json`] written into `out` as it is encoded.
+fn json_to(doc: &LineDoc, out: &mut dyn std::io::Write) -> Result<(), CliError> {
+    serde_json::to_writer(&mut *out, doc).map_err(crate::output::space::json_error)?;
+    out.write_all(b"\n").map_err(io_error)
+}
+
+/// An upper bound on [`render_json`]'s size: all but the segments exactly (encoded without
+/// them), each segment with its keys, a comma, two `u64` and two numbers at their longest.
+fn json_max_size(doc: &LineDoc) -> Result<u64, CliError> {
+    let bare = LineDoc {
+        params: doc.params.clone(),
+        region: doc.region.clone(),
+        shapes: Vec::new(),
+        stats: doc.stats.clone(),
+        ..*doc
+    };
+    let base = serde_json::to_vec(&bare).map_err(crate::output::space::json_error)?.len() as u64 + 1;
+    let keys = "{\"index\":,\"kind\":\"\",\"start\":,\"length\":,\"trials\":},".len() as u64;
+    let segments: u64 = doc
+        .shapes
+        .iter()
+        .map(|s| keys + 6 * s.kind.len() as u64 + 2 * MAX_U64 + 2 * MAX_JSON_NUMBER)
+        .sum();
+    Ok(base + segments)
+}
+
+/// The CSV's first line.
+const CSV_HEADER: &str = "index,kind,start,end,length,trials\n";
 
 /// CSV: `index,kind,start,end,length,trials`, full f64 precision (`end` = start + length, past
 /// L for a periodic segment that wraps).
 pub fn render_csv(doc: &LineDoc) -> Vec<u8> {
-    let mut s = String::from("index,kind,start,end,length,trials\n");
+    let mut v = Vec::new();
+    // A Vec takes every byte.
+    let _ = csv_to(doc, &mut v);
+    v
+}
+
+/// [`render_csv`] written into `out`, a few rows at a time.
+fn csv_to(doc: &LineDoc, out: &mut dyn std::io::Write) -> Result<(), CliError> {
+    let mut sink = TextSink::new(out);
+    sink.buf.push_str(CSV_HEADER);
     for sh in &doc.shapes {
         let _ = writeln!(
-            s,
+            sink.buf,
             "{},{},{},{},{},{}",
             sh.index,
             sh.kind,
@@ -141,8 +180,19 @@ pub fn render_csv(doc: &LineDoc) -> Vec<u8> {
             sh.length,
             sh.trials
         );
+        sink.maybe_flush()?;
     }
-    s.into_bytes()
+    sink.flush()
+}
+
+/// An upper bound on [`render_csv`]'s size: every row at its longest.
+fn csv_max_size(doc: &LineDoc) -> u64 {
+    let rows: u64 = doc
+        .shapes
+        .iter()
+        .map(|s| 2 * MAX_U64 + s.kind.len() as u64 + 3 * MAX_F64_DISPLAY + 6)
+        .sum();
+    CSV_HEADER.len() as u64 + rows
 }
 
 /// The digest line `COUNT HEX16`: the engine's own digest of every segment's bits.
@@ -151,16 +201,21 @@ pub fn render_digest(doc: &LineDoc) -> Vec<u8> {
     format!("{count} {hash:016x}\n").into_bytes()
 }
 
-fn render_gcode(doc: &LineDoc, opt: &LineSvgOptions, gcode: &GcodePlan, quiet: bool) -> Result<Vec<u8>, CliError> {
+fn gcode_output(doc: &LineDoc, opt: &LineSvgOptions, gcode: &GcodePlan, quiet: bool) -> Result<Output<'static>, CliError> {
     let pic = plotter_picture(doc, opt, &gcode.build)?;
     let header = vec![format!("{}{}{}", command_line(doc), drawing_flags(opt), gcode.flags)];
     // With --layers colours, one pen per palette colour, each drawing its segments, placed as
     // the whole.
-    crate::cmd::plot::pens_gcode(&pic.pens(), &pic.frame, gcode, header, quiet)
+    crate::cmd::plot::pens_output(&pic.pens(), &pic.frame, gcode, header, quiet)
 }
 
 /// Renders a document in a format.
 pub fn render(doc: &LineDoc, format: Format, d: &LineDraw) -> Result<Vec<u8>, CliError> {
+    output(doc, format, d)?.into_bytes()
+}
+
+/// A document in a format, ready to be streamed (see [`crate::cmd::fill::output`]).
+pub fn output<'a>(doc: &'a LineDoc, format: Format, d: &LineDraw) -> Result<Output<'a>, CliError> {
     let opt = LineSvgOptions {
         render: d.render,
         style: d.style,
@@ -179,12 +234,12 @@ pub fn render(doc: &LineDoc, format: Format, d: &LineDraw) -> Result<Vec<u8>, Cl
         colour_layers: d.palette.as_ref().filter(|_| d.colour_layers).map(|p| p.0.clone()),
     };
     Ok(match format {
-        Format::Svg => render_svg(doc, &opt),
-        Format::Json => render_json(doc)?,
-        Format::Csv => render_csv(doc),
-        Format::Digest => render_digest(doc),
-        Format::Png => d.raster.render(&render_svg(doc, &opt)).map_err(png_error)?,
-        Format::Gcode => render_gcode(doc, &opt, d.gcode.as_ref().ok_or_else(no_gcode)?, d.quiet)?,
+        Format::Svg => crate::output::svg::output(&picture(doc, &opt))?,
+        Format::Json => Output::stream(Size::AtMost(json_max_size(doc)?), move |w| json_to(doc, w)),
+        Format::Csv => Output::stream(Size::AtMost(csv_max_size(doc)), move |w| csv_to(doc, w)),
+        Format::Digest => Output::bytes(render_digest(doc)),
+        Format::Png => Output::bytes(d.raster.render(&render_svg(doc, &opt)).map_err(png_error)?),
+        Format::Gcode => gcode_output(doc, &opt, d.gcode.as_ref().ok_or_else(no_gcode)?, d.quiet)?,
     })
 }
 
@@ -196,8 +251,15 @@ fn no_gcode() -> CliError {
 /// `zetafill line`: runs the plan and writes its output.
 pub fn run(plan: &LinePlan) -> Result<(), CliError> {
     let (doc, halt) = compute(&plan.run)?;
-    let bytes = render(&doc, plan.format, &plan.draw)?;
-    plan.dest.write(&bytes)?;
+    let out = output(&doc, plan.format, &plan.draw)?;
+    let what = crate::output::stream::file_of(plan.format.name());
+    crate::cmd::write_output(
+        &plan.dest,
+        &out,
+        plan.max_output_size,
+        &what,
+        "ask for fewer segments (--count, --fill, --min-size)",
+    )?;
     let max_trials = plan.run.params.max_trials;
     stopping::outcome(halt, SEGMENTS, |index, trials| halt_advice(index, trials < max_trials))
 }

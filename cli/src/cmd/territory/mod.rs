@@ -365,7 +365,15 @@ fn no_gcode() -> CliError {
 /// `zetafill territory`: grows the pattern of the plan and writes its output.
 pub fn run(plan: &TerritoryPlan) -> Result<(), CliError> {
     let bytes = output(&plan.run, &plan.draw, plan.format)?;
-    plan.dest.write(&bytes)
+    let what = crate::output::stream::file_of(plan.format.name());
+    let advice = "ask for fewer points (--points) or a smaller --region";
+    crate::cmd::write_output(
+        &plan.dest,
+        &crate::output::stream::Output::bytes(bytes),
+        plan.max_output_size,
+        &what,
+        advice,
+    )
 }
 
 /// The bytes a plan writes: the pattern grown and rendered.

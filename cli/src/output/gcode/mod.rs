@@ -18,9 +18,10 @@
 //! - the same input gives the same bytes (no clock, no hashing, no environment).
 
 use crate::model::{arc_extremes, Bounds, Drawing, Path, Pt};
-use crate::output::machine::{Machine, Travel, Units};
+use crate::output::machine::{Machine, Travel};
 use crate::output::order::order;
 use crate::output::order::PathOrder;
+use crate::output::stream::TextSink;
 use std::f64::consts::TAU;
 use std::fmt::{self, Write as _};
 
@@ -118,10 +119,10 @@ pub struct GcodeOutput {
 /// A point on the output grid (units of 10^-decimals of the output unit).
 type Q = [i64; 2];
 
-struct Writer<'a> {
+struct Writer<'a, 'w> {
     m: &'a Machine,
     o: &'a GcodeOptions,
-    out: String,
+    out: TextSink<'w>,
     dec: u32,
     /// Grid units per mm of the bed frame.
     k: f64,
@@ -133,10 +134,10 @@ struct Writer<'a> {
     fig: Figures,
 }
 
-impl Writer<'_> {
+impl Writer<'_, '_> {
     fn line(&mut self, s: &str) {
-        self.out.push_str(s);
-        self.out.push('\n');
+        self.out.buf.push_str(s);
+        self.out.buf.push('\n');
     }
 
     fn block(&mut self, text: &str) {
@@ -398,116 +399,11 @@ pub fn write(d: &Drawing, m: &Machine, o: &GcodeOptions) -> Result<GcodeOutput, 
 /// has a park) and the profile's `pen_change` block is written (`M0` by default: the machine
 /// waits while the operator swaps the pen). Pens with nothing to draw are left out.
 pub fn write_pens(pens: &[(String, Drawing)], m: &Machine, o: &GcodeOptions) -> Result<GcodeOutput, String> {
-    let all = Drawing {
-        paths: pens.iter().flat_map(|(_, d)| d.paths.iter().cloned()).collect(),
-    };
-    let d = &all;
-    m.validate()?;
-    check_options(m, o)?;
-    let area = m.usable_area(o.margin);
-    let b = d.bounds();
-    if !b.inside(&area, 1e-6) {
-        return Err(format!(
-            "the drawing (x {:.3}..{:.3}, y {:.3}..{:.3} mm) does not fit the bed less margin (x {:.3}..{:.3}, y {:.3}..{:.3} mm)",
-            b.x0, b.x1, b.y0, b.y1, area.x0, area.x1, area.y0, area.y1
-        ));
-    }
-    if d.paths.iter().any(|p| !path_finite(p)) {
-        return Err("the drawing has a non-finite coordinate".into());
-    }
-    let dec = m.units.decimals();
-    let k = m.units.per_mm() * 10f64.powi(dec as i32);
-    let mb = m.machine_bounds_mm();
-    let lo = [(mb.x0 * k - 1e-6).ceil() as i64, (mb.y0 * k - 1e-6).ceil() as i64];
-    let hi = [(mb.x1 * k + 1e-6).floor() as i64, (mb.y1 * k + 1e-6).floor() as i64];
-    let mut w = Writer {
-        m,
-        o,
-        out: String::new(),
-        dec,
-        k,
-        lo,
-        hi,
-        pos: None,
-        tool_on: false,
-        feed_stated: false,
-        fig: Figures {
-            paths: 0,
-            tool_ons: 0,
-            pen_down_mm: 0.0,
-            travel_mm: 0.0,
-            seconds: 0.0,
-        },
-    };
-    w.line("G90");
-    w.line(if m.units == Units::Mm { "G21" } else { "G20" });
-    w.line("G17");
-    w.block(&m.start);
-    // The tool is off whatever the start block did.
-    w.tool_on = true;
-    w.tool(false);
-    w.fig.tool_ons = 0;
-    let used: Vec<&(String, Drawing)> = pens.iter().filter(|(_, d)| !d.paths.is_empty()).collect();
-    for (i, (name, pen)) in used.iter().enumerate() {
-        if used.len() > 1 {
-            if i > 0 {
-                w.tool(false);
-                w.park();
-            }
-            let s = format!("; pen {} of {}: {name}", i + 1, used.len());
-            w.line(&s);
-            if i > 0 {
-                w.block(&m.pen_change);
-            }
-        }
-        let paths = order(&pen.paths, m.home_in_bed(), o.order);
-        for _ in 0..o.passes {
-            for p in &paths {
-                w.path(p);
-            }
-        }
-    }
-    w.tool(false);
-    w.park();
-    w.block(&m.end);
-    let dwell = Machine::dwell_seconds(&m.tool_on) + Machine::dwell_seconds(&m.tool_off);
-    let mut fig = w.fig;
-    fig.seconds = fig.pen_down_mm / o.feed * 60.0 + fig.travel_mm / o.travel_feed * 60.0 + fig.tool_ons as f64 * dwell;
-    let body = w.out;
-
-    let mut head = String::new();
-    comment(&mut head, &format!("zetafill G-code for machine '{}': {}", m.name, m.description));
-    for h in &o.header {
-        comment(&mut head, h);
-    }
-    let unit = if m.units == Units::Mm { "mm" } else { "inch" };
-    comment(
-        &mut head,
-        &format!(
-            "bed {} x {} mm, origin {:?}, units {unit} ({} decimals), margin {} mm",
-            m.bed.width, m.bed.height, m.origin, dec, o.margin
-        ),
-    );
-    comment(
-        &mut head,
-        &format!(
-            "feed {} mm/min, travel {} mm/min ({:?}), power {}, passes {}, arcs {}, chord tolerance {} mm, order {:?}",
-            o.feed,
-            o.travel_feed,
-            m.travel,
-            o.power.map(|p| int(p, 0)).unwrap_or_else(|| "-".into()),
-            o.passes,
-            if o.arcs { "G2/G3" } else { "no (polylines)" },
-            o.chord_tolerance,
-            o.order
-        ),
-    );
-    comment(&mut head, &format!("figures: {fig}"));
-    head.push_str(&body);
-    Ok(GcodeOutput {
-        bytes: head.into_bytes(),
-        figures: fig,
-    })
+    let p = program(pens, m, o)?;
+    let mut bytes = Vec::new();
+    // A Vec takes every byte.
+    let _ = p.write_to(&mut bytes);
+    Ok(GcodeOutput { bytes, figures: p.figures })
 }
 
 fn path_finite(p: &Path) -> bool {
@@ -536,29 +432,8 @@ pub fn grid_bounds(m: &Machine) -> Bounds {
     }
 }
 
+mod program;
 #[cfg(test)]
-mod tests {
-    use super::*;
+mod tests;
 
-    #[test]
-    fn a_circle_on_the_bed_edge_falls_back_to_chords_inside() {
-        let m = Machine::builtin("grbl-servo-pen").unwrap_or_else(|| panic!("built-in"));
-        // Touching x = 0 exactly: the rounded circle could poke out; it must not.
-        let d = Drawing {
-            paths: vec![Path::circle([1.0004, 50.0], 1.0004)],
-        };
-        let o = GcodeOptions::new(&m);
-        let out = write(&d, &m, &o).unwrap_or_else(|e| panic!("{e}"));
-        let text = String::from_utf8_lossy(&out.bytes);
-        assert!(!text.contains("X-"), "{text}");
-    }
-
-    #[test]
-    fn refuses_what_is_off_the_bed() {
-        let m = Machine::builtin("grbl-laser").unwrap_or_else(|| panic!("built-in"));
-        let d = Drawing {
-            paths: vec![Path::circle([399.0, 50.0], 2.0)],
-        };
-        assert!(write(&d, &m, &GcodeOptions::new(&m)).is_err());
-    }
-}
+pub use program::{program, Program};

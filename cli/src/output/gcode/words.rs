@@ -59,7 +59,7 @@ mod tests {
         assert_eq!(int(-0.2, 0), "0");
     }
 
-    /// Bug (issue 35): in inches feeds were whole in/min, so `--feed 30` (mm/min) became `F1`
+    /// Bug pinned here: in inches feeds were whole in/min, so `--feed 30` (mm/min) became `F1`
     /// (25.4 mm/min), 1 to 13 mm/min all `F1`, and 1000 mm/min `F39`.
     #[test]
     fn inch_feeds_keep_what_was_asked() {

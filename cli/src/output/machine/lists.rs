@@ -149,7 +149,7 @@ mod tests {
         text.lines().position(|l| l.starts_with(key)).map_or(0, |i| i + 1)
     }
 
-    /// Bug (issue 35): `park = [0.0, 0.0, 5.0]` was read as (0, 0), the 5.0 dropped; so were
+    /// Bug pinned here: `park = [0.0, 0.0, 5.0]` was read as (0, 0), the 5.0 dropped; so were
     /// a fourth number, and the extra numbers of a bed, feeds or power range given as an array.
     #[test]
     fn arrays_of_the_wrong_length_are_refused_on_their_line() {

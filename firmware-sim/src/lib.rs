@@ -1,16 +1,18 @@
-//! What the two firmware images share: the board (clock, stack painting, memory figures) and
-//! the report every scene and every image ends with.
+//! What the firmware images share: the board (clock, stack painting, memory figures), the 2D
+//! scenes' runner ([`plane`]) and the report every scene and every image ends with.
 //!
-//! The 2D scenes (`src/main.rs`, binary `zetafill-firmware-sim`) and the 3D scenes
-//! (`src/bin/zetafill-firmware-space.rs`) are two images because the core's 2D and 3D engines
-//! together do not fit the chip's 256 KiB of flash: each image holds one of them and must stay
-//! within the same budgets ([`RAM_LIMIT`], [`FLASH_BUDGET`]). There is no logic here beyond
-//! wiring the core to the board.
+//! Three images, each within the same budgets ([`RAM_LIMIT`], [`FLASH_BUDGET`]):
+//! `zetafill-firmware-f64` and `zetafill-firmware-fixed` run the 2D scenes on f64 and on fixed
+//! point (`src/bin/`, both through [`plane::run_image`]), `zetafill-firmware-space` the 3D
+//! scenes. The core's 2D and 3D engines together do not fit the chip's 256 KiB of flash, and
+//! the 2D engine compiled for both scalars leaves no room in the budget. There is no logic
+//! here beyond wiring the core to the board.
 
 #![no_std]
 #![deny(unsafe_code)]
 
 pub mod board;
+pub mod plane;
 
 use semihosting::{eprintln, process};
 use zetafill_display::Outcome;

@@ -57,7 +57,7 @@ fi
 step "API documentation builds without a broken link"
 RUSTDOCFLAGS="-D warnings" cargo doc -p zetafill -p zetafill-display -p zetafill-cli --lib --no-deps
 
-# Three images, each within the flash budget: the 2D scenes on f64
+# Three images, each within the flash budget (the link fails beyond it): the 2D scenes on f64
 # and on fixed point (one image holding both scalars' copy of the engine overflows the budget),
 # and the 3D scenes (2D and 3D together overflow the chip's flash).
 for image in zetafill-firmware-f64 zetafill-firmware-fixed zetafill-firmware-space; do

@@ -9,7 +9,7 @@
 //! - on the host's stderr, plain text lines that the host test parses:
 //!   `clock instructions=I ticks=T`, `digest NAME COUNT HEX16`, `cost NAME scalar=S placements=P trials=T instructions=I`,
 //!   `frame NAME FILE`, `stack NAME static=B stack=B total=B` (the stack painted anew before
-//!   each scene), `memory static=B stack=B total=B flash=B target=B`, then `done`;
+//!   each scene), `memory static=B stack=B total=B flash=B budget=B target=B`, then `done`;
 //! - each frame as a binary PBM file `frame-NAME.pbm` in QEMU's working directory;
 //! - on the host's stdout, defmt log frames (decoded by `defmt-print -e ELF`).
 //!

@@ -17,9 +17,10 @@
 //! `zetafill-firmware-space`, since the 2D and 3D engines together overflow the chip's flash;
 //! it prints the same digest, cost, stack and memory lines (no frames), checked the same way.
 //!
-//! Memory: each image's flash must stay within [`FLASH_BUDGET`] (224 KiB), and its static RAM
-//! plus the painted stack of the 1,024-shape engine (the 256-solid 3D engine in the 3D image)
-//! within [`RAM_LIMIT`] (48 KiB); [`over_budget`] decides, and the figures are printed.
+//! Memory: each image's flash must stay within [`FLASH_BUDGET`] (224 KiB: the link already fails
+//! beyond it, see firmware-sim/memory.x), and its static RAM plus the painted stack of the
+//! 1,024-shape engine (the 256-solid 3D engine in the 3D image) within [`RAM_LIMIT`] (48 KiB);
+//! [`over_budget`] decides, and the figures are printed.
 //!
 //! The 2D images are checked in [`plane`], the 3D image in [`space`], the budgets and what
 //! every image shares here.
@@ -262,6 +263,9 @@ fn check_memory(bin: &str, fw: &Firmware, need: impl Fn(&str) -> u64) {
         m.flash,
         FLASH_BUDGET as i64 - m.flash as i64
     );
+    // The budget the link checked (`_flash_budget` in firmware-sim/memory.x) is this test's.
+    let budget = field(&lines(&fw.report, "memory")[0], "budget");
+    assert_eq!(budget, FLASH_BUDGET, "{bin}: linked against a flash budget of {budget} B");
     let over = over_budget(bin, m.total, m.flash.max(from_elf));
     assert!(over.is_empty(), "{}", over.join("\n"));
     // The firmware's flash figure (from linker symbols) agrees with the ELF's loadable bytes.

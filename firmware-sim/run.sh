@@ -3,7 +3,8 @@
 # qemu-system-arm (machine lm3s6965evb: Cortex-M3, no FPU) with semihosting and a virtual
 # clock of one nanosecond per instruction (-icount shift=0). The firmware's report lines go to
 # stderr, its defmt log to stdout, decoded here by defmt-print when it is installed; the
-# frames are written as PBM files into $ZETAFILL_FW_OUT (default target/frames).
+# frames are written as PBM files into $ZETAFILL_FW_OUT (default target/frames), which every
+# image shares (scene names are unique).
 set -euo pipefail
 elf="$(realpath "$1")"
 out="${ZETAFILL_FW_OUT:-$(dirname "$(realpath "$0")")/target/frames}"
@@ -14,6 +15,7 @@ qemu=(qemu-system-arm -cpu cortex-m3 -machine lm3s6965evb -display none -serial 
 if command -v defmt-print >/dev/null 2>&1; then
     "${qemu[@]}" | defmt-print -e "$elf"
 else
-    echo "defmt-print not installed (cargo install defmt-print --version =1.2.0 --locked): defmt log kept in $out/defmt.bin" >&2
-    "${qemu[@]}" > defmt.bin
+    log="defmt-$(basename "$elf").bin"
+    echo "defmt-print not installed (cargo install defmt-print --version =1.2.0 --locked): defmt log kept in $out/$log" >&2
+    "${qemu[@]}" > "$log"
 fi

@@ -11,7 +11,8 @@
 //!   current stack pointer is set to [`PAINT`]; the deepest word changed since is the stack's
 //!   high-water mark.
 //! - Memory: static RAM is `.data + .bss + .uninit` (`__sheap - ORIGIN(RAM)`); flash is the
-//!   vector table, code, read-only data and the initial values of `.data`.
+//!   vector table, code, read-only data and the initial values of `.data`, and its budget the
+//!   linker's `_flash_budget` (`memory.x`, where the link fails beyond it).
 
 use core::ptr::addr_of;
 use cortex_m::peripheral::syst::SystClkSource;
@@ -34,6 +35,8 @@ extern "C" {
     static __sidata: u32;
     static __sdata: u32;
     static __edata: u32;
+    /// An absolute symbol: its address is the flash budget in bytes.
+    static _flash_budget: u32;
 }
 
 /// The board's resources in use: SysTick, free-running.
@@ -82,6 +85,7 @@ impl Board {
             static_ram: sheap - RAM_ORIGIN,
             stack: top - deepest_changed_word(sheap, top),
             flash,
+            flash_budget: addr_of!(_flash_budget) as usize,
         }
     }
 }
@@ -94,6 +98,8 @@ pub struct Memory {
     pub stack: usize,
     /// Flash in use.
     pub flash: usize,
+    /// Flash an image may use (`_flash_budget` in `memory.x`).
+    pub flash_budget: usize,
 }
 
 /// Ticks since the clock was made.

@@ -1,4 +1,4 @@
-//! zetafill's 3D fill on a Cortex-M3 (TI LM3S6965, no FPU) under qemu-system-arm: the second
+//! zetafill's 3D fill on a Cortex-M3 (TI LM3S6965, no FPU) under qemu-system-arm: the third
 //! firmware image (the 2D and 3D engines together do not fit the chip's 256 KiB of flash).
 //!
 //! Runs every scene of `zetafill_display::SPACE_SCENES` in a 256-solid `SpaceEngine` that

@@ -1,29 +1,27 @@
-//! zetafill on a Cortex-M3 (TI LM3S6965, no FPU) under qemu-system-arm.
+//! The 2D scenes on the board: what the images `zetafill-firmware-f64` and
+//! `zetafill-firmware-fixed` run, each on one scalar.
 //!
-//! Runs every scene of `zetafill_display::SCENES` in a 1,024-shape engine that lives on the
-//! stack (so the f64 and the fixed-point scenes reuse the same RAM), drawing each shape onto a
-//! 128x128 monochrome framebuffer as it is placed, and reports through semihosting:
+//! [`run_image`] runs every scene of `zetafill_display::SCENES` on the image's scalar in a
+//! 1,024-shape engine that lives on the stack (a cell-sampler scene in a smaller frame with its
+//! cells), drawing each shape onto the 128x64 monochrome framebuffer as it is placed, and
+//! reports through semihosting:
 //!
 //! - on the host's stderr, plain text lines that the host test parses:
 //!   `clock instructions=I ticks=T`, `digest NAME COUNT HEX16`, `cost NAME scalar=S placements=P trials=T instructions=I`,
 //!   `frame NAME FILE`, `stack NAME static=B stack=B total=B` (the stack painted anew before
-//!   each scene), `memory static=B stack=B total=B flash=B target=B`, then `done`;
+//!   each scene), `memory static=B stack=B total=B flash=B budget=B target=B`, then `done`;
 //! - each frame as a binary PBM file `frame-NAME.pbm` in QEMU's working directory;
 //! - on the host's stdout, defmt log frames (decoded by `defmt-print -e ELF`).
 //!
-//! Exit status 0 when every scene ran and the memory stays within the limits; 1 on any error
+//! Exit status 0 when every scene ran and the memory stays within the budgets; 1 on any error
 //! (invalid parameters, capacity, halting, a failed file write, over budget), after a line
 //! `error ...`. A panic (there should be none) prints its message and exits non-zero too.
-//! There is no logic here beyond wiring the core and the display crate to the board. The 3D
-//! scenes are a second image, `zetafill-firmware-space` (see the crate's library).
-
-#![no_std]
-#![no_main]
-#![deny(unsafe_code)]
+//!
+//! The f64 and the fixed-point scenes are two images because every generic part of the core
+//! (engine, samplers, clearance tests, drawing) is compiled once per scalar: the two copies
+//! together leave too little of the flash budget. Each image holds one copy.
 
 use core::ffi::CStr;
-use cortex_m_rt::entry;
-use defmt_semihosting as _;
 use heapless::String;
 use semihosting::io::Write as _;
 use semihosting::{eprintln, process};
@@ -32,29 +30,50 @@ use zetafill_display::draw::{Frame, PBM_HEADER};
 use zetafill_display::scenes::{
     run, run_fast, RunError, ScalarKind, Scene, CAPACITY, FAST_CAPACITY, FAST_CELLS, FAST_INDEX_WORDS, INDEX_WORDS, SCENES,
 };
-use zetafill_firmware_sim::board::Board;
-use zetafill_firmware_sim::{fail, finish, report, stack_line, Calibration};
 
-#[entry]
-fn main() -> ! {
+use crate::board::Board;
+use crate::{fail, finish, report, stack_line, Calibration};
+
+/// A scalar a 2D image runs its scenes on: the scenes whose [`Scene::scalar`] is [`Self::KIND`].
+pub trait PlaneScalar: Scalar + Default {
+    /// The scenes' scalar.
+    const KIND: ScalarKind;
+}
+
+impl PlaneScalar for f64 {
+    const KIND: ScalarKind = ScalarKind::F64;
+}
+
+impl PlaneScalar for Fixed {
+    const KIND: ScalarKind = ScalarKind::Fixed;
+}
+
+/// The scenes an image on scalar `S` runs, in the order of `SCENES`.
+fn scenes<S: PlaneScalar>() -> impl Iterator<Item = &'static Scene> + Clone {
+    SCENES.iter().filter(|s| s.scalar == S::KIND)
+}
+
+/// The image's `main`: runs every scene on scalar `S`, then checks the budgets and exits
+/// (`image` names it in the defmt log).
+pub fn run_image<S: PlaneScalar>(image: &str) -> ! {
     let Some(peripherals) = cortex_m::Peripherals::take() else {
         fail("peripherals already taken")
     };
     let board = Board::init(peripherals.SYST);
     defmt::info!(
-        "zetafill firmware-sim: {=usize} scenes, engine capacity {=usize} shapes",
-        SCENES.len(),
+        "{=str}: {=usize} scenes, engine capacity {=usize} shapes",
+        image,
+        scenes::<S>().count(),
         CAPACITY
     );
     let cal = Calibration::measure(&board);
     let mut deepest = 0;
-    for scene in SCENES {
+    for scene in scenes::<S>() {
         board.repaint();
-        let ok = match scene.scalar {
-            ScalarKind::F64 if scene.fast => run_scene_fast::<f64>(scene, &board, &cal),
-            ScalarKind::Fixed if scene.fast => run_scene_fast::<Fixed>(scene, &board, &cal),
-            ScalarKind::F64 => run_scene::<f64>(scene, &board, &cal),
-            ScalarKind::Fixed => run_scene::<Fixed>(scene, &board, &cal),
+        let ok = if scene.fast {
+            run_scene_fast::<S>(scene, &board, &cal)
+        } else {
+            run_scene::<S>(scene, &board, &cal)
         };
         if !ok {
             process::exit(1);

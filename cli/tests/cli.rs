@@ -1,5 +1,5 @@
 //! End-to-end tests of `zetafill fill` and `zetafill stats`: every output format, checked
-//! against DESIGN section 3 and against each other, with the geometry verified independently.
+//! against docs/cli.md and against each other, with the geometry verified independently.
 // Checks may use the platform's maths: only what the tool writes must go through libm.
 #![allow(clippy::disallowed_methods)]
 

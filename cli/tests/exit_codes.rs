@@ -1,4 +1,4 @@
-//! Exit codes and bad input (DESIGN sections 3 and 6): exit 2 with a message naming the
+//! Exit codes and bad input (docs/cli.md, What every subcommand shares): exit 2 with a message naming the
 //! argument and no file written or touched; exit 3 when the fill halts, with every shape
 //! placed so far in the output.
 // Checks may use the platform's maths: only what the tool writes must go through libm.
@@ -85,7 +85,7 @@ fn bad_gap() {
     bad(&["--gap", "100", "--region", "rect:200:200"], &["--gap"]);
 }
 
-/// DESIGN section 6: a negative number given as a separate word must also be reported as a
+/// Bad input: a negative number given as a separate word must also be reported as a
 /// bad value of its flag (not as an unknown argument '-1').
 #[test]
 fn negative_values_as_separate_words_name_their_flag() {
@@ -94,7 +94,7 @@ fn negative_values_as_separate_words_name_their_flag() {
     bad(&["--c", "-2"], &["--c"]);
 }
 
-/// DESIGN section 6: out-of-range numbers get a clear message naming the problem. Extreme
+/// Bad input: out-of-range numbers get a clear message naming the problem. Extreme
 /// but finite values must not end in "area NaN" / "area inf" blamed on --c.
 #[test]
 fn extreme_values_get_clear_messages() {

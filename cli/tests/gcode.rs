@@ -1,7 +1,7 @@
 //! G-code output, read back with an independent parser (the `gcode` crate) and replayed by
 //! the interpreter of `common/safety.rs` (not shared with the writer; the fuzz targets of
 //! `fuzz.rs` replay through it too), which reports every breach of the safety invariants
-//! (DESIGN section 3, issue 4):
+//! (docs/plotting.md, Safety invariants):
 //! - every coordinate inside the bed, arcs included (their extreme points);
 //! - the tool off for every G0, at every pause and at the end of the program;
 //! - a feed set before the first cutting move;

@@ -1,4 +1,4 @@
-//! Interrupts while an output is written (DESIGN section 3: a failure or Ctrl-C never leaves a
+//! Interrupts while an output is written (docs/cli.md, Files: a failure or Ctrl-C never leaves a
 //! truncated file and never destroys an existing one).
 //!
 //! Bug pinned here: Ctrl-C while the output was written left its temporary file,

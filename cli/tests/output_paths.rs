@@ -1,4 +1,4 @@
-//! Outputs that are not plain new files (DESIGN sections 3 and 6): a symbolic link is
+//! Outputs that are not plain new files (docs/cli.md, What every subcommand shares): a symbolic link is
 //! followed (its file is replaced atomically, the link stays), a character device or a named
 //! pipe gets the bytes written straight into it and is never replaced.
 //!

@@ -10,7 +10,7 @@
 //! thousands).
 //! The reference sampler runs twice: with the coverage bitmap the CLI gives it (2 MiB), and
 //! without (`paper + hash`: the paper's algorithm with only the spatial hash, the reference of
-//! DESIGN section 7), the latter up to `--no-bitmap-above N` (default 10^5 for c = 1.3, 10^4
+//! docs/performance.md), the latter up to `--no-bitmap-above N` (default 10^5 for c = 1.3, 10^4
 //! for c = 1.4).
 //! Up to n = 10^5 the cell sampler and the reference run three times each, in turn, and the
 //! table gives each one's fastest run.

@@ -54,7 +54,7 @@
 //! - `digest_bits`: the raw two's-complement bits as `u64` (there is no negative zero).
 //! - `floor_i64`: the integer part, `raw >> 32` (toward −∞).
 //!
-//! Results on [`Fixed`] differ from those on `f64` (DESIGN: each scalar is deterministic on
+//! Results on [`Fixed`] differ from those on `f64` (the determinism contract: each scalar is deterministic on
 //! every target; results may differ between scalars).
 
 use crate::geom::Point;

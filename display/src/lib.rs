@@ -8,7 +8,7 @@
 //!   outline on [`BinaryColor`] pixels, or filled in any colour type (the pixels whose
 //!   centres lie inside it); [`draw::Frame`] is the 128x64 monochrome framebuffer (an SSD1306
 //!   OLED's worth, 1 KiB) whose bytes are the data of a binary PBM image;
-//! - [`scenes`]: the scenes the firmware runs (the canonical runs of DESIGN section 4 and one
+//! - [`scenes`]: the scenes the firmware runs (the canonical runs of docs/firmware.md and one
 //!   per shape kind, region and scalar), the storage sizes of the 1,024-shape engine, and
 //!   [`scenes::run`], which fills a scene step by step, drawing as it goes, and returns the
 //!   count, the determinism digest and the trials;

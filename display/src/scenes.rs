@@ -1,7 +1,7 @@
 //! The scenes the firmware runs and the host re-runs, and the one function that runs them.
 //!
 //! Each [`Scene`] is a complete fill: scalar, shape, rotation, region, c, N, gap, seed and
-//! count. [`SCENES`] starts with the canonical runs of DESIGN section 4 (`circles`, `squares`,
+//! count. [`SCENES`] starts with the canonical runs of docs/firmware.md, What it runs (`circles`, `squares`,
 //! `rects`, whose golden digests `tests/tests/golden.rs` pins, and `circles-fixed`) and then
 //! covers every shape kind, region and scalar the core has. Adding a scene is one line here:
 //! the firmware prints its digest and frame, and the host test checks both.
@@ -196,7 +196,7 @@ const RECT2: ShapeKind = ShapeKind::Rect { aspect: 2.0 };
 /// Every scene, in the order the firmware runs them. One line each.
 #[rustfmt::skip]
 pub const SCENES: &[Scene] = &[
-    // The canonical runs (DESIGN section 4, tests/src/lib.rs CANONICAL), then on fixed point.
+    // The canonical runs (docs/firmware.md, tests/src/lib.rs CANONICAL), then on fixed point.
     scene("circles",         F64, &[Circle], false, rect(200.0, 200.0),  1.3,  1.0, 0.0, 1, 500),
     scene("squares",         F64, &[Square], true,  torus(100.0, 100.0), 1.25, 2.0, 0.0, 2, 300),
     scene("rects",           F64, &[RECT2],  false, rect(150.0, 100.0),  1.2,  3.0, 0.0, 3, 300),

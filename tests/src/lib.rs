@@ -26,7 +26,7 @@ pub struct Scene {
     pub count: u64,
 }
 
-/// The canonical scenes shared with the firmware (DESIGN section 4).
+/// The canonical scenes shared with the firmware (docs/firmware.md, What it runs).
 pub const CANONICAL: [Scene; 3] = [
     Scene {
         name: "circles",

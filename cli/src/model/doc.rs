@@ -1,5 +1,5 @@
 //! The result of a fill as one plain data model, shared by every output format (and
-//! serialised as is for JSON, DESIGN section 3, `version` 1).
+//! serialised as is for JSON, docs/cli.md, Outputs, `version` 1).
 
 use super::Path;
 use serde::Serialize;

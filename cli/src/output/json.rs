@@ -1,4 +1,4 @@
-//! JSON output: the [`FillDoc`] as DESIGN section 3 specifies, numbers in shortest
+//! JSON output: the [`FillDoc`] as docs/cli.md (Outputs) specifies, numbers in shortest
 //! round-trip form (full f64 precision), on one line with a trailing newline.
 //!
 //! The shapes, nearly all of the bytes, are written directly into a buffer handed on every

@@ -227,7 +227,7 @@ pub fn shoelace(vs: &[[f64; 2]]) -> f64 {
 }
 
 // ---------------------------------------------------------------------------------------------
-// The document contract (DESIGN section 3)
+// The document contract (docs/cli.md, Outputs)
 
 /// What a run was asked for.
 #[derive(Debug, Clone, Copy)]

@@ -1,4 +1,4 @@
-//! The G-code safety invariants (DESIGN section 3, docs/plotting.md), checked by reading a
+//! The G-code safety invariants (docs/plotting.md, Safety invariants), checked by reading a
 //! program back with an independent parser (the `gcode` crate) and replaying it in a small
 //! interpreter written here, not shared with the writer. It tracks position, modal motion
 //! (G0/G1/G2/G3), feed, and the tool's state as the profile's own `tool_off` block defines

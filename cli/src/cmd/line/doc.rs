@@ -3,7 +3,7 @@
 
 use serde::Serialize;
 
-/// A finished (or halted) 1D fill: DESIGN section 3's JSON with `"mode": "line"`.
+/// A finished (or halted) 1D fill: the JSON of docs/cli.md with `"mode": "line"`.
 #[derive(Debug, Clone, Serialize)]
 pub struct LineDoc {
     /// Format version (1).

@@ -1,4 +1,4 @@
-//! The JSON document of a territory run (DESIGN section 3, `"mode": "territory"`): its sites,
+//! The JSON document of a territory run (docs/territory.md, `"mode": "territory"`): its sites,
 //! colour rules, parameters and statistics.
 
 use crate::model::doc::RegionDoc;
@@ -87,7 +87,7 @@ pub struct StatsDoc {
     pub boundary_length: f64,
 }
 
-/// The JSON document of a territory run (DESIGN section 3).
+/// The JSON document of a territory run (docs/territory.md).
 #[derive(Debug, Clone, Serialize)]
 pub struct TerritoryDoc {
     /// Format version (1).

@@ -84,7 +84,7 @@ pub struct OutputArgs<F: clap::ValueEnum + Clone + Send + Sync + 'static> {
     pub format: Option<F>,
     /// The largest output written, in bytes (or with K, M, G, T: KiB, MiB, GiB, TiB); a
     /// larger one is refused before anything is written (exit 2).
-    #[arg(long = "max-output-size", value_name = "BYTES", default_value = "4G", value_parser = byte_size)]
+    #[arg(long = "max-output-size", value_name = "BYTES", default_value = "4G", value_parser = byte_size, allow_hyphen_values = true)]
     pub max_output_size: u64,
 }
 

@@ -58,7 +58,7 @@ pub fn write(doc: &FillDoc, out: &mut dyn std::io::Write) -> Result<(), CliError
     sink.flush()
 }
 
-/// An upper bound on the size of [`write`]'s bytes: all but the shapes exactly, and each
+/// An upper bound on the size of [`write`](fn@write)'s bytes: all but the shapes exactly, and each
 /// shape with its keys, a comma, two `u64` and every number at [`MAX_JSON_NUMBER`] bytes (its
 /// kind escaped at worst six bytes a byte).
 pub fn max_size(doc: &FillDoc) -> Result<u64, CliError> {

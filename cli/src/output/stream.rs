@@ -1,6 +1,6 @@
 //! An output ready to be written: how to write its bytes into any [`Write`], as often as asked
 //! (the same bytes every time), and what is known of its size before a byte is written. The
-//! commands stream it into the destination ([`crate::io::write::Dest::write_output`]), so a
+//! commands stream it into the destination (`cmd::write_output`), so a
 //! file never has to fit in memory, and refuse one larger than `--max-output-size` first.
 //!
 //! The size is known exactly where the format fixes it (a binary STL is 84 bytes and 50 a

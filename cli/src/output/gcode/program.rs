@@ -26,7 +26,7 @@ pub struct Program {
     pub figures: Figures,
 }
 
-/// Checks and orders `pens` for machine `m` (see [`write_pens`]) and counts the program.
+/// Checks and orders `pens` for machine `m` (see [`super::write_pens`]) and counts the program.
 pub fn program(pens: &[(String, Drawing)], m: &Machine, o: &GcodeOptions) -> Result<Program, String> {
     m.validate()?;
     check_options(m, o)?;

@@ -36,7 +36,7 @@ pub fn feed(mm_per_min: f64, units: Units) -> String {
     fixed(q, dec)
 }
 
-/// The largest relative error of [`feed`] over the feeds a profile may hold, for docs and
+/// The largest relative error of `feed` over the feeds a profile may hold, for docs and
 /// tests: half a grid step over the smallest feed.
 pub fn feed_error_bound(units: Units) -> f64 {
     0.5 / (MIN_FEED * units.per_mm() * 10i64.pow(units.feed_decimals()) as f64)

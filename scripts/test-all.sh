@@ -8,7 +8,20 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-step() { printf '\n== %s\n' "$*"; }
+# Each step prints its time when the next begins; a failing step is named; the host tests end
+# with a count of passed, failed and ignored tests.
+step_name=""
+step_start=$SECONDS
+end_step() {
+    if [ -n "$step_name" ]; then printf -- '-- %s: %ds\n' "$step_name" $((SECONDS - step_start)); fi
+}
+step() {
+    end_step
+    step_name="$*"
+    step_start=$SECONDS
+    printf '\n== %s\n' "$*"
+}
+trap 'printf "\n== failed: %s (after %ds; %ds in all)\n" "$step_name" $((SECONDS - step_start)) "$SECONDS"' ERR
 
 step "installing the Rust target thumbv7m-none-eabi"
 rustup target add thumbv7m-none-eabi
@@ -82,4 +95,12 @@ cargo build --release -p zetafill-cli
 (cd web && npm ci --no-audit --no-fund && npm test)
 
 step "host tests (release)"
-cargo test --workspace --release
+log=$(mktemp)
+status=0
+cargo test --workspace --release 2>&1 | tee "$log" || status=$?
+end_step
+awk '/^test result:/ { p += $4; f += $6; i += $8 }
+     END { printf "\n== host tests: %d passed, %d failed, %d ignored\n", p, f, i }' "$log"
+rm -f "$log"
+printf '== every step: %dm%02ds\n' $((SECONDS / 60)) $((SECONDS % 60))
+exit "$status"

@@ -19,8 +19,7 @@ pub mod tile;
 
 use clap::{Parser, Subcommand};
 
-/// Random fractal space filling (Shier and Bourke's statistical geometry): fills, 1D fills,
-/// territories and fractal tiles as SVG, G-code, PNG, height maps, JSON and CSV.
+/// The command line (its help text is the crate's description in Cargo.toml).
 #[derive(Debug, Parser)]
 #[command(name = "zetafill", version, about, long_about = None)]
 pub struct Cli {

@@ -365,15 +365,8 @@ fn no_gcode() -> CliError {
 /// `zetafill territory`: grows the pattern of the plan and writes its output.
 pub fn run(plan: &TerritoryPlan) -> Result<(), CliError> {
     let bytes = output(&plan.run, &plan.draw, plan.format)?;
-    let what = crate::output::stream::file_of(plan.format.name());
     let advice = "ask for fewer points (--points) or a smaller --region";
-    crate::cmd::write_output(
-        &plan.dest,
-        &crate::output::stream::Output::bytes(bytes),
-        plan.max_output_size,
-        &what,
-        advice,
-    )
+    crate::cmd::write_bytes(&plan.dest, bytes, plan.max_output_size, plan.format.name(), advice)
 }
 
 /// The bytes a plan writes: the pattern grown and rendered.

@@ -393,15 +393,8 @@ fn no_gcode() -> CliError {
 /// Runs `zetafill tile`: grows the tile of the plan and writes its output.
 pub fn run(plan: &TilePlan) -> Result<(), CliError> {
     let (tile, bytes) = output(&plan.run, &plan.draw, plan.format)?;
-    let what = crate::output::stream::file_of(plan.format.name());
     let advice = "lay out fewer copies (--layout) or grow fewer discs";
-    crate::cmd::write_output(
-        &plan.dest,
-        &crate::output::stream::Output::bytes(bytes),
-        plan.max_output_size,
-        &what,
-        advice,
-    )?;
+    crate::cmd::write_bytes(&plan.dest, bytes, plan.max_output_size, plan.format.name(), advice)?;
     if !plan.run.quiet {
         let twins = tile.discs.iter().filter(|d| d.twin.is_some()).count();
         eprintln!("{} discs ({twins} doppelgangers) in {} tries", tile.discs.len(), tile.tries);

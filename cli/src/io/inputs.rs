@@ -71,9 +71,14 @@ pub fn refuse_overwrites(files: &Files) -> Result<(), CliError> {
     Ok(())
 }
 
-/// Whether `a` and `b` are the same existing file: the same device and inode on Unix (so
-/// hard and symbolic links are seen through), else the same path once links are resolved.
+/// Whether `a` and `b` are the same existing regular file: the same device and inode on Unix
+/// (so hard and symbolic links are seen through), else the same path once links are resolved.
+/// A device or a pipe is never the same file as anything: it is written into, not replaced,
+/// so `--sites-from /dev/stdin -o /dev/stdout` on one terminal is no overwrite.
 pub fn same_file(a: &Path, b: &Path) -> bool {
+    if !std::fs::metadata(b).is_ok_and(|m| m.is_file()) {
+        return false;
+    }
     #[cfg(unix)]
     {
         use std::os::unix::fs::MetadataExt;
@@ -197,6 +202,11 @@ mod tests {
         f.output("--output", &pic);
         f.input("--machine", Path::new("/nonexistent/m.toml"));
         assert!(refuse_overwrites(&f).is_ok());
+        // A device is written into, never replaced: no overwrite.
+        let mut g = Files::default();
+        g.output("--output", Path::new("/dev/null"));
+        g.input("--sites-from", Path::new("/dev/null"));
+        assert!(refuse_overwrites(&g).is_ok());
         f.input("--density", &pic);
         let e = refuse_overwrites(&f).err().map(|e| e.to_string()).unwrap_or_default();
         assert!(e.starts_with("--output: ") && e.contains("--density"), "{e}");

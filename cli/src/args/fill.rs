@@ -110,7 +110,8 @@ pub struct RegionInputArgs {
 #[derive(Debug, Args)]
 pub struct FillArgs {
     /// circle | square | rect:ASPECT | triangle | polygon:SIDES | star:POINTS:INNER_RATIO |
-    /// ring:INNER_RATIO | blob:DELTA | noisy:AMPLITUDE[:FEATURES[:OCTAVES]] | mix:SHAPE,SHAPE,...
+    /// ring:INNER_RATIO | blob:DELTA | noisy:AMPLITUDE (then optionally :FEATURES and :OCTAVES)
+    /// | mix:SHAPE,SHAPE,...
     #[arg(long, default_value = "circle", value_parser = spec::shape)]
     pub shape: spec::ShapeArg,
     /// Mixes: take the shapes in turn (cycle) or at random per placement.
@@ -146,9 +147,9 @@ pub struct FillArgs {
     /// Where centres are wanted: noise:KIND:SCALE, optionally then :OCTAVES:GAIN:CONTRAST
     /// (KIND value or gradient; a noise field of lattice spacing SCALE mm seeded by --seed,
     /// tileable with --periodic; density 0.5 + CONTRAST (noise - 0.5), clamped to 0..1;
-    /// defaults 4 octaves, gain 0.5, contrast 2), or image:FILE[,invert][,gamma=G][,floor=F]
-    /// (a PNG or JPEG over the region's bounding box, dark means dense: F + (1 - F) t^G with
-    /// t the darkness). Each shape is placed with probability proportional to the density over
+    /// defaults 4 octaves, gain 0.5, contrast 2), or image:FILE, optionally followed by any of
+    /// ,invert ,gamma=G ,floor=F (a PNG or JPEG over the region's bounding box, dark means
+    /// dense: F + (1 - F) t^G with t the darkness). Each shape is placed with probability proportional to the density over
     /// the centres where it fits.
     #[arg(long, value_parser = spec::density)]
     pub density: Option<crate::model::density::DensitySpec>,

@@ -145,6 +145,11 @@ fn inputs(d: &Path) {
     zf_ok(d, &["fill", "-q", "--count", "20", "-o", "sites.json"]);
 }
 
+/// Every entry of the folder `d` with its bytes.
+fn contents(d: &Path) -> Vec<(std::path::PathBuf, Vec<u8>)> {
+    listing(d).into_iter().map(|p| (p.clone(), read(&p))).collect()
+}
+
 fn with_output<'a>(args: &[&'a str], out: &'a str) -> Vec<&'a str> {
     args.iter().map(|&a| if a == "OUT" { out } else { a }).collect()
 }
@@ -169,7 +174,7 @@ fn an_output_that_is_an_input_is_refused_and_nothing_changes() {
         std::fs::hard_link(d.join(case.input), d.join(hard)).unwrap_or_else(|e| panic!("{e}"));
         let spelled = format!("./{}", case.input);
         for out in [case.input, spelled.as_str(), link, hard] {
-            let before: Vec<(std::path::PathBuf, Vec<u8>)> = listing(d).into_iter().map(|p| (p.clone(), read(&p))).collect();
+            let before = contents(d);
             let o = zf(d, &with_output(case.args, out));
             assert_eq!(o.code, 2, "{:?} -o {out}: exit {} ({})", case.args, o.code, o.stderr);
             assert!(
@@ -179,8 +184,7 @@ fn an_output_that_is_an_input_is_refused_and_nothing_changes() {
                 case.flag,
                 o.stderr
             );
-            let after: Vec<(std::path::PathBuf, Vec<u8>)> = listing(d).into_iter().map(|p| (p.clone(), read(&p))).collect();
-            assert!(before == after, "{:?} -o {out}: a file changed or appeared", case.args);
+            assert!(before == contents(d), "{:?} -o {out}: a file changed or appeared", case.args);
         }
         std::fs::remove_file(d.join(link)).unwrap_or_else(|e| panic!("{e}"));
         std::fs::remove_file(d.join(hard)).unwrap_or_else(|e| panic!("{e}"));

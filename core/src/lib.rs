@@ -134,7 +134,7 @@ mod stats;
 mod zeta;
 
 pub use self::fixed::Fixed;
-pub use engine::{index_words, Density, Engine, Placement, Stats, Storage};
+pub use engine::{index_words, Batches, Density, Engine, Lane, NoLanes, Placement, Plan, Stats, Storage, DEFAULT_BATCH, LANE_EVENTS};
 pub use feasibility::{
     check_first_two, check_largest, check_smallest, first_shape, segment_capacity, shape_capacity, AreaSequence, CapacityError, FirstShape,
     FirstTwoError, TooLarge, TooSmall,

@@ -45,6 +45,8 @@ use core::ops::{Add, Div, Mul, Neg, Sub};
 /// ```
 pub trait Scalar:
     Copy
+    + Send
+    + Sync
     + Default
     + Debug
     + PartialEq

@@ -8,11 +8,11 @@ mod common;
 use common::{params, Buffers};
 use rand_core::RngCore;
 use zetafill::internals::geom::separated;
-use zetafill::{cells_for, rng_from_seed, CellSampler, Engine, Point, PolygonRegion, Region, Scalar, ShapeKind};
+use zetafill::{cells_for, rng_from_seed, Batches, CellSampler, Engine, Lane, Point, PolygonRegion, Region, Scalar, ShapeKind, Stop};
 
-/// Whether the next shape of `e` fits at `p` at one of `angles`, next to every placed shape
-/// (and their periodic images), checked by brute force with the exact pair test.
-fn valid_centre<S: Scalar>(e: &Engine<'_, S>, p: Point<S>, angles: &[f64]) -> bool {
+/// Whether shape `n` of the fill of `e` fits at `p` at one of `angles`, next to every shape
+/// placed so far (and their periodic images), checked by brute force with the exact pair test.
+fn valid_centre_of<S: Scalar>(e: &Engine<'_, S>, n: u64, p: Point<S>, angles: &[f64]) -> bool {
     let gap = S::from_f64(e.params().gap);
     let region = e.region();
     let (_, _, w, h) = region.bbox();
@@ -31,7 +31,6 @@ fn valid_centre<S: Scalar>(e: &Engine<'_, S>, p: Point<S>, angles: &[f64]) -> bo
     } else {
         &[(0.0, 0.0)]
     };
-    let n = e.placed().len() as u64;
     let kind = e.kind_of(n);
     angles.iter().any(|&angle| {
         let angle = S::from_f64(angle);
@@ -61,9 +60,20 @@ fn cells_hold_every_valid_centre<S: Scalar>(
     points: &[Point<S>],
     angles: &[f64],
 ) -> Result<usize, Point<S>> {
+    cells_hold_centres_of(e, e.placed().len() as u64, boxes, points, angles)
+}
+
+/// [`cells_hold_every_valid_centre`] for shape `n`.
+fn cells_hold_centres_of<S: Scalar>(
+    e: &Engine<'_, S>,
+    n: u64,
+    boxes: &[[f64; 4]],
+    points: &[Point<S>],
+    angles: &[f64],
+) -> Result<usize, Point<S>> {
     let mut valid = 0;
     for &p in points {
-        if valid_centre(e, p, angles) {
+        if valid_centre_of(e, n, p, angles) {
             valid += 1;
             let (x, y) = (p.x.to_f64(), p.y.to_f64());
             if !boxes.iter().any(|b| x >= b[0] && x <= b[2] && y >= b[1] && y <= b[3]) {
@@ -72,6 +82,17 @@ fn cells_hold_every_valid_centre<S: Scalar>(
         }
     }
     Ok(valid)
+}
+
+/// The boxes each shrunk by a tenth about its centre: the broken input of the checks.
+fn shrunk(boxes: &[[f64; 4]]) -> Vec<[f64; 4]> {
+    boxes
+        .iter()
+        .map(|b| {
+            let (dx, dy) = ((b[2] - b[0]) * 0.05, (b[3] - b[1]) * 0.05);
+            [b[0] + dx, b[1] + dy, b[2] - dx, b[3] - dy]
+        })
+        .collect()
 }
 
 /// What [`check_invariant`] runs: fills of `kind` in each of `regions` with each (gap, cell
@@ -143,13 +164,7 @@ fn check_invariant<S: Scalar>(probe: &Probe<'_>) -> (usize, usize, usize) {
                 }
                 checked += 1;
                 // The broken input: the same cells, each shrunk by a tenth.
-                let shrunk: Vec<[f64; 4]> = boxes
-                    .iter()
-                    .map(|b| {
-                        let (dx, dy) = ((b[2] - b[0]) * 0.05, (b[3] - b[1]) * 0.05);
-                        [b[0] + dx, b[1] + dy, b[2] - dx, b[3] - dy]
-                    })
-                    .collect();
+                let shrunk = shrunk(&boxes);
                 if cells_hold_every_valid_centre(&e, &shrunk, &pts, &angles).is_err() {
                     broken_caught += 1;
                 }
@@ -309,4 +324,68 @@ fn live_cells_hold_every_valid_centre_on_fixed_point_at_full_size() {
         };
         assert_invariant::<zetafill::Fixed>(&probe, least);
     }
+}
+
+/// The batched sampler's invariant: before each batch is screened (the first eight, then every
+/// fourth), every point where the batch's first or last shape fits next to the shapes placed
+/// before the batch lies in a live cell: the cells every trial of the batch draws from hold
+/// every valid centre of each of its shapes. Circle fills of 400 in every kind of region, with
+/// and without a gap, with ample cells and with a pool that fills up; the same checker finds
+/// valid points outside the cells shrunk by a tenth.
+#[test]
+fn batched_cells_hold_every_valid_centre_of_the_batch() {
+    let (pts, ends) = common::star_with_hole();
+    let regions = common::every_kind(PolygonRegion::new(&pts, &ends).expect("a star with a hole"));
+    let mut rng = rng_from_seed(98);
+    let mut unit = || (rng.next_u64() >> 11) as f64 / (1u64 << 53) as f64;
+    let (mut checked, mut valid_seen, mut caught) = (0usize, 0usize, 0usize);
+    for (ri, region) in regions.iter().enumerate() {
+        for (gap, pool_len) in [(0.0, cells_for(400)), (0.8, cells_for(400)), (0.0, 3000)] {
+            let mut b = Buffers::<f64>::new(400);
+            let mut p = params(ShapeKind::Circle);
+            p.gap = gap;
+            p.max_trials = 200_000;
+            let mut e = Engine::<f64>::new(p, *region, b.storage(&mut [])).expect("valid");
+            let mut pool = vec![[0u64; 4]; pool_len];
+            let mut cells = CellSampler::new(&mut pool).expect("cells");
+            let mut lanes = vec![Lane::default(); 32];
+            let mut batches = Batches::new(&mut lanes, 7 + ri as u64, 32).expect("lanes");
+            let (x0, y0, w, h) = region.bbox();
+            let mut batch = 0;
+            let stop = Stop {
+                count: Some(400),
+                ..Stop::default()
+            };
+            e.run_batched_with(
+                &mut cells,
+                &mut batches,
+                &stop,
+                |_| {},
+                |e, c, plan, lanes| {
+                    batch += 1;
+                    if batch <= 8 || batch % 4 == 0 {
+                        let pts: Vec<Point<f64>> = (0..2000).map(|_| Point::new(x0 + unit() * w, y0 + unit() * h)).collect();
+                        let boxes: Vec<[f64; 4]> = c.live_boxes().collect();
+                        let shrunk = shrunk(&boxes);
+                        for n in [plan.first, plan.end - 1] {
+                            match cells_hold_centres_of(e, n, &boxes, &pts, &[0.0]) {
+                                Ok(v) => valid_seen += v,
+                                Err(q) => panic!(
+                                    "region {ri}, gap {gap}, pool {pool_len}, batch at {}: shape {n}'s valid centre {q:?} in no live cell",
+                                    plan.first
+                                ),
+                            }
+                            caught += usize::from(cells_hold_centres_of(e, n, &shrunk, &pts, &[0.0]).is_err());
+                            checked += 1;
+                        }
+                    }
+                    e.screen(c, plan, lanes);
+                },
+            );
+        }
+    }
+    println!("checks {checked}, valid points {valid_seen}, shrunk cells caught {caught}");
+    assert!(checked >= 300, "checks made: {checked}");
+    assert!(valid_seen >= 20_000, "valid points seen: {valid_seen}");
+    assert!(caught * 2 >= checked, "shrunk cells caught in {caught} of {checked} checks");
 }

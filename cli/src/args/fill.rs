@@ -39,6 +39,9 @@ pub enum Sampler {
     Fast,
     /// The paper's: uniform candidates over the region, retried until one fits.
     Reference,
+    /// The cells' candidates screened in batches, many in flight and on every thread: the
+    /// same distribution of placements, the same fill for any number of threads (2D only).
+    Batched,
 }
 
 impl MixArg {
@@ -57,6 +60,7 @@ impl Sampler {
         match self {
             Sampler::Fast => "fast",
             Sampler::Reference => "reference",
+            Sampler::Batched => "batched",
         }
     }
 }
@@ -144,6 +148,10 @@ pub struct FillArgs {
     /// fill. Give the board's number to place its shapes.
     #[arg(long, value_parser = clap::value_parser!(u64).range(1..))]
     pub cells: Option<u64>,
+    /// Batched sampler: the threads that screen each batch's candidates (default: one per
+    /// core). The fill is the same for any number.
+    #[arg(long, value_parser = clap::value_parser!(u64).range(1..=1024))]
+    pub threads: Option<u64>,
     /// Where centres are wanted: noise:KIND:SCALE, optionally then :OCTAVES:GAIN:CONTRAST
     /// (KIND value or gradient; a noise field of lattice spacing SCALE mm seeded by --seed,
     /// tileable with --periodic; density 0.5 + CONTRAST (noise - 0.5), clamped to 0..1;

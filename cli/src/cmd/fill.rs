@@ -144,7 +144,17 @@ fn run_engine<S: zetafill::Scalar>(
         let lent = a.names.cells.map_or(usize::MAX, |n| usize::try_from(n).unwrap_or(usize::MAX));
         let mut pool = vec![[0u64; 4]; zetafill::cells_for(cap).min(lent)];
         let mut cells = CellSampler::new(&mut pool).map_err(|_| CliError::Io("internal: no cells for the fast sampler".into()))?;
-        engine.run_fast(&mut cells, &mut rng, stop, on_place)
+        match a.batched {
+            Some(threads) => {
+                let mut lanes = vec![zetafill::Lane::default(); zetafill::DEFAULT_BATCH];
+                let mut batches = zetafill::Batches::new(&mut lanes, a.seed, zetafill::DEFAULT_BATCH)
+                    .map_err(|_| CliError::Io("internal: no lanes for the batched sampler".into()))?;
+                engine.run_batched_with(&mut cells, &mut batches, stop, on_place, |e, c, plan, lanes| {
+                    screen_on(threads, e, c, plan, lanes);
+                })
+            }
+            None => engine.run_fast(&mut cells, &mut rng, stop, on_place),
+        }
     };
     if let Some(b) = &bar {
         b.finish_and_clear();
@@ -174,6 +184,33 @@ fn run_engine<S: zetafill::Scalar>(
         area: engine.total_area(),
         digest: zetafill::digest::engine_digest(&engine),
     })
+}
+
+/// Screens a batch's lanes on `threads` threads (this one among them), each taking every
+/// `threads`-th lane so that the large and small placements of a batch are shared out evenly.
+fn screen_on<S: zetafill::Scalar>(
+    threads: usize,
+    e: &Engine<'_, S>,
+    cells: &CellSampler<'_, S>,
+    plan: &zetafill::Plan<S>,
+    lanes: &mut [zetafill::Lane<S>],
+) {
+    let threads = threads.min(lanes.len()).max(1);
+    if threads == 1 {
+        e.screen(cells, plan, lanes);
+        return;
+    }
+    let per = lanes.len().div_ceil(threads);
+    std::thread::scope(|s| {
+        let mut parts = lanes.chunks_mut(per);
+        let mine = parts.next();
+        for part in parts {
+            s.spawn(move || e.screen(cells, plan, part));
+        }
+        if let Some(part) = mine {
+            e.screen(cells, plan, part);
+        }
+    });
 }
 
 /// Runs the fill and returns the document (and the halt, if any, after at least one

@@ -60,6 +60,8 @@ pub struct FillRun {
     pub seed: u64,
     /// The paper's sampler (and the coverage bitmap it asks) instead of the cell sampler.
     pub reference_sampler: bool,
+    /// The batched cell sampler, with this many threads screening.
+    pub batched: Option<usize>,
     /// Where centres are wanted (`--density`).
     pub density: Option<crate::model::density::DensitySpec>,
     /// The picture of `--density image:FILE`, read when the run was planned.
@@ -237,6 +239,12 @@ pub fn resolve_as(a: &FillArgs, format: Format) -> Result<(FillRun, FillDraw), C
     }
     check_plot(&a.plot, format)?;
     check_cells(a)?;
+    if a.threads.is_some() && a.sampler != Sampler::Batched {
+        return Err(CliError::arg(
+            "--threads",
+            "only the batched sampler screens on threads: add --sampler batched, or drop --threads",
+        ));
+    }
     if a.plot.hatch.is_some() && a.style == StyleArg::Filled && matches!(format, Format::Svg | Format::Png) {
         return Err(CliError::arg(
             "--hatch",
@@ -279,6 +287,7 @@ pub fn resolve_as(a: &FillArgs, format: Format) -> Result<(FillRun, FillDraw), C
         stop: crate::plan::stops(&a.run.stop),
         seed,
         reference_sampler: a.sampler == Sampler::Reference,
+        batched: (a.sampler == Sampler::Batched).then(|| threads(a.threads)),
         density: a.density.clone(),
         picture,
         fixed_point: a.scalar == ScalarArg::Fixed,
@@ -346,6 +355,14 @@ fn density_picture(a: &FillArgs) -> Result<Option<std::sync::Arc<crate::io::imag
     let grey = crate::io::image::read_grey(path).map_err(|e| CliError::arg("--density", e))?;
     crate::plan::region_input::check_digest("--density-sha256", path, &grey.sha256, a.density_sha256.as_ref(), "picture")?;
     Ok(Some(std::sync::Arc::new(grey)))
+}
+
+/// The threads `--threads` asks for, or one per core.
+pub fn threads(asked: Option<u64>) -> usize {
+    asked.map_or_else(
+        || std::thread::available_parallelism().map_or(1, |n| n.get()),
+        |n| usize::try_from(n).unwrap_or(1),
+    )
 }
 
 /// The fewest cells `--cells` lends: fewer leave the sampler no room to refine at all.

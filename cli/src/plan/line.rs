@@ -166,6 +166,12 @@ fn check_zoom(a: &LineArgs) -> Result<(), CliError> {
 
 /// [`resolve_as`] after the zoom centre.
 fn resolve_format(a: &LineArgs, format: Format) -> Result<(LineRun, LineDraw), CliError> {
+    if a.sampler == crate::args::fill::Sampler::Batched {
+        return Err(CliError::arg(
+            "--sampler",
+            "batched is a sampler of fill: use fast (the exact gap sampler) or reference for a line",
+        ));
+    }
     raster::check(&a.raster, format == Format::Png)?;
     check_plot(a, format)?;
     let colour_layers = a.plot.layers == Layers::Colours;

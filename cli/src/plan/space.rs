@@ -159,6 +159,12 @@ pub fn resolve(a: &SpaceArgs) -> Result<SpacePlan, CliError> {
 /// The run and the drawing of `a` written as `format`: every rule between the flags, but none
 /// about the output path.
 pub fn resolve_as(a: &SpaceArgs, format: SpaceFormat) -> Result<(SpaceRun, SpaceDraw), CliError> {
+    if a.sampler == Sampler::Batched {
+        return Err(CliError::arg(
+            "--sampler",
+            "batched is a sampler of fill: use fast (the octree cells) or reference in 3D",
+        ));
+    }
     if a.periodic && !matches!(a.region, Region3::Box { .. }) {
         return Err(CliError::arg(
             "--periodic",

@@ -36,7 +36,7 @@ fn poly_dist<S: Scalar>(g: &Geo<S>, q: Point<S>) -> S {
 }
 
 /// The engine as the cell sampler sees it.
-struct FieldOf<'e, 'a, S: Scalar>(&'e Engine<'a, S>);
+pub(super) struct FieldOf<'e, 'a, S: Scalar>(pub(super) &'e Engine<'a, S>);
 
 impl<S: Scalar> Field<S> for FieldOf<'_, '_, S> {
     fn edge(&self, p: Point<S>) -> S {
@@ -146,8 +146,8 @@ impl<S: Scalar> Engine<'_, S> {
     /// take, as areas fall with the index and a kind's inscribed disc with its area. Zero
     /// (no bound) when a ring, blob or noisy outline may come, whose clearance is found
     /// otherwise.
-    fn lowest_clearance(&self) -> S {
-        let area = self.area_of(self.shapes.len().saturating_sub(1) as u64);
+    fn lowest_clearance(&self, last: u64) -> S {
+        let area = self.area_of(last);
         let mut lowest: Option<S> = None;
         for &kind in self.params.shape.kinds() {
             if matches!(kind, ShapeKind::Ring { .. } | ShapeKind::Blob { .. } | ShapeKind::Noisy { .. }) {
@@ -314,11 +314,27 @@ impl<S: Scalar> Engine<'_, S> {
             let (x0, y0, _, _) = self.region.bbox();
             let (w, h) = self.period;
             cells.init(S::from_f64(x0), S::from_f64(y0), w, h, self.region.periodic(), &field);
-            cells.set_lowest(self.lowest_clearance(), self.shapes.len());
+            cells.set_lowest(self.lowest_clearance(self.shapes.len().saturating_sub(1) as u64), self.shapes.len());
         }
         cells.wake(clearance, self.len, &field);
         cells.begin_step();
         Some(clearance)
+    }
+
+    /// [`Engine::prepare_cells`] for a batch whose shapes need at least `clearance`; `last_of`
+    /// names the last placement of the batch that holds a given one (the cells of the fill's
+    /// last batch may serve shapes past the storage's last).
+    pub(super) fn prepare_batch(&self, cells: &mut CellSampler<'_, S>, clearance: S, last_of: impl FnOnce(u64) -> u64) {
+        let field = FieldOf(self);
+        if !cells.ready(field.density_key()) {
+            let (x0, y0, _, _) = self.region.bbox();
+            let (w, h) = self.period;
+            cells.init(S::from_f64(x0), S::from_f64(y0), w, h, self.region.periodic(), &field);
+            let last = last_of(self.shapes.len().saturating_sub(1) as u64);
+            cells.set_lowest(self.lowest_clearance(last), self.shapes.len());
+        }
+        cells.wake(clearance, self.len, &field);
+        cells.begin_step();
     }
 
     /// Places the next shape with the cell sampler: the same distribution of accepted
@@ -363,7 +379,20 @@ impl<S: Scalar> Engine<'_, S> {
             }
             return placed;
         };
-        let mut trials = 0u64;
+        self.fast_trials(cells, &next, clearance, rng, 0)
+    }
+
+    /// The trials of [`Engine::step_fast`] once the cells are up to date, counted from
+    /// `trials`: cells are judged (retired, split) for `clearance`, which may be below the
+    /// shape's own, and learn from the exact tests.
+    pub(super) fn fast_trials<R: RngCore + ?Sized>(
+        &mut self,
+        cells: &mut CellSampler<'_, S>,
+        next: &NextShape<S>,
+        clearance: S,
+        rng: &mut R,
+        mut trials: u64,
+    ) -> Result<Placement<S>, StepError> {
         loop {
             if trials >= self.params.max_trials || cells.is_empty() {
                 return Err(StepError::Halted { index: next.index, trials });
@@ -413,7 +442,7 @@ impl<S: Scalar> Engine<'_, S> {
                 continue;
             }
             let known = if slot == usize::MAX { drawn.near() } else { cells.known(slot) };
-            match self.try_at(&next, c, angle, trials, Some(&known)) {
+            match self.try_at(next, c, angle, trials, Some(&known)) {
                 Ok(placed) => {
                     cells.learn(slot, next.index as u32, clearance, &FieldOf(self));
                     cells.end_step(x1 - x0, y1 - y0);

@@ -44,7 +44,7 @@ impl core::fmt::Debug for Thinning<'_> {
 /// e.run(&mut rng_from_seed(1), &Stop { count: Some(40), ..Stop::default() }, |_| {});
 /// assert!(e.placed().iter().all(|p| p.x > 50.0));
 /// ```
-pub trait Density {
+pub trait Density: Sync {
     /// `rho` at `(x, y)`, in `[0, 1]` (a value above 1 counts as 1; below 0, or NaN, as 0).
     fn at(&self, x: f64, y: f64) -> f64;
 

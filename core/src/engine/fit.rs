@@ -96,13 +96,17 @@ impl<S: Scalar> Engine<'_, S> {
     /// What the next placement needs that stays fixed over its trials, or why it cannot be
     /// made.
     pub(super) fn next_shape(&self) -> Result<NextShape<S>, StepError> {
-        let i = self.len;
-        let index = i as u64;
-        if i >= self.shapes.len() {
+        if self.len >= self.shapes.len() {
             return Err(StepError::Capacity {
                 capacity: self.shapes.len() as u64,
             });
         }
+        self.shape_at(self.len as u64)
+    }
+
+    /// [`Engine::next_shape`] for placement `index`, whether or not the storage has room for
+    /// it.
+    pub(super) fn shape_at(&self, index: u64) -> Result<NextShape<S>, StepError> {
         let kind = self.kind_of(index);
         let area = self.area_of(index);
         // Below the scalar's resolution the exact tests are not exact, and on f64 a polygon's

@@ -31,6 +31,7 @@
 //! shapes before it); running out of storage, halting at the trial limit, and a first shape
 //! that cannot fit are error values, never panics.
 
+mod batch;
 mod cells;
 mod clearance;
 mod density;
@@ -44,6 +45,7 @@ use crate::rng;
 use crate::scalar::{powf, Scalar};
 use crate::shape::{Placed, ShapeKind};
 use crate::spatial::SpatialHash;
+pub use batch::{Batches, Lane, NoLanes, Plan, DEFAULT_BATCH, LANE_EVENTS};
 pub use density::Density;
 use density::{kept_at, Thinning};
 use fit::NextShape;
@@ -415,11 +417,10 @@ impl<'a, S: Scalar> Engine<'a, S> {
     }
 
     /// Runs the exact tests on a candidate centre and angle, and places the shape there if it
-    /// passes.
-    #[inline(always)]
-    /// On failure, names the placed shape the candidate hit when that was the reason.
+    /// passes. On failure, names the placed shape the candidate hit when that was the reason.
     /// The cell sampler passes `known`, the shapes its cell knows of: they are tested first, and
     /// the shape named on failure does not depend on the hash table's size.
+    #[inline(always)]
     fn try_at(
         &mut self,
         next: &NextShape<S>,
@@ -428,6 +429,23 @@ impl<'a, S: Scalar> Engine<'a, S> {
         trials: u64,
         known: Option<&[u32]>,
     ) -> Result<Placement<S>, Option<u32>> {
+        let mut g = Geo::Circle { c, r: next.base_r };
+        let shape = self.check_into(next, c, angle, known, &mut g)?;
+        Ok(self.place(next, shape, &g, trials, known.is_none()))
+    }
+
+    /// The exact tests of [`Engine::try_at`], without placing: the shape as it would be stored
+    /// (its outline left in `g`), or the placed shape the candidate hit when that was the
+    /// reason it fails.
+    #[inline(always)]
+    fn check_into(
+        &self,
+        next: &NextShape<S>,
+        c: Point<S>,
+        angle: S,
+        known: Option<&[u32]>,
+        g: &mut Geo<S>,
+    ) -> Result<Placed<S>, Option<u32>> {
         let kind = next.kind;
         // A circle against known circles needs no geometry: most of the cell sampler's
         // rejections end here.
@@ -436,10 +454,9 @@ impl<'a, S: Scalar> Engine<'a, S> {
                 return Err(Some(j));
             }
         }
-        let mut g = Geo::Circle { c, r: next.base_r };
         let (scale, r, solid) = if next.is_blob {
             let s: S = kind.scale_for(next.area, angle);
-            kind.geo_into(&mut g, c, s, angle);
+            kind.geo_into(g, c, s, angle);
             (s, kind.bounding_radius(s), kind.solid_radius(s))
         } else {
             let (sin, cos) = if next.rotated {
@@ -447,7 +464,7 @@ impl<'a, S: Scalar> Engine<'a, S> {
             } else {
                 (S::ZERO, S::ONE)
             };
-            kind.geo_sc_into(&mut g, c, next.base_scale, sin, cos);
+            kind.geo_sc_into(g, c, next.base_scale, sin, cos);
             (next.base_scale, next.base_r, next.base_solid)
         };
         // (Known circles were tested above for a circle.)
@@ -456,50 +473,80 @@ impl<'a, S: Scalar> Engine<'a, S> {
         if let Some(&j) = known
             .unwrap_or(&[])
             .iter()
-            .find(|&&j| !tested(j) && self.hits(&g, c, (r, solid), j, &mut other))
+            .find(|&&j| !tested(j) && self.hits(g, c, (r, solid), j, &mut other))
         {
             return Err(Some(j));
         }
-        if !self.region.contains(&g, self.gap) {
+        if !self.region.contains(g, self.gap) {
             return Err(None);
         }
-        let period = if self.region.periodic() { Some(self.period) } else { None };
-        if period.is_some() && self.self_overlaps(&g, r) {
+        if self.region.periodic() && self.self_overlaps(g, r) {
             return Err(None);
         }
-        if let Some(j) = self.blocker(&g, c.x, c.y, (r, solid), known.is_some()) {
+        if let Some(j) = self.blocker(g, c.x, c.y, (r, solid), known.is_some()) {
             return Err(Some(j));
         }
-        let i = self.len;
-        let shape = Placed {
+        Ok(Placed {
             x: c.x,
             y: c.y,
             scale,
             angle,
+        })
+    }
+
+    /// Places `shape` (outline `g`), which passed the exact tests, as the next shape; `mark`
+    /// marks it in the coverage bitmap too (the paper's sampler asks that bitmap, the cell
+    /// sampler never does: a bitmap that misses shapes only rejects fewer candidates, never a
+    /// valid one).
+    fn place(&mut self, next: &NextShape<S>, shape: Placed<S>, g: &Geo<S>, trials: u64, mark: bool) -> Placement<S> {
+        let kind = next.kind;
+        let r = if next.is_blob {
+            kind.bounding_radius(shape.scale)
+        } else {
+            next.base_r
         };
+        let i = self.len;
         if let Some(slot) = self.shapes.get_mut(i) {
             *slot = shape;
         }
+        let c = Point::new(shape.x, shape.y);
         self.hash.insert(i as u32, c.x, c.y, r);
-        // The cell sampler never asks the bitmap; a bitmap that misses shapes only rejects
-        // fewer candidates of the reference sampler, never a valid one.
-        if known.is_none() {
-            self.coverage.mark(&g, c, kind.inradius(scale), period);
+        if mark {
+            let period = if self.region.periodic() { Some(self.period) } else { None };
+            self.coverage.mark(g, c, kind.inradius(shape.scale), period);
         }
         self.len += 1;
         self.placed_area += next.area;
-        Ok(Placement {
+        Placement {
             index: next.index,
             shape,
             area: next.area,
             trials,
-        })
+        }
     }
 
     /// Steps until a stop condition holds or a step fails, calling `on_place` after each
     /// placement.
     pub fn run<R: RngCore + ?Sized>(&mut self, rng: &mut R, stop: &Stop, on_place: impl FnMut(&Placement<S>)) -> StopReason {
         self.run_with(stop, on_place, |e| e.step(rng))
+    }
+
+    /// The stop condition that holds before the next placement, if any.
+    fn stops(&self, stop: &Stop) -> Option<StopReason> {
+        let n = self.len as u64;
+        if stop.count.is_some_and(|k| n >= k) {
+            return Some(StopReason::Count);
+        }
+        if stop.fill.is_some_and(|f| self.placed_area >= f * self.area) {
+            return Some(StopReason::Fill);
+        }
+        if let Some(m) = stop.min_size {
+            let kind = self.kind_of(n);
+            if kind.min_width(kind.scale_for_area(self.area_of(n))) < m {
+                return Some(StopReason::MinSize);
+            }
+        }
+        None
     }
 
     fn run_with(
@@ -509,18 +556,8 @@ impl<'a, S: Scalar> Engine<'a, S> {
         mut step: impl FnMut(&mut Self) -> Result<Placement<S>, StepError>,
     ) -> StopReason {
         loop {
-            let n = self.len as u64;
-            if stop.count.is_some_and(|k| n >= k) {
-                return StopReason::Count;
-            }
-            if stop.fill.is_some_and(|f| self.placed_area >= f * self.area) {
-                return StopReason::Fill;
-            }
-            if let Some(m) = stop.min_size {
-                let kind = self.kind_of(n);
-                if kind.min_width(kind.scale_for_area(self.area_of(n))) < m {
-                    return StopReason::MinSize;
-                }
+            if let Some(reason) = self.stops(stop) {
+                return reason;
             }
             match step(self) {
                 Ok(p) => on_place(&p),

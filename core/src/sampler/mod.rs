@@ -111,6 +111,7 @@
 
 mod bound;
 mod cell;
+mod frozen;
 mod pool;
 mod trial;
 
@@ -118,6 +119,7 @@ use crate::geom::Point;
 use crate::scalar::Scalar;
 pub(crate) use cell::Cell;
 use core::num::NonZeroUsize;
+pub(crate) use frozen::{Event, What};
 pub(crate) use trial::{Drawn, Verdict};
 
 /// Number of cell levels (a level-0 cell split 23 times at most).

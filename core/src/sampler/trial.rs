@@ -145,6 +145,13 @@ impl<S: Scalar> CellSampler<'_, S> {
         }
         let (slot, c, class) = self.ahead.get(self.ahead_pos).copied()?;
         self.ahead_pos += 1;
+        Some(self.drawn_in(slot, c, class, rng))
+    }
+
+    /// A uniform point in cell `c` (at `slot`, of density class `class`) from two unit values,
+    /// x then y.
+    #[inline]
+    pub(super) fn drawn_in<R: RngCore + ?Sized>(&self, slot: usize, c: Cell<S>, class: u32, rng: &mut R) -> Drawn<S> {
         let g = self.lg(c.level());
         let ux: S = crate::rng::unit(rng);
         let uy: S = crate::rng::unit(rng);
@@ -153,13 +160,13 @@ impl<S: Scalar> CellSampler<'_, S> {
             self.origin.y + (S::from_f64(f64::from(c.iy())) + uy) * g.h,
         );
         let half = S::ONE.half();
-        Some(Drawn {
+        Drawn {
             slot,
             cell: c,
             point: p,
             quarter: (ux >= half, uy >= half),
             class,
-        })
+        }
     }
 
     /// Restructures the drawn cell: a cell too tight for `clearance` is retired; a cell much larger

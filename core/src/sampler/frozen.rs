@@ -70,13 +70,6 @@ impl<S: Scalar> CellSampler<'_, S> {
         Some(self.drawn_in(slot, c, class, rng))
     }
 
-    /// Loads the cell at `slot`'s first word: a batch of draws issues these loads together so
-    /// that their memory latencies overlap.
-    #[inline]
-    pub(crate) fn touch(&self, slot: usize) -> u64 {
-        self.pool.get(slot).map_or(0, |w| w[0])
-    }
-
     /// Whether a cell drawn from is too tight for a shape needing `clearance`: no point of it
     /// is a valid centre.
     #[inline]

@@ -134,6 +134,9 @@ fn threads_need_the_batched_sampler_and_batched_is_2d_only() {
         assert_eq!(out.code, 2, "{command}");
         assert!(names_flag(&out.stderr, "--sampler"), "{command}: {}", out.stderr);
     }
+    let out = zf(dir.path(), &["fill", "--batch", "4", "-o", "a.svg"]);
+    assert_eq!(out.code, 2);
+    assert!(names_flag(&out.stderr, "--batch"), "{}", out.stderr);
     let out = zf(dir.path(), &["fill", "--sampler", "batched", "--threads", "0", "-o", "a.svg"]);
     assert_eq!(out.code, 2);
     assert!(
@@ -141,4 +144,23 @@ fn threads_need_the_batched_sampler_and_batched_is_2d_only() {
         "a refused run left files: {:?}",
         listing(dir.path())
     );
+}
+
+/// The largest batch decides the fill, and the document records it, so that its command
+/// remakes it.
+#[test]
+fn the_batch_size_is_part_of_the_fill() {
+    let dir = tmp();
+    let args = ["--count", "900", "--sampler", "batched", "-q"];
+    let default = parse_json(&fill_to(dir.path(), "a.json", &args));
+    let mut four = args.to_vec();
+    four.extend_from_slice(&["--batch", "4"]);
+    let small = parse_json(&fill_to(dir.path(), "b.json", &four));
+    assert_eq!(default["params"]["batch"].as_u64(), Some(64));
+    assert_eq!(small["params"]["batch"].as_u64(), Some(4));
+    assert_ne!(default["shapes"], small["shapes"], "batches of 4 and 64 gave the same fill");
+    let svg = String::from_utf8(fill_to(dir.path(), "b.svg", &four)).unwrap_or_default();
+    assert!(svg.contains("--sampler batched") && svg.contains("--batch 4"), "the SVG's command lacks the batch");
+    let fast = parse_json(&fill_to(dir.path(), "c.json", &["--count", "50", "-q"]));
+    assert!(fast["params"].get("batch").is_none(), "a fill of the cell sampler records a batch");
 }

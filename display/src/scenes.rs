@@ -11,11 +11,15 @@
 //! never changes a result), the configuration whose memory the firmware measures. A scene
 //! with [`Scene::fast`] runs through [`run_fast`] with the cell sampler and [`FAST_CELLS`] cells (its storage runs out
 //! and then it stops refining, still exact) and at most [`FAST_CAPACITY`] shapes, so that it
-//! needs no more RAM than the others.
+//! needs no more RAM than the others; with [`Scene::batched`] too, through the batched sampler
+//! in batches of at most [`SCENE_BATCH`], its lanes on the stack.
 
 use embedded_graphics::pixelcolor::BinaryColor;
 use embedded_graphics::prelude::*;
-use zetafill::{digest, CellSampler, CellWords, Engine, ParamError, Params, Point, Region, Scalar, ShapeKind, StepError, Storage};
+use zetafill::{
+    digest, Batches, CellSampler, CellWords, Engine, Lane, ParamError, Params, Point, Region, Scalar, ShapeKind, StepError, Stop,
+    StopReason, Storage,
+};
 use zetafill::{MixOrder, ShapeList};
 use zetafill::{PolygonRegion, RegionError};
 
@@ -35,6 +39,8 @@ pub const FAST_CAPACITY: usize = 256;
 pub const FAST_INDEX_WORDS: usize = FAST_CAPACITY + BUCKETS;
 /// Cells lent to the cell sampler on the board (16 KiB: 32 bytes a cell).
 pub const FAST_CELLS: usize = 512;
+/// The largest batch of a batched scene, and the lanes it lends (about 0.9 KiB each).
+pub const SCENE_BATCH: usize = 4;
 
 /// The number type a scene's geometry runs on.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -106,6 +112,9 @@ pub struct Scene {
     pub count: u64,
     /// Placed with the cell sampler (`Engine::step_fast`) rather than the paper's.
     pub fast: bool,
+    /// With [`Scene::fast`]: placed by the batched sampler (`Engine::run_batched`, batches of
+    /// at most [`SCENE_BATCH`]) on the cells.
+    pub batched: bool,
     /// Drawn filled ([`View::fill`]) rather than as outlines ([`View::draw`]).
     pub filled: bool,
 }
@@ -156,6 +165,7 @@ const fn scene(
         seed,
         count,
         fast: false,
+        batched: false,
         filled: false,
     }
 }
@@ -163,6 +173,15 @@ const fn scene(
 /// The same scene placed with the cell sampler.
 const fn fast(s: Scene) -> Scene {
     Scene { fast: true, ..s }
+}
+
+/// The same scene placed by the batched sampler on the cells.
+const fn batched(s: Scene) -> Scene {
+    Scene {
+        fast: true,
+        batched: true,
+        ..s
+    }
 }
 
 /// The same scene drawn filled.
@@ -218,6 +237,8 @@ pub const SCENES: &[Scene] = &[
     // The cell sampler on the board, against the host's bits.
     fast(scene("circles-cells",  F64, &[Circle], false, rect(200.0, 200.0),  1.3,  1.0, 0.0, 16, 250)),
     fast(scene("squares-cells-fixed", FX, &[Square], true, torus(100.0, 100.0), 1.25, 2.0, 0.0, 17, 200)),
+    // The batched sampler on one core, against the host's bits for any number of threads.
+    batched(scene("circles-batched", F64, &[Circle], false, rect(200.0, 200.0), 1.3, 1.0, 0.0, 22, 250)),
     // Filled shapes: the pixels whose centres are inside (non-convex stars on a torus, rings
     // with their holes, rotated squares through the cell sampler).
     filled(scene("stars-filled", F64, &[ShapeKind::Star { points: 5, inner: 0.45 }], true, torus(100.0, 100.0), 1.25, 4.0, 0.0, 18, 50)),
@@ -342,12 +363,37 @@ pub fn run_fast<S: Scalar, D: DrawTarget<Color = BinaryColor>>(
 ) -> Result<Outcome, RunError<D::Error>> {
     let region = scene.region.region().map_err(RunError::Region)?;
     let params = scene.params().map_err(RunError::Param)?;
+    let shapes = params.shape.clone();
     let mut engine = Engine::<S>::new(params, region, storage).map_err(RunError::Param)?;
     let mut sampler = CellSampler::new(cells).map_err(|_| RunError::Param(ParamError::Storage))?;
     let size = target.bounding_box().size;
     let view = View::new(&region, size.width, size.height);
     let mut rng = zetafill::rng_from_seed(scene.seed);
     let mut ticks = 0u64;
+    if scene.batched {
+        let mut lanes: [Lane<S>; SCENE_BATCH] = core::array::from_fn(|_| Lane::default());
+        let mut batches = Batches::new(&mut lanes, scene.seed, SCENE_BATCH).map_err(|_| RunError::Param(ParamError::Storage))?;
+        let stop = Stop {
+            count: Some(scene.count),
+            ..Stop::default()
+        };
+        let mut drawn = Ok(());
+        let (t0, mut drawing) = (clock(), 0u64);
+        let reason = engine.run_batched(&mut sampler, &mut batches, &stop, |p| {
+            let d0 = clock();
+            let s = p.shape;
+            let geo = shapes.kind_of(p.index).geo(Point::new(s.x, s.y), s.scale, s.angle);
+            if drawn.is_ok() {
+                drawn = paint(scene, &view, &geo, target);
+            }
+            drawing = drawing.wrapping_add(clock().wrapping_sub(d0));
+        });
+        ticks = clock().wrapping_sub(t0).wrapping_sub(drawing);
+        drawn.map_err(RunError::Draw)?;
+        if let StopReason::Step(e) = reason {
+            return Err(RunError::Step(e));
+        }
+    }
     while (engine.placed().len() as u64) < scene.count {
         let t0 = clock();
         let step = engine.step_fast(&mut sampler, &mut rng);

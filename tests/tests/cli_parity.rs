@@ -196,7 +196,7 @@ fn space_digest_matches_the_firmware_scenes() {
 /// The `zetafill fill` arguments of a firmware 2D scene: every region, mix, scalar and
 /// sampler of the board is expressible, and a cell-sampler scene lends the board's cells.
 fn fill_args(s: &zetafill_display::Scene) -> Vec<String> {
-    use zetafill_display::scenes::{SceneRegion, FAST_CELLS};
+    use zetafill_display::scenes::{SceneRegion, FAST_CELLS, SCENE_BATCH};
     let names: Vec<String> = s.shapes.iter().map(zetafill_cli::model::doc::shape_name).collect();
     let shape = if names.len() == 1 {
         names[0].clone()
@@ -224,7 +224,22 @@ fn fill_args(s: &zetafill_display::Scene) -> Vec<String> {
     if periodic {
         a.push("--periodic".into());
     }
-    if s.fast {
+    if s.batched {
+        // Two threads on the host, one core on the board: the same bits.
+        a.extend(
+            [
+                "--sampler",
+                "batched",
+                "--threads",
+                "2",
+                "--batch",
+                &SCENE_BATCH.to_string(),
+                "--cells",
+                &FAST_CELLS.to_string(),
+            ]
+            .map(String::from),
+        );
+    } else if s.fast {
         a.extend(["--sampler".into(), "fast".into(), "--cells".into(), FAST_CELLS.to_string()]);
     } else {
         a.extend(["--sampler".into(), "reference".into()]);

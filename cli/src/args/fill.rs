@@ -152,6 +152,10 @@ pub struct FillArgs {
     /// core). The fill is the same for any number.
     #[arg(long, value_parser = clap::value_parser!(u64).range(1..=1024))]
     pub threads: Option<u64>,
+    /// Batched sampler: the most placements a batch holds (1 to 4096, default 64). The fill
+    /// depends on it; the firmware's batched scene uses 4.
+    #[arg(long, value_parser = clap::value_parser!(u64).range(1..=4096))]
+    pub batch: Option<u64>,
     /// Where centres are wanted: noise:KIND:SCALE, optionally then :OCTAVES:GAIN:CONTRAST
     /// (KIND value or gradient; a noise field of lattice spacing SCALE mm seeded by --seed,
     /// tileable with --periodic; density 0.5 + CONTRAST (noise - 0.5), clamped to 0..1;

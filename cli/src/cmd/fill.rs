@@ -145,9 +145,9 @@ fn run_engine<S: zetafill::Scalar>(
         let mut pool = vec![[0u64; 4]; zetafill::cells_for(cap).min(lent)];
         let mut cells = CellSampler::new(&mut pool).map_err(|_| CliError::Io("internal: no cells for the fast sampler".into()))?;
         match a.batched {
-            Some(threads) => {
-                let mut lanes = vec![zetafill::Lane::default(); zetafill::DEFAULT_BATCH];
-                let mut batches = zetafill::Batches::new(&mut lanes, a.seed, zetafill::DEFAULT_BATCH)
+            Some((threads, size)) => {
+                let mut lanes = vec![zetafill::Lane::default(); size];
+                let mut batches = zetafill::Batches::new(&mut lanes, a.seed, size)
                     .map_err(|_| CliError::Io("internal: no lanes for the batched sampler".into()))?;
                 engine.run_batched_with(&mut cells, &mut batches, stop, on_place, |e, c, plan, lanes| {
                     screen_on(threads, e, c, plan, lanes);
@@ -281,6 +281,7 @@ pub fn compute_watched(a: &FillRun, watch: &mut dyn FnMut(&zetafill::Placement<f
                 sampler: a.names.sampler,
                 scalar: a.names.scalar,
                 cells: a.names.cells,
+                batch: a.names.batch,
                 density: a.names.density.clone(),
                 density_sha256: a.names.density_sha256.clone(),
                 source: a.names.source.clone(),

@@ -80,6 +80,9 @@ pub struct ShapeParamsDoc {
     /// The cells lent to the cell sampler, when `--cells` chose them.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub cells: Option<u64>,
+    /// The largest batch, with the batched sampler (`--batch`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub batch: Option<u64>,
     /// `--density`, written in full, when given.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub density: Option<String>,

@@ -454,6 +454,9 @@ pub fn command_line(doc: &FillDoc) -> String {
     if let Some(n) = p.of.cells {
         s.push_str(&format!(" --cells {n}"));
     }
+    if let Some(n) = p.of.batch {
+        s.push_str(&format!(" --batch {n}"));
+    }
     if let Some(d) = &p.of.density {
         s.push_str(&format!(" --density {d}"));
     }

@@ -60,8 +60,8 @@ pub struct FillRun {
     pub seed: u64,
     /// The paper's sampler (and the coverage bitmap it asks) instead of the cell sampler.
     pub reference_sampler: bool,
-    /// The batched cell sampler, with this many threads screening.
-    pub batched: Option<usize>,
+    /// The batched cell sampler: the threads that screen, and the largest batch.
+    pub batched: Option<(usize, usize)>,
     /// Where centres are wanted (`--density`).
     pub density: Option<crate::model::density::DensitySpec>,
     /// The picture of `--density image:FILE`, read when the run was planned.
@@ -90,6 +90,8 @@ pub struct FillNames {
     pub scalar: &'static str,
     /// `--cells`, when given.
     pub cells: Option<u64>,
+    /// The largest batch, with the batched sampler.
+    pub batch: Option<u64>,
     /// `--density`, written in full, when given.
     pub density: Option<String>,
     /// The SHA-256 of the `--density` picture.
@@ -239,11 +241,16 @@ pub fn resolve_as(a: &FillArgs, format: Format) -> Result<(FillRun, FillDraw), C
     }
     check_plot(&a.plot, format)?;
     check_cells(a)?;
-    if a.threads.is_some() && a.sampler != Sampler::Batched {
-        return Err(CliError::arg(
-            "--threads",
-            "only the batched sampler screens on threads: add --sampler batched, or drop --threads",
-        ));
+    for (given, flag, what) in [
+        (a.threads.is_some(), "--threads", "screens on threads"),
+        (a.batch.is_some(), "--batch", "takes placements in batches"),
+    ] {
+        if given && a.sampler != Sampler::Batched {
+            return Err(CliError::arg(
+                flag,
+                format!("only the batched sampler {what}: add --sampler batched, or drop {flag}"),
+            ));
+        }
     }
     if a.plot.hatch.is_some() && a.style == StyleArg::Filled && matches!(format, Format::Svg | Format::Png) {
         return Err(CliError::arg(
@@ -276,6 +283,7 @@ pub fn resolve_as(a: &FillArgs, format: Format) -> Result<(FillRun, FillDraw), C
         sampler: a.sampler.name(),
         scalar: a.scalar.name(),
         cells: a.cells,
+        batch: (a.sampler == Sampler::Batched).then(|| batch_size(a.batch) as u64),
         density: a.density.as_ref().map(|d| d.name()),
         density_sha256: picture.as_ref().map(|p| p.sha256.clone()),
         source,
@@ -287,7 +295,7 @@ pub fn resolve_as(a: &FillArgs, format: Format) -> Result<(FillRun, FillDraw), C
         stop: crate::plan::stops(&a.run.stop),
         seed,
         reference_sampler: a.sampler == Sampler::Reference,
-        batched: (a.sampler == Sampler::Batched).then(|| threads(a.threads)),
+        batched: (a.sampler == Sampler::Batched).then(|| (threads(a.threads), batch_size(a.batch))),
         density: a.density.clone(),
         picture,
         fixed_point: a.scalar == ScalarArg::Fixed,
@@ -355,6 +363,11 @@ fn density_picture(a: &FillArgs) -> Result<Option<std::sync::Arc<crate::io::imag
     let grey = crate::io::image::read_grey(path).map_err(|e| CliError::arg("--density", e))?;
     crate::plan::region_input::check_digest("--density-sha256", path, &grey.sha256, a.density_sha256.as_ref(), "picture")?;
     Ok(Some(std::sync::Arc::new(grey)))
+}
+
+/// The largest batch `--batch` asks for, or the default.
+pub fn batch_size(asked: Option<u64>) -> usize {
+    asked.map_or(zetafill::DEFAULT_BATCH, |n| usize::try_from(n).unwrap_or(zetafill::DEFAULT_BATCH))
 }
 
 /// The threads `--threads` asks for, or one per core.

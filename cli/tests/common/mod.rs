@@ -323,6 +323,7 @@ pub fn check_doc(doc: &Value, e: &Expect) -> bool {
         "rotate",
         "sampler",
         "scalar",
+        "batch",
         "gap",
         "count",
         "fill",

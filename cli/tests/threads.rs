@@ -160,7 +160,10 @@ fn the_batch_size_is_part_of_the_fill() {
     assert_eq!(small["params"]["batch"].as_u64(), Some(4));
     assert_ne!(default["shapes"], small["shapes"], "batches of 4 and 64 gave the same fill");
     let svg = String::from_utf8(fill_to(dir.path(), "b.svg", &four)).unwrap_or_default();
-    assert!(svg.contains("--sampler batched") && svg.contains("--batch 4"), "the SVG's command lacks the batch");
+    assert!(
+        svg.contains("--sampler batched") && svg.contains("--batch 4"),
+        "the SVG's command lacks the batch"
+    );
     let fast = parse_json(&fill_to(dir.path(), "c.json", &["--count", "50", "-q"]));
     assert!(fast["params"].get("batch").is_none(), "a fill of the cell sampler records a batch");
 }

@@ -186,8 +186,9 @@ fn run_engine<S: zetafill::Scalar>(
     })
 }
 
-/// Screens a batch's lanes on `threads` threads (this one among them), each taking every
-/// `threads`-th lane so that the large and small placements of a batch are shared out evenly.
+/// Screens a batch's lanes on `threads` threads (this one among them). The lanes are handed
+/// out a few at a time to whichever thread is free, so that one placement that takes many
+/// trials does not hold the others up.
 fn screen_on<S: zetafill::Scalar>(
     threads: usize,
     e: &Engine<'_, S>,
@@ -195,21 +196,28 @@ fn screen_on<S: zetafill::Scalar>(
     plan: &zetafill::Plan<S>,
     lanes: &mut [zetafill::Lane<S>],
 ) {
-    let threads = threads.min(lanes.len()).max(1);
+    const LANES_AT_ONCE: usize = 4;
+    let threads = threads.min(lanes.len().div_ceil(LANES_AT_ONCE)).max(1);
     if threads == 1 {
         e.screen(cells, plan, lanes);
         return;
     }
-    let per = lanes.len().div_ceil(threads);
+    let parts = std::sync::Mutex::new(lanes.chunks_mut(LANES_AT_ONCE));
+    let work = || loop {
+        let part = match parts.lock() {
+            Ok(mut p) => p.next(),
+            Err(_) => None,
+        };
+        match part {
+            Some(part) => e.screen(cells, plan, part),
+            None => break,
+        }
+    };
     std::thread::scope(|s| {
-        let mut parts = lanes.chunks_mut(per);
-        let mine = parts.next();
-        for part in parts {
-            s.spawn(move || e.screen(cells, plan, part));
+        for _ in 1..threads {
+            s.spawn(work);
         }
-        if let Some(part) = mine {
-            e.screen(cells, plan, part);
-        }
+        work();
     });
 }
 

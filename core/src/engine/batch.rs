@@ -67,6 +67,9 @@ struct Found<S> {
 #[derive(Clone, Debug)]
 pub struct Lane<S> {
     index: u64,
+    /// What the placement needs, and the clearance it needs (None: no clearance condition),
+    /// or why it cannot be made.
+    next: Result<(NextShape<S>, Option<S>), StepError>,
     rng: ZetaRng,
     trials: u64,
     found: Option<Found<S>>,
@@ -77,6 +80,7 @@ impl<S> Default for Lane<S> {
     fn default() -> Self {
         Lane {
             index: 0,
+            next: Err(StepError::Capacity { capacity: 0 }),
             rng: ZetaRng::seed_from_u64(0),
             trials: 0,
             found: None,
@@ -237,8 +241,7 @@ impl<S: Scalar> Engine<'_, S> {
             if lane.index < plan.first || lane.index >= plan.end || lane.found.is_some() {
                 continue;
             }
-            let Ok(next) = self.shape_at(lane.index) else { continue };
-            if self.clearance_needed(&next).is_some() {
+            if let Ok((next, Some(_))) = lane.next {
                 self.screen_lane(cells, &next, clearance, lane, SCREEN_TRIALS);
             }
         }
@@ -385,8 +388,13 @@ impl<S: Scalar> Engine<'_, S> {
     /// Places the lane's placement: its screened candidate if it clears the batch's earlier
     /// shapes, or the first that passes of those it draws on from its own stream.
     fn commit(&mut self, cells: &mut CellSampler<'_, S>, plan: &Plan<S>, lane: &mut Lane<S>) -> Result<Placement<S>, StepError> {
-        let next = self.next_shape()?;
-        let clearance = plan.clearance.and_then(|c| self.clearance_needed(&next).map(|_| c));
+        if self.len >= self.shapes.len() {
+            return Err(StepError::Capacity {
+                capacity: self.shapes.len() as u64,
+            });
+        }
+        let (next, own) = lane.next?;
+        let clearance = own.and(plan.clearance);
         let Some(clearance) = clearance else {
             // No clearance condition: the paper's sampler, on the placement's own stream.
             return self.step_reference(&next, &mut lane.rng);
@@ -437,19 +445,24 @@ impl<S: Scalar> Engine<'_, S> {
     fn begin_batch(&self, cells: &mut CellSampler<'_, S>, batches: &mut Batches<'_, S>) -> Plan<S> {
         let first = self.len as u64;
         let end = first + batches.size_at(first);
-        let clearance = self.batch_clearance(first, end);
-        if let Some(c) = clearance {
-            self.prepare_batch(cells, c, |i| batches.last_of(i));
-        }
+        let mut clearance: Option<S> = None;
         for (k, lane) in batches.lanes.iter_mut().take((end - first) as usize).enumerate() {
             let j = first + k as u64;
+            let next = self.shape_at(j).map(|n| (n, self.clearance_needed(&n)));
+            if let Ok((_, Some(c))) = next {
+                clearance = Some(clearance.map_or(c, |m: S| m.min(c)));
+            }
             *lane = Lane {
                 index: j,
+                next,
                 rng: rng::rng_from_seed(Batches::<S>::stream_seed(batches.seed, j)),
                 trials: 0,
                 found: None,
                 events: heapless::Vec::new(),
             };
+        }
+        if let Some(c) = clearance {
+            self.prepare_batch(cells, c, |i| batches.last_of(i));
         }
         Plan { first, end, clearance }
     }

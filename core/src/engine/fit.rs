@@ -12,6 +12,7 @@ use crate::scalar::Scalar;
 use crate::shape::ShapeKind;
 
 /// What a placement needs that stays fixed over its trials.
+#[derive(Clone, Copy, Debug)]
 pub(super) struct NextShape<S> {
     pub(super) index: u64,
     pub(super) kind: ShapeKind,

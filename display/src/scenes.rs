@@ -363,7 +363,6 @@ pub fn run_fast<S: Scalar, D: DrawTarget<Color = BinaryColor>>(
 ) -> Result<Outcome, RunError<D::Error>> {
     let region = scene.region.region().map_err(RunError::Region)?;
     let params = scene.params().map_err(RunError::Param)?;
-    let shapes = params.shape.clone();
     let mut engine = Engine::<S>::new(params, region, storage).map_err(RunError::Param)?;
     let mut sampler = CellSampler::new(cells).map_err(|_| RunError::Param(ParamError::Storage))?;
     let size = target.bounding_box().size;
@@ -371,28 +370,7 @@ pub fn run_fast<S: Scalar, D: DrawTarget<Color = BinaryColor>>(
     let mut rng = zetafill::rng_from_seed(scene.seed);
     let mut ticks = 0u64;
     if scene.batched {
-        let mut lanes: [Lane<S>; SCENE_BATCH] = core::array::from_fn(|_| Lane::default());
-        let mut batches = Batches::new(&mut lanes, scene.seed, SCENE_BATCH).map_err(|_| RunError::Param(ParamError::Storage))?;
-        let stop = Stop {
-            count: Some(scene.count),
-            ..Stop::default()
-        };
-        let mut drawn = Ok(());
-        let (t0, mut drawing) = (clock(), 0u64);
-        let reason = engine.run_batched(&mut sampler, &mut batches, &stop, |p| {
-            let d0 = clock();
-            let s = p.shape;
-            let geo = shapes.kind_of(p.index).geo(Point::new(s.x, s.y), s.scale, s.angle);
-            if drawn.is_ok() {
-                drawn = paint(scene, &view, &geo, target);
-            }
-            drawing = drawing.wrapping_add(clock().wrapping_sub(d0));
-        });
-        ticks = clock().wrapping_sub(t0).wrapping_sub(drawing);
-        drawn.map_err(RunError::Draw)?;
-        if let StopReason::Step(e) = reason {
-            return Err(RunError::Step(e));
-        }
+        ticks = run_batches(scene, &mut engine, &mut sampler, &view, target, &mut clock)?;
     }
     while (engine.placed().len() as u64) < scene.count {
         let t0 = clock();
@@ -410,6 +388,44 @@ pub fn run_fast<S: Scalar, D: DrawTarget<Color = BinaryColor>>(
         trials: engine.stats().trials,
         ticks,
     })
+}
+
+/// The batched part of [`run_fast`], out of line so that its lanes take stack only while a
+/// batched scene runs: the placements with the batched sampler, drawn as they are committed,
+/// and the clock ticks they took less the drawing's.
+#[inline(never)]
+fn run_batches<S: Scalar, D: DrawTarget<Color = BinaryColor>>(
+    scene: &Scene,
+    engine: &mut Engine<'_, S>,
+    sampler: &mut CellSampler<'_, S>,
+    view: &View,
+    target: &mut D,
+    clock: &mut impl FnMut() -> u64,
+) -> Result<u64, RunError<D::Error>> {
+    let mut lanes: [Lane<S>; SCENE_BATCH] = core::array::from_fn(|_| Lane::default());
+    let mut batches = Batches::new(&mut lanes, scene.seed, SCENE_BATCH).map_err(|_| RunError::Param(ParamError::Storage))?;
+    let stop = Stop {
+        count: Some(scene.count),
+        ..Stop::default()
+    };
+    let shapes = engine.params().shape.clone();
+    let mut drawn = Ok(());
+    let (t0, mut drawing) = (clock(), 0u64);
+    let reason = engine.run_batched(sampler, &mut batches, &stop, |p| {
+        let d0 = clock();
+        let s = p.shape;
+        let geo = shapes.kind_of(p.index).geo(Point::new(s.x, s.y), s.scale, s.angle);
+        if drawn.is_ok() {
+            drawn = paint(scene, view, &geo, target);
+        }
+        drawing = drawing.wrapping_add(clock().wrapping_sub(d0));
+    });
+    let ticks = clock().wrapping_sub(t0).wrapping_sub(drawing);
+    drawn.map_err(RunError::Draw)?;
+    match reason {
+        StopReason::Step(e) => Err(RunError::Step(e)),
+        _ => Ok(ticks),
+    }
 }
 
 #[cfg(test)]

@@ -210,45 +210,27 @@ fn thread_count_changes_no_bit() {
 /// another fill.
 #[test]
 fn prefixes_depend_on_neither_the_count_nor_the_storage() {
-    let p = params(ShapeKind::Circle);
-    let whole = fill::<f64>(
-        p.clone(),
-        square(false),
-        21,
-        Run {
-            cap: 2000,
-            count: 2000,
-            ..RUN
-        },
-    )
-    .0;
+    let circles = |run: Run| fill::<f64>(params(ShapeKind::Circle), square(false), 21, run).0;
+    let whole = circles(Run {
+        cap: 2000,
+        count: 2000,
+        ..RUN
+    });
     for (count, cap, spare_lanes) in [(777, 777, 0), (1000, 1500, 5), (1333, 2000, 9)] {
-        let part = fill::<f64>(
-            p.clone(),
-            square(false),
-            21,
-            Run {
-                cap,
-                count,
-                spare_lanes,
-                ..RUN
-            },
-        )
-        .0;
+        let part = circles(Run {
+            cap,
+            count,
+            spare_lanes,
+            ..RUN
+        });
         assert_eq!(&whole[..count as usize], &part[..], "count {count}, capacity {cap}");
     }
-    let other = fill::<f64>(
-        p.clone(),
-        square(false),
-        21,
-        Run {
-            cap: 2000,
-            count: 2000,
-            batch: 16,
-            ..RUN
-        },
-    )
-    .0;
+    let other = circles(Run {
+        cap: 2000,
+        count: 2000,
+        batch: 16,
+        ..RUN
+    });
     assert_ne!(whole, other, "batches of 16 and of 32 gave the same fill");
 }
 

@@ -95,7 +95,7 @@ use core::ops::{Add, Div, Mul, Neg, Sub};
 /// assert_eq!(Fixed::from_f64(0.5).to_bits(), 1 << 31);
 /// ```
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, PartialOrd, Ord, Hash)]
-pub struct Fixed(pub I32F32);
+pub struct Fixed(pub(crate) I32F32);
 
 impl Fixed {
     /// The largest value, 2^31 - 2^-32.

@@ -44,7 +44,8 @@ use core::ops::{Add, Div, Mul, Neg, Sub};
 /// assert_eq!(f64::from_f64(0.25).sqrt(), 0.5);
 /// ```
 pub trait Scalar:
-    Copy
+    sealed::Sealed
+    + Copy
     + Send
     + Sync
     + Default
@@ -225,6 +226,15 @@ const TURN_STEPS: [(u64, u64); 30] = [
     (0x3fc9c4266041ca8e, 0x3fef584f2ce43b84),
     (0x3fc8f8b83c69a60a, 0x3fef6297cff75cb0),
 ];
+
+/// Seals [`Scalar`]: the cell sampler's exactness argument rests on the rounding of the two
+/// scalars zetafill implements, so no other crate can add one.
+mod sealed {
+    /// Implemented for `f64` and [`crate::Fixed`] only.
+    pub trait Sealed {}
+    impl Sealed for f64 {}
+    impl Sealed for crate::fixed::Fixed {}
+}
 
 impl Scalar for f64 {
     /// From the table on hosts (a sine and a cosine less for each outline built: 4 to 10% of

@@ -37,7 +37,6 @@ use crate::rng::{self, ZetaRng};
 use crate::sampler::{CellSampler, Drawn, Event, What};
 use crate::scalar::Scalar;
 use crate::shape::Placed;
-use rand_core::SeedableRng;
 
 /// Events a lane keeps for the cells' replay (see [`Batches`]).
 pub const LANE_EVENTS: usize = 40;
@@ -81,7 +80,7 @@ impl<S> Default for Lane<S> {
         Lane {
             index: 0,
             next: Err(StepError::Capacity { capacity: 0 }),
-            rng: ZetaRng::seed_from_u64(0),
+            rng: crate::rng::rng_from_seed(0),
             trials: 0,
             found: None,
             events: heapless::Vec::new(),

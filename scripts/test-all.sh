@@ -43,6 +43,14 @@ if ! command -v qemu-system-arm >/dev/null 2>&1; then
 fi
 qemu-system-arm --version | head -n 1
 
+step "installing man (renders the generated manual pages)"
+if ! command -v man >/dev/null 2>&1; then
+    sudo=""
+    if [ "$(id -u)" -ne 0 ]; then sudo="sudo"; fi
+    $sudo apt-get update
+    $sudo apt-get install -y man-db
+fi
+
 step "installing defmt-print (decodes the firmware's defmt log on the host)"
 if ! command -v defmt-print >/dev/null 2>&1; then
     cargo install defmt-print --version =1.2.0 --locked

@@ -18,9 +18,7 @@ if [ "$(wasm-bindgen --version 2>/dev/null || true)" != "wasm-bindgen $version" 
         cargo install wasm-bindgen-cli --version "=$version"
 fi
 
-# No debug information in the page (the release profile keeps some for native profiling).
-CARGO_PROFILE_RELEASE_DEBUG=0 \
-    cargo build --release -p zetafill-web --target wasm32-unknown-unknown
+cargo build --release -p zetafill-web --target wasm32-unknown-unknown
 target_dir=$(cargo metadata --format-version 1 --no-deps | sed -n 's/.*"target_directory":"\([^"]*\)".*/\1/p')
 
 rm -rf web/dist

@@ -57,5 +57,29 @@ pub fn run(cli: Cli) -> Result<(), CliError> {
         Command::Tile(a) => cmd::tile::run(&plan::tile::resolve(&a)?),
         Command::Stats(s) => cmd::stats::run(&plan::stats::resolve(&s)?),
         Command::Machines(m) => cmd::machines::run(&plan::machines::resolve(&m)),
+        Command::Completions(a) => print_generated(|out| {
+            clap_complete::generate(a.shell, &mut <Cli as clap::CommandFactory>::command(), "zetafill", out);
+            Ok(())
+        }),
+        Command::Man(a) => print_generated(|out| man_page(a.subcommand.as_deref(), out)),
     }
+}
+
+/// The roff page of the tool, or of `subcommand` (titled `zetafill-NAME`), into `out`.
+pub fn man_page(subcommand: Option<&str>, out: &mut dyn std::io::Write) -> std::io::Result<()> {
+    let tool = <Cli as clap::CommandFactory>::command();
+    match subcommand.and_then(|name| tool.find_subcommand(name).map(|c| (name, c))) {
+        Some((name, c)) => {
+            clap_mangen::Man::new(c.clone().name(format!("zetafill-{name}")).bin_name(format!("zetafill {name}"))).render(out)
+        }
+        None => clap_mangen::Man::new(tool).render(out),
+    }
+}
+
+/// Writes what `make` generates to standard output (a closed pipe is an I/O error, exit 1).
+fn print_generated(make: impl FnOnce(&mut dyn std::io::Write) -> std::io::Result<()>) -> Result<(), CliError> {
+    let mut out = std::io::BufWriter::new(std::io::stdout().lock());
+    make(&mut out)
+        .and_then(|()| std::io::Write::flush(&mut out))
+        .map_err(|e| CliError::Io(format!("cannot write to standard output: {e}")))
 }

@@ -10,6 +10,7 @@ pub mod line;
 pub mod machines;
 pub mod plot;
 pub mod raster;
+pub mod shell;
 pub mod space;
 pub mod spec;
 pub mod stats;
@@ -50,4 +51,8 @@ pub enum Command {
     Stats(stats::StatsCommand),
     /// Machine profiles for G-code: list the built-ins, or show one as TOML.
     Machines(machines::MachinesArgs),
+    /// Shell completions (bash, zsh, fish, elvish, powershell), on standard output.
+    Completions(shell::CompletionsArgs),
+    /// The manual page (roff) of zetafill or of one subcommand, on standard output.
+    Man(shell::ManArgs),
 }

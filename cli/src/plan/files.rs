@@ -51,6 +51,8 @@ pub fn of(cmd: &Command) -> Files<'_> {
         },
         // Reads a profile and prints it: nothing is written.
         Command::Machines(_) => {}
+        // Print to standard output only.
+        Command::Completions(_) | Command::Man(_) => {}
     }
     f
 }

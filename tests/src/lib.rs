@@ -145,3 +145,9 @@ pub fn parse_fill(args: &[String]) -> zetafill_cli::args::fill::FillArgs {
         Err(e) => panic!("bad arguments {args:?}: {e}"),
     }
 }
+
+/// The code blocks of docs/library.md, each a whole program, compiled and run as doctests: the
+/// page's examples cannot fall behind the API.
+#[cfg(doctest)]
+#[doc = include_str!("../../docs/library.md")]
+pub struct LibraryPage;

@@ -7,6 +7,7 @@
 
 pub mod geometry;
 pub mod safety;
+pub mod schema;
 pub mod svgread;
 pub mod voronoi;
 
@@ -53,8 +54,10 @@ pub fn zf_ok(dir: &Path, args: &[&str]) -> Out {
 /// Runs `zetafill ARGS` (exit 0 required) and parses its standard output as one JSON value.
 pub fn zf_json(dir: &Path, args: &[&str]) -> Value {
     let o = zf_ok(dir, args);
-    serde_json::from_slice(&o.stdout)
-        .unwrap_or_else(|e| panic!("{args:?}: not one JSON object ({e}): {}", String::from_utf8_lossy(&o.stdout)))
+    let v = serde_json::from_slice(&o.stdout)
+        .unwrap_or_else(|e| panic!("{args:?}: not one JSON object ({e}): {}", String::from_utf8_lossy(&o.stdout)));
+    schema::check_document(&v);
+    v
 }
 
 /// A `w x h` greyscale PNG, black where `dark(x, y)` (pixel centres, y down) and white
@@ -97,9 +100,12 @@ pub fn read(p: &Path) -> Vec<u8> {
     std::fs::read(p).unwrap_or_else(|e| panic!("cannot read {}: {e}", p.display()))
 }
 
-/// Parses JSON bytes.
+/// Parses JSON bytes; a document of the tool's must follow its schema
+/// ([`schema::check_document`]).
 pub fn parse_json(bytes: &[u8]) -> Value {
-    serde_json::from_slice(bytes).unwrap_or_else(|e| panic!("bad JSON ({e}): {}", String::from_utf8_lossy(bytes)))
+    let v = serde_json::from_slice(bytes).unwrap_or_else(|e| panic!("bad JSON ({e}): {}", String::from_utf8_lossy(bytes)));
+    schema::check_document(&v);
+    v
 }
 
 /// Runs `COMMAND ARGS -o NAME` in `dir` (exit 0 required) and returns the file's bytes.

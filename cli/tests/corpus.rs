@@ -51,9 +51,9 @@ const CORPUS: &[(&str, i32, &str)] = &[
     // fill: pictures and colour
     ("fill --count 300 --style filled --palette {P5} --background fefae0 --pixels 200 -o palette.png", 0, "7f28aff83924e7ac2e86c2114e1e8225dfd94935aee8ebb32a9bd697807c302c"),
     ("fill --count 200 --boundary --pen-width 0.5 --region circle:60 --dpi 48 -o circle.png", 0, "34ab17b609bab1fc610c870dcef0103c2a780adc0a0111bd6d659168e024d274"),
-    ("fill --count 300 --periodic --relief dome --pixels 160 -o relief-dome.png", 0, "90b7df6bc0d8af683111cc032b1002734a09313f8218f21fd93229e1bca67451"),
-    ("fill --shape star:5:0.45 --c 1.2 --n-offset 3 --count 200 --relief cone --pixels 160 -o relief-cone.png", 0, "376500bc36f44745becb42782d24deb1b12a014a323b661454b183bd718814b7"),
-    ("fill --shape ring:0.5 --n-offset 2 --count 200 --relief flat --pixels 120 -o relief-flat.png", 0, "f5f2a2ee3d6bd22ef5c4625abd5de90b0fd9014699bacc2b66b5eee6bd89bf60"),
+    ("fill --count 300 --periodic --relief dome --pixels 160 -o relief-dome.png", 0, "da5244fa8cfa4cf7114df1d8d3581c7782ae6d0abb154290703d59aea9c9e789"),
+    ("fill --shape star:5:0.45 --c 1.2 --n-offset 3 --count 200 --relief cone --pixels 160 -o relief-cone.png", 0, "0b73836a7425c91e6eeca0ae07f30ab530ed6505e2b130fcdbb944803ba7ab2e"),
+    ("fill --shape ring:0.5 --n-offset 2 --count 200 --relief flat --pixels 120 -o relief-flat.png", 0, "42a2b786b630626cc97e64aa6a9a918e4d0929ff0c7cacbb71c1b81296e6fe76"),
     ("fill --count 300 --voronoi -o cobbles.svg", 0, "a71c06101b00d436c986becdbf0cfe0c6604ddbc64ee86f72a53e7128ca7759a"),
     ("fill --count 300 --c 1.2 --n-offset 2 --periodic --region rect:120:120 --voronoi --style filled --palette {P5} --color-by random --background fefae0 --pixels 200 -o glass.png", 0, "9854d42406a202784ba75f35f7d71467ae0a9ca4c4e530c126ac5fc45a88e10f"),
     // fill: plotters and lasers
@@ -95,7 +95,7 @@ const CORPUS: &[(&str, i32, &str)] = &[
     ("tile -q --render voronoi --tries 3000 --style filled -o tile-cobbles.svg", 0, "3f9587ebeb85ff6e83a81052f5569a8c2e51dea62f0cfb1d41946c0bed00c108"),
     ("tile -q --tries 3000 -o tile.json", 0, "944afa512f8bfad169d8e54d3ea894995e88afca75042856bc281cfd63cd4b5c"),
     ("tile -q --tries 3000 --machine z-lift-pen -o tile.gcode", 0, "a73e179b0637ff0d5faa5d383a0323a2a93eebba185c66f61b60f872ff7d6676"),
-    ("tile -q --tries 3000 --render voronoi --relief cone --pixels 160 -o tile-relief.png", 0, "a95a71b26e8bca4c25e14b0d5dbbeee14e3069755dc3438b2cc11dd864690134"),
+    ("tile -q --tries 3000 --render voronoi --relief cone --pixels 160 -o tile-relief.png", 0, "cbaef63968704711ce7ed612f1dd115182dd445bfad473d2accaedf833bce85f"),
     ("tile -q --tries 3000 --palette 1d3557,e63946 --color-by random --layers colours -o tile-pens.svg", 0, "5ca2d76a9fd8c87c5dea835df5bf6f95eefb91775f50dea23bf0dfe231d49580"),
     // stats and machines
     ("stats zeta --c 1.3 --n-offset 1", 0, "2f1c2422e62b57f6bd209e33494dd7709cb1fd4711db092819ca41c8adeeae80"),

@@ -1,5 +1,5 @@
 //! Polygon region benchmark, in one run: the time to validate an outline before the edge tree
-//! (`internals::region::legacy`: every pair of edges, an O(R) ring lookup per edge), with no
+//! (`core/tests/oracles/legacy_region.rs`: every pair of edges, an O(R) ring lookup per edge), with no
 //! scratch (`PolygonRegion::new`: every pair of edges) and with the tree
 //! (`PolygonRegion::new_in`); then fills of 200 circles (c = 1.25, N = 3, seed 1) in a wavy
 //! outline with and without the tree, with the cell sampler and with the reference sampler
@@ -14,8 +14,10 @@
 // Checks may use the platform's maths: only what the tool writes must go through libm.
 #![allow(clippy::disallowed_methods)]
 
+#[path = "../tests/oracles/legacy_region.rs"]
+mod legacy;
+
 use std::time::Instant;
-use zetafill::internals::region::legacy;
 use zetafill::{
     cells_for, index_words, rng_from_seed, CellSampler, Engine, Params, Placed, Point, PolygonRegion, Region, Stop, StopReason, Storage,
 };

@@ -4,14 +4,16 @@
 //! overlaps, touching rings, folds, holes, rings crossing, zero-length edges, nearly collinear
 //! floating-point vertices): the same accept or reject, the same area bits, the same holes,
 //! and the same answer and bits from every query a fill asks. Both are also held to the check
-//! as it stood before the tree (`internals::region::legacy`), which may only differ by
+//! as it stood before the tree (`oracles/legacy_region.rs`), which may only differ by
 //! rejecting a pair of edges whose boxes lie far apart (a rounding artefact), and region
 //! containment to the test as it stood before.
 // Checks may use the platform's maths: only what the tool writes must go through libm.
 #![allow(clippy::disallowed_methods)]
 
+#[path = "oracles/legacy_region.rs"]
+mod legacy;
+
 use zetafill::internals::geom::{point_in_poly, seg_seg_dist2, segments_intersect};
-use zetafill::internals::region::legacy;
 use zetafill::{Fixed, Geo, Point, PolygonRegion, Region, RegionError, Scalar, ShapeKind};
 
 /// splitmix64: a small, fixed generator for the cases.

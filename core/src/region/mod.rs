@@ -42,7 +42,8 @@
 //!   test already did). Such edges never meet; the floating-point segment test can still call
 //!   four nearly collinear points far apart a crossing, which no index could reproduce short
 //!   of asking every pair. Skipping them is the one change from the checks before the tree:
-//!   the check as it stood (`internals::region::legacy`) rejected such outlines.
+//!   the check as it stood (kept as a test oracle, `core/tests/oracles/legacy_region.rs`) rejected
+//!   such outlines.
 //! - The even-odd count only counts edges that span the point's height and reach right of
 //!   it (an edge with no point to the right never counts, in any monotone rounding), so the
 //!   tree skips boxes that do not: the same parity.
@@ -50,7 +51,6 @@
 //!   2^17 over it, is beyond the reach or the best so far: the same minimum (distances are
 //!   never NaN or `-0` there). On other scalars ([`Scalar::IS_F64`]) queries visit every edge.
 
-pub mod legacy;
 mod polygon;
 mod rings;
 mod simple;

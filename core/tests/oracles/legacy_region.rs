@@ -1,33 +1,25 @@
-//! The polygon check as it stood before the edge tree, kept word for word as the benchmark's
-//! "before" and a test oracle: every pair of edges through the floating-point test alone (no
-//! bounding-box test first), each edge's ring found by a walk over the ring ends, and each
-//! ring's depth from its first vertex against every other ring. O(E² R) time; no scratch.
+//! The polygon check as it stood before the edge tree, kept word for word as a test oracle
+//! and as the region benchmark's "before": every pair of edges through the floating-point
+//! test alone (no bounding-box test first), each edge's ring found by a walk over the ring
+//! ends, and each ring's depth from its first vertex against every other ring. O(E² R) time;
+//! no scratch. It lives with the tests, not in the library.
 //!
-//! It differs from [`PolygonRegion::new_in`](crate::PolygonRegion::new_in) and
-//! [`PolygonRegion::new`](crate::PolygonRegion::new) only where the floating-point test
-//! reports two edges whose boxes lie farther apart than the region's margin (10^-9 of the
-//! largest coordinate) as crossing, four nearly collinear points far apart: it rejects those
-//! outlines, the region accepts them.
+//! It differs from `PolygonRegion::new_in` and `PolygonRegion::new` only where the
+//! floating-point test reports two edges whose boxes lie farther apart than the region's
+//! margin (10^-9 of the largest coordinate) as crossing, four nearly collinear points far
+//! apart: it rejects those outlines, the region accepts them.
 
-use super::polygon::ring_slices;
-use super::RegionError;
-use crate::geom::{edges, point_in_poly, segments_intersect, Point};
+use zetafill::internals::geom::{edges, point_in_poly, segments_intersect};
+use zetafill::{Point, RegionError};
+
+/// The rings of `points`, split at the exclusive indices `ends`.
+fn ring_slices<'a>(points: &'a [Point<f64>], ends: &'a [usize]) -> impl Iterator<Item = &'a [Point<f64>]> + 'a {
+    let starts = core::iter::once(0).chain(ends.iter().copied());
+    starts.zip(ends.iter().copied()).map(move |(a, b)| points.get(a..b).unwrap_or(&[]))
+}
 
 /// Validates rings as the region did before the edge tree and returns the area (holes
 /// subtracted), or the same errors in the same order of checks.
-///
-/// # Examples
-///
-/// ```
-/// use zetafill::internals::region::legacy;
-/// use zetafill::{Point, RegionError};
-///
-/// let p = Point::new;
-/// let square = [p(0.0, 0.0), p(10.0, 0.0), p(10.0, 10.0), p(0.0, 10.0)];
-/// assert_eq!(legacy::validate(&square, &[4]), Ok(100.0));
-/// let bow_tie = [p(0.0, 0.0), p(10.0, 10.0), p(10.0, 0.0), p(0.0, 10.0)];
-/// assert_eq!(legacy::validate(&bow_tie, &[4]), Err(RegionError::SelfIntersecting));
-/// ```
 pub fn validate(points: &[Point<f64>], ring_ends: &[usize]) -> Result<f64, RegionError> {
     let mut start = 0usize;
     for &e in ring_ends {

@@ -266,6 +266,44 @@ pub struct Stop {
     pub min_size: Option<f64>,
 }
 
+impl Stop {
+    /// The condition that holds before placement `n`, given the area (length, volume)
+    /// `covered` of the first `n` out of `total`, in the one order every engine checks them:
+    /// the count, then the covered fraction, then the next shape's narrowest width
+    /// (`next_width`, asked only when a minimum size is set).
+    pub(crate) fn holds(&self, n: u64, covered: f64, total: f64, next_width: impl FnOnce() -> f64) -> Option<StopReason> {
+        if self.count.is_some_and(|k| n >= k) {
+            return Some(StopReason::Count);
+        }
+        if self.fill.is_some_and(|f| covered >= f * total) {
+            return Some(StopReason::Fill);
+        }
+        if self.min_size.is_some_and(|m| next_width() < m) {
+            return Some(StopReason::MinSize);
+        }
+        None
+    }
+}
+
+/// The loop of every engine's `run`: steps `engine` until `stops` names a reason or a step
+/// fails, calling `on_place` after each placement.
+pub(crate) fn run_until<E, P>(
+    engine: &mut E,
+    stops: impl Fn(&E) -> Option<StopReason>,
+    mut on_place: impl FnMut(&P),
+    mut step: impl FnMut(&mut E) -> Result<P, StepError>,
+) -> StopReason {
+    loop {
+        if let Some(reason) = stops(engine) {
+            return reason;
+        }
+        match step(engine) {
+            Ok(p) => on_place(&p),
+            Err(e) => return StopReason::Step(e),
+        }
+    }
+}
+
 /// Why [`crate::Engine::run`] stopped: one of the [`Stop`] conditions (see its example), or
 /// a [`StepError`] (see its example).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -42,9 +42,10 @@ use crate::geom::{Geo, Point};
 pub use crate::params::{ParamError, Params, StepError, Stop, StopReason};
 use crate::region::Region;
 use crate::rng;
-use crate::scalar::{powf, Scalar};
+use crate::scalar::Scalar;
 use crate::shape::{Placed, ShapeKind};
 use crate::spatial::SpatialHash;
+use crate::AreaSequence;
 pub use batch::{Batches, Lane, NoLanes, Plan, DEFAULT_BATCH, LANE_EVENTS};
 pub use density::Density;
 use density::{kept_at, Thinning};
@@ -169,8 +170,8 @@ pub struct Engine<'a, S: Scalar> {
     len: usize,
     hash: SpatialHash<'a, S>,
     coverage: Coverage<'a, S>,
-    zeta: f64,
-    area: f64,
+    /// The areas `A_i`, over the region's area.
+    seq: AreaSequence,
     placed_area: f64,
     trials: u64,
     gap: S,
@@ -279,7 +280,7 @@ impl<'a, S: Scalar> Engine<'a, S> {
         if shapes.is_empty() || index.len() <= shapes.len() {
             return Err(ParamError::Storage);
         }
-        let zeta = crate::zeta::zeta(params.c, params.n_offset).map_err(|_| ParamError::Zeta)?;
+        let seq = AreaSequence::new(region.area(), params.c, params.n_offset).map_err(|_| ParamError::Zeta)?;
         let (next, heads) = index.split_at_mut(shapes.len());
         let hash = SpatialHash::new(heads, next, S::from_f64(w.max(h))).map_err(|_| ParamError::Storage)?;
         let (x0, y0, _, _) = region.bbox();
@@ -298,8 +299,7 @@ impl<'a, S: Scalar> Engine<'a, S> {
             len: 0,
             hash,
             coverage,
-            zeta,
-            area: region.area(),
+            seq,
             placed_area: 0.0,
             trials: 0,
             gap,
@@ -335,17 +335,17 @@ impl<'a, S: Scalar> Engine<'a, S> {
 
     /// zeta(c, N) used for the area sequence.
     pub fn zeta(&self) -> f64 {
-        self.zeta
+        self.seq.zeta()
     }
 
     /// The region's area A.
     pub fn total_area(&self) -> f64 {
-        self.area
+        self.seq.total()
     }
 
     /// A_i = A / (zeta(c, N) (i + N)^c).
     pub fn area_of(&self, i: u64) -> f64 {
-        self.area / (self.zeta * powf(i as f64 + self.params.n_offset, self.params.c))
+        self.seq.area(i)
     }
 
     /// The shape kind of placement `i`.
@@ -370,7 +370,7 @@ impl<'a, S: Scalar> Engine<'a, S> {
         Stats {
             placed: self.len as u64,
             trials: self.trials,
-            fill_fraction: self.placed_area / self.area,
+            fill_fraction: self.placed_area / self.seq.total(),
         }
     }
 
@@ -534,35 +534,18 @@ impl<'a, S: Scalar> Engine<'a, S> {
     /// The stop condition that holds before the next placement, if any.
     fn stops(&self, stop: &Stop) -> Option<StopReason> {
         let n = self.len as u64;
-        if stop.count.is_some_and(|k| n >= k) {
-            return Some(StopReason::Count);
-        }
-        if stop.fill.is_some_and(|f| self.placed_area >= f * self.area) {
-            return Some(StopReason::Fill);
-        }
-        if let Some(m) = stop.min_size {
+        stop.holds(n, self.placed_area, self.seq.total(), || {
             let kind = self.kind_of(n);
-            if kind.min_width(kind.scale_for_area(self.area_of(n))) < m {
-                return Some(StopReason::MinSize);
-            }
-        }
-        None
+            kind.min_width(kind.scale_for_area(self.area_of(n)))
+        })
     }
 
     fn run_with(
         &mut self,
         stop: &Stop,
-        mut on_place: impl FnMut(&Placement<S>),
-        mut step: impl FnMut(&mut Self) -> Result<Placement<S>, StepError>,
+        on_place: impl FnMut(&Placement<S>),
+        step: impl FnMut(&mut Self) -> Result<Placement<S>, StepError>,
     ) -> StopReason {
-        loop {
-            if let Some(reason) = self.stops(stop) {
-                return reason;
-            }
-            match step(self) {
-                Ok(p) => on_place(&p),
-                Err(e) => return StopReason::Step(e),
-            }
-        }
+        crate::params::run_until(self, |e| e.stops(stop), on_place, step)
     }
 }

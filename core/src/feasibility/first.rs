@@ -5,9 +5,8 @@
 use super::AreaSequence;
 use crate::params::Params;
 use crate::region::Region;
-use crate::scalar::{powf, sqrtf};
+use crate::scalar::sqrtf;
 use crate::shape::{ShapeKind, ShapeList};
-use crate::zeta;
 
 /// The first shape of a fill: its kind, area and narrowest width, for messages about a first
 /// shape that does not fit (the engine reports that as [`crate::StepError::CannotFit`] or a
@@ -167,11 +166,10 @@ pub fn check_first_two(params: &Params, region: &Region<'_>) -> Result<(), First
     }
     let n_offset = params.n_offset;
     let fits = |c: f64| {
-        let Ok(z) = zeta::zeta(c, n_offset) else {
+        let Ok(seq) = AreaSequence::new(width * height, c, n_offset) else {
             return false;
         };
-        let a = |i: f64| width * height / (z * powf(i + n_offset, c));
-        first_two_fit(&kind, a(0.0), a(1.0), width, height, params.gap)
+        first_two_fit(&kind, seq.area(0), seq.area(1), width, height, params.gap)
     };
     if fits(params.c) {
         return Ok(());

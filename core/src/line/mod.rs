@@ -28,7 +28,8 @@ use crate::digest::{add_shape, Fnv1a};
 use crate::engine::Stats;
 use crate::params::{ParamError, StepError, Stop, StopReason};
 use crate::rng;
-use crate::scalar::{powf, Scalar};
+use crate::scalar::Scalar;
+use crate::AreaSequence;
 use rand_core::RngCore;
 
 mod fast;
@@ -232,7 +233,8 @@ pub struct LineEngine<'a, S: Scalar> {
     /// Segments `0..hashed` are in the hash; the exact sampler leaves the rest out until a
     /// test needs them ([`LineEngine::catch_up`]).
     hashed: usize,
-    zeta: f64,
+    /// The lengths `L_i`, over the interval's length.
+    seq: AreaSequence,
     placed_length: f64,
     trials: u64,
     gap: S,
@@ -268,7 +270,7 @@ impl<'a, S: Scalar> LineEngine<'a, S> {
         if segments.is_empty() || index.len() <= segments.len() || segments.len() >= NIL as usize {
             return Err(ParamError::Storage);
         }
-        let zeta = crate::zeta::zeta(params.c, params.n_offset).map_err(|_| ParamError::Zeta)?;
+        let seq = AreaSequence::new(interval.length, params.c, params.n_offset).map_err(|_| ParamError::Zeta)?;
         let (next, heads) = index.split_at_mut(segments.len());
         let hash = LineHash::new(heads, next, S::from_f64(l)).ok_or(ParamError::Storage)?;
         Ok(LineEngine {
@@ -278,7 +280,7 @@ impl<'a, S: Scalar> LineEngine<'a, S> {
             len: 0,
             hash,
             hashed: 0,
-            zeta,
+            seq,
             placed_length: 0.0,
             trials: 0,
             gap: S::from_f64(params.gap),
@@ -299,12 +301,12 @@ impl<'a, S: Scalar> LineEngine<'a, S> {
 
     /// zeta(c, N) used for the length sequence.
     pub fn zeta(&self) -> f64 {
-        self.zeta
+        self.seq.zeta()
     }
 
     /// L_i = L / (zeta(c, N) (i + N)^c).
     pub fn length_of(&self, i: u64) -> f64 {
-        self.interval.length / (self.zeta * powf(i as f64 + self.params.n_offset, self.params.c))
+        self.seq.area(i)
     }
 
     /// The segments placed so far, in placement order.
@@ -469,25 +471,14 @@ impl<'a, S: Scalar> LineEngine<'a, S> {
     fn run_with(
         &mut self,
         stop: &Stop,
-        mut on_place: impl FnMut(&LinePlacement<S>),
-        mut step: impl FnMut(&mut Self) -> Result<LinePlacement<S>, StepError>,
+        on_place: impl FnMut(&LinePlacement<S>),
+        step: impl FnMut(&mut Self) -> Result<LinePlacement<S>, StepError>,
     ) -> StopReason {
-        loop {
-            let n = self.len as u64;
-            if stop.count.is_some_and(|k| n >= k) {
-                return StopReason::Count;
-            }
-            if stop.fill.is_some_and(|f| self.placed_length >= f * self.interval.length) {
-                return StopReason::Fill;
-            }
-            if stop.min_size.is_some_and(|m| self.length_of(n) < m) {
-                return StopReason::MinSize;
-            }
-            match step(self) {
-                Ok(p) => on_place(&p),
-                Err(e) => return StopReason::Step(e),
-            }
-        }
+        let stops = |e: &Self| {
+            let n = e.len as u64;
+            stop.holds(n, e.placed_length, e.interval.length, || e.length_of(n))
+        };
+        crate::params::run_until(self, stops, on_place, step)
     }
 }
 

@@ -431,28 +431,16 @@ impl<'a, S: Scalar> SpaceEngine<'a, S> {
     pub(crate) fn run_with(
         &mut self,
         stop: &Stop,
-        mut on_place: impl FnMut(&SpacePlacement<S>),
-        mut step: impl FnMut(&mut Self) -> Result<SpacePlacement<S>, StepError>,
+        on_place: impl FnMut(&SpacePlacement<S>),
+        step: impl FnMut(&mut Self) -> Result<SpacePlacement<S>, StepError>,
     ) -> StopReason {
-        loop {
-            let n = self.len as u64;
-            if stop.count.is_some_and(|k| n >= k) {
-                return StopReason::Count;
-            }
-            if stop.fill.is_some_and(|f| self.placed_volume >= f * self.seq.total()) {
-                return StopReason::Fill;
-            }
-            let kind = self.kind_of(n);
-            if stop
-                .min_size
-                .is_some_and(|m| kind.min_width(kind.scale_for_volume(self.volume_of(n))) < m)
-            {
-                return StopReason::MinSize;
-            }
-            match step(self) {
-                Ok(p) => on_place(&p),
-                Err(e) => return StopReason::Step(e),
-            }
-        }
+        let stops = |e: &Self| {
+            let n = e.len as u64;
+            stop.holds(n, e.placed_volume, e.seq.total(), || {
+                let kind = e.kind_of(n);
+                kind.min_width(kind.scale_for_volume(e.volume_of(n)))
+            })
+        };
+        crate::params::run_until(self, stops, on_place, step)
     }
 }

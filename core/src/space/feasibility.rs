@@ -6,7 +6,6 @@ use super::region::SpaceRegion;
 use super::solid::{Solid, SolidList};
 use crate::feasibility::{capacity, AreaSequence, CapacityError};
 use crate::params::Stop;
-use crate::zeta;
 
 /// [`crate::internals::feasibility::capacity`] for solids: the width of solid `k` is its
 /// narrowest width at volume `seq.area(k)`.
@@ -72,7 +71,7 @@ pub fn check_first_solid(params: &SpaceParams, region: &SpaceRegion) -> Result<(
     let kind = params.solids.kind_of(0);
     let periodic = region.periodic();
     let fits = |c: f64| {
-        let v = region.volume() / (zeta::zeta(c, params.n_offset).unwrap_or(f64::MAX) * libm::pow(params.n_offset, c));
+        let v = AreaSequence::new(region.volume(), c, params.n_offset).map_or(0.0, |s| s.area(0));
         let scale = kind.scale_for_volume(v);
         if periodic {
             // Its image one period away must clear it by the gap too.
@@ -191,11 +190,10 @@ pub fn check_first_two_solids(params: &SpaceParams, region: &SpaceRegion) -> Res
     let kind = *kind;
     let n = params.n_offset;
     let fits = |c: f64| {
-        let Ok(z) = zeta::zeta(c, n) else {
+        let Ok(seq) = AreaSequence::new(region.volume(), c, n) else {
             return false;
         };
-        let v = |i: f64| region.volume() / (z * libm::pow(i + n, c));
-        let (s0, s1) = (kind.scale_for_volume(v(0.0)), kind.scale_for_volume(v(1.0)));
+        let (s0, s1) = (kind.scale_for_volume(seq.area(0)), kind.scale_for_volume(seq.area(1)));
         first_two_solids_fit(kind, params.rotate, s0, s1, region, params.gap)
     };
     if fits(params.c) {
@@ -235,7 +233,7 @@ mod tests {
         let c = e.err().and_then(|e| e.max_c).unwrap_or(0.0);
         assert!(c > 1.3 && c < 1.8, "{c}");
         // At the limit the diameter is the period.
-        let v = region.volume() / (zeta::zeta(c, 1.0).unwrap_or(f64::MAX));
+        let v = region.volume() / (crate::zeta::zeta(c, 1.0).unwrap_or(f64::MAX));
         let d = 2.0 * Solid::Sphere.scale_for_volume(v);
         assert!((d - 100.0).abs() < 1e-6 && d <= 100.0, "{d}");
         assert!(check_first_solid(&SpaceParams::spheres(c, 1.0), &region).is_ok());

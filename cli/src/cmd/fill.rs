@@ -341,10 +341,10 @@ pub fn svg_options(doc: &FillDoc, d: &FillDraw) -> Result<output::svg::SvgOption
         page,
         layers: d.size_layers,
         build: d.build,
-        flags: flags + &d.colour_flags,
-        colours: d.palette.as_ref().map(|p| shape_colours(doc, d, &p.0)),
-        background: d.background.clone(),
-        colour_layers: d.palette.as_ref().filter(|_| d.colour_layers).map(|p| p.0.clone()),
+        flags: flags + &d.colours.flags,
+        colours: d.colours.palette.as_ref().map(|p| shape_colours(doc, d, &p.0)),
+        background: d.colours.background.clone(),
+        colour_layers: d.colours.palette.as_ref().filter(|_| d.colours.layers).map(|p| p.0.clone()),
     })
 }
 
@@ -355,7 +355,7 @@ fn shape_colours(doc: &FillDoc, d: &FillDraw, palette: &[output::palette::Colour
         let kind = d.shapes.kind_of(i);
         d.shapes.kinds().iter().position(|k| *k == kind).unwrap_or(0)
     };
-    output::palette::assign(doc, palette, d.color_by, entry)
+    output::palette::assign(doc, palette, d.colours.by, entry)
 }
 
 /// How `--voronoi` draws the cobblestones: edges, or cells filled in their shapes' colours.
@@ -368,13 +368,13 @@ fn cobble_look(doc: &FillDoc, d: &FillDraw) -> crate::cmd::cobble::Look {
     if d.boundary {
         flags.push_str(" --boundary");
     }
-    flags.push_str(&d.colour_flags);
+    flags.push_str(&d.colours.flags);
     crate::cmd::cobble::Look {
         filled,
         pen_width: d.pen_width,
         outline: d.boundary,
-        colours: d.palette.as_ref().map(|p| shape_colours(doc, d, &p.0)),
-        background: d.background.clone(),
+        colours: d.colours.palette.as_ref().map(|p| shape_colours(doc, d, &p.0)),
+        background: d.colours.background.clone(),
         flags,
     }
 }
@@ -406,10 +406,10 @@ pub fn output<'a>(doc: &'a FillDoc, format: Format, d: &FillDraw) -> Result<Outp
         Format::Svg => output::svg::output(&output::svg::picture(doc, &svg_options(doc, d)?))?,
         Format::Gcode => {
             let gcode = d.gcode.as_ref().ok_or_else(no_gcode)?;
-            match (&d.palette, d.colour_layers) {
+            match (&d.colours.palette, d.colours.layers) {
                 (Some(p), true) => {
                     let colours = shape_colours(doc, d, &p.0);
-                    crate::cmd::plot::gcode_pens_output(doc, gcode, Some((&colours, &p.0, d.colour_flags.clone())), d.quiet)?
+                    crate::cmd::plot::gcode_pens_output(doc, gcode, Some((&colours, &p.0, d.colours.flags.clone())), d.quiet)?
                 }
                 _ => crate::cmd::plot::gcode_pens_output(doc, gcode, None, d.quiet)?,
             }

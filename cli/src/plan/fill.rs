@@ -12,9 +12,9 @@ use crate::model::doc::kind_name;
 use crate::model::fill::BuildOptions;
 use crate::model::region::RegionSpec;
 use crate::output::height::Relief;
-use crate::output::palette::{ColorBy, Colour, Palette};
 use crate::output::png::Raster;
 use crate::output::svg::Style;
+use crate::plan::colour::Colours;
 use crate::plan::format::Format;
 use crate::plan::plot::FOR_GCODE;
 use crate::plan::plot::{GcodePlan, PagePlan};
@@ -123,16 +123,8 @@ pub struct FillDraw {
     pub size_layers: Option<u32>,
     /// The plot flags as command-line text.
     pub plot_flags: String,
-    /// The palette, if any.
-    pub palette: Option<Palette>,
-    /// How shapes take the palette's colours.
-    pub color_by: ColorBy,
-    /// One layer (one pen) per palette colour.
-    pub colour_layers: bool,
-    /// A colour behind the drawing.
-    pub background: Option<Colour>,
-    /// The colour flags as command-line text.
-    pub colour_flags: String,
+    /// The colours, as the colour flags set them.
+    pub colours: Colours,
     /// The shapes of the run, to tell each shape's entry in a mix.
     pub shapes: ShapeList,
     /// G-code: the machine and its placement.
@@ -317,11 +309,7 @@ pub fn resolve_as(a: &FillArgs, format: Format) -> Result<(FillRun, FillDraw), C
             _ => None,
         },
         plot_flags: a.plot.flags(),
-        palette: a.colour.palette.clone(),
-        color_by: a.colour.by(),
-        colour_layers,
-        background: a.colour.background.clone(),
-        colour_flags: a.colour.flags(),
+        colours: a.colour.colours(colour_layers),
         shapes,
         gcode: if format == Format::Gcode {
             Some(GcodePlan::resolve(&a.plot)?)

@@ -8,9 +8,9 @@ use crate::args::line::{LineArgs, RenderArg, MAX_SEGMENTS};
 use crate::args::plot::{Layers, PlotArgs};
 use crate::error::CliError;
 use crate::io::write::Dest;
-use crate::output::palette::{ColorBy, Colour, Palette};
 use crate::output::png::Raster;
 use crate::output::svg::Style;
+use crate::plan::colour::Colours;
 use crate::plan::format::Format;
 use crate::plan::plot::GcodePlan;
 use crate::plan::plot::FOR_GCODE;
@@ -77,16 +77,8 @@ pub struct LineDraw {
     pub boundary: bool,
     /// PNG size.
     pub raster: Raster,
-    /// The palette, if any.
-    pub palette: Option<Palette>,
-    /// How segments take the palette's colours.
-    pub color_by: ColorBy,
-    /// One layer (one pen) per palette colour (a palette is then given).
-    pub colour_layers: bool,
-    /// A colour behind the drawing.
-    pub background: Option<Colour>,
-    /// The colour flags as command-line text.
-    pub colour_flags: String,
+    /// The colours, as the colour flags set them.
+    pub colours: Colours,
     /// G-code: the machine and its placement.
     pub gcode: Option<GcodePlan>,
     /// No G-code figures on stderr.
@@ -216,11 +208,7 @@ fn resolve_format(a: &LineArgs, format: Format) -> Result<(LineRun, LineDraw), C
         zoom_center: a.zoom_center.unwrap_or(a.length / 2.0),
         boundary: a.boundary,
         raster: a.raster.raster(),
-        palette: a.colour.palette.clone(),
-        color_by: a.colour.by(),
-        colour_layers: colour_layers && a.colour.palette.is_some(),
-        background: a.colour.background.clone(),
-        colour_flags: a.colour.flags(),
+        colours: a.colour.colours(colour_layers && a.colour.palette.is_some()),
         gcode: if format == Format::Gcode {
             Some(GcodePlan::resolve(&a.plot)?)
         } else {

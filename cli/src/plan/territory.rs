@@ -14,8 +14,9 @@ use crate::geometry::site::SiteError;
 use crate::geometry::voronoi::Pt;
 use crate::io::write::Dest;
 use crate::model::region::RegionSpec;
-use crate::output::palette::{ColorBy, Colour, Palette};
+use crate::output::palette::ColorBy;
 use crate::output::png::Raster;
+use crate::plan::colour::Colours;
 use crate::plan::format::TerritoryFormat;
 use crate::plan::plot::GcodePlan;
 use crate::plan::plot::FOR_GCODE;
@@ -81,14 +82,8 @@ pub struct TerritoryDraw {
     pub boundary: bool,
     /// PNG size.
     pub raster: Raster,
-    /// Palette colours instead of the colour rules.
-    pub palette: Option<Palette>,
-    /// How sites take the palette's colours (`cycle`, by territory, unless given).
-    pub color_by: ColorBy,
-    /// A colour behind the drawing.
-    pub background: Option<Colour>,
-    /// The colour flags as command-line text.
-    pub colour_flags: String,
+    /// The colours, as the colour flags set them.
+    pub colours: Colours,
     /// The plot flags as command-line text.
     pub plot_flags: String,
     /// G-code: the machine and its placement.
@@ -192,10 +187,13 @@ pub fn resolve_as(a: &TerritoryArgs, format: TerritoryFormat) -> Result<(Territo
         thin_width: a.thin_width,
         boundary: a.boundary,
         raster: a.raster.raster(),
-        palette: a.colours.palette.clone(),
-        color_by: a.colours.by_or(COLOUR_BY),
-        background: a.colours.background.clone(),
-        colour_flags: a.colours.flags_or(COLOUR_BY),
+        colours: Colours {
+            palette: a.colours.palette.clone(),
+            by: a.colours.by_or(COLOUR_BY),
+            layers: false,
+            background: a.colours.background.clone(),
+            flags: a.colours.flags_or(COLOUR_BY),
+        },
         plot_flags: a.plot.flags(),
         gcode: if format == TerritoryFormat::Gcode {
             Some(GcodePlan::resolve(&a.plot)?)

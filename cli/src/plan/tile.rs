@@ -11,8 +11,8 @@ use crate::io::write::Dest;
 use crate::model::tile::{Arrangement, Layout, LayoutError, Render, SpecError, Style, TileSpec, MAX_DISCS};
 use crate::output::height::Relief;
 use crate::output::num;
-use crate::output::palette::{ColorBy, Colour, Palette};
 use crate::output::png::Raster;
+use crate::plan::colour::Colours;
 use crate::plan::format::TileFormat;
 use crate::plan::plot::GcodePlan;
 use crate::plan::plot::FOR_GCODE;
@@ -57,16 +57,8 @@ pub struct TileDraw {
     pub raster: Raster,
     /// Stroke width of outlines (mm).
     pub pen_width: f64,
-    /// The palette, if any.
-    pub palette: Option<Palette>,
-    /// How pieces take the palette's colours.
-    pub color_by: ColorBy,
-    /// One layer (one pen) per palette colour (a palette is then given).
-    pub colour_layers: bool,
-    /// A colour behind the drawing.
-    pub background: Option<Colour>,
-    /// The colour flags as command-line text.
-    pub colour_flags: String,
+    /// The colours, as the colour flags set them.
+    pub colours: Colours,
     /// The plot flags as command-line text.
     pub plot_flags: String,
     /// G-code: the machine and its placement.
@@ -165,11 +157,7 @@ pub fn resolve_as(a: &TileArgs, format: TileFormat) -> Result<(TileRun, TileDraw
         relief: a.relief.map(Relief::from),
         raster: a.raster.raster(),
         pen_width: a.pen_width,
-        palette: a.colour.palette.clone(),
-        color_by: a.colour.by(),
-        colour_layers: a.plot.layers == Layers::Colours && a.colour.palette.is_some(),
-        background: a.colour.background.clone(),
-        colour_flags: a.colour.flags(),
+        colours: a.colour.colours(a.plot.layers == Layers::Colours && a.colour.palette.is_some()),
         plot_flags: a.plot.flags(),
         gcode: if format == TileFormat::Gcode {
             Some(GcodePlan::resolve(&a.plot)?)

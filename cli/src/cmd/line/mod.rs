@@ -225,13 +225,13 @@ pub fn output<'a>(doc: &'a LineDoc, format: Format, d: &LineDraw) -> Result<Outp
         zoom_fraction: d.zoom_fraction,
         zoom_center: d.zoom_center,
         boundary: d.boundary,
-        colours: d.palette.as_ref().map(|p| {
+        colours: d.colours.palette.as_ref().map(|p| {
             let items: Vec<(u64, f64)> = doc.shapes.iter().map(|s| (s.index, s.length)).collect();
-            crate::output::palette::assign_items(&p.0, d.color_by, doc.params.seed, &items, |_| 0)
+            crate::output::palette::assign_items(&p.0, d.colours.by, doc.params.seed, &items, |_| 0)
         }),
-        background: d.background.clone(),
-        colour_flags: d.colour_flags.clone(),
-        colour_layers: d.palette.as_ref().filter(|_| d.colour_layers).map(|p| p.0.clone()),
+        background: d.colours.background.clone(),
+        colour_flags: d.colours.flags.clone(),
+        colour_layers: d.colours.palette.as_ref().filter(|_| d.colours.layers).map(|p| p.0.clone()),
     };
     Ok(match format {
         Format::Svg => crate::output::svg::output(&picture(doc, &opt))?,

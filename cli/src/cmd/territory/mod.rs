@@ -80,7 +80,7 @@ fn command_line(a: &TerritoryRun, d: &TerritoryDraw, points: usize, region: &str
         }
     }
     s.push_str(&format!(" --render {}", d.render.name()));
-    s.push_str(&d.colour_flags);
+    s.push_str(&d.colours.flags);
     if d.pen_width != 0.3 {
         s.push_str(&format!(" --pen-width {}", d.pen_width));
     }
@@ -310,8 +310,8 @@ pub fn render_bytes(o: &Outcome, run: &TerritoryRun, d: &TerritoryDraw, format: 
             pen_width: d.pen_width,
             thin_width: d.thin_width,
             outline: d.boundary,
-            background: d.background.as_deref(),
-            flat: d.palette.is_some(),
+            background: d.colours.background.as_deref(),
+            flat: d.colours.palette.is_some(),
         };
         let mut pic = render::picture(o, &site_colours(o, d, run.seed), &style);
         pic.title = format!(
@@ -339,7 +339,7 @@ pub fn render_bytes(o: &Outcome, run: &TerritoryRun, d: &TerritoryDraw, format: 
 /// `--color-by`: `cycle` and `random` by territory, `size` by the area of what is drawn for
 /// the site (its cell within the region's box, or with `--render shapes` its shape).
 fn site_colours(o: &Outcome, d: &TerritoryDraw, seed: u64) -> Vec<String> {
-    let Some(p) = &d.palette else {
+    let Some(p) = &d.colours.palette else {
         return o.doc.sites.iter().map(|s| colour::hex(s.color)).collect();
     };
     let areas: Vec<f64> = if d.render == Render::Shapes {
@@ -354,7 +354,7 @@ fn site_colours(o: &Outcome, d: &TerritoryDraw, seed: u64) -> Vec<String> {
         .zip(areas.iter().chain(std::iter::repeat(&0.0)))
         .map(|(s, &area)| (u64::from(s.territory), area))
         .collect();
-    crate::output::palette::assign_items(&p.0, d.color_by, seed, &items, |_| 0)
+    crate::output::palette::assign_items(&p.0, d.colours.by, seed, &items, |_| 0)
 }
 
 /// The G-code plan of a drawing that has none (it was resolved for another format).

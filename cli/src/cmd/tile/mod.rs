@@ -23,7 +23,7 @@ use std::io::IsTerminal;
 /// copy's scale (`scales`). Ids are the tile's discs, so every image and copy of a disc takes
 /// the same colour (but for size).
 fn piece_colours(d: &TileDraw, seed: u64, tags: &[render::Tag], scales: &[f64]) -> Option<Vec<crate::output::palette::Colour>> {
-    let p = d.palette.as_ref()?;
+    let p = d.colours.palette.as_ref()?;
     let items: Vec<(u64, f64)> = scales
         .iter()
         .enumerate()
@@ -32,7 +32,7 @@ fn piece_colours(d: &TileDraw, seed: u64, tags: &[render::Tag], scales: &[f64]) 
             t.map_or((0, 0.0), |t| (t.disc as u64, t.r * s))
         })
         .collect();
-    Some(crate::output::palette::assign_items(&p.0, d.color_by, seed, &items, |_| 0))
+    Some(crate::output::palette::assign_items(&p.0, d.colours.by, seed, &items, |_| 0))
 }
 
 /// The drawing as G-code: the strokes of its picture (circles as arcs where the machine
@@ -233,7 +233,7 @@ fn command_line(a: &TileRun, d: &TileDraw) -> String {
     if d.pen_width != 0.3 {
         s.push_str(&format!(" --pen-width {}", d.pen_width));
     }
-    s.push_str(&d.colour_flags);
+    s.push_str(&d.colours.flags);
     s.push_str(&d.plot_flags);
     s
 }
@@ -340,8 +340,8 @@ pub fn output(a: &TileRun, d: &TileDraw, format: TileFormat) -> Result<(Tile, Ve
         TileFormat::Gcode => {
             let (laid, scales) = arr.lay_out_scaled(&pieces, w, h, false);
             let colours = piece_colours(d, a.spec.seed, &tags, &scales);
-            let pens = match (&d.palette, &colours) {
-                (Some(p), Some(cs)) if d.colour_layers => Some((&p.0[..], &cs[..])),
+            let pens = match (&d.colours.palette, &colours) {
+                (Some(p), Some(cs)) if d.colours.layers => Some((&p.0[..], &cs[..])),
                 _ => None,
             };
             gcode(laid, arr.sheet(w, h), a.style, d, a.quiet, command_line(a, d), pens)?
@@ -371,8 +371,8 @@ pub fn output(a: &TileRun, d: &TileDraw, format: TileFormat) -> Result<(Tile, Ve
                 pen_width: d.pen_width,
                 clip: whole,
                 colours: colours.as_deref(),
-                background: d.background.as_deref(),
-                layers: d.palette.as_ref().filter(|_| d.colour_layers).map(|p| &p.0[..]),
+                background: d.colours.background.as_deref(),
+                layers: d.colours.palette.as_ref().filter(|_| d.colours.layers).map(|p| &p.0[..]),
             };
             let svg = svg(laid, arr.sheet(w, h), &look, &title, &command_line(a, d));
             if format == TileFormat::Png {

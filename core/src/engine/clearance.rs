@@ -48,7 +48,7 @@ impl<S: Scalar> Engine<'_, S> {
                             kind.geo_into(&mut other, Point::new(p.x, p.y), p.scale, p.angle);
                             separated(image, &other, gap)
                         });
-                    if !ok && (!lowest || self.hash.level_for(their_r) == level) {
+                    if !ok && (!lowest || self.hash.level_for(their_r + their_r) == level) {
                         hit.set(Some(hit.get().map_or(j, |h| h.min(j))));
                     }
                     ok || lowest

@@ -272,7 +272,7 @@ impl<'a, S: Scalar> LineEngine<'a, S> {
         }
         let seq = AreaSequence::new(interval.length, params.c, params.n_offset).map_err(|_| ParamError::Zeta)?;
         let (next, heads) = index.split_at_mut(segments.len());
-        let hash = LineHash::new(heads, next, S::from_f64(l)).ok_or(ParamError::Storage)?;
+        let hash = LineHash::new(heads, next, S::from_f64(l)).map_err(|_| ParamError::Storage)?;
         Ok(LineEngine {
             params,
             interval,

@@ -166,7 +166,7 @@ impl<'a, S: Scalar> SpaceEngine<'a, S> {
         let seq = AreaSequence::new(region.volume(), params.c, params.n_offset).map_err(|_| ParamError::Zeta)?;
         let largest = ext.iter().fold(0.0f64, |m, &e| m.max(e));
         let (next, heads) = index.split_at_mut(solids.len());
-        let hash = Hash3::new(heads, next, S::from_f64(largest)).ok_or(ParamError::Storage)?;
+        let hash = Hash3::new(heads, next, S::from_f64(largest)).map_err(|_| ParamError::Storage)?;
         Ok(SpaceEngine {
             gap: S::from_f64(params.gap),
             region,

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Builds the browser page into web/dist/, installing what it needs first:
 #   bash web/build.sh
-# The wasm32-unknown-unknown Rust target (rustup) and wasm-bindgen-cli (cargo, from crates.io) at
+# The wasm32-unknown-unknown Rust target (rustup), binaryen (npm) and wasm-bindgen-cli (cargo, from crates.io) at
 # exactly the version of the wasm-bindgen crate in Cargo.lock. Serve the result with any static
 # file server, for example: python3 -m http.server -d web/dist 8000
 set -euo pipefail
@@ -27,5 +27,13 @@ rm -rf web/dist
 mkdir -p web/dist
 wasm-bindgen --target web --no-typescript --out-dir web/dist \
     "$target_dir/wasm32-unknown-unknown/web/zetafill_web.wasm"
+# binaryen's wasm-opt (npm, pinned in web/package.json) shrinks the code and drops the names
+# section; it keeps the semantics exactly (no fast-math), so every file stays the CLI's.
+(cd web && npm ci --no-audit --no-fund --silent)
+web/node_modules/.bin/wasm-opt -Oz --strip-debug --strip-producers \
+    --enable-bulk-memory --enable-nontrapping-float-to-int --enable-sign-ext --enable-mutable-globals \
+    web/dist/zetafill_web_bg.wasm -o web/dist/zetafill_web_bg.wasm
 cp web/static/* web/dist/
+# The built-in font is fetched by the page when a text region asks for it, not embedded.
+cp cli/assets/fonts/DejaVuSans-Bold.ttf cli/assets/fonts/DejaVu-LICENSE.txt web/dist/
 echo "built web/dist/ ($(du -sh web/dist | cut -f1)); serve it with: python3 -m http.server -d web/dist 8000"

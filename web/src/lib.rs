@@ -107,10 +107,14 @@ pub struct Session {
 #[wasm_bindgen]
 impl Session {
     /// Checks `zetafill fill ARGV` (without the program and subcommand names) as the binary
-    /// does; `outline` holds the bytes of the SVG file of `--region svg:FILE`, if any. The
-    /// error is the binary's message.
+    /// does; `outline` holds the bytes of the SVG file of `--region svg:FILE`, if any, and
+    /// `font` those of the built-in font's file, which the wasm does not embed (a text region
+    /// without `--font` needs it). The error is the binary's message.
     #[wasm_bindgen(constructor)]
-    pub fn new(argv: Vec<String>, outline: Option<Vec<u8>>) -> Result<Session, String> {
+    pub fn new(argv: Vec<String>, outline: Option<Vec<u8>>, font: Option<Vec<u8>>) -> Result<Session, String> {
+        if let Some(font) = font {
+            zetafill_cli::io::font::provide_builtin(font);
+        }
         let (run, _, _) = plan(&argv, outline.as_deref())?;
         let frame = frame(&run)?;
         Ok(Session {

@@ -7,6 +7,16 @@ import init, { Session, output } from './zetafill_web.js';
 
 let session = null;
 
+// The built-in font is not in the wasm: a text region without `--font` fetches its file (once
+// per worker; the browser's cache keeps it between workers).
+const FONT = 'DejaVuSans-Bold.ttf';
+async function fontFor(argv) {
+  const at = argv.indexOf('--region');
+  const text = argv.some((w) => w.startsWith('--region=text:')) || (at >= 0 && argv[at + 1]?.startsWith('text:'));
+  if (!text || argv.includes('--font')) return undefined;
+  return new Uint8Array(await (await fetch(FONT)).arrayBuffer());
+}
+
 function fail(e) {
   postMessage({ type: 'error', message: String(e) });
 }
@@ -14,7 +24,7 @@ function fail(e) {
 async function run({ module, argv, digestArgv, outline }) {
   await init({ module_or_path: module });
   try {
-    session = new Session(argv, outline ?? undefined);
+    session = new Session(argv, outline ?? undefined, await fontFor(argv));
   } catch (e) {
     return fail(e);
   }

@@ -115,13 +115,15 @@ async function compareAll(page) {
 }
 
 // Parameter sets, as the page's URL carries them: every region kind, shapes, mixes, both
-// samplers, both stop kinds beyond the count, c and D, gap, periodic, colour rules.
+// samplers, both stop kinds beyond the count, c and D, gap, periodic, colour rules, letters.
 const SETS = [
   '?until=800',
   '?shape=star:5:0.5&region=circle:80&exponent=1.25&until=300&seed=7&style=outline&palette=',
   '?shape=mix:circle,square,triangle&mix-order=random&periodic=true&region=rect:150:100&law=dimension&exponent=1.6&n-offset=2&stop=fill&until=0.5&gap=0.5&seed=3&color-by=kind',
   '?shape=ring:0.5&region=annulus:100:40&n-offset=6&until=200&rotate=none&sampler=reference&seed=11&background=fefae0',
   '?shape=blob:0.3&region=polygon:0,0,200,0,100,173.2&stop=min-size&until=4&seed=5&color-by=random',
+  // Letters: the built-in font is fetched by the worker, not embedded in the wasm.
+  '?region=text:ZF&n-offset=10&until=300&seed=2',
 ];
 
 for (const query of SETS) {

@@ -19,8 +19,37 @@ use std::path::Path;
 use ttf_parser::{Face, GlyphId, OutlineBuilder};
 use zetafill::Point;
 
-/// The font used without `--font`: DejaVu Sans Bold.
+/// The font used without `--font`: DejaVu Sans Bold, embedded by the `builtin-font` feature (on
+/// by default). The browser page builds without it and fetches the file only when a text asks
+/// for it ([`provide_builtin`]).
+#[cfg(feature = "builtin-font")]
 pub const BUILTIN: &[u8] = include_bytes!("../../assets/fonts/DejaVuSans-Bold.ttf");
+
+/// The built-in font handed over by a build that does not embed it.
+#[cfg(not(feature = "builtin-font"))]
+static PROVIDED: std::sync::OnceLock<&'static [u8]> = std::sync::OnceLock::new();
+
+/// The built-in font's bytes: the embedded file.
+#[cfg(feature = "builtin-font")]
+pub fn builtin() -> Option<&'static [u8]> {
+    Some(BUILTIN)
+}
+
+/// The built-in font's bytes: the file handed over by [`provide_builtin`], `None` before that.
+#[cfg(not(feature = "builtin-font"))]
+pub fn builtin() -> Option<&'static [u8]> {
+    PROVIDED.get().copied()
+}
+
+/// Hands the built-in font's file (`cli/assets/fonts/DejaVuSans-Bold.ttf`) to a build that
+/// does not embed it; the first call wins, as the file is always the same. A build that embeds
+/// it keeps its own copy.
+pub fn provide_builtin(bytes: Vec<u8>) {
+    #[cfg(not(feature = "builtin-font"))]
+    let _ = PROVIDED.set(Vec::leak(bytes));
+    #[cfg(feature = "builtin-font")]
+    drop(bytes);
+}
 
 /// The largest font file read.
 pub const MAX_FONT_BYTES: u64 = 32 << 20;
@@ -47,6 +76,8 @@ pub enum FontError {
     Read(std::io::Error),
     /// The file is empty.
     Empty,
+    /// No `--font` is given and this build holds no built-in font (the page has not fetched it).
+    NoBuiltin,
     /// The bytes are not a font `ttf-parser` reads (its reason).
     NotAFont(String),
     /// The font has no glyph for this character.
@@ -265,7 +296,7 @@ impl OutlineBuilder for Pen {
     }
 }
 
-#[cfg(test)]
+#[cfg(all(test, feature = "builtin-font"))]
 mod tests {
     use super::*;
 

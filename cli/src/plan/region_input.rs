@@ -209,7 +209,10 @@ fn text(lines: &[String], a: &RegionInputArgs, spec: &RegionSpec) -> Result<(Reg
         }
         None => None,
     };
-    let bytes = file.as_ref().map_or(crate::io::font::BUILTIN, |f| f.bytes.as_slice());
+    let bytes = match &file {
+        Some(f) => f.bytes.as_slice(),
+        None => crate::io::font::builtin().ok_or_else(|| font_error(FontError::NoBuiltin, None))?,
+    };
     let set = Setting {
         size: a.text_size.unwrap_or(DEFAULT_TEXT_SIZE),
         spacing: a.letter_spacing.unwrap_or(0.0),
@@ -278,6 +281,7 @@ fn font_error(e: FontError, path: Option<&Path>) -> CliError {
     let (flag, msg) = match e {
         FontError::Read(e) => ("--font", format!("cannot read {name}: {e}")),
         FontError::Empty => ("--font", format!("{name} is empty; give a TrueType or OpenType font file")),
+        FontError::NoBuiltin => ("--font", format!("{name} is not loaded in this build; give --font FILE")),
         FontError::NotAFont(why) => (
             "--font",
             format!("{name} is not a TrueType or OpenType font ({why}); give a .ttf or .otf file"),

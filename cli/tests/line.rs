@@ -154,25 +154,25 @@ fn csv_and_digest_agree_with_json_and_the_core() {
         let mut a = vec!["line", "--format", "digest", "-o", "-", "--sampler", sampler];
         a.extend_from_slice(&args);
         let out = String::from_utf8(zf_ok(d.path(), &a).stdout).unwrap_or_default();
-        let mut segs = vec![zetafill::Segment::<f64>::default(); 401];
-        let mut index = vec![0u32; zetafill::line_index_words(401)];
-        let mut words = vec![zetafill::LineGap::default(); zetafill::line_gaps_for(401)];
-        let storage = zetafill::LineStorage {
+        let mut segs = vec![zetafill::line::Segment::<f64>::default(); 401];
+        let mut index = vec![0u32; zetafill::line::index_words(401)];
+        let mut words = vec![zetafill::line::Gap::default(); zetafill::line::gaps_for(401)];
+        let storage = zetafill::line::Storage {
             segments: &mut segs,
             index: &mut index,
         };
-        let interval = zetafill::Interval {
+        let interval = zetafill::line::Interval {
             length: 200.0,
             periodic: true,
         };
-        let mut e = zetafill::LineEngine::new(zetafill::LineParams::new(1.5, 1.0), interval, storage).unwrap_or_else(|e| panic!("{e}"));
+        let mut e = zetafill::line::Engine::new(zetafill::line::Params::new(1.5, 1.0), interval, storage).unwrap_or_else(|e| panic!("{e}"));
         let mut rng = zetafill::rng_from_seed(3);
         let stop = zetafill::Stop {
             count: Some(400),
             ..zetafill::Stop::default()
         };
         if sampler == "fast" {
-            let mut gaps = zetafill::LineGaps::new(&mut words).unwrap_or_else(|e| panic!("{e}"));
+            let mut gaps = zetafill::line::Gaps::new(&mut words).unwrap_or_else(|e| panic!("{e}"));
             e.run_fast(&mut gaps, &mut rng, &stop, |_| {});
         } else {
             e.run(&mut rng, &stop, |_| {});

@@ -147,10 +147,11 @@ fn a_shorter_run_is_a_prefix_of_a_longer_one() {
 /// The CLI's digest is the core's, for each sampler (the cell sampler is the default).
 #[test]
 fn the_digest_is_the_cores() {
-    use zetafill::{
-        digest::space_digest, rng_from_seed, space_cells_for, space_index_words, PlacedSolid, Solid, SpaceCell, SpaceCells, SpaceEngine,
-        SpaceParams, SpaceRegion, SpaceStorage, Stop,
+    use zetafill::space::{
+        cells_for as space_cells_for, index_words as space_index_words, Cell as SpaceCell, CellSampler as SpaceCells,
+        Engine as SpaceEngine, Params as SpaceParams, Placed as PlacedSolid, Region as SpaceRegion, Solid, Storage as SpaceStorage,
     };
+    use zetafill::{digest::space_digest, rng_from_seed, Stop};
     let dir = tmp();
     for sampler in ["fast", "reference"] {
         let line = String::from_utf8(space_to(

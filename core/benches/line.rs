@@ -10,9 +10,11 @@
 
 mod common;
 use common::cpu_seconds;
-use zetafill::{
-    line_gaps_for, line_index_words, rng_from_seed, Interval, LineEngine, LineGap, LineGaps, LineParams, LineStorage, Segment, Stop,
+use zetafill::line::{
+    gaps_for as line_gaps_for, index_words as line_index_words, Engine as LineEngine, Gap as LineGap, Gaps as LineGaps, Interval,
+    Params as LineParams, Segment, Storage as LineStorage,
 };
+use zetafill::{rng_from_seed, Stop};
 
 /// One fill of `n` segments: its trials, the gap sampler's rejections, and the CPU seconds.
 fn fill(n: usize, fast: bool, periodic: bool) -> (Vec<u64>, String, f64) {

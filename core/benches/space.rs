@@ -12,10 +12,11 @@
 //!     cargo bench -p zetafill --bench space [-- N N ... | -- rings]
 
 use std::time::Instant;
-use zetafill::{
-    rng_from_seed, space_cells_for, space_index_words, PlacedSolid, Solid, SpaceCell, SpaceCells, SpaceEngine, SpaceParams, SpaceRegion,
-    SpaceStorage, Stop,
+use zetafill::space::{
+    cells_for as space_cells_for, index_words as space_index_words, Cell as SpaceCell, CellSampler as SpaceCells, Engine as SpaceEngine,
+    Params as SpaceParams, Placed as PlacedSolid, Region as SpaceRegion, Solid, Storage as SpaceStorage,
 };
+use zetafill::{rng_from_seed, Stop};
 
 /// An inclusive cube of side `side` mm.
 fn cube(side: f64) -> SpaceRegion {

@@ -23,10 +23,11 @@
 //! target of 120 bytes a shape. Lent less, the sampler stops splitting sooner and stays exact;
 //! its fill is another one, equally reproducible.
 
-use zetafill::{
-    line_gaps_for, line_index_words, rng_from_seed, CellWords, Interval, LineEngine, LineGap, LineGaps, LineParams, LineStorage, Params,
-    Segment, ShapeKind, Stop,
+use zetafill::line::{
+    gaps_for as line_gaps_for, index_words as line_index_words, Engine as LineEngine, Gap as LineGap, Gaps as LineGaps, Interval,
+    Params as LineParams, Segment, Storage as LineStorage,
 };
+use zetafill::{rng_from_seed, CellWords, Params, ShapeKind, Stop};
 
 mod common;
 use common::{cell_fill, cell_fill_lent, cpu_seconds};

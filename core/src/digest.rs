@@ -89,21 +89,22 @@ pub fn engine_digest<S: Scalar>(e: &Engine<'_, S>) -> (u64, u64) {
 ///
 /// ```
 /// use zetafill::digest::space_digest;
-/// use zetafill::{rng_from_seed, space_index_words, PlacedSolid, SpaceEngine, SpaceParams, SpaceRegion, SpaceStorage, Stop};
+/// use zetafill::{rng_from_seed, Stop};
+/// use zetafill::space::{index_words, Engine, Params, Placed, Region, Storage};
 ///
 /// fn digest(seed: u64) -> (u64, u64) {
-///     let mut solids = vec![PlacedSolid::<f64>::default(); 50];
-///     let mut index = vec![0u32; space_index_words(50)];
-///     let storage = SpaceStorage { solids: &mut solids, index: &mut index };
-///     let region = SpaceRegion::Box { width: 10.0, height: 10.0, depth: 10.0, periodic: false };
-///     let mut engine = SpaceEngine::new(SpaceParams::spheres(1.15, 1.0), region, storage).expect("valid");
+///     let mut solids = vec![Placed::<f64>::default(); 50];
+///     let mut index = vec![0u32; index_words(50)];
+///     let storage = Storage { solids: &mut solids, index: &mut index };
+///     let region = Region::Box { width: 10.0, height: 10.0, depth: 10.0, periodic: false };
+///     let mut engine = Engine::new(Params::spheres(1.15, 1.0), region, storage).expect("valid");
 ///     engine.run(&mut rng_from_seed(seed), &Stop { count: Some(50), ..Stop::default() }, |_| {});
 ///     space_digest(&engine)
 /// }
 /// assert_eq!(digest(1), digest(1));
 /// assert_ne!(digest(1).1, digest(2).1);
 /// ```
-pub fn space_digest<S: Scalar>(e: &crate::space::SpaceEngine<'_, S>) -> (u64, u64) {
+pub fn space_digest<S: Scalar>(e: &crate::space3d::SpaceEngine<'_, S>) -> (u64, u64) {
     let mut h = Fnv1a::default();
     for (i, p) in e.placed().iter().enumerate() {
         for v in [p.x, p.y, p.z] {

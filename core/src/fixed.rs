@@ -7,7 +7,7 @@
 //! ## Range, resolution and the limits the engines enforce
 //! - Values: `[-2^31, 2^31 - 2^-32]`, about ±2.1e9 (mm); resolution `2^-32` ≈ 2.3e-10 mm.
 //! - **Regions: sides of at most 10,000 mm, lying within 10,000 mm of the origin**
-//!   ([`Scalar::MAX_EXTENT`]; [`crate::Engine::new`] and [`crate::LineEngine::new`] refuse
+//!   ([`Scalar::MAX_EXTENT`]; [`crate::Engine::new`] and [`crate::line::Engine::new`] refuse
 //!   a larger one with [`crate::ParamError::Extent`]). The geometry squares lengths; across
 //!   such a region (with a torus's images one period away) every product the tests and the
 //!   cell sampler form stays below 10^9 mm², under half the range, so nothing saturates (a

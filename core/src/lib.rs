@@ -37,23 +37,15 @@
 //!   is none) draws from exactly the same distribution with far fewer trials
 //!   ([`Engine::step_fast`]).
 //! - Before a fill: [`AreaSequence`] (the areas, zeta computed once; [`ZetaError`]),
-//!   [`shape_capacity`] / [`segment_capacity`] (the slots a stop condition needs, or a
+//!   [`shape_capacity`] (the slots a stop condition needs, or a
 //!   [`CapacityError`]), [`check_first_two`] and [`first_shape`] (first shapes that cannot
 //!   fit, with the largest c that works: [`FirstTwoError`], [`FirstShape`]), [`check_smallest`]
 //!   (last shapes narrower than the scalar resolves, [`TooSmall`]) and [`check_largest`]
 //!   (first shapes wider than it computes exactly, [`TooLarge`]).
-//! - 1D: [`LineEngine`], [`LineParams`], [`Interval`], [`LineStorage`] (sized with
-//!   [`line_index_words`]), [`Segment`], [`LinePlacement`]; the exact sampler keeps the free
-//!   gaps in [`LineGaps`] (storage [`LineGap`], sized with [`line_gaps_for`]; [`NoLineGaps`]
-//!   when there is too little) and draws each start uniformly over the valid ones in
-//!   O(log n) ([`LineEngine::step_fast`]).
-//! - 3D: [`SpaceEngine`] over [`SpaceStorage`] (sized with [`space_index_words`]), set up by
-//!   [`SpaceParams`] and a [`SpaceRegion`], with solids from [`Solid`] / [`SolidList`]; each
-//!   step gives a [`SpacePlacement`] of a [`PlacedSolid`]; before a fill [`space_capacity`] and
-//!   [`check_first_solid`] ([`FirstSolidError`]); the digest is [`digest::space_digest`]. The
-//!   octree cell sampler [`SpaceCells`] (storage [`SpaceCell`], sized with
-//!   [`space_cells_for`]; [`NoSpaceCells`] when there is too little) draws from exactly the
-//!   paper's distribution with far fewer trials ([`SpaceEngine::step_fast`]).
+//! - 1D and 3D: the modules [`line`](mod@line) and [`space`](mod@space) hold the same names for an interval and a
+//!   volume: `Params`, `Engine`, `Storage` (sized with `index_words`), `Placement`, the
+//!   regions [`line::Interval`] and [`space::Region`], `capacity`, and each one's exact
+//!   sampler ([`line::Gaps`], the free gaps; [`space::CellSampler`], the octree of cells).
 //! - Numbers and randomness: [`Scalar`] (`f64`, or [`Fixed`] for cores without an FPU),
 //!   [`rng_from_seed`] / [`ZetaRng`], and [`digest`] (the determinism digest).
 //!
@@ -101,12 +93,12 @@
 //! A placed shape takes `size_of::<Placed<f64>>()` = 32 bytes plus 12 bytes of index
 //! (one link and two buckets), 44 bytes in all with the recommended [`index_words`].
 //! The cell sampler borrows a slice of 32-byte [`CellWords`] besides; circle fills of c = 1.3
-//! hold at most about 15 of them per placed shape. The 3D cell sampler borrows 40-byte [`SpaceCell`]s: at most
-//! 64 per placed solid over a start of 16,384 ([`space_cells_for`]); sphere fills of c = 1.15
+//! hold at most about 15 of them per placed shape. The 3D cell sampler borrows 40-byte [`space::Cell`]s: at most
+//! 64 per placed solid over a start of 16,384 ([`space::cells_for`]); sphere fills of c = 1.15
 //! reach that budget from about 30,000 solids on (2 to 3 KB per solid). A polygon region's edge tree borrows 24
 //! bytes a vertex ([`PolygonRegion::scratch_words`]), or nothing ([`PolygonRegion::new`]).
-//! A segment takes 16 bytes plus 12 of index ([`line_index_words`]); the exact 1D sampler
-//! adds 41 bytes per segment: a little over five 8-byte [`LineGap`] words ([`line_gaps_for`]).
+//! A segment takes 16 bytes plus 12 of index ([`line::index_words`]); the exact 1D sampler
+//! adds 41 bytes per segment: a little over five 8-byte [`line::Gap`] words ([`line::gaps_for`]).
 
 #![no_std]
 #![deny(missing_docs, unsafe_code)]
@@ -120,7 +112,8 @@ mod engine;
 mod feasibility;
 mod fixed;
 mod geom;
-mod line;
+#[path = "line/mod.rs"]
+mod line1d;
 mod noise;
 mod params;
 mod region;
@@ -128,7 +121,8 @@ mod rng;
 mod sampler;
 mod scalar;
 mod shape;
-mod space;
+#[path = "space/mod.rs"]
+mod space3d;
 mod spatial;
 mod stats;
 mod zeta;
@@ -136,13 +130,10 @@ mod zeta;
 pub use self::fixed::Fixed;
 pub use engine::{index_words, Batches, Density, Engine, Lane, NoLanes, Placement, Plan, Stats, Storage, DEFAULT_BATCH, LANE_EVENTS};
 pub use feasibility::{
-    check_first_two, check_largest, check_smallest, first_shape, segment_capacity, shape_capacity, AreaSequence, CapacityError, FirstShape,
-    FirstTwoError, TooLarge, TooSmall,
+    check_first_two, check_largest, check_smallest, first_shape, shape_capacity, AreaSequence, CapacityError, FirstShape, FirstTwoError,
+    TooLarge, TooSmall,
 };
 pub use geom::{Geo, Point, Verts};
-pub use line::{
-    line_gaps_for, line_index_words, Interval, LineEngine, LineGap, LineGaps, LineParams, LinePlacement, LineStorage, NoLineGaps, Segment,
-};
 pub use noise::{Noise, NoiseError, NoiseKind, MAX_OCTAVES};
 pub use params::{ParamError, Params, StepError, Stop, StopReason};
 pub use region::{PolygonRegion, Region, RegionError};
@@ -150,12 +141,59 @@ pub use rng::{rng_from_seed, ZetaRng};
 pub use sampler::{cells_for, CellSampler, CellWords, NoCells};
 pub use scalar::Scalar;
 pub use shape::{MixOrder, Placed, ShapeKind, ShapeList, MAX_MIX};
-pub use space::{
-    check_first_solid, check_first_two_solids, space_capacity, space_cells_for, space_index_words, FirstSolidError, FirstTwoSolidsError,
-    NoSpaceCells, PlacedSolid, Solid, SolidList, SpaceCell, SpaceCells, SpaceEngine, SpaceParams, SpacePlacement, SpaceRegion,
-    SpaceStorage,
-};
 pub use zeta::ZetaError;
+
+/// The 1D fill: segments on an interval whose lengths follow the power law, placed by the
+/// paper's loop or by the exact sampler over the free gaps. The same names as the 2D fill at
+/// the crate root, for a line.
+///
+/// ```
+/// use zetafill::line::{index_words, Engine, Interval, Params, Segment, Storage};
+/// use zetafill::{rng_from_seed, Stop, StopReason};
+///
+/// let mut segments = [Segment::<f64>::default(); 100];
+/// let mut index = [0u32; index_words(100)];
+/// let storage = Storage { segments: &mut segments, index: &mut index };
+/// let mut engine = Engine::new(Params::new(1.3, 1.0), Interval { length: 200.0, periodic: false }, storage)?;
+/// let stop = Stop { count: Some(100), ..Stop::default() };
+/// assert_eq!(engine.run(&mut rng_from_seed(1), &stop, |_| {}), StopReason::Count);
+/// assert_eq!(engine.placed().len(), 100);
+/// # Ok::<(), zetafill::ParamError>(())
+/// ```
+pub mod line {
+    pub use crate::feasibility::segment_capacity as capacity;
+    pub use crate::line1d::{
+        line_gaps_for as gaps_for, line_index_words as index_words, Interval, LineEngine as Engine, LineGap as Gap, LineGaps as Gaps,
+        LineParams as Params, LinePlacement as Placement, LineStorage as Storage, NoLineGaps as NoGaps, Segment,
+    };
+}
+
+/// The 3D fill: solids in a box or a ball whose volumes follow the power law, placed by the
+/// paper's loop or by the octree cell sampler. The same names as the 2D fill at the crate
+/// root, for a volume.
+///
+/// ```
+/// use zetafill::space::{index_words, Engine, Params, Placed, Region, Storage};
+/// use zetafill::{rng_from_seed, Stop, StopReason};
+///
+/// let mut solids = [Placed::<f64>::default(); 50];
+/// let mut index = [0u32; index_words(50)];
+/// let storage = Storage { solids: &mut solids, index: &mut index };
+/// let region = Region::Box { width: 100.0, height: 100.0, depth: 100.0, periodic: false };
+/// let mut engine = Engine::new(Params::spheres(1.2, 2.0), region, storage)?;
+/// let stop = Stop { count: Some(50), ..Stop::default() };
+/// assert_eq!(engine.run(&mut rng_from_seed(1), &stop, |_| {}), StopReason::Count);
+/// # Ok::<(), zetafill::ParamError>(())
+/// ```
+pub mod space {
+    pub use crate::space3d::{
+        check_first_solid as check_first, check_first_two_solids as check_first_two, space_capacity as capacity,
+        space_cells_for as cells_for, space_index_words as index_words, FirstSolidError as FirstError,
+        FirstTwoSolidsError as FirstTwoError, NoSpaceCells as NoCells, PlacedSolid as Placed, Solid, SolidList, SpaceCell as Cell,
+        SpaceCells as CellSampler, SpaceEngine as Engine, SpaceParams as Params, SpacePlacement as Placement, SpaceRegion as Region,
+        SpaceStorage as Storage,
+    };
+}
 
 /// The building blocks under the public API, for zetafill's own crates (the command-line
 /// tool, the display and firmware crates, the tests and benchmarks).
@@ -177,7 +215,7 @@ pub mod internals {
     }
     /// The 1D fill and its digest.
     pub mod line {
-        pub use crate::line::*;
+        pub use crate::line1d::*;
     }
     /// Regions and their clearance tests.
     pub mod region {
@@ -207,7 +245,7 @@ pub mod internals {
     /// The 3D fill's building blocks: points and rotations, solids in place and their exact
     /// tests, the 3D hash's constants.
     pub mod space {
-        pub use crate::space::*;
+        pub use crate::space3d::*;
     }
     /// The fixed-capacity multi-level spatial hash.
     pub mod spatial {

@@ -75,7 +75,7 @@ impl Params {
 }
 
 /// What was wrong with the parameters, region or storage: [`crate::Engine::new`] and
-/// [`crate::LineEngine::new`] check everything once and say which value to change.
+/// [`crate::line::Engine::new`] check everything once and say which value to change.
 ///
 /// # Examples
 ///

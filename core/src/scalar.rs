@@ -64,7 +64,7 @@ pub trait Scalar:
     const ONE: Self;
     /// The largest region the geometry is exact for, in mm: a region's bounding box must have
     /// sides of at most this and lie within this of the origin on each axis (a 1D interval:
-    /// at most this long). [`crate::Engine::new`] and [`crate::LineEngine::new`] refuse a
+    /// at most this long). [`crate::Engine::new`] and [`crate::line::Engine::new`] refuse a
     /// larger one ([`crate::ParamError::Extent`]). `f64`: no limit.
     const MAX_EXTENT: f64;
     /// The narrowest shape (shortest segment) the geometry resolves, in mm: the engines place

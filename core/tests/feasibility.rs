@@ -2,10 +2,8 @@
 //! for the same parameters before those checks moved into the core (its messages round them
 //! to four decimals), and capacity against its definition.
 
-use zetafill::{
-    check_first_two, first_shape, segment_capacity, shape_capacity, AreaSequence, CapacityError, FirstTwoError, Params, Region, ShapeKind,
-    Stop,
-};
+use zetafill::line::capacity as segment_capacity;
+use zetafill::{check_first_two, first_shape, shape_capacity, AreaSequence, CapacityError, FirstTwoError, Params, Region, ShapeKind, Stop};
 
 fn params(kind: ShapeKind, c: f64, n_offset: f64, gap: f64) -> Params {
     let mut p = Params::circles(c, n_offset);

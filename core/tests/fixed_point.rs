@@ -13,10 +13,10 @@
 
 mod common;
 
+use zetafill::line::{Engine as LineEngine, Interval, Params as LineParams, Segment, Storage as LineStorage};
 use zetafill::{
-    cells_for, check_largest, check_smallest, rng_from_seed, AreaSequence, CellSampler, Engine, Fixed, Geo, Interval, LineEngine,
-    LineParams, LineStorage, ParamError, Params, Placed, Point, PolygonRegion, Region, Scalar, Segment, ShapeKind, StepError, Stop,
-    StopReason,
+    cells_for, check_largest, check_smallest, rng_from_seed, AreaSequence, CellSampler, Engine, Fixed, Geo, ParamError, Params, Placed,
+    Point, PolygonRegion, Region, Scalar, ShapeKind, StepError, Stop, StopReason,
 };
 
 // ---------------------------------------------------------------------------------------------
@@ -496,7 +496,7 @@ fn shapes_below_the_fixed_resolution_are_refused() {
     assert!(!matches!(reason, StopReason::Step(StepError::TooSmall { .. })), "{reason:?}");
     // The 1D engine stops at its first segment shorter than 10 µm.
     let mut segs = vec![Segment::<Fixed>::default(); 4000];
-    let mut index = vec![0u32; zetafill::line_index_words(4000)];
+    let mut index = vec![0u32; zetafill::line::index_words(4000)];
     let storage = LineStorage {
         segments: &mut segs,
         index: &mut index,

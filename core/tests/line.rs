@@ -15,7 +15,10 @@ use proptest::prelude::*;
 use proptest::test_runner::RngSeed;
 use zetafill::internals::line::line_digest;
 use zetafill::internals::zeta::hurwitz_zeta;
-use zetafill::{line_index_words, rng_from_seed, Interval, LineEngine, LineParams, LineStorage, Segment};
+use zetafill::line::{
+    index_words as line_index_words, Engine as LineEngine, Interval, Params as LineParams, Segment, Storage as LineStorage,
+};
+use zetafill::rng_from_seed;
 use zetafill::{ParamError, StepError, Stop, StopReason};
 
 // ---------------------------------------------------------------------------------------------

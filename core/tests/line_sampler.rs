@@ -24,8 +24,13 @@ mod common;
 
 use common::{check_pairs, check_sorted, ks};
 use zetafill::internals::line::line_digest;
-use zetafill::{line_gaps_for, line_index_words, rng_from_seed, Fixed, Interval, LineEngine, LineGap, LineGaps, LineParams, LineStorage};
-use zetafill::{Scalar, Segment, StepError, Stop, StopReason};
+use zetafill::line::Segment;
+use zetafill::line::{
+    gaps_for as line_gaps_for, index_words as line_index_words, Engine as LineEngine, Gap as LineGap, Gaps as LineGaps, Interval,
+    Params as LineParams, Storage as LineStorage,
+};
+use zetafill::{rng_from_seed, Fixed};
+use zetafill::{Scalar, StepError, Stop, StopReason};
 
 #[derive(Clone, Copy, Debug, PartialEq)]
 enum Sampler {

@@ -6,10 +6,11 @@
 #![allow(clippy::disallowed_methods)]
 
 use zetafill::digest::space_digest;
-use zetafill::{
-    rng_from_seed, space_index_words, Fixed, MixOrder, PlacedSolid, Scalar, Solid, SolidList, SpaceEngine, SpaceParams, SpaceRegion,
-    SpaceStorage, Stop, StopReason,
+use zetafill::space::{
+    index_words as space_index_words, Engine as SpaceEngine, Params as SpaceParams, Placed as PlacedSolid, Region as SpaceRegion, Solid,
+    SolidList, Storage as SpaceStorage,
 };
+use zetafill::{rng_from_seed, Fixed, MixOrder, Scalar, Stop, StopReason};
 
 type P = [f64; 3];
 /// A placed solid as the checker reads it: kind, centre, scale, quaternion.

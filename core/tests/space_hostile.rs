@@ -3,9 +3,11 @@
 //! too small is refused; a first solid wider than the region is `CannotFit`.
 
 use zetafill::internals::space::V3;
-use zetafill::{
-    rng_from_seed, space_index_words, Fixed, PlacedSolid, Solid, SpaceEngine, SpaceParams, SpaceRegion, SpaceStorage, StepError, Stop,
+use zetafill::space::{
+    index_words as space_index_words, Engine as SpaceEngine, Params as SpaceParams, Placed as PlacedSolid, Region as SpaceRegion, Solid,
+    Storage as SpaceStorage,
 };
+use zetafill::{rng_from_seed, Fixed, StepError, Stop};
 
 fn kinds() -> Vec<Solid> {
     vec![

@@ -19,10 +19,11 @@ mod common;
 
 use common::ks;
 use zetafill::internals::space::{apart, Body, V3};
-use zetafill::{
-    rng_from_seed, space_cells_for, space_index_words, Fixed, PlacedSolid, Scalar, Solid, SpaceCell, SpaceCells, SpaceEngine, SpaceParams,
-    SpaceRegion, SpaceStorage, StepError, Stop, StopReason,
+use zetafill::space::{
+    cells_for as space_cells_for, index_words as space_index_words, Cell as SpaceCell, CellSampler as SpaceCells, Engine as SpaceEngine,
+    Params as SpaceParams, Placed as PlacedSolid, Region as SpaceRegion, Solid, Storage as SpaceStorage,
 };
+use zetafill::{rng_from_seed, Fixed, Scalar, StepError, Stop, StopReason};
 
 const COUNT: u64 = 40;
 const RUNS: u64 = 400;

@@ -13,7 +13,7 @@
 //!   [`scenes::run`], which fills a scene step by step, drawing as it goes, and returns the
 //!   count, the determinism digest and the trials;
 //! - [`space`]: the 3D scenes (solids in a box or a ball, f64 and fixed point) in a
-//!   256-solid [`zetafill::SpaceEngine`], and [`space::run_space`], which returns the same
+//!   256-solid [`zetafill::space::Engine`], and [`space::run_space`], which returns the same
 //!   [`Outcome`] with the 3D digest.
 //!
 //! `no_std`, no allocator, no panics; drawing uses only integer and IEEE basic `f64`

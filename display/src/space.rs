@@ -7,18 +7,19 @@
 //! and the host recomputes it through the same core. A 3D scene draws nothing: the board's
 //! display is the 2D scenes' business.
 //!
-//! Storage: every 3D scene runs in a [`zetafill::SpaceEngine`] of [`SPACE_CAPACITY`] solid
+//! Storage: every 3D scene runs in a [`zetafill::space::Engine`] of [`SPACE_CAPACITY`] solid
 //! slots (64 bytes each, whatever the scalar) and [`SPACE_INDEX_WORDS`] of 3D spatial hash,
 //! the configuration whose memory the firmware measures on its own stack frame.
 
-use zetafill::{digest, MixOrder, ParamError, Scalar, Solid, SolidList, SpaceEngine, SpaceParams, SpaceRegion, SpaceStorage, StepError};
+use zetafill::space::{Engine as SpaceEngine, Params as SpaceParams, Region as SpaceRegion, Solid, SolidList, Storage as SpaceStorage};
+use zetafill::{digest, MixOrder, ParamError, Scalar, StepError};
 
 use crate::scenes::{Outcome, ScalarKind};
 
 /// Solid slots of a 3D scene on the board.
 pub const SPACE_CAPACITY: usize = 256;
-/// Index words of a 3D scene: the core's [`zetafill::space_index_words`] for the capacity.
-pub const SPACE_INDEX_WORDS: usize = zetafill::space_index_words(SPACE_CAPACITY);
+/// Index words of a 3D scene: the core's [`zetafill::space::index_words`] for the capacity.
+pub const SPACE_INDEX_WORDS: usize = zetafill::space::index_words(SPACE_CAPACITY);
 
 /// A complete 3D fill.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -165,11 +166,11 @@ mod tests {
     use super::*;
     use crate::scenes::SCENES;
     use std::vec;
-    use zetafill::PlacedSolid;
+    use zetafill::space::Placed as PlacedSolid;
 
     fn storage_run(s: &SpaceScene, cap: usize) -> Result<Outcome, SpaceRunError> {
         let mut solids = vec![PlacedSolid::<f64>::default(); cap];
-        let mut index = vec![0u32; zetafill::space_index_words(cap)];
+        let mut index = vec![0u32; zetafill::space::index_words(cap)];
         let storage = SpaceStorage {
             solids: &mut solids,
             index: &mut index,

@@ -111,7 +111,7 @@ fn run_flags(rotate: bool, c: f64, n: f64, gap: f64, seed: u64, count: u64, scal
 /// The `zetafill space` arguments of a firmware 3D scene (every scene is expressible: box or
 /// ball, periodic, mixes in turn, rotation, gap, scalar).
 fn space_args(s: &zetafill_display::SpaceScene) -> Vec<String> {
-    use zetafill::SpaceRegion;
+    use zetafill::space::Region as SpaceRegion;
     let names: Vec<String> = s.solids.iter().map(zetafill_cli::args::space::solid_name).collect();
     let shape = if names.len() == 1 {
         names[0].clone()
@@ -154,7 +154,8 @@ fn space_args(s: &zetafill_display::SpaceScene) -> Vec<String> {
 #[test]
 fn space_digest_matches_the_firmware_scenes() {
     use clap::Parser;
-    use zetafill::{Fixed, PlacedSolid, Scalar, SpaceStorage};
+    use zetafill::space::{Placed as PlacedSolid, Storage as SpaceStorage};
+    use zetafill::{Fixed, Scalar};
     use zetafill_cli::plan::format::SpaceFormat;
     use zetafill_display::space::{run_space, SpaceScene, SPACE_CAPACITY, SPACE_INDEX_WORDS, SPACE_SCENES};
     fn core<S: Scalar + Default>(s: &SpaceScene) -> (u64, u64) {

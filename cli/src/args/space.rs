@@ -7,7 +7,8 @@ use crate::args::fill::{MixArg, Rotate, Sampler, ScalarArg};
 use crate::args::spec;
 use crate::model::solid::Region3;
 use clap::{Args, ValueEnum};
-use zetafill::{MixOrder, Solid, SolidList};
+use zetafill::space::{Solid, SolidList};
+use zetafill::MixOrder;
 
 /// What `zetafill space` writes (`--format`, or told by `-o`'s extension).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]

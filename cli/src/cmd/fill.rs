@@ -409,9 +409,9 @@ pub fn output<'a>(doc: &'a FillDoc, format: Format, d: &FillDraw) -> Result<Outp
             match (&d.colours.palette, d.colours.layers) {
                 (Some(p), true) => {
                     let colours = shape_colours(doc, d, &p.0);
-                    crate::cmd::plot::gcode_pens_output(doc, gcode, Some((&colours, &p.0, d.colours.flags.clone())), d.quiet)?
+                    crate::cmd::plot::gcode_pens_output(doc, gcode, Some((&colours, &p.0, d.colours.flags.clone())))?
                 }
-                _ => crate::cmd::plot::gcode_pens_output(doc, gcode, None, d.quiet)?,
+                _ => crate::cmd::plot::gcode_pens_output(doc, gcode, None)?,
             }
         }
         Format::Json => Output::stream(Size::AtMost(output::json::max_size(doc)?), move |w| output::json::write(doc, w)),

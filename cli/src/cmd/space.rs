@@ -12,9 +12,11 @@ use crate::output::stream::{Output, Size};
 use crate::plan::format::SpaceFormat;
 use crate::plan::space::{first_halt_error, first_solid_error, halt_advice, SpaceDraw, SpacePlan, SpaceRun, SOLIDS};
 use zetafill::digest::space_digest;
-use zetafill::{
-    space_cells_for, space_index_words, PlacedSolid, Scalar, Solid, SpaceCell, SpaceCells, SpaceEngine, SpaceStorage, StepError, StopReason,
+use zetafill::space::{
+    cells_for as space_cells_for, index_words as space_index_words, Cell as SpaceCell, CellSampler as SpaceCells, Engine as SpaceEngine,
+    Placed as PlacedSolid, Solid, Storage as SpaceStorage,
 };
+use zetafill::{Scalar, StepError, StopReason};
 
 /// What a run of the engine produced, in f64 whatever the scalar.
 struct EngineRun {
@@ -50,7 +52,7 @@ fn run_engine<S: Scalar>(a: &SpaceRun) -> Result<EngineRun, CliError> {
     let mut rng = zetafill::rng_from_seed(a.seed);
     let bar = stopping::progress_bar(a.quiet, a.stop.count, SOLIDS);
     let mut trials = Vec::with_capacity(cap);
-    let on_place = |p: &zetafill::SpacePlacement<S>| {
+    let on_place = |p: &zetafill::space::Placement<S>| {
         trials.push(p.trials);
         if let Some(b) = &bar {
             b.inc(1);

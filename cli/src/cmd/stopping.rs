@@ -66,10 +66,10 @@ mod tests {
     #[test]
     fn stops_past_the_limit_name_their_flag() {
         let seq = sequence(1.0, 1.3, 1.0).expect("sequence");
-        let found = zetafill::segment_capacity(&seq, &stop(None, Some(0.999_999_99), None), UNIT.max);
+        let found = zetafill::line::capacity(&seq, &stop(None, Some(0.999_999_99), None), UNIT.max);
         let e = slots(found, UNIT).expect_err("past the limit").to_string();
         assert!(e.starts_with("--fill: ") && e.contains("1048576 pieces"), "{e}");
-        let found = zetafill::segment_capacity(&seq, &stop(None, None, Some(1e-12)), UNIT.max);
+        let found = zetafill::line::capacity(&seq, &stop(None, None, Some(1e-12)), UNIT.max);
         let e = slots(found, UNIT).expect_err("past the limit").to_string();
         assert!(e.starts_with("--min-size: ") && e.contains("pieces"), "{e}");
         assert_eq!(slots(Ok(78), UNIT).ok(), Some(78));

@@ -33,7 +33,7 @@
 //!
 //! A mode with clap arguments can `#[command(flatten)]` [`crate::args::plot::PlotArgs`],
 //! resolve it into a [`crate::plan::plot::GcodePlan`] and call
-//! [`crate::cmd::plot::drawing_gcode`], which adds placement on the bed (`--fit`,
+//! [`crate::cmd::plot::pens_gcode`], which adds placement on the bed (`--fit`,
 //! `--center`, `--margin`) and every other flag, exactly as `zetafill fill` does.
 //!
 //! Nothing here prints, touches files or knows the command line; everything is

@@ -127,10 +127,8 @@ pub struct FillDraw {
     pub colours: Colours,
     /// The shapes of the run, to tell each shape's entry in a mix.
     pub shapes: ShapeList,
-    /// G-code: the machine and its placement.
+    /// G-code: the machine, its placement and whether its figures go to stderr.
     pub gcode: Option<GcodePlan>,
-    /// No G-code figures on stderr.
-    pub quiet: bool,
 }
 
 /// The message of `--layers colours` without a palette.
@@ -312,11 +310,10 @@ pub fn resolve_as(a: &FillArgs, format: Format) -> Result<(FillRun, FillDraw), C
         colours: a.colour.colours(colour_layers),
         shapes,
         gcode: if format == Format::Gcode {
-            Some(GcodePlan::resolve(&a.plot)?)
+            Some(GcodePlan::resolve(&a.plot, a.quiet)?)
         } else {
             None
         },
-        quiet: a.quiet,
     };
     Ok((run, draw))
 }

@@ -16,7 +16,8 @@ use crate::plan::plot::GcodePlan;
 use crate::plan::plot::FOR_GCODE;
 use crate::plan::raster;
 use crate::plan::Unit;
-use zetafill::{Interval, LineParams, ParamError, Stop};
+use zetafill::line::{Interval, Params as LineParams};
+use zetafill::{ParamError, Stop};
 
 /// What a 1D run places, and the most one run may hold.
 pub const SEGMENTS: Unit = Unit {
@@ -79,10 +80,8 @@ pub struct LineDraw {
     pub raster: Raster,
     /// The colours, as the colour flags set them.
     pub colours: Colours,
-    /// G-code: the machine and its placement.
+    /// G-code: the machine, its placement and whether its figures go to stderr.
     pub gcode: Option<GcodePlan>,
-    /// No G-code figures on stderr.
-    pub quiet: bool,
 }
 
 /// How segments are drawn in SVG and PNG.
@@ -210,11 +209,10 @@ fn resolve_format(a: &LineArgs, format: Format) -> Result<(LineRun, LineDraw), C
         raster: a.raster.raster(),
         colours: a.colour.colours(colour_layers && a.colour.palette.is_some()),
         gcode: if format == Format::Gcode {
-            Some(GcodePlan::resolve(&a.plot)?)
+            Some(GcodePlan::resolve(&a.plot, a.quiet)?)
         } else {
             None
         },
-        quiet: a.quiet,
     };
     Ok((run, draw))
 }

@@ -93,7 +93,7 @@ pub fn check_min_size(stop: &Stop, first: f64, unit: Unit) -> Result<(), CliErro
     }
 }
 
-/// The slots the stop conditions need, as the core found them ([`zetafill::shape_capacity`], [`zetafill::segment_capacity`]); a
+/// The slots the stop conditions need, as the core found them ([`zetafill::shape_capacity`], [`zetafill::line::capacity`]); a
 /// stop condition no run of the unit's size can meet is refused naming its flag.
 pub fn slots(found: Result<u64, CapacityError>, unit: Unit) -> Result<u64, CliError> {
     found.map_err(|e| match e {

@@ -32,6 +32,8 @@ pub struct GcodePlan {
     pub hatch: String,
     /// Shapes narrower than this (mm) are left out.
     pub min_feature: f64,
+    /// No figures (length, time) on stderr.
+    pub quiet: bool,
 }
 
 /// A placed drawing the machine's G-code writer refuses (`why`, in the profile's terms), as a
@@ -42,8 +44,8 @@ pub fn gcode_error(why: String) -> CliError {
 
 impl GcodePlan {
     /// The machine and options the plot flags ask for, every override checked against the
-    /// profile (exit 2 naming the flag).
-    pub fn resolve(a: &PlotArgs) -> Result<GcodePlan, CliError> {
+    /// profile (exit 2 naming the flag); `quiet` keeps the plot's figures off stderr.
+    pub fn resolve(a: &PlotArgs, quiet: bool) -> Result<GcodePlan, CliError> {
         let machine = a.machine()?;
         let options = a.gcode_options(&machine)?;
         Ok(GcodePlan {
@@ -56,6 +58,7 @@ impl GcodePlan {
                 (h, _) => h.unwrap_or("none").to_string(),
             },
             min_feature: a.min_feature,
+            quiet,
             machine,
         })
     }

@@ -14,7 +14,11 @@ use crate::output::mesh::{MeshOptions, Mesher, SEGMENTS};
 use crate::output::render3d::{Cut, RenderOptions, MAX_SIDE};
 use crate::plan::format::SpaceFormat;
 use crate::plan::Unit;
-use zetafill::{check_first_solid, check_first_two_solids, space_capacity, AreaSequence, Scalar, Solid, SpaceParams, SpaceRegion, Stop};
+use zetafill::space::{
+    capacity as space_capacity, check_first as check_first_solid, check_first_two as check_first_two_solids, Params as SpaceParams,
+    Region as SpaceRegion, Solid,
+};
+use zetafill::{AreaSequence, Scalar, Stop};
 
 /// The most solids one 3D run may hold (64 bytes a solid in the core, in f64).
 pub const MAX_SOLIDS: u64 = 5_000_000;

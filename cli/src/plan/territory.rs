@@ -86,10 +86,8 @@ pub struct TerritoryDraw {
     pub colours: Colours,
     /// The plot flags as command-line text.
     pub plot_flags: String,
-    /// G-code: the machine and its placement.
+    /// G-code: the machine, its placement and whether its figures go to stderr.
     pub gcode: Option<GcodePlan>,
-    /// No G-code figures on stderr.
-    pub quiet: bool,
 }
 
 /// What to draw.
@@ -196,11 +194,10 @@ pub fn resolve_as(a: &TerritoryArgs, format: TerritoryFormat) -> Result<(Territo
         },
         plot_flags: a.plot.flags(),
         gcode: if format == TerritoryFormat::Gcode {
-            Some(GcodePlan::resolve(&a.plot)?)
+            Some(GcodePlan::resolve(&a.plot, a.quiet)?)
         } else {
             None
         },
-        quiet: a.quiet,
     };
     Ok((run, draw))
 }

@@ -61,7 +61,7 @@ pub struct TileDraw {
     pub colours: Colours,
     /// The plot flags as command-line text.
     pub plot_flags: String,
-    /// G-code: the machine and its placement.
+    /// G-code: the machine, its placement and whether its figures go to stderr.
     pub gcode: Option<GcodePlan>,
 }
 
@@ -160,7 +160,7 @@ pub fn resolve_as(a: &TileArgs, format: TileFormat) -> Result<(TileRun, TileDraw
         colours: a.colour.colours(a.plot.layers == Layers::Colours && a.colour.palette.is_some()),
         plot_flags: a.plot.flags(),
         gcode: if format == TileFormat::Gcode {
-            Some(GcodePlan::resolve(&a.plot)?)
+            Some(GcodePlan::resolve(&a.plot, a.quiet)?)
         } else {
             None
         },

@@ -186,13 +186,14 @@ pub fn shape_capacity(seq: &AreaSequence, shapes: &ShapeList, stop: &Stop, max: 
 /// # Examples
 ///
 /// ```
-/// use zetafill::{segment_capacity, AreaSequence, Stop};
+/// use zetafill::{AreaSequence, Stop};
+/// use zetafill::line::capacity;
 ///
 /// let seq = AreaSequence::new(100.0, 1.4, 1.0)?;
 /// // A count needs its own number of slots, plus one to spare.
-/// assert_eq!(segment_capacity(&seq, &Stop { count: Some(50), ..Stop::default() }, 1_000), Ok(51));
+/// assert_eq!(capacity(&seq, &Stop { count: Some(50), ..Stop::default() }, 1_000), Ok(51));
 /// // Segments down to 0.5 long: every one of them has a slot.
-/// let slots = segment_capacity(&seq, &Stop { min_size: Some(0.5), ..Stop::default() }, 1_000)?;
+/// let slots = capacity(&seq, &Stop { min_size: Some(0.5), ..Stop::default() }, 1_000)?;
 /// assert!(seq.area(slots - 1) < 0.5);
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```

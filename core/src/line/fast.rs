@@ -54,8 +54,8 @@ impl<S: Scalar> LineEngine<'_, S> {
     /// trial limit, as in the paper's sampler.
     ///
     /// ## Storage
-    /// [`LineGaps`] borrows a little over five 8-byte [`LineGap`](crate::LineGap) words per
-    /// segment ([`line_gaps_for`](crate::line_gaps_for)), 41 bytes: each gap's ends and room,
+    /// [`LineGaps`] borrows a little over five 8-byte [`LineGap`](crate::line::Gap) words per
+    /// segment ([`line_gaps_for`](crate::line::gaps_for)), 41 bytes: each gap's ends and room,
     /// its place in the heap, and a Fenwick node per 16 gaps. The first step lays the gaps
     /// out and later steps keep them, so they must go with one engine. A segment placed by
     /// [`LineEngine::step`] in between is found by a scan of the gaps. Slots too few for the
@@ -66,16 +66,18 @@ impl<S: Scalar> LineEngine<'_, S> {
     /// # Examples
     ///
     /// ```
-    /// use zetafill::{line_gaps_for, line_index_words, rng_from_seed, Interval, LineEngine, LineGap, LineGaps};
-    /// use zetafill::{LineParams, LineStorage, Segment, Stop, StopReason};
+    /// use zetafill::rng_from_seed;
+    /// use zetafill::line::{gaps_for, index_words, Engine, Gap, Gaps, Interval};
+    /// use zetafill::{Stop, StopReason};
+    /// use zetafill::line::{Params, Segment, Storage};
     ///
     /// let mut segments = vec![Segment::<f64>::default(); 10_000];
-    /// let mut index = vec![0u32; line_index_words(10_000)];
-    /// let mut slots = vec![LineGap::default(); line_gaps_for(10_000)];
-    /// let storage = LineStorage { segments: &mut segments, index: &mut index };
+    /// let mut index = vec![0u32; index_words(10_000)];
+    /// let mut slots = vec![Gap::default(); gaps_for(10_000)];
+    /// let storage = Storage { segments: &mut segments, index: &mut index };
     /// let interval = Interval { length: 100.0, periodic: false };
-    /// let mut line = LineEngine::new(LineParams::new(1.4, 1.0), interval, storage)?;
-    /// let mut gaps = LineGaps::new(&mut slots)?;
+    /// let mut line = Engine::new(Params::new(1.4, 1.0), interval, storage)?;
+    /// let mut gaps = Gaps::new(&mut slots)?;
     /// let stop = Stop { count: Some(10_000), ..Stop::default() };
     /// assert_eq!(line.run_fast(&mut gaps, &mut rng_from_seed(1), &stop, |_| {}), StopReason::Count);
     /// // About one trial a placement (the paper's sampler needs about 50 here).
@@ -90,15 +92,17 @@ impl<S: Scalar> LineEngine<'_, S> {
     /// second needs 0.41 on one side.
     ///
     /// ```
-    /// use zetafill::{line_gaps_for, line_index_words, rng_from_seed, Interval, LineEngine, LineGap, LineGaps};
-    /// use zetafill::{LineParams, LineStorage, Segment, StepError};
+    /// use zetafill::rng_from_seed;
+    /// use zetafill::line::{gaps_for, index_words, Engine, Gap, Gaps, Interval};
+    /// use zetafill::StepError;
+    /// use zetafill::line::{Params, Segment, Storage};
     ///
-    /// let (mut segments, mut index) = ([Segment::<f64>::default(); 4], [0u32; line_index_words(4)]);
-    /// let mut slots = [LineGap::default(); line_gaps_for(4)];
-    /// let storage = LineStorage { segments: &mut segments, index: &mut index };
+    /// let (mut segments, mut index) = ([Segment::<f64>::default(); 4], [0u32; index_words(4)]);
+    /// let mut slots = [Gap::default(); gaps_for(4)];
+    /// let storage = Storage { segments: &mut segments, index: &mut index };
     /// let interval = Interval { length: 1.0, periodic: false };
-    /// let mut line = LineEngine::new(LineParams { gap: 0.13, ..LineParams::new(2.0, 1.0) }, interval, storage)?;
-    /// let mut gaps = LineGaps::new(&mut slots)?;
+    /// let mut line = Engine::new(Params { gap: 0.13, ..Params::new(2.0, 1.0) }, interval, storage)?;
+    /// let mut gaps = Gaps::new(&mut slots)?;
     /// let mut rng = rng_from_seed(1);
     /// line.step_fast(&mut gaps, &mut rng)?;
     /// assert!(matches!(line.step_fast(&mut gaps, &mut rng), Err(StepError::Halted { index: 1, trials: 0 })));

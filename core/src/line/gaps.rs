@@ -1,6 +1,6 @@
 //! The free gaps of a 1D fill, kept so that the next segment's start is drawn uniformly over
 //! every valid start in O(log n): the storage and the order-statistics structure of the exact
-//! sampler ([`crate::LineEngine::step_fast`], whose documentation carries the argument).
+//! sampler ([`crate::line::Engine::step_fast`], whose documentation carries the argument).
 //!
 //! A gap is the free stretch between two neighbouring segments (or a segment and an end of an
 //! inclusive interval). Its *room* is its length less twice the clearance, counted in integer
@@ -64,10 +64,10 @@ pub struct LineGap(u64);
 /// # Examples
 ///
 /// ```
-/// use zetafill::{LineGap, LineGaps, NoLineGaps};
+/// use zetafill::line::{Gap, Gaps, NoGaps};
 ///
-/// assert_eq!(LineGaps::<f64>::new(&mut [LineGap::default(); 5]).err(), Some(NoLineGaps));
-/// assert_eq!(NoLineGaps.to_string(), "the exact 1D sampler needs storage for at least two gaps");
+/// assert_eq!(Gaps::<f64>::new(&mut [Gap::default(); 5]).err(), Some(NoGaps));
+/// assert_eq!(NoGaps.to_string(), "the exact 1D sampler needs storage for at least two gaps");
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]

@@ -50,10 +50,10 @@ const NIL: u32 = u32::MAX;
 /// # Examples
 ///
 /// ```
-/// use zetafill::LineParams;
+/// use zetafill::line::Params;
 ///
 /// // Segments of fractal dimension 0.5, 0.1 apart.
-/// let params = LineParams { gap: 0.1, ..LineParams::new(LineParams::c_from_dimension(0.5), 1.0) };
+/// let params = Params { gap: 0.1, ..Params::new(Params::c_from_dimension(0.5), 1.0) };
 /// assert_eq!((params.c, params.n_offset, params.gap), (2.0, 1.0, 0.1));
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -93,13 +93,14 @@ impl LineParams {
 /// On a circle of circumference 10 a segment may run past the end: it exists again from 0.
 ///
 /// ```
-/// use zetafill::{line_index_words, rng_from_seed, Interval, LineEngine, LineParams, LineStorage, Segment, Stop};
+/// use zetafill::{rng_from_seed, Stop};
+/// use zetafill::line::{index_words, Engine, Interval, Params, Segment, Storage};
 ///
 /// let mut segments = [Segment::<f64>::default(); 200];
-/// let mut index = [0u32; line_index_words(200)];
-/// let storage = LineStorage { segments: &mut segments, index: &mut index };
+/// let mut index = [0u32; index_words(200)];
+/// let storage = Storage { segments: &mut segments, index: &mut index };
 /// let circle = Interval { length: 10.0, periodic: true };
-/// let mut line = LineEngine::new(LineParams::new(1.3, 1.0), circle, storage)?;
+/// let mut line = Engine::new(Params::new(1.3, 1.0), circle, storage)?;
 /// line.run(&mut rng_from_seed(6), &Stop { count: Some(200), ..Stop::default() }, |_| {});
 /// let placed = line.placed();
 /// assert!(placed.iter().all(|s| s.start >= 0.0 && s.start < 10.0));
@@ -127,7 +128,7 @@ pub struct Interval {
 /// # Examples
 ///
 /// ```
-/// use zetafill::Segment;
+/// use zetafill::line::Segment;
 ///
 /// let s = Segment { start: 2.0, length: 0.5 };
 /// assert_eq!(s.end(), 2.5);
@@ -153,13 +154,14 @@ impl<S: Scalar> Segment<S> {
 /// # Examples
 ///
 /// ```
-/// use zetafill::{line_index_words, rng_from_seed, Interval, LineEngine, LineParams, LineStorage, Segment};
+/// use zetafill::rng_from_seed;
+/// use zetafill::line::{index_words, Engine, Interval, Params, Segment, Storage};
 ///
 /// let mut segments = [Segment::<f64>::default(); 10];
-/// let mut index = [0u32; line_index_words(10)];
-/// let storage = LineStorage { segments: &mut segments, index: &mut index };
+/// let mut index = [0u32; index_words(10)];
+/// let storage = Storage { segments: &mut segments, index: &mut index };
 /// let interval = Interval { length: 100.0, periodic: false };
-/// let mut line = LineEngine::new(LineParams::new(1.4, 1.0), interval, storage)?;
+/// let mut line = Engine::new(Params::new(1.4, 1.0), interval, storage)?;
 /// let mut rng = rng_from_seed(2);
 /// let first = line.step(&mut rng)?;
 /// assert_eq!((first.index, first.length), (0, line.length_of(0)));
@@ -191,12 +193,13 @@ pub const fn line_index_words(capacity: usize) -> usize {
 /// # Examples
 ///
 /// ```
-/// use zetafill::{Interval, LineEngine, LineParams, LineStorage, ParamError, Segment};
+/// use zetafill::ParamError;
+/// use zetafill::line::{Engine, Interval, Params, Segment, Storage};
 ///
 /// let (mut segments, mut index) = ([Segment::<f64>::default(); 8], [0u32; 8]);
-/// let storage = LineStorage { segments: &mut segments, index: &mut index };
+/// let storage = Storage { segments: &mut segments, index: &mut index };
 /// let interval = Interval { length: 1.0, periodic: false };
-/// assert_eq!(LineEngine::new(LineParams::new(1.4, 1.0), interval, storage).err(), Some(ParamError::Storage));
+/// assert_eq!(Engine::new(Params::new(1.4, 1.0), interval, storage).err(), Some(ParamError::Storage));
 /// ```
 #[derive(Debug)]
 pub struct LineStorage<'a, S> {
@@ -211,13 +214,14 @@ pub struct LineStorage<'a, S> {
 /// # Examples
 ///
 /// ```
-/// use zetafill::{line_index_words, rng_from_seed, Interval, LineEngine, LineParams, LineStorage, Segment, Stop, StopReason};
+/// use zetafill::{rng_from_seed, Stop, StopReason};
+/// use zetafill::line::{index_words, Engine, Interval, Params, Segment, Storage};
 ///
 /// let mut segments = [Segment::<f64>::default(); 50];
-/// let mut index = [0u32; line_index_words(50)];
-/// let storage = LineStorage { segments: &mut segments, index: &mut index };
+/// let mut index = [0u32; index_words(50)];
+/// let storage = Storage { segments: &mut segments, index: &mut index };
 /// let interval = Interval { length: 100.0, periodic: false };
-/// let mut line = LineEngine::new(LineParams::new(1.4, 1.0), interval, storage)?;
+/// let mut line = Engine::new(Params::new(1.4, 1.0), interval, storage)?;
 /// let stop = Stop { count: Some(50), ..Stop::default() };
 /// assert_eq!(line.run(&mut rng_from_seed(1), &stop, |_| {}), StopReason::Count);
 /// assert!(line.placed().iter().all(|s| s.start >= 0.0 && s.end() <= 100.0));

@@ -18,11 +18,11 @@ use rand_core::RngCore;
 /// # Examples
 ///
 /// ```
-/// use zetafill::{Solid, SpaceParams};
+/// use zetafill::space::{Params, Solid};
 ///
-/// let spheres = SpaceParams::spheres(1.15, 1.0);
+/// let spheres = Params::spheres(1.15, 1.0);
 /// assert_eq!(spheres.solids.kinds(), &[Solid::Sphere]);
-/// let cubes = SpaceParams { solids: Solid::Cube.into(), rotate: true, gap: 0.2, ..SpaceParams::spheres(SpaceParams::c_from_dimension(2.5), 1.0) };
+/// let cubes = Params { solids: Solid::Cube.into(), rotate: true, gap: 0.2, ..Params::spheres(Params::c_from_dimension(2.5), 1.0) };
 /// assert_eq!(cubes.c, 1.2);
 /// ```
 #[derive(Clone, Debug, PartialEq)]

@@ -13,11 +13,12 @@ use crate::params::Stop;
 /// # Examples
 ///
 /// ```
-/// use zetafill::{space_capacity, AreaSequence, Solid, Stop};
+/// use zetafill::{AreaSequence, Stop};
+/// use zetafill::space::{capacity, Solid};
 ///
 /// let seq = AreaSequence::new(1000.0, 1.2, 1.0)?;
 /// let stop = Stop { min_size: Some(0.5), ..Stop::default() };
-/// let slots = space_capacity(&seq, &Solid::Sphere.into(), &stop, 10_000_000)?;
+/// let slots = capacity(&seq, &Solid::Sphere.into(), &stop, 10_000_000)?;
 /// assert!(Solid::Sphere.min_width(Solid::Sphere.scale_for_volume(seq.area(slots - 1))) < 0.5);
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
@@ -51,20 +52,20 @@ impl core::fmt::Display for FirstSolidError {
 impl core::error::Error for FirstSolidError {}
 
 /// Whether the first solid fits in the region's box with its gap (a necessary condition,
-/// what [`crate::SpaceEngine::step`] reports as [`crate::StepError::CannotFit`]), or, in a
+/// what [`crate::space::Engine::step`] reports as [`crate::StepError::CannotFit`]), or, in a
 /// periodic box, clears its own image one period away by the gap (else every trial would be
-/// refused); the parameters are assumed valid ([`crate::SpaceEngine::new`] checks them).
+/// refused); the parameters are assumed valid ([`crate::space::Engine::new`] checks them).
 ///
 /// # Examples
 ///
 /// ```
-/// use zetafill::{check_first_solid, SpaceParams, SpaceRegion};
+/// use zetafill::space::{check_first, Params, Region};
 ///
-/// let region = SpaceRegion::Box { width: 10.0, height: 10.0, depth: 1.0, periodic: false };
-/// let e = check_first_solid(&SpaceParams::spheres(1.5, 1.0), &region).unwrap_err();
+/// let region = Region::Box { width: 10.0, height: 10.0, depth: 1.0, periodic: false };
+/// let e = check_first(&Params::spheres(1.5, 1.0), &region).unwrap_err();
 /// let c = e.max_c.expect("a smaller c works");
 /// assert!(c > 1.0 && c < 1.5);
-/// assert!(check_first_solid(&SpaceParams::spheres(c, 1.0), &region).is_ok());
+/// assert!(check_first(&Params::spheres(c, 1.0), &region).is_ok());
 /// ```
 pub fn check_first_solid(params: &SpaceParams, region: &SpaceRegion) -> Result<(), FirstSolidError> {
     let side = region.extent().iter().fold(f64::MAX, |m, &e| m.min(e));
@@ -172,15 +173,15 @@ pub fn first_two_solids_fit(kind: Solid, rotate: bool, s0: f64, s1: f64, region:
 /// # Examples
 ///
 /// ```
-/// use zetafill::{check_first_two_solids, Solid, SpaceParams, SpaceRegion};
+/// use zetafill::space::{check_first_two, Params, Region, Solid};
 ///
-/// let region = SpaceRegion::Box { width: 100.0, height: 100.0, depth: 100.0, periodic: false };
-/// let mut params = SpaceParams::spheres(1.15, 1.0);
+/// let region = Region::Box { width: 100.0, height: 100.0, depth: 100.0, periodic: false };
+/// let mut params = Params::spheres(1.15, 1.0);
 /// params.solids = Solid::Cube.into();
 /// params.rotate = false;
-/// assert!(check_first_two_solids(&params, &region).is_ok());
+/// assert!(check_first_two(&params, &region).is_ok());
 /// params.c = 1.3;
-/// let c = check_first_two_solids(&params, &region).unwrap_err().max_c.expect("a smaller c works");
+/// let c = check_first_two(&params, &region).unwrap_err().max_c.expect("a smaller c works");
 /// assert!(c > 1.19 && c < 1.21);
 /// ```
 pub fn check_first_two_solids(params: &SpaceParams, region: &SpaceRegion) -> Result<(), FirstTwoSolidsError> {

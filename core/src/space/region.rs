@@ -12,16 +12,16 @@ use core::f64::consts::PI;
 /// # Examples
 ///
 /// ```
-/// use zetafill::SpaceRegion;
+/// use zetafill::space::Region;
 ///
-/// let cube = SpaceRegion::Box { width: 10.0, height: 10.0, depth: 10.0, periodic: false };
+/// let cube = Region::Box { width: 10.0, height: 10.0, depth: 10.0, periodic: false };
 /// assert_eq!(cube.volume(), 1000.0);
-/// let ball = SpaceRegion::Ball { radius: 3.0 };
+/// let ball = Region::Ball { radius: 3.0 };
 /// assert!((ball.volume() - 36.0 * std::f64::consts::PI).abs() < 1e-12);
 /// // A box with a ball removed: the ball must lie inside the box.
-/// let holed = SpaceRegion::BoxMinusBall { width: 10.0, height: 10.0, depth: 10.0, centre: [5.0, 5.0, 5.0], radius: 2.0 };
+/// let holed = Region::BoxMinusBall { width: 10.0, height: 10.0, depth: 10.0, centre: [5.0, 5.0, 5.0], radius: 2.0 };
 /// assert!(holed.check().is_ok());
-/// let poking = SpaceRegion::BoxMinusBall { width: 10.0, height: 10.0, depth: 10.0, centre: [1.0, 5.0, 5.0], radius: 2.0 };
+/// let poking = Region::BoxMinusBall { width: 10.0, height: 10.0, depth: 10.0, centre: [1.0, 5.0, 5.0], radius: 2.0 };
 /// assert!(poking.check().is_err());
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -22,7 +22,7 @@ pub const MAX_BEADS: usize = 64;
 /// # Examples
 ///
 /// ```
-/// use zetafill::Solid;
+/// use zetafill::space::Solid;
 ///
 /// // A unit cube has volume 8 (its scale is half its side).
 /// assert_eq!(Solid::Cube.volume(1.0), 8.0);
@@ -163,7 +163,8 @@ pub(crate) fn bounding<S: Scalar>(kind: &Solid, scale: S) -> S {
 /// # Examples
 ///
 /// ```
-/// use zetafill::{MixOrder, Solid, SolidList};
+/// use zetafill::MixOrder;
+/// use zetafill::space::{Solid, SolidList};
 ///
 /// let mix = SolidList::mix(&[Solid::Cube, Solid::Sphere], MixOrder::Cycle, 0).expect("two kinds");
 /// assert_eq!((mix.kind_of(0), mix.kind_of(1), mix.kind_of(2)), (Solid::Cube, Solid::Sphere, Solid::Cube));

@@ -17,7 +17,8 @@
 use cortex_m_rt::entry;
 use defmt_semihosting as _;
 use semihosting::{eprintln, process};
-use zetafill::{Fixed, PlacedSolid, Scalar, SpaceStorage};
+use zetafill::space::{Placed as PlacedSolid, Storage as SpaceStorage};
+use zetafill::{Fixed, Scalar};
 use zetafill_display::scenes::ScalarKind;
 use zetafill_display::space::{run_space, SpaceRunError, SpaceScene, SPACE_CAPACITY, SPACE_INDEX_WORDS, SPACE_SCENES};
 use zetafill_firmware_sim::board::Board;

@@ -4,7 +4,8 @@
 use std::collections::BTreeMap;
 use std::sync::OnceLock;
 
-use zetafill::{Fixed, PlacedSolid, Scalar, SpaceStorage};
+use zetafill::space::{Placed as PlacedSolid, Storage as SpaceStorage};
+use zetafill::{Fixed, Scalar};
 use zetafill_display::scenes::{Outcome, ScalarKind};
 use zetafill_display::space::{run_space, SpaceScene, SPACE_CAPACITY, SPACE_INDEX_WORDS, SPACE_SCENES};
 

@@ -1,5 +1,5 @@
 //! `zetafill line`: the 1D fill, segments of length `L_i = L / (zeta(c, N) (i + N)^c)` in an
-//! interval of length `L` (Shier and Bourke, *An Algorithm for Random Fractal Filling of Space*, Figure 3), run by the core's [`zetafill::LineEngine`], and
+//! interval of length `L` (Shier and Bourke, *An Algorithm for Random Fractal Filling of Space*, Figure 3), run by the core's [`zetafill::line::Engine`], and
 //! its outputs: SVG (dashes, circles, bars or zoom rows), PNG, JSON, CSV and the digest.
 
 use crate::cmd::stopping;
@@ -10,8 +10,12 @@ use crate::plan::line::{first_segment_error, halt_advice, param_error, LineDraw,
 use crate::plan::plot::GcodePlan;
 use crate::plan::raster::png_error;
 use std::fmt::Write as _;
+use zetafill::line::{
+    gaps_for as line_gaps_for, index_words as line_index_words, Engine as LineEngine, Gap as LineGap, Gaps as LineGaps, Segment,
+    Storage as LineStorage,
+};
 use zetafill::StepError;
-use zetafill::{line_gaps_for, line_index_words, LineEngine, LineGap, LineGaps, LineStorage, Segment, StopReason};
+use zetafill::StopReason;
 
 pub mod doc;
 pub mod picture;
@@ -25,7 +29,7 @@ pub fn compute(a: &LineRun) -> Result<(LineDoc, Option<StepError>), CliError> {
     let (params, interval, stop) = (a.params, a.interval, a.stop);
     let sequence = stopping::sequence(interval.length, params.c, params.n_offset)?;
     stopping::check_min_size(&stop, sequence.area(0), SEGMENTS)?;
-    let cap = stopping::slots(zetafill::segment_capacity(&sequence, &stop, SEGMENTS.max), SEGMENTS)? as usize;
+    let cap = stopping::slots(zetafill::line::capacity(&sequence, &stop, SEGMENTS.max), SEGMENTS)? as usize;
     let mut segs = vec![Segment::<f64>::default(); cap];
     let mut index = vec![0u32; line_index_words(cap)];
     let mut engine = LineEngine::<f64>::new(
@@ -40,7 +44,7 @@ pub fn compute(a: &LineRun) -> Result<(LineDoc, Option<StepError>), CliError> {
     let mut rng = zetafill::rng_from_seed(a.seed);
     let bar = stopping::progress_bar(a.quiet, stop.count, SEGMENTS);
     let mut trials = Vec::with_capacity(cap);
-    let on_place = |p: &zetafill::LinePlacement<f64>| {
+    let on_place = |p: &zetafill::line::Placement<f64>| {
         trials.push(p.trials);
         if let Some(b) = &bar {
             b.inc(1);
@@ -201,12 +205,12 @@ pub fn render_digest(doc: &LineDoc) -> Vec<u8> {
     format!("{count} {hash:016x}\n").into_bytes()
 }
 
-fn gcode_output(doc: &LineDoc, opt: &LineSvgOptions, gcode: &GcodePlan, quiet: bool) -> Result<Output<'static>, CliError> {
+fn gcode_output(doc: &LineDoc, opt: &LineSvgOptions, gcode: &GcodePlan) -> Result<Output<'static>, CliError> {
     let pic = plotter_picture(doc, opt, &gcode.build)?;
     let header = vec![format!("{}{}{}", command_line(doc), drawing_flags(opt), gcode.flags)];
     // With --layers colours, one pen per palette colour, each drawing its segments, placed as
     // the whole.
-    crate::cmd::plot::pens_output(&pic.pens(), &pic.frame, gcode, header, quiet)
+    crate::cmd::plot::pens_output(&pic.pens(), &pic.frame, gcode, header)
 }
 
 /// Renders a document in a format.
@@ -239,7 +243,7 @@ pub fn output<'a>(doc: &'a LineDoc, format: Format, d: &LineDraw) -> Result<Outp
         Format::Csv => Output::stream(Size::AtMost(csv_max_size(doc)), move |w| csv_to(doc, w)),
         Format::Digest => Output::bytes(render_digest(doc)),
         Format::Png => Output::bytes(d.raster.render(&render_svg(doc, &opt)).map_err(png_error)?),
-        Format::Gcode => gcode_output(doc, &opt, d.gcode.as_ref().ok_or_else(no_gcode)?, d.quiet)?,
+        Format::Gcode => gcode_output(doc, &opt, d.gcode.as_ref().ok_or_else(no_gcode)?)?,
     })
 }
 

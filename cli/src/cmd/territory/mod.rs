@@ -34,7 +34,7 @@ use crate::plan::format::TerritoryFormat;
 /// box, written by the plot back end with its safety invariants.
 fn gcode(pic: &crate::model::Picture, d: &TerritoryDraw, desc: String) -> Result<Vec<u8>, CliError> {
     let gcode = d.gcode.as_ref().ok_or_else(no_gcode)?;
-    crate::cmd::plot::pens_gcode(&pic.pens(), &pic.frame, gcode, vec![desc], d.quiet)
+    crate::cmd::plot::pens_gcode(&pic.pens(), &pic.frame, gcode, vec![desc])
 }
 
 /// A finished run: the model, the document and what the drawing needs.

@@ -44,7 +44,6 @@ fn gcode(
     sheet: Sheet,
     style: Style,
     d: &TileDraw,
-    quiet: bool,
     header: String,
     pens: Option<(&[String], &[String])>,
 ) -> Result<Vec<u8>, CliError> {
@@ -58,7 +57,7 @@ fn gcode(
     };
     let pic = picture(pieces, sheet, &look);
     let plan = d.gcode.as_ref().ok_or_else(no_gcode)?;
-    crate::cmd::plot::pens_gcode(&pic.pens(), &pic.frame, plan, vec![header], quiet)
+    crate::cmd::plot::pens_gcode(&pic.pens(), &pic.frame, plan, vec![header])
 }
 
 /// One disc in the JSON output.
@@ -344,7 +343,7 @@ pub fn output(a: &TileRun, d: &TileDraw, format: TileFormat) -> Result<(Tile, Ve
                 (Some(p), Some(cs)) if d.colours.layers => Some((&p.0[..], &cs[..])),
                 _ => None,
             };
-            gcode(laid, arr.sheet(w, h), a.style, d, a.quiet, command_line(a, d), pens)?
+            gcode(laid, arr.sheet(w, h), a.style, d, command_line(a, d), pens)?
         }
         TileFormat::Svg | TileFormat::Png => {
             let title = format!(

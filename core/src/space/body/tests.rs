@@ -34,7 +34,7 @@ fn shells_hold_solids() {
 /// Pairs of tori (and a torus with a ball) around contact, at random rotations, sizes and
 /// tube ratios, some centred near each other's axis, in either scalar.
 fn disagreements<S: Scalar, W: Fn(&Body<S>, V3<S>, S) -> (usize, usize)>(window: &W, pairs: usize) -> usize {
-    use crate::space::vec3::random_rotation;
+    use crate::space3d::vec3::random_rotation;
     let mut rng = crate::rng_from_seed(11);
     let mut unit = || crate::rng::unit::<f64, _>(&mut rng);
     let mut bad = 0;

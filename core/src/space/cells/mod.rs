@@ -152,16 +152,18 @@ impl core::error::Error for NoSpaceCells {}
 /// # Examples
 ///
 /// ```
-/// use zetafill::{rng_from_seed, space_cells_for, space_index_words, PlacedSolid, SpaceCell, SpaceCells};
-/// use zetafill::{SpaceEngine, SpaceParams, SpaceRegion, SpaceStorage, Stop, StopReason};
+/// use zetafill::rng_from_seed;
+/// use zetafill::space::{cells_for, index_words, Cell, CellSampler, Placed};
+/// use zetafill::{Stop, StopReason};
+/// use zetafill::space::{Engine, Params, Region, Storage};
 ///
-/// let mut solids = vec![PlacedSolid::<f64>::default(); 500];
-/// let mut index = vec![0u32; space_index_words(500)];
-/// let mut pool = vec![SpaceCell::default(); space_cells_for(500)];
-/// let region = SpaceRegion::Box { width: 50.0, height: 50.0, depth: 50.0, periodic: false };
-/// let storage = SpaceStorage { solids: &mut solids, index: &mut index };
-/// let mut engine = SpaceEngine::new(SpaceParams::spheres(1.15, 2.0), region, storage)?;
-/// let mut cells = SpaceCells::new(&mut pool)?;
+/// let mut solids = vec![Placed::<f64>::default(); 500];
+/// let mut index = vec![0u32; index_words(500)];
+/// let mut pool = vec![Cell::default(); cells_for(500)];
+/// let region = Region::Box { width: 50.0, height: 50.0, depth: 50.0, periodic: false };
+/// let storage = Storage { solids: &mut solids, index: &mut index };
+/// let mut engine = Engine::new(Params::spheres(1.15, 2.0), region, storage)?;
+/// let mut cells = CellSampler::new(&mut pool)?;
 /// let stop = Stop { count: Some(500), ..Stop::default() };
 /// let reason = engine.run_fast(&mut cells, &mut rng_from_seed(3), &stop, |_| {});
 /// assert_eq!(reason, StopReason::Count);

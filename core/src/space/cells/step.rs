@@ -154,9 +154,9 @@ impl<S: Scalar> SpaceEngine<'_, S> {
                 continue;
             }
             let q = if next.rotated {
-                crate::space::vec3::random_rotation(rng)
+                crate::space3d::vec3::random_rotation(rng)
             } else {
-                crate::space::vec3::identity()
+                crate::space3d::vec3::identity()
             };
             let body = self.body_of(&next.kind, c, next.scale, &q);
             match self.fits_hit(&body, next.bound, true) {

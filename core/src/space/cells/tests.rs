@@ -2,9 +2,9 @@
 
 extern crate std;
 use super::*;
-use crate::space::body::Body;
-use crate::space::vec3::random_rotation;
-use crate::space::{space_index_words, SpaceParams, SpaceStorage};
+use crate::space3d::body::Body;
+use crate::space3d::vec3::random_rotation;
+use crate::space3d::{space_index_words, SpaceParams, SpaceStorage};
 use std::vec;
 
 /// The live cells, by level and position.
@@ -142,7 +142,7 @@ fn the_invariant_check_catches_a_dropped_cell() {
         .map(|_| core::array::from_fn::<f64, 3, _>(|a| crate::rng::uniform(&mut probe, next.lo[a], next.hi[a])))
         .find(|p| {
             e.fits(
-                &Body::new(&next.kind, V3::new(p[0], p[1], p[2]), next.scale, &crate::space::vec3::identity()),
+                &Body::new(&next.kind, V3::new(p[0], p[1], p[2]), next.scale, &crate::space3d::vec3::identity()),
                 next.bound,
             )
         })

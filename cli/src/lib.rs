@@ -1,19 +1,18 @@
 //! The `zetafill` command-line tool: argument parsing (clap, [`args`]), one checked plan per
-//! command ([`plan`]), one module per subcommand ([`cmd`]), the drawing model ([`model`]),
-//! shared geometry ([`geometry`]), one writer per output format ([`output`]), the file system
-//! ([`io`]), and the single place where outcomes become exit codes ([`run_main`]). Which of
-//! them may use which is in docs/architecture.md.
+//! command ([`plan`]), one module per subcommand ([`cmd`]), the file system ([`io`]), and the
+//! single place where outcomes become exit codes ([`run_main`]). The drawing model, the shared
+//! geometry, the writers and the error values are the crate `zetafill-render`, re-exported
+//! here as [`model`], [`geometry`], [`output`] and [`error`]. Which module may use which is in
+//! docs/architecture.md.
 
 #![deny(missing_docs)]
 
 pub mod args;
 pub mod cmd;
-pub mod error;
-pub mod geometry;
 pub mod io;
-pub mod model;
-pub mod output;
 pub mod plan;
+
+pub use zetafill_render::{error, geometry, model, output};
 
 pub use args::{Cli, Command};
 use clap::Parser;

@@ -194,7 +194,7 @@ impl Session {
 /// The names of the built-in machine profiles (`zetafill machines list`), for `--machine`.
 #[wasm_bindgen]
 pub fn machines() -> Vec<String> {
-    zetafill_cli::output::machine::Machine::builtin_names()
+    zetafill_render::output::machine::Machine::builtin_names()
         .into_iter()
         .map(String::from)
         .collect()

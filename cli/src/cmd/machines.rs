@@ -25,7 +25,7 @@ pub fn run(plan: &MachinesPlan) -> Result<(), CliError> {
             Some(t) => t.to_string(),
             None => {
                 // A file: check it, then print it normalised.
-                let m = Machine::load(name).map_err(profile_error)?;
+                let m = Machine::load(name, crate::plan::plot::profile_text).map_err(profile_error)?;
                 toml::to_string(&m).map_err(|e| CliError::Io(format!("cannot encode TOML: {e}")))?
             }
         },

@@ -1,7 +1,6 @@
 //! Reading input files with a size limit, so that a device or an endless pipe given as an
 //! input (`--region svg:/dev/zero`) is refused after a bounded read instead of filling the
-//! memory. The limits are documented in docs/cli.md (machine profiles, which the profile
-//! module reads itself, stop at 1 MiB).
+//! memory. The limits are documented in docs/cli.md (machine profiles stop at 1 MiB).
 
 use std::io::Read;
 use std::path::Path;

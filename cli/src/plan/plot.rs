@@ -197,7 +197,8 @@ impl PlotArgs {
 
     /// The machine with every command-line override applied and checked.
     pub fn machine(&self) -> Result<machine::Machine, CliError> {
-        let m = machine::Machine::load(self.machine.as_deref().unwrap_or(DEFAULT_MACHINE)).map_err(|e| CliError::arg("--machine", e))?;
+        let m = machine::Machine::load(self.machine.as_deref().unwrap_or(DEFAULT_MACHINE), profile_text)
+            .map_err(|e| CliError::arg("--machine", e))?;
         // A profile file is an input: no output may replace it.
         if let Some(p) = self.machine_file() {
             crate::io::inputs::note_read(p);
@@ -300,4 +301,11 @@ impl PlotArgs {
         }
         Ok(o)
     }
+}
+
+/// The text of a machine profile file (`--machine FILE.toml`), for `Machine::load`: at most
+/// 1 MiB of UTF-8, noted as an input of the run.
+pub fn profile_text(path: &std::path::Path) -> Result<String, String> {
+    let bytes = crate::io::read::read_limited(path, machine::MAX_PROFILE_BYTES, "a machine profile").map_err(|e| e.to_string())?;
+    String::from_utf8(bytes).map_err(|_| "it is not UTF-8 text".to_string())
 }

@@ -34,7 +34,7 @@ pub enum RegionSpec {
         /// Exclusive end of each ring.
         ends: Vec<usize>,
     },
-    /// `svg:FILE`, read by the run ([`crate::io::svgin`]).
+    /// `svg:FILE`, read by the command-line tool (its `io::svgin`).
     Svg(std::path::PathBuf),
     /// `mask:FILE[:THRESHOLD]`: the dark areas of a picture, traced when the fill is planned.
     Mask {

@@ -20,21 +20,21 @@
 //! [`crate::output`] turn drawings into SVG or G-code. Any mode that produces lines can write
 //! G-code the same way `zetafill fill` does:
 //!
-//! ```no_run
-//! use zetafill_cli::model::{Drawing, Path};
-//! use zetafill_cli::output::{gcode, machine::Machine};
+//! ```
+//! use zetafill_render::model::{Drawing, Path};
+//! use zetafill_render::output::{gcode, machine::Machine};
 //! let drawing = Drawing { paths: vec![Path::polyline(vec![[10.0, 10.0], [50.0, 10.0]], false)] };
 //! let machine = Machine::builtin("grbl-servo-pen").expect("built-in");
 //! let opts = gcode::GcodeOptions::new(&machine);
 //! let out = gcode::write(&drawing, &machine, &opts).expect("fits the bed");
-//! std::fs::write("out.gcode", &out.bytes).expect("written");
+//! assert!(out.bytes.starts_with(b";"));
 //! eprintln!("{}", out.figures);
 //! ```
 //!
-//! A mode with clap arguments can `#[command(flatten)]` [`crate::args::plot::PlotArgs`],
-//! resolve it into a [`crate::plan::plot::GcodePlan`] and call
-//! [`crate::cmd::plot::pens_gcode`], which adds placement on the bed (`--fit`,
-//! `--center`, `--margin`) and every other flag, exactly as `zetafill fill` does.
+//! In the command-line tool, a mode flattens the plotter flags (`args::plot::PlotArgs`),
+//! resolves them into a `plan::plot::GcodePlan` and calls `cmd::plot::pens_gcode`, which adds
+//! placement on the bed (`--fit`, `--center`, `--margin`) and every other flag, exactly as
+//! `zetafill fill` does.
 //!
 //! Nothing here prints, touches files or knows the command line; everything is
 //! deterministic: the same input gives the same values.

@@ -1,4 +1,4 @@
-//! Machine profiles as data: TOML files (`cli/machines/*.toml`, embedded in the binary as the
+//! Machine profiles as data: TOML files (`render/machines/*.toml`, embedded in the binary as the
 //! built-ins) read with serde into [`Machine`] and checked once by [`Machine::validate`], so
 //! the writer can trust every field. Unknown or missing fields are errors that name the field.
 //!
@@ -195,12 +195,12 @@ impl Machine {
         Ok(m)
     }
 
-    /// `--machine`: a built-in name, or a path to a `.toml` file.
-    pub fn load(spec: &str) -> Result<Machine, String> {
+    /// `--machine`: a built-in name, or a profile file whose text `read` gives (the caller owns
+    /// the file system; its error is the message's end, such as "it is not UTF-8 text").
+    pub fn load(spec: &str, read: impl FnOnce(&std::path::Path) -> Result<String, String>) -> Result<Machine, String> {
         if let Some(m) = Machine::builtin_text(spec) {
             return Machine::parse(m).map_err(|e| format!("built-in '{spec}': {e}"));
         }
-        let path = std::path::Path::new(spec);
         let looks_like_file = spec.ends_with(".toml") || spec.contains('/') || spec.contains('\\');
         if !looks_like_file {
             return Err(format!(
@@ -208,19 +208,7 @@ impl Machine {
                 Machine::builtin_names().join(", ")
             ));
         }
-        // Read at most one byte past the limit, so that a device or an endless pipe given as
-        // a profile is refused after 1 MiB.
-        let mut bytes = Vec::new();
-        std::fs::File::open(path)
-            .and_then(|f| std::io::Read::read_to_end(&mut std::io::Read::take(f, MAX_PROFILE_BYTES + 1), &mut bytes))
-            .map_err(|e| format!("cannot read '{spec}': {e}"))?;
-        if bytes.len() as u64 > MAX_PROFILE_BYTES {
-            return Err(format!(
-                "cannot read '{spec}': it holds more than {} MiB, the most a machine profile may be",
-                MAX_PROFILE_BYTES >> 20
-            ));
-        }
-        let text = String::from_utf8(bytes).map_err(|_| format!("cannot read '{spec}': it is not UTF-8 text"))?;
+        let text = read(std::path::Path::new(spec)).map_err(|e| format!("cannot read '{spec}': {e}"))?;
         Machine::parse(&text).map_err(|e| format!("'{spec}': {e}"))
     }
 
@@ -535,7 +523,7 @@ mod tests {
 
     #[test]
     fn unknown_machine_lists_the_builtins() {
-        let e = Machine::load("grbl-lazer").err().unwrap_or_default();
+        let e = Machine::load("grbl-lazer", |_| Err("not read".into())).err().unwrap_or_default();
         assert!(e.contains("unknown machine") && e.contains("grbl-laser"), "{e}");
     }
 }

@@ -7,7 +7,6 @@ use crate::args::fill::{FillArgs, MixArg, Rotate, Sampler, ScalarArg, DEFAULT_MA
 use crate::args::plot::{Layers, PlotArgs, SVG_FLAGS};
 use crate::args::style::StyleArg;
 use crate::error::CliError;
-use crate::io::write::Dest;
 use crate::model::doc::kind_name;
 use crate::model::fill::BuildOptions;
 use crate::model::region::RegionSpec;
@@ -30,19 +29,7 @@ pub const SHAPES: Unit = Unit {
 };
 
 /// A checked `zetafill fill`: where it writes, what it runs and how it draws.
-#[derive(Debug, Clone)]
-pub struct FillPlan {
-    /// Where the output goes.
-    pub dest: Dest,
-    /// `--max-output-size`: the largest output written, in bytes.
-    pub max_output_size: u64,
-    /// The output format.
-    pub format: Format,
-    /// The run.
-    pub run: FillRun,
-    /// The drawing.
-    pub draw: FillDraw,
-}
+pub type FillPlan = super::Planned<Format, FillRun, FillDraw>;
 
 /// What the engine runs.
 #[derive(Debug, Clone)]
@@ -176,17 +163,12 @@ fn check_plot(p: &PlotArgs, format: Format) -> Result<(), CliError> {
 /// Checks the flags of `zetafill fill` and resolves them into a plan. Nothing runs and
 /// nothing is read but the machine profile.
 pub fn resolve(a: &FillArgs) -> Result<FillPlan, CliError> {
-    let dest = Dest::parse(&a.output.output);
-    dest.check("--output")?;
-    let format = Format::resolve(a.output.format, &a.output.output)?;
-    let (run, draw) = resolve_as(a, format)?;
-    Ok(FillPlan {
-        dest,
-        max_output_size: a.output.max_output_size,
-        format,
-        run,
-        draw,
-    })
+    FillPlan::resolve(
+        &a.output.output,
+        a.output.max_output_size,
+        || Format::resolve(a.output.format, &a.output.output),
+        |format| resolve_as(a, format),
+    )
 }
 
 /// The run and the drawing of `a` written as `format`: every rule between the flags, but

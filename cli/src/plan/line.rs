@@ -7,7 +7,6 @@
 use crate::args::line::{LineArgs, RenderArg, MAX_SEGMENTS};
 use crate::args::plot::{Layers, PlotArgs};
 use crate::error::CliError;
-use crate::io::write::Dest;
 use crate::output::png::Raster;
 use crate::output::svg::Style;
 use crate::plan::colour::Colours;
@@ -26,19 +25,7 @@ pub const SEGMENTS: Unit = Unit {
 };
 
 /// A checked `zetafill line`: where it writes, what it runs and how it draws.
-#[derive(Debug, Clone)]
-pub struct LinePlan {
-    /// Where the output goes.
-    pub dest: Dest,
-    /// `--max-output-size`: the largest output written, in bytes.
-    pub max_output_size: u64,
-    /// The output format.
-    pub format: Format,
-    /// The run.
-    pub run: LineRun,
-    /// The drawing.
-    pub draw: LineDraw,
-}
+pub type LinePlan = super::Planned<Format, LineRun, LineDraw>;
 
 /// What the 1D engine runs.
 #[derive(Debug, Clone, Copy)]
@@ -124,17 +111,12 @@ impl From<RenderArg> for Render {
 /// nothing is read but the machine profile.
 pub fn resolve(a: &LineArgs) -> Result<LinePlan, CliError> {
     check_zoom(a)?;
-    let dest = Dest::parse(&a.output.output);
-    dest.check("--output")?;
-    let format = Format::resolve(a.output.format, &a.output.output)?;
-    let (run, draw) = resolve_format(a, format)?;
-    Ok(LinePlan {
-        dest,
-        max_output_size: a.output.max_output_size,
-        format,
-        run,
-        draw,
-    })
+    LinePlan::resolve(
+        &a.output.output,
+        a.output.max_output_size,
+        || Format::resolve(a.output.format, &a.output.output),
+        |format| resolve_format(a, format),
+    )
 }
 
 /// The run and the drawing of `a` written as `format`: every rule between the flags, but

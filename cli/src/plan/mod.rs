@@ -20,7 +20,48 @@ pub mod tile;
 
 use crate::args::common::{PowerLawArgs, StopArgs};
 use crate::error::CliError;
+use crate::io::write::Dest;
 use zetafill::{AreaSequence, CapacityError, Stop};
+
+/// A checked command that writes a file: where it writes, in which format, what it runs and
+/// how it draws. Each command names its own (`fill::FillPlan`, `space::SpacePlan`, ...).
+#[derive(Debug, Clone)]
+pub struct Planned<F, R, D> {
+    /// Where the output goes.
+    pub dest: Dest,
+    /// `--max-output-size`: the largest output written, in bytes.
+    pub max_output_size: u64,
+    /// The output format.
+    pub format: F,
+    /// The run.
+    pub run: R,
+    /// The drawing.
+    pub draw: D,
+}
+
+impl<F: Copy, R, D> Planned<F, R, D> {
+    /// The output path checked (`--output`), then its format told by `format`, then the run
+    /// and the drawing resolved for that format by `resolve_as`, in that order, so that the
+    /// first refusal is always the same one.
+    pub fn resolve(
+        output: &std::path::Path,
+        max_output_size: u64,
+        format: impl FnOnce() -> Result<F, CliError>,
+        resolve_as: impl FnOnce(F) -> Result<(R, D), CliError>,
+    ) -> Result<Self, CliError> {
+        let dest = Dest::parse(output);
+        dest.check("--output")?;
+        let format = format()?;
+        let (run, draw) = resolve_as(format)?;
+        Ok(Planned {
+            dest,
+            max_output_size,
+            format,
+            run,
+            draw,
+        })
+    }
+}
 
 /// The exponent c: `--c`, or else `--dimension` through `from_dimension` (c = 2/D in 2D,
 /// 1/D in 1D), or else `default`.

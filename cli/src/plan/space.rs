@@ -6,7 +6,6 @@
 use crate::args::fill::{Rotate, Sampler, ScalarArg, DEFAULT_MAX_TRIALS};
 use crate::args::space::{solid_name, CutArg, SpaceArgs};
 use crate::error::{num, CliError};
-use crate::io::write::Dest;
 use crate::model::slices::{SliceOptions, MAX_SHEETS};
 use crate::model::solid::{Region3, SolidKind};
 use crate::model::space::{SolidParamsDoc, SpaceRegionDoc};
@@ -33,19 +32,7 @@ pub const SOLIDS: Unit = Unit {
 pub const DEFAULT_C: f64 = 1.15;
 
 /// A checked `zetafill space`.
-#[derive(Debug, Clone)]
-pub struct SpacePlan {
-    /// Where the output goes.
-    pub dest: Dest,
-    /// `--max-output-size`: the largest output written, in bytes.
-    pub max_output_size: u64,
-    /// The output format.
-    pub format: SpaceFormat,
-    /// The run.
-    pub run: SpaceRun,
-    /// How the solids are written.
-    pub draw: SpaceDraw,
-}
+pub type SpacePlan = super::Planned<SpaceFormat, SpaceRun, SpaceDraw>;
 
 /// What the engine runs.
 #[derive(Debug, Clone)]
@@ -147,17 +134,12 @@ fn unit_kind(s: &Solid) -> SolidKind {
 
 /// Checks the flags of `zetafill space` and resolves them into a plan. Nothing runs.
 pub fn resolve(a: &SpaceArgs) -> Result<SpacePlan, CliError> {
-    let dest = Dest::parse(&a.output.output);
-    dest.check("--output")?;
-    let format = SpaceFormat::resolve(a.output.format, &a.output.output)?;
-    let (run, draw) = resolve_as(a, format)?;
-    Ok(SpacePlan {
-        dest,
-        max_output_size: a.output.max_output_size,
-        format,
-        run,
-        draw,
-    })
+    SpacePlan::resolve(
+        &a.output.output,
+        a.output.max_output_size,
+        || SpaceFormat::resolve(a.output.format, &a.output.output),
+        |format| resolve_as(a, format),
+    )
 }
 
 /// The run and the drawing of `a` written as `format`: every rule between the flags, but none

@@ -12,7 +12,6 @@ use crate::args::territory::{RenderArg, TerritoryArgs};
 use crate::error::CliError;
 use crate::geometry::site::SiteError;
 use crate::geometry::voronoi::Pt;
-use crate::io::write::Dest;
 use crate::model::region::RegionSpec;
 use crate::output::palette::ColorBy;
 use crate::output::png::Raster;
@@ -24,19 +23,7 @@ use crate::plan::raster;
 use std::path::{Path, PathBuf};
 
 /// A checked `zetafill territory`: where it writes, what it grows and how it draws.
-#[derive(Debug, Clone)]
-pub struct TerritoryPlan {
-    /// Where the output goes.
-    pub dest: Dest,
-    /// `--max-output-size`: the largest output written, in bytes.
-    pub max_output_size: u64,
-    /// The output format.
-    pub format: TerritoryFormat,
-    /// The run.
-    pub run: TerritoryRun,
-    /// The drawing.
-    pub draw: TerritoryDraw,
-}
+pub type TerritoryPlan = super::Planned<TerritoryFormat, TerritoryRun, TerritoryDraw>;
 
 /// What the territory competition grows.
 #[derive(Debug, Clone)]
@@ -132,17 +119,12 @@ const COLOUR_BY: ColorBy = ColorBy::Cycle;
 /// Checks the flags of `zetafill territory` and resolves them into a plan. Nothing runs and
 /// nothing is read but the machine profile.
 pub fn resolve(a: &TerritoryArgs) -> Result<TerritoryPlan, CliError> {
-    let dest = Dest::parse(&a.output.output);
-    dest.check("--output")?;
-    let format = TerritoryFormat::resolve(a.output.format, &a.output.output)?;
-    let (run, draw) = resolve_as(a, format)?;
-    Ok(TerritoryPlan {
-        dest,
-        max_output_size: a.output.max_output_size,
-        format,
-        run,
-        draw,
-    })
+    TerritoryPlan::resolve(
+        &a.output.output,
+        a.output.max_output_size,
+        || TerritoryFormat::resolve(a.output.format, &a.output.output),
+        |format| resolve_as(a, format),
+    )
 }
 
 /// The run and the drawing of `a` written as `format`: every rule between the flags, but

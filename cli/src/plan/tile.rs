@@ -7,7 +7,6 @@
 use crate::args::plot::{Layers, PlotArgs, GCODE_FLAGS};
 use crate::args::tile::{LayoutArg, RenderArg, StyleArg, TileArgs};
 use crate::error::CliError;
-use crate::io::write::Dest;
 use crate::model::tile::{Arrangement, Layout, LayoutError, Render, SpecError, Style, TileSpec, MAX_DISCS};
 use crate::output::height::Relief;
 use crate::output::num;
@@ -19,19 +18,7 @@ use crate::plan::plot::FOR_GCODE;
 use crate::plan::raster::{self, only_png};
 
 /// A checked `zetafill tile`: where it writes, the tile it grows and how it draws it.
-#[derive(Debug, Clone)]
-pub struct TilePlan {
-    /// Where the output goes.
-    pub dest: Dest,
-    /// `--max-output-size`: the largest output written, in bytes.
-    pub max_output_size: u64,
-    /// The output format.
-    pub format: TileFormat,
-    /// The tile.
-    pub run: TileRun,
-    /// The drawing.
-    pub draw: TileDraw,
-}
+pub type TilePlan = super::Planned<TileFormat, TileRun, TileDraw>;
 
 /// The tile to grow and the picture made of it.
 #[derive(Debug, Clone, Copy)]
@@ -99,17 +86,12 @@ const VORONOI_BAND: f64 = 0.25;
 /// Checks the flags of `zetafill tile` and resolves them into a plan. Nothing runs and
 /// nothing is read but the machine profile.
 pub fn resolve(a: &TileArgs) -> Result<TilePlan, CliError> {
-    let dest = Dest::parse(&a.output.output);
-    dest.check("--output")?;
-    let format = TileFormat::resolve(a.output.format, &a.output.output)?;
-    let (run, draw) = resolve_as(a, format)?;
-    Ok(TilePlan {
-        dest,
-        max_output_size: a.output.max_output_size,
-        format,
-        run,
-        draw,
-    })
+    TilePlan::resolve(
+        &a.output.output,
+        a.output.max_output_size,
+        || TileFormat::resolve(a.output.format, &a.output.output),
+        |format| resolve_as(a, format),
+    )
 }
 
 /// The tile and the drawing of `a` written as `format`: every rule between the flags, but

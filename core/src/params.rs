@@ -139,6 +139,18 @@ impl core::fmt::Display for ParamError {
 
 impl core::error::Error for ParamError {}
 
+/// The power law's two numbers as every engine checks them first: c > 1 (else the areas do
+/// not sum) and N > 0, both finite.
+pub(crate) fn check_power_law(c: f64, n_offset: f64) -> Result<(), ParamError> {
+    if !(c.is_finite() && c > 1.0) {
+        return Err(ParamError::Exponent);
+    }
+    if !(n_offset.is_finite() && n_offset > 0.0) {
+        return Err(ParamError::Offset);
+    }
+    Ok(())
+}
+
 /// Why a step placed nothing. The engine keeps every shape placed before.
 ///
 /// # Examples

@@ -255,12 +255,7 @@ impl<'a, S: Scalar> Engine<'a, S> {
     /// larger than the scalar computes exactly ([`Scalar::MAX_EXTENT`]) is refused.
     pub fn new(params: Params, region: Region<'a>, storage: Storage<'a, S>) -> Result<Self, ParamError> {
         let Storage { shapes, index, coverage } = storage;
-        if !(params.c.is_finite() && params.c > 1.0) {
-            return Err(ParamError::Exponent);
-        }
-        if !(params.n_offset.is_finite() && params.n_offset > 0.0) {
-            return Err(ParamError::Offset);
-        }
+        crate::params::check_power_law(params.c, params.n_offset)?;
         if !params.shape.is_valid() {
             return Err(ParamError::Shape);
         }

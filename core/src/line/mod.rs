@@ -252,12 +252,7 @@ impl<'a, S: Scalar> LineEngine<'a, S> {
     /// longer than the scalar computes exactly ([`Scalar::MAX_EXTENT`]) is refused.
     pub fn new(params: LineParams, interval: Interval, storage: LineStorage<'a, S>) -> Result<Self, ParamError> {
         let LineStorage { segments, index } = storage;
-        if !(params.c.is_finite() && params.c > 1.0) {
-            return Err(ParamError::Exponent);
-        }
-        if !(params.n_offset.is_finite() && params.n_offset > 0.0) {
-            return Err(ParamError::Offset);
-        }
+        crate::params::check_power_law(params.c, params.n_offset)?;
         let l = interval.length;
         if !(l.is_finite() && l > 0.0) {
             return Err(ParamError::Region);

@@ -139,12 +139,7 @@ impl<'a, S: Scalar> SpaceEngine<'a, S> {
     /// Validates everything and builds an engine over the caller's storage.
     pub fn new(params: SpaceParams, region: SpaceRegion, storage: SpaceStorage<'a, S>) -> Result<Self, ParamError> {
         let SpaceStorage { solids, index } = storage;
-        if !(params.c.is_finite() && params.c > 1.0) {
-            return Err(ParamError::Exponent);
-        }
-        if !(params.n_offset.is_finite() && params.n_offset > 0.0) {
-            return Err(ParamError::Offset);
-        }
+        crate::params::check_power_law(params.c, params.n_offset)?;
         if !params.solids.is_valid() {
             return Err(ParamError::Shape);
         }

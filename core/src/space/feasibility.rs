@@ -7,6 +7,32 @@ use super::solid::{Solid, SolidList};
 use crate::feasibility::{capacity, AreaSequence, CapacityError};
 use crate::params::Stop;
 
+/// A refusal of the first solids, with the largest c that would work: the struct, its
+/// message (`WHAT: lower c to at most C`, or `WHAT at any c: raise N or lower the gap`) and its
+/// `Error` impl.
+macro_rules! max_c_error {
+    ($(#[$doc:meta])* $name:ident, $what:literal) => {
+        $(#[$doc])*
+        #[derive(Debug, Clone, Copy, PartialEq)]
+        #[cfg_attr(feature = "defmt", derive(defmt::Format))]
+        pub struct $name {
+            /// The largest c that works at this N, or `None` when none does (raise N, lower the gap).
+            pub max_c: Option<f64>,
+        }
+
+        impl core::fmt::Display for $name {
+            fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+                match self.max_c {
+                    Some(c) => write!(f, concat!($what, ": lower c to at most {}"), c),
+                    None => f.write_str(concat!($what, " at any c: raise N or lower the gap")),
+                }
+            }
+        }
+
+        impl core::error::Error for $name {}
+    };
+}
+
 /// [`crate::internals::feasibility::capacity`] for solids: the width of solid `k` is its
 /// narrowest width at volume `seq.area(k)`.
 ///
@@ -29,27 +55,14 @@ pub fn space_capacity(seq: &AreaSequence, solids: &SolidList, stop: &Stop, max: 
     })
 }
 
-/// The first solid cannot fit in the region's box with its gap (it is wider, in every
-/// orientation, than the box's smallest side; in a periodic box, so wide that it meets its own
-/// image one period away): `max_c` is the largest c (60 halvings of
-/// `[1 + 1e-9, c]`) at which it fits, if any.
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "defmt", derive(defmt::Format))]
-pub struct FirstSolidError {
-    /// The largest c that works at this N, or `None` when none does (raise N, lower the gap).
-    pub max_c: Option<f64>,
-}
-
-impl core::fmt::Display for FirstSolidError {
-    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
-        match self.max_c {
-            Some(c) => write!(f, "the first solid is larger than the region: lower c to at most {c}"),
-            None => f.write_str("the first solid is larger than the region at any c: raise N or lower the gap"),
-        }
-    }
-}
-
-impl core::error::Error for FirstSolidError {}
+max_c_error!(
+    /// The first solid cannot fit in the region's box with its gap (it is wider, in every
+    /// orientation, than the box's smallest side; in a periodic box, so wide that it meets its own
+    /// image one period away): `max_c` is the largest c (60 halvings of
+    /// `[1 + 1e-9, c]`) at which it fits, if any.
+    FirstSolidError,
+    "the first solid is larger than the region"
+);
 
 /// Whether the first solid fits in the region's box with its gap (a necessary condition,
 /// what [`crate::space::Engine::step`] reports as [`crate::StepError::CannotFit`]), or, in a
@@ -113,26 +126,13 @@ fn self_width(kind: &Solid, scale: f64) -> f64 {
     }
 }
 
-/// The first two solids certainly cannot both be placed (every run would halt at placement
-/// 1): `max_c` is the largest c (60 halvings of `[1 + 1e-9, c]`) at which they can, if any.
-/// See [`check_first_two_solids`].
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "defmt", derive(defmt::Format))]
-pub struct FirstTwoSolidsError {
-    /// The largest c that works at this N, or `None` when none does (raise N, lower the gap).
-    pub max_c: Option<f64>,
-}
-
-impl core::fmt::Display for FirstTwoSolidsError {
-    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
-        match self.max_c {
-            Some(c) => write!(f, "the first two solids cannot both fit: lower c to at most {c}"),
-            None => f.write_str("the first two solids cannot both fit at any c: raise N or lower the gap"),
-        }
-    }
-}
-
-impl core::error::Error for FirstTwoSolidsError {}
+max_c_error!(
+    /// The first two solids certainly cannot both be placed (every run would halt at placement
+    /// 1): `max_c` is the largest c (60 halvings of `[1 + 1e-9, c]`) at which they can, if any.
+    /// See [`check_first_two_solids`].
+    FirstTwoSolidsError,
+    "the first two solids cannot both fit"
+);
 
 /// Whether solids 0 and 1, of scales `s0` and `s1`, can both lie in `region` at least `gap`
 /// from its boundary and from each other, for the cases whose limit is known exactly:
@@ -219,6 +219,33 @@ pub fn check_first_two_solids(params: &SpaceParams, region: &SpaceRegion) -> Res
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_limit_errors_say_what_to_change() {
+        extern crate std;
+        use std::string::ToString;
+        let cases = [
+            (
+                FirstSolidError { max_c: Some(1.5) }.to_string(),
+                "the first solid is larger than the region: lower c to at most 1.5",
+            ),
+            (
+                FirstSolidError { max_c: None }.to_string(),
+                "the first solid is larger than the region at any c: raise N or lower the gap",
+            ),
+            (
+                FirstTwoSolidsError { max_c: Some(1.25) }.to_string(),
+                "the first two solids cannot both fit: lower c to at most 1.25",
+            ),
+            (
+                FirstTwoSolidsError { max_c: None }.to_string(),
+                "the first two solids cannot both fit at any c: raise N or lower the gap",
+            ),
+        ];
+        for (got, want) in cases {
+            assert_eq!(got, want);
+        }
+    }
 
     #[test]
     fn a_periodic_first_sphere_must_clear_its_own_image() {

@@ -218,7 +218,7 @@ fn bisect_ratio(mut ok: f64, mut bad: f64, works: impl Fn(f64) -> bool) -> f64 {
 
 /// Where `works` turns false between `ok` (where it holds) and `bad` (where it does not): the
 /// last value found to work after 60 halvings.
-fn bisect(mut ok: f64, mut bad: f64, works: impl Fn(f64) -> bool) -> f64 {
+pub(crate) fn bisect(mut ok: f64, mut bad: f64, works: impl Fn(f64) -> bool) -> f64 {
     for _ in 0..60 {
         let mid = 0.5 * (ok + bad);
         if works(mid) {

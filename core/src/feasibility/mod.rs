@@ -15,6 +15,7 @@ use crate::shape::{ShapeKind, ShapeList};
 use crate::zeta::{self, ZetaError};
 
 mod first;
+pub(crate) use first::bisect;
 pub use first::{check_first_two, first_shape, first_two_fit, FirstShape, FirstTwoError};
 
 /// The power-law sequence of areas (lengths in 1D, volumes in 3D)

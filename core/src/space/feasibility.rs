@@ -4,7 +4,7 @@
 use super::engine::SpaceParams;
 use super::region::SpaceRegion;
 use super::solid::{Solid, SolidList};
-use crate::feasibility::{capacity, AreaSequence, CapacityError};
+use crate::feasibility::{bisect, capacity, AreaSequence, CapacityError};
 use crate::params::Stop;
 
 /// A refusal of the first solids, with the largest c that would work: the struct, its
@@ -97,20 +97,13 @@ pub fn check_first_solid(params: &SpaceParams, region: &SpaceRegion) -> Result<(
     if fits(params.c) {
         return Ok(());
     }
-    let mut lo = 1.0 + 1e-9;
-    if !fits(lo) {
+    let lowest = 1.0 + 1e-9;
+    if !fits(lowest) {
         return Err(FirstSolidError { max_c: None });
     }
-    let mut hi = params.c;
-    for _ in 0..60 {
-        let mid = 0.5 * (lo + hi);
-        if fits(mid) {
-            lo = mid;
-        } else {
-            hi = mid;
-        }
-    }
-    Err(FirstSolidError { max_c: Some(lo) })
+    Err(FirstSolidError {
+        max_c: Some(bisect(lowest, params.c, fits)),
+    })
 }
 
 /// A width below which a solid meets every copy of itself shifted by less, in any direction
@@ -200,20 +193,13 @@ pub fn check_first_two_solids(params: &SpaceParams, region: &SpaceRegion) -> Res
     if fits(params.c) {
         return Ok(());
     }
-    let mut lo = 1.0 + 1e-9;
-    if !fits(lo) {
+    let lowest = 1.0 + 1e-9;
+    if !fits(lowest) {
         return Err(FirstTwoSolidsError { max_c: None });
     }
-    let mut hi = params.c;
-    for _ in 0..60 {
-        let mid = 0.5 * (lo + hi);
-        if fits(mid) {
-            lo = mid;
-        } else {
-            hi = mid;
-        }
-    }
-    Err(FirstTwoSolidsError { max_c: Some(lo) })
+    Err(FirstTwoSolidsError {
+        max_c: Some(bisect(lowest, params.c, fits)),
+    })
 }
 
 #[cfg(test)]

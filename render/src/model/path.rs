@@ -200,23 +200,13 @@ impl Path {
                 radius,
                 start,
                 sweep,
-            } => {
-                if sweep.abs() >= TAU {
-                    Path::Arc {
-                        center: *center,
-                        radius: *radius,
-                        start: *start,
-                        sweep: -sweep,
-                    }
-                } else {
-                    Path::Arc {
-                        center: *center,
-                        radius: *radius,
-                        start: start + sweep,
-                        sweep: -sweep,
-                    }
-                }
-            }
+            } => Path::Arc {
+                center: *center,
+                radius: *radius,
+                // A whole circle keeps its start; an arc starts where it ended.
+                start: if sweep.abs() >= TAU { *start } else { start + sweep },
+                sweep: -sweep,
+            },
         }
     }
 

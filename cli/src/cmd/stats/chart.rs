@@ -28,6 +28,21 @@ fn chart_error(e: impl std::fmt::Display) -> CliError {
     CliError::Io(format!("cannot draw the chart: {e}"))
 }
 
+/// The series' legend in the upper left, then the drawing finished.
+fn legend_and_present<'a, DB: DrawingBackend + 'a, CT: plotters::coord::CoordTranslate>(
+    chart: &mut ChartContext<'a, DB, CT>,
+    root: &DrawingArea<DB, plotters::coord::Shift>,
+) -> Result<(), CliError> {
+    chart
+        .configure_series_labels()
+        .position(SeriesLabelPosition::UpperLeft)
+        .background_style(WHITE.mix(0.85))
+        .border_style(BLACK)
+        .draw()
+        .map_err(chart_error)?;
+    root.present().map_err(chart_error)
+}
+
 /// One curve of cumulative trials.
 #[derive(Debug, Clone)]
 pub struct TrialsSeries {
@@ -96,14 +111,7 @@ pub fn trials_chart(series: &[TrialsSeries], title: &str) -> Result<Vec<u8>, Cli
                     .map_err(chart_error)?;
             }
         }
-        chart
-            .configure_series_labels()
-            .position(SeriesLabelPosition::UpperLeft)
-            .background_style(WHITE.mix(0.85))
-            .border_style(BLACK)
-            .draw()
-            .map_err(chart_error)?;
-        root.present().map_err(chart_error)?;
+        legend_and_present(&mut chart, &root)?;
     }
     out.push('\n');
     Ok(out.into_bytes())
@@ -158,14 +166,7 @@ pub fn halting_chart(series: &[HaltingSeries], title: &str) -> Result<Vec<u8>, C
                 .draw_series(s.points.iter().map(|&p| Circle::new(p, 4, col.filled())))
                 .map_err(chart_error)?;
         }
-        chart
-            .configure_series_labels()
-            .position(SeriesLabelPosition::UpperLeft)
-            .background_style(WHITE.mix(0.85))
-            .border_style(BLACK)
-            .draw()
-            .map_err(chart_error)?;
-        root.present().map_err(chart_error)?;
+        legend_and_present(&mut chart, &root)?;
     }
     out.push('\n');
     Ok(out.into_bytes())

@@ -44,9 +44,10 @@ pub struct LineRun {
     pub quiet: bool,
 }
 
-/// How the document is drawn.
-#[derive(Debug, Clone)]
-pub struct LineDraw {
+/// How the segments are drawn: the part of the drawing plan the SVG, PNG and G-code
+/// pictures read.
+#[derive(Debug, Clone, Copy)]
+pub struct LineLook {
     /// How segments are drawn.
     pub render: Render,
     /// Outline or filled circles.
@@ -63,6 +64,13 @@ pub struct LineDraw {
     pub zoom_center: f64,
     /// Mark the interval's ends.
     pub boundary: bool,
+}
+
+/// How the document is drawn.
+#[derive(Debug, Clone)]
+pub struct LineDraw {
+    /// How the segments are drawn.
+    pub look: LineLook,
     /// PNG size.
     pub raster: Raster,
     /// The colours, as the colour flags set them.
@@ -180,14 +188,16 @@ fn resolve_format(a: &LineArgs, format: Format) -> Result<(LineRun, LineDraw), C
         quiet: a.quiet,
     };
     let draw = LineDraw {
-        render: a.render.into(),
-        style: a.style.into(),
-        pen_width: a.pen_width,
-        bar_height: a.bar_height,
-        zoom_rows: a.zoom_rows,
-        zoom_fraction: a.zoom_fraction,
-        zoom_center: a.zoom_center.unwrap_or(a.length / 2.0),
-        boundary: a.boundary,
+        look: LineLook {
+            render: a.render.into(),
+            style: a.style.into(),
+            pen_width: a.pen_width,
+            bar_height: a.bar_height,
+            zoom_rows: a.zoom_rows,
+            zoom_fraction: a.zoom_fraction,
+            zoom_center: a.zoom_center.unwrap_or(a.length / 2.0),
+            boundary: a.boundary,
+        },
         raster: a.raster.raster(),
         colours: a.colour.colours(colour_layers && a.colour.palette.is_some()),
         gcode: if format == Format::Gcode {

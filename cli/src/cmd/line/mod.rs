@@ -221,14 +221,7 @@ pub fn render(doc: &LineDoc, format: Format, d: &LineDraw) -> Result<Vec<u8>, Cl
 /// A document in a format, ready to be streamed (see [`crate::cmd::fill::output`]).
 pub fn output<'a>(doc: &'a LineDoc, format: Format, d: &LineDraw) -> Result<Output<'a>, CliError> {
     let opt = LineSvgOptions {
-        render: d.render,
-        style: d.style,
-        pen_width: d.pen_width,
-        bar_height: d.bar_height,
-        zoom_rows: d.zoom_rows,
-        zoom_fraction: d.zoom_fraction,
-        zoom_center: d.zoom_center,
-        boundary: d.boundary,
+        look: d.look,
         colours: d.colours.palette.as_ref().map(|p| {
             let items: Vec<(u64, f64)> = doc.shapes.iter().map(|s| (s.index, s.length)).collect();
             crate::output::palette::assign_items(&p.0, d.colours.by, doc.params.seed, &items, |_| 0)

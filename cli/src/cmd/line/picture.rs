@@ -6,7 +6,7 @@ use super::doc::{LineDoc, SegmentDoc};
 use crate::error::CliError;
 use crate::model::{Bounds, Item, Layer, Paint, Picture, Shape};
 use crate::output::svg::Style;
-use crate::plan::line::{no_zoom_gcode, Render};
+use crate::plan::line::{no_zoom_gcode, LineLook, Render};
 use std::fmt::Write as _;
 
 /// Drawn sizes below this (mm) round to zero at four decimals and are left out of the SVG.
@@ -15,22 +15,8 @@ const INVISIBLE: f64 = 0.5e-4;
 /// SVG options of the 1D renders.
 #[derive(Debug, Clone)]
 pub struct LineSvgOptions {
-    /// How segments are drawn.
-    pub render: Render,
-    /// Outline or filled circles.
-    pub style: Style,
-    /// Stroke width (mm).
-    pub pen_width: f64,
-    /// Bar height (mm).
-    pub bar_height: f64,
-    /// Zoom rows.
-    pub zoom_rows: u32,
-    /// Zoom fraction per row.
-    pub zoom_fraction: f64,
-    /// The point the rows zoom into (mm).
-    pub zoom_center: f64,
-    /// Mark the interval's ends.
-    pub boundary: bool,
+    /// How the segments are drawn.
+    pub look: LineLook,
     /// Each segment's colour (its stroke, or its fill for bars and filled circles); black
     /// without.
     pub colours: Option<Vec<crate::output::palette::Colour>>,
@@ -57,24 +43,24 @@ fn pieces(s: &SegmentDoc, l: f64, periodic: bool) -> Vec<(f64, f64)> {
 /// The drawing flags of `opt` as command-line text (each with a leading space): with
 /// [`command_line`], the command that reproduces a drawing.
 pub(crate) fn drawing_flags(opt: &LineSvgOptions) -> String {
-    let mut s = format!(" --render {} --style {}", opt.render.name(), opt.style.name());
-    if opt.pen_width != 0.3 {
-        let _ = write!(s, " --pen-width {}", opt.pen_width);
+    let mut s = format!(" --render {} --style {}", opt.look.render.name(), opt.look.style.name());
+    if opt.look.pen_width != 0.3 {
+        let _ = write!(s, " --pen-width {}", opt.look.pen_width);
     }
-    match opt.render {
+    match opt.look.render {
         Render::Bars => {
-            let _ = write!(s, " --bar-height {}", opt.bar_height);
+            let _ = write!(s, " --bar-height {}", opt.look.bar_height);
         }
         Render::Zoom => {
             let _ = write!(
                 s,
                 " --zoom-rows {} --zoom-fraction {} --zoom-center {}",
-                opt.zoom_rows, opt.zoom_fraction, opt.zoom_center
+                opt.look.zoom_rows, opt.look.zoom_fraction, opt.look.zoom_center
             );
         }
         _ => {}
     }
-    if opt.boundary {
+    if opt.look.boundary {
         s.push_str(" --boundary");
     }
     s.push_str(&opt.colour_flags);
@@ -124,8 +110,8 @@ fn stroke_layer(id: &str, pen: f64, items: Vec<Item>) -> Layer {
 fn circle_layer(id: &str, opt: &LineSvgOptions) -> Layer {
     Layer {
         id: Some(id.into()),
-        paint: match opt.style {
-            Style::Outline => Paint::outline(opt.pen_width),
+        paint: match opt.look.style {
+            Style::Outline => Paint::outline(opt.look.pen_width),
             Style::Filled => Paint::filled(),
         },
         ..Layer::default()
@@ -155,7 +141,7 @@ fn layered(base: Layer, opt: &LineSvgOptions, n: usize) -> (Vec<Layer>, Vec<usiz
 
 /// A 1D fill as a picture, y down (the line runs left to right at x = 0 ... L).
 pub fn picture(doc: &LineDoc, opt: &LineSvgOptions) -> Picture {
-    let filled_circles = opt.style == Style::Filled;
+    let filled_circles = opt.look.style == Style::Filled;
     let l = doc.region.length;
     let periodic = doc.region.periodic;
     let d0 = doc.shapes.first().map_or(l / 10.0, |s| s.length);
@@ -170,9 +156,9 @@ pub fn picture(doc: &LineDoc, opt: &LineSvgOptions) -> Picture {
         layers.append(&mut ls);
     };
     let height;
-    match opt.render {
+    match opt.look.render {
         Render::Dashes => {
-            height = (4.0 * opt.pen_width).max(2.0);
+            height = (4.0 * opt.look.pen_width).max(2.0);
             let y = height / 2.0;
             let mut items = Vec::new();
             for (k, s) in doc.shapes.iter().enumerate() {
@@ -182,10 +168,10 @@ pub fn picture(doc: &LineDoc, opt: &LineSvgOptions) -> Picture {
                     }
                 }
             }
-            add(layered(stroke_layer("segments", opt.pen_width, Vec::new()), opt, n), items);
+            add(layered(stroke_layer("segments", opt.look.pen_width, Vec::new()), opt, n), items);
         }
         Render::Bars => {
-            height = opt.bar_height;
+            height = opt.look.bar_height;
             let base = Layer {
                 id: Some("segments".into()),
                 paint: Paint::filled(),
@@ -198,7 +184,7 @@ pub fn picture(doc: &LineDoc, opt: &LineSvgOptions) -> Picture {
                         let bar = Shape::Rect {
                             corner: Some([a, 0.0]),
                             w: b - a,
-                            h: opt.bar_height,
+                            h: opt.look.bar_height,
                         };
                         items.push((k, painted(Item::new(bar), opt, k, true)));
                     }
@@ -240,13 +226,13 @@ pub fn picture(doc: &LineDoc, opt: &LineSvgOptions) -> Picture {
         Render::Zoom => {
             let row_h = d0;
             let spacing = row_h / 4.0;
-            let rows = opt.zoom_rows.max(1);
+            let rows = opt.look.zoom_rows.max(1);
             height = rows as f64 * row_h + (rows - 1) as f64 * spacing;
-            let mut marks = stroke_layer("zoom-marks", opt.pen_width / 2.0, Vec::new());
+            let mut marks = stroke_layer("zoom-marks", opt.look.pen_width / 2.0, Vec::new());
             let shifts: &[f64] = if periodic { &[0.0, -l, l] } else { &[0.0] };
             for k in 0..rows {
-                let w = l * opt.zoom_fraction.powi(k as i32);
-                let mid = opt.zoom_center;
+                let w = l * opt.look.zoom_fraction.powi(k as i32);
+                let mid = opt.look.zoom_center;
                 let (a, b) = (mid - w / 2.0, mid + w / 2.0);
                 let scale = l / w;
                 let y0 = k as f64 * (row_h + spacing);
@@ -279,7 +265,7 @@ pub fn picture(doc: &LineDoc, opt: &LineSvgOptions) -> Picture {
                 layers.push(row);
                 if k + 1 < rows {
                     // Ticks at the part of this row that the next row shows.
-                    let half = l * opt.zoom_fraction / 2.0;
+                    let half = l * opt.look.zoom_fraction / 2.0;
                     let at = (mid - a) * scale;
                     for x in [at - half, at + half] {
                         marks.items.push(Item::new(Shape::Line([x, y0 + row_h], [x, y0 + row_h + spacing])));
@@ -289,9 +275,9 @@ pub fn picture(doc: &LineDoc, opt: &LineSvgOptions) -> Picture {
             layers.push(marks);
         }
     }
-    if opt.boundary {
+    if opt.look.boundary {
         let ends = [0.0, l].map(|x| Item::new(Shape::Line([x, 0.0], [x, height])));
-        layers.push(stroke_layer("boundary", opt.pen_width, ends.to_vec()));
+        layers.push(stroke_layer("boundary", opt.look.pen_width, ends.to_vec()));
     }
     let mut pic = Picture::new(Bounds {
         x0: 0.0,
@@ -340,9 +326,9 @@ pub fn plotter_picture(doc: &LineDoc, opt: &LineSvgOptions, build: &crate::model
         let pieces = lines.into_iter().map(|[a, b]| Path::polyline(vec![a, b], false)).collect();
         hatching.push((k, Item::new(Shape::Path(pieces))));
     };
-    let height = match opt.render {
+    let height = match opt.look.render {
         Render::Dashes => {
-            let h = (4.0 * opt.pen_width).max(2.0);
+            let h = (4.0 * opt.look.pen_width).max(2.0);
             for (k, s) in kept {
                 for (a, b) in pieces(s, l, periodic) {
                     if b - a >= INVISIBLE {
@@ -369,7 +355,7 @@ pub fn plotter_picture(doc: &LineDoc, opt: &LineSvgOptions, build: &crate::model
             d0
         }
         Render::Bars => {
-            let h = opt.bar_height;
+            let h = opt.look.bar_height;
             for (k, s) in kept {
                 for (a, b) in pieces(s, l, periodic) {
                     if b - a >= INVISIBLE {

@@ -177,19 +177,34 @@ impl PointIndex {
         }
         if self.nodes[0].rmax == 0.0 {
             // Points only: squared distances throughout, one square root per result.
-            self.knn2_rec(0, q, k, out);
+            let dist2 = |q: Pt, p: usize| {
+                let (dx, dy) = (q[0] - self.pts[p][0], q[1] - self.pts[p][1]);
+                dx * dx + dy * dy
+            };
+            self.knn_by(0, q, k, out, &Self::lower2, &dist2);
             for e in out.iter_mut() {
                 e.0 = e.0.sqrt();
             }
         } else {
-            self.knn_rec(0, q, k, out);
+            self.knn_by(0, q, k, out, &|n, q| self.lower(n, q), &|q, p| self.point_dist(q, p));
         }
     }
 
-    fn knn2_rec(&self, node: usize, q: Pt, k: usize, out: &mut Vec<(f64, usize)>) {
+    /// The `k` nearest below `node` into `out` (sorted), by the distance `dist` from `q` to an
+    /// item and its lower bound `lower` from `q` to a node's box: exact or squared, the same
+    /// walk.
+    fn knn_by(
+        &self,
+        node: usize,
+        q: Pt,
+        k: usize,
+        out: &mut Vec<(f64, usize)>,
+        lower: &impl Fn(&Node, Pt) -> f64,
+        dist: &impl Fn(Pt, usize) -> f64,
+    ) {
         let n = &self.nodes[node];
         let bound = if out.len() == k { out[k - 1].0 } else { f64::INFINITY };
-        if n.alive == 0 || Self::lower2(n, q) >= bound {
+        if n.alive == 0 || lower(n, q) >= bound {
             return;
         }
         if n.left == NONE {
@@ -197,8 +212,7 @@ impl PointIndex {
                 if !self.alive[p] {
                     continue;
                 }
-                let (dx, dy) = (q[0] - self.pts[p][0], q[1] - self.pts[p][1]);
-                let d = dx * dx + dy * dy;
+                let d = dist(q, p);
                 if out.len() == k && d >= out[k - 1].0 {
                     continue;
                 }
@@ -209,10 +223,10 @@ impl PointIndex {
             return;
         }
         let (l, r) = (n.left as usize, n.right as usize);
-        let (dl, dr) = (Self::lower2(&self.nodes[l], q), Self::lower2(&self.nodes[r], q));
+        let (dl, dr) = (lower(&self.nodes[l], q), lower(&self.nodes[r], q));
         let (first, second) = if dl <= dr { (l, r) } else { (r, l) };
-        self.knn2_rec(first, q, k, out);
-        self.knn2_rec(second, q, k, out);
+        self.knn_by(first, q, k, out, lower, dist);
+        self.knn_by(second, q, k, out, lower, dist);
     }
 
     /// Squared distance from `q` to a node's box (valid as a bound when no radii are left).
@@ -220,34 +234,6 @@ impl PointIndex {
         let dx = (n.min[0] - q[0]).max(q[0] - n.max[0]).max(0.0);
         let dy = (n.min[1] - q[1]).max(q[1] - n.max[1]).max(0.0);
         dx * dx + dy * dy
-    }
-
-    fn knn_rec(&self, node: usize, q: Pt, k: usize, out: &mut Vec<(f64, usize)>) {
-        let n = &self.nodes[node];
-        let bound = if out.len() == k { out[k - 1].0 } else { f64::INFINITY };
-        if n.alive == 0 || self.lower(n, q) >= bound {
-            return;
-        }
-        if n.left == NONE {
-            for p in n.lo as usize..n.hi as usize {
-                if !self.alive[p] {
-                    continue;
-                }
-                let d = self.point_dist(q, p);
-                if out.len() == k && d >= out[k - 1].0 {
-                    continue;
-                }
-                let at = out.partition_point(|e| e.0 <= d);
-                out.insert(at, (d, p));
-                out.truncate(k);
-            }
-            return;
-        }
-        let (l, r) = (n.left as usize, n.right as usize);
-        let (dl, dr) = (self.lower(&self.nodes[l], q), self.lower(&self.nodes[r], q));
-        let (first, second) = if dl <= dr { (l, r) } else { (r, l) };
-        self.knn_rec(first, q, k, out);
-        self.knn_rec(second, q, k, out);
     }
 }
 

@@ -28,7 +28,7 @@ use semihosting::{eprintln, process};
 use zetafill::{Fixed, Placed, Scalar, Storage};
 use zetafill_display::draw::{Frame, PBM_HEADER};
 use zetafill_display::scenes::{
-    run, run_fast, RunError, ScalarKind, Scene, CAPACITY, FAST_CAPACITY, FAST_CELLS, FAST_INDEX_WORDS, INDEX_WORDS, SCENES,
+    run, run_fast, Outcome, RunError, ScalarKind, Scene, CAPACITY, FAST_CAPACITY, FAST_CELLS, FAST_INDEX_WORDS, INDEX_WORDS, SCENES,
 };
 
 use crate::board::Board;
@@ -106,16 +106,8 @@ fn run_scene<S: Scalar + Default>(scene: &Scene, board: &Board, cal: &Calibratio
         coverage: &mut [],
     };
     let mut clock = board.clock();
-    let outcome = match run(scene, storage, &mut frame, || clock.now()) {
-        Ok(o) => o,
-        Err(e) => {
-            eprintln!("error {}: {}", scene.name, e);
-            log_error(scene.name, &e);
-            return false;
-        }
-    };
-    report(scene.name, scene.scalar.name(), "shapes", &outcome, cal);
-    write_frame(scene.name, &frame)
+    let outcome = run(scene, storage, &mut frame, || clock.now());
+    scene_done(scene, outcome, &frame, cal)
 }
 
 /// Runs a cell-sampler scene on scalar `S`: fewer shape slots, and the cells, on this frame
@@ -132,16 +124,26 @@ fn run_scene_fast<S: Scalar + Default>(scene: &Scene, board: &Board, cal: &Calib
         coverage: &mut [],
     };
     let mut clock = board.clock();
-    let outcome = match run_fast(scene, storage, &mut cells, &mut frame, || clock.now()) {
-        Ok(o) => o,
+    let outcome = run_fast(scene, storage, &mut cells, &mut frame, || clock.now());
+    scene_done(scene, outcome, &frame, cal)
+}
+
+/// Reports a scene's digest and cost and writes its frame, or says why it failed.
+fn scene_done<E>(scene: &Scene, outcome: Result<Outcome, RunError<E>>, frame: &Frame, cal: &Calibration) -> bool
+where
+    RunError<E>: core::fmt::Display,
+{
+    match outcome {
+        Ok(o) => {
+            report(scene.name, scene.scalar.name(), "shapes", &o, cal);
+            write_frame(scene.name, frame)
+        }
         Err(e) => {
             eprintln!("error {}: {}", scene.name, e);
             log_error(scene.name, &e);
-            return false;
+            false
         }
-    };
-    report(scene.name, scene.scalar.name(), "shapes", &outcome, cal);
-    write_frame(scene.name, &frame)
+    }
 }
 
 /// Writes `frame-NAME.pbm` through semihosting.

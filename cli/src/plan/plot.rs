@@ -197,13 +197,9 @@ impl PlotArgs {
 
     /// The machine with every command-line override applied and checked.
     pub fn machine(&self) -> Result<machine::Machine, CliError> {
-        let m = machine::Machine::load(self.machine.as_deref().unwrap_or(DEFAULT_MACHINE), profile_text)
-            .map_err(|e| CliError::arg("--machine", e))?;
-        // A profile file is an input: no output may replace it.
-        if let Some(p) = self.machine_file() {
-            crate::io::inputs::note_read(p);
-        }
-        Ok(m)
+        // A profile file is an input, noted by `profile_text` as it is read: no output may
+        // replace it.
+        machine::Machine::load(self.machine.as_deref().unwrap_or(DEFAULT_MACHINE), profile_text).map_err(|e| CliError::arg("--machine", e))
     }
 
     /// The G-code options for `m`, every override checked against the profile.

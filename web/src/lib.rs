@@ -1,9 +1,10 @@
-//! zetafill in the browser: the `fill` command's own code path (clap's parse of the command
-//! line, the plan, the run, the writers) compiled to WebAssembly, so that every file the page
-//! offers is the file `zetafill fill` writes for the command the page shows.
+//! zetafill in the browser: the `fill` command's own code path (the plan, the run, the
+//! writers) compiled to WebAssembly, so that every file the page offers is the file
+//! `zetafill fill` writes for the command the page shows.
 //!
 //! The page builds a command line from its controls and hands it over word by word; this
-//! crate parses it exactly as the binary does, runs the fill while reporting each batch of
+//! crate reads it as the binary does ([`flags`], held to clap's reading by the tests, with
+//! no argument parser linked in), runs the fill while reporting each batch of
 //! placed shapes for drawing, and renders the finished document in any format the command
 //! line asks for. Only the file system is missing: an SVG outline (`--region svg:FILE`) comes
 //! as the file's bytes, and an output is returned instead of written. Nothing here decides a
@@ -11,11 +12,13 @@
 
 #![deny(missing_docs)]
 
-use clap::Parser;
+pub mod flags;
+pub mod words;
+
 use wasm_bindgen::prelude::*;
+use words::Words;
 use zetafill::{Geo, Placement, Point};
 use zetafill_cli::args::fill::FillArgs;
-use zetafill_cli::args::{Cli, Command};
 use zetafill_cli::cmd::fill::region::RegionData;
 use zetafill_cli::cmd::fill::{compute_watched, outcome, render};
 use zetafill_cli::error::CliError;
@@ -29,20 +32,18 @@ fn said(e: CliError) -> String {
     format!("error: {e}")
 }
 
-/// A command line clap refuses, as the binary prints it (usage and all).
-fn refused(e: clap::Error) -> String {
-    e.to_string().trim_end().to_string()
+/// The arguments `read` builds from `argv` (the words after the subcommand).
+fn read<A>(argv: &[String], read: impl FnOnce(&mut Words) -> Result<A, String>) -> Result<A, String> {
+    let mut words = Words::new(argv, &flags::SHORTS, flags::PLAIN)?;
+    let a = read(&mut words)?;
+    words.finish()?;
+    Ok(a)
 }
 
 /// `zetafill fill ARGS` parsed as the binary parses it, an SVG outline taken from `outline`
 /// (the bytes of the file the command names), and its format.
 fn parse(argv: &[String], outline: Option<&[u8]>) -> Result<(FillArgs, Format), String> {
-    let words = ["zetafill", "fill"].into_iter().map(String::from).chain(argv.iter().cloned());
-    let mut a = match Cli::try_parse_from(words) {
-        Ok(Cli { command: Command::Fill(a) }) => a,
-        Ok(_) => return Err("error: not a fill command".into()),
-        Err(e) => return Err(refused(e)),
-    };
+    let mut a = read(argv, flags::fill)?;
     if let RegionSpec::Svg(path) = &a.region {
         let Some(bytes) = outline else {
             return Err(format!(
@@ -208,21 +209,23 @@ pub fn machines() -> Vec<String> {
 pub fn output(argv: Vec<String>) -> Result<Vec<u8>, String> {
     use zetafill_cli::plan::format::{TerritoryFormat, TileFormat};
     use zetafill_cli::{cmd, plan};
-    let words = std::iter::once("zetafill".to_string()).chain(argv);
-    let command = Cli::try_parse_from(words).map_err(refused)?.command;
-    let bytes = match command {
-        Command::Line(a) => {
+    let (command, argv) = argv.split_first().ok_or("error: no command given")?;
+    let bytes = match command.as_str() {
+        "line" => {
+            let a = read(argv, flags::line)?;
             let format = Format::resolve(a.output.format, &a.output.output).map_err(said)?;
             let (run, draw) = plan::line::resolve_as(&a, format).map_err(said)?;
             let (doc, _) = cmd::line::compute(&run).map_err(said)?;
             cmd::line::render(&doc, format, &draw)
         }
-        Command::Territory(a) => {
+        "territory" => {
+            let a = read(argv, flags::territory)?;
             let format = TerritoryFormat::resolve(a.output.format, &a.output.output).map_err(said)?;
             let (run, draw) = plan::territory::resolve_as(&a, format).map_err(said)?;
             cmd::territory::output(&run, &draw, format)
         }
-        Command::Tile(a) => {
+        "tile" => {
+            let a = read(argv, flags::tile)?;
             let format = TileFormat::resolve(a.output.format, &a.output.output).map_err(said)?;
             let (run, draw) = plan::tile::resolve_as(&a, format).map_err(said)?;
             cmd::tile::output(&run, &draw, format).map(|(_, bytes)| bytes)

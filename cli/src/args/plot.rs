@@ -20,6 +20,17 @@ pub enum OrderArg {
     Improved,
 }
 
+impl OrderArg {
+    /// The name on the command line.
+    pub fn name(self) -> &'static str {
+        match self {
+            OrderArg::None => "none",
+            OrderArg::Greedy => "greedy",
+            OrderArg::Improved => "improved",
+        }
+    }
+}
+
 impl From<OrderArg> for PathOrder {
     fn from(o: OrderArg) -> PathOrder {
         match o {
@@ -103,14 +114,16 @@ pub fn parse_layers(s: &str) -> Result<Layers, String> {
     }
 }
 
-fn positive(s: &str) -> Result<f64, String> {
+/// A positive number (`--chord-tolerance`).
+pub fn positive(s: &str) -> Result<f64, String> {
     match s.parse::<f64>() {
         Ok(v) if v.is_finite() && v > 0.0 => Ok(v),
         _ => Err(format!("'{s}' must be a positive number")),
     }
 }
 
-fn finite(s: &str) -> Result<f64, String> {
+/// A finite number (feeds and power).
+pub fn finite(s: &str) -> Result<f64, String> {
     match s.parse::<f64>() {
         Ok(v) if v.is_finite() => Ok(v),
         _ => Err(format!("'{s}' must be a finite number")),
@@ -251,9 +264,7 @@ impl PlotArgs {
     /// space), so that a file's header can say how to make it again.
     pub fn flags(&self) -> String {
         let text = |v: f64| Some(v.to_string());
-        let order = self
-            .order
-            .and_then(|o| clap::ValueEnum::to_possible_value(&o).map(|v| v.get_name().to_string()));
+        let order = self.order.map(|o| o.name().to_string());
         let layers = match self.layers {
             Layers::SizeBands(k) => Some(format!("size-bands:{k}")),
             Layers::Colours => Some("colours".to_string()),

@@ -6,6 +6,7 @@ pub mod fill;
 pub mod line;
 pub mod machines;
 pub mod plot;
+pub mod progress;
 pub mod space;
 pub mod stats;
 pub mod stopping;

@@ -4,24 +4,13 @@
 
 pub use crate::plan::{check_min_size, sequence, slots, stop, Unit};
 
+use crate::cmd::progress::{self, Bar};
 use crate::error::CliError;
-use std::io::IsTerminal;
 use zetafill::StepError;
 
 /// A progress bar on standard error when it is a terminal and `--quiet` is not given.
-pub fn progress_bar(quiet: bool, count: Option<u64>, unit: Unit) -> Option<indicatif::ProgressBar> {
-    if quiet || !std::io::stderr().is_terminal() {
-        return None;
-    }
-    let b = match count {
-        Some(k) => indicatif::ProgressBar::new(k),
-        None => indicatif::ProgressBar::new_spinner(),
-    };
-    let template = format!("{{bar:40}} {{pos}}/{{len}} {}, {{elapsed}} (eta {{eta}})", unit.plural);
-    if let Ok(style) = indicatif::ProgressStyle::with_template(&template) {
-        b.set_style(style);
-    }
-    Some(b)
+pub fn progress_bar(quiet: bool, count: Option<u64>, unit: Unit) -> Option<Bar> {
+    progress::bar(quiet, count, unit.plural)
 }
 
 /// The outcome of a run whose output is written: a halt becomes [`CliError::Halted`], naming

@@ -16,7 +16,6 @@ use crate::plan::format::ChartFormat;
 use crate::plan::stats::HaltingPlan;
 use rayon::prelude::*;
 use std::fmt::Write as _;
-use std::io::IsTerminal;
 
 /// One value of c.
 #[derive(Debug, Clone, serde::Serialize)]
@@ -62,22 +61,21 @@ pub fn scan(a: &HaltingPlan) -> Result<Vec<PointDoc>, CliError> {
         .num_threads(a.threads)
         .build()
         .map_err(|e| CliError::Io(format!("cannot start worker threads: {e}")))?;
-    let show = !a.quiet && std::io::stderr().is_terminal();
-    let bar = if show {
-        indicatif::ProgressBar::new(jobs.len() as u64)
-    } else {
-        indicatif::ProgressBar::hidden()
-    };
+    let bar = crate::cmd::progress::bar(a.quiet, Some(jobs.len() as u64), "runs");
     let results: Vec<Result<Option<u64>, CliError>> = pool.install(|| {
         jobs.par_iter()
             .map(|(_, s)| {
                 let r = run_2d(s).map(|r| r.halted_at);
-                bar.inc(1);
+                if let Some(b) = &bar {
+                    b.inc(1);
+                }
                 r
             })
             .collect()
     });
-    bar.finish_and_clear();
+    if let Some(b) = &bar {
+        b.finish_and_clear();
+    }
     let mut halts: Vec<Vec<u64>> = vec![Vec::new(); cs.len()];
     for ((k, _), res) in jobs.iter().zip(results) {
         if let (Some(v), Some(i)) = (halts.get_mut(*k), res?) {

@@ -24,7 +24,6 @@ use geom::{Clip, Pt};
 use model::{Growth, Model};
 use render::{FillShape, Style};
 use source::load_source;
-use std::io::IsTerminal;
 use std::path::Path;
 
 use crate::plan::format::TerritoryFormat;
@@ -112,16 +111,7 @@ pub fn compute(a: &TerritoryRun) -> Result<Outcome, CliError> {
     let clip = Clip::from_doc(&region);
     let k = a.seeds;
     a.check_seeds(|p| clip.inside(p))?;
-    let bar = |n: usize| -> Option<indicatif::ProgressBar> {
-        if a.quiet || !std::io::stderr().is_terminal() || n < 200_000 {
-            return None;
-        }
-        let b = indicatif::ProgressBar::new(n as u64);
-        if let Ok(style) = indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} sites, {elapsed} (eta {eta})") {
-            b.set_style(style);
-        }
-        Some(b)
-    };
+    let bar = |n: usize| crate::cmd::progress::bar(a.quiet || n < 200_000, Some(n as u64), "sites");
     let (model, points, shapes, source_index, name) = match source {
         Some(src) => {
             let n = src.centres.len();

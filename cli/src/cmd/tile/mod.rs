@@ -17,7 +17,6 @@ use crate::plan::raster::{height_map_error, png_error};
 use crate::plan::tile::{layout_name, seams_apart, too_many_pieces, TileDraw, TilePlan, TileRun};
 use model::Tile;
 use serde::Serialize;
-use std::io::IsTerminal;
 
 /// Each laid-out piece's colour from the palette: a copy of piece `j mod n` (`tags`), at its
 /// copy's scale (`scales`). Ids are the tile's discs, so every image and copy of a disc takes
@@ -132,13 +131,7 @@ pub fn compute(a: &TileRun) -> Result<(Tile, Vec<Path>, Vec<render::Tag>), CliEr
     let mut spec = a.spec;
     let (width, height, tries) = (spec.width, spec.height, spec.tries);
     // Long runs show their tries on a terminal (and nothing when piped or with --quiet).
-    let bar = (tries >= LONG_RUN && !a.quiet && std::io::stderr().is_terminal()).then(|| {
-        let b = indicatif::ProgressBar::new(tries);
-        if let Ok(style) = indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} tries, {elapsed} (eta {eta})") {
-            b.set_style(style);
-        }
-        b
-    });
+    let bar = crate::cmd::progress::bar(tries < LONG_RUN || a.quiet, Some(tries), "tries");
     loop {
         if let Some(b) = &bar {
             b.reset();

@@ -27,10 +27,11 @@ rm -rf web/dist
 mkdir -p web/dist
 wasm-bindgen --target web --no-typescript --out-dir web/dist \
     "$target_dir/wasm32-unknown-unknown/web/zetafill_web.wasm"
-# binaryen's wasm-opt (npm, pinned in web/package.json) shrinks the code and drops the names
-# section; it keeps the semantics exactly (no fast-math), so every file stays the CLI's.
+# binaryen's wasm-opt (npm, pinned in web/package.json) shrinks the code, repeating its passes
+# until they gain nothing more, and drops the names section; it keeps the semantics exactly (no
+# fast-math), so every file stays the CLI's.
 (cd web && npm ci --no-audit --no-fund --silent)
-web/node_modules/.bin/wasm-opt -Oz --strip-debug --strip-producers \
+web/node_modules/.bin/wasm-opt -Oz --converge --strip-debug --strip-producers \
     --enable-bulk-memory --enable-nontrapping-float-to-int --enable-sign-ext --enable-mutable-globals \
     web/dist/zetafill_web_bg.wasm -o web/dist/zetafill_web_bg.wasm
 cp web/static/* web/dist/

@@ -181,7 +181,7 @@ impl Session {
     pub fn export(&self, argv: Vec<String>) -> Result<Vec<u8>, String> {
         let doc = self.doc.as_ref().ok_or("error: the fill has not run yet")?;
         let (run, draw, format) = plan(&argv, self.outline.as_deref())?;
-        if format!("{run:?}") != format!("{:?}", self.run) {
+        if run != self.run {
             return Err(format!(
                 "error: '{}' runs another fill than '{}'",
                 argv.join(" "),

@@ -325,3 +325,46 @@ test("the other tabs' controls and their command line set each other", async () 
   assert.doesNotMatch(await args(), /--periodic/);
   await page.close();
 });
+
+// The page's size targets: at most 2 MB of WebAssembly, 700 KB gzipped (level 9), with no
+// argument parser inside; and what the page leaves out is refused with a message.
+test('the wasm is small, links no argument parser, and refuses what it leaves out', async () => {
+  const file = join(root, 'web/dist/zetafill_web_bg.wasm');
+  const wasm = readFileSync(file);
+  const gz = spawnSync('gzip', ['-9', '-c', file], { maxBuffer: 1 << 26 }).stdout.length;
+  console.log(`wasm: ${wasm.length} bytes, ${gz} gzipped`);
+  assert.ok(wasm.length <= 2_000_000, `${wasm.length} bytes`);
+  assert.ok(gz <= 700_000, `${gz} bytes gzipped`);
+  // clap's own texts, which any build that links its parser carries; the checker fails on
+  // such a build: the CLI binary holds them.
+  const clapTexts = ['Usage:', 'Print help', 'possible values: '];
+  const holds = (bytes) => clapTexts.filter((t) => bytes.includes(Buffer.from(t)));
+  assert.deepEqual(holds(wasm), []);
+  assert.deepEqual(holds(readFileSync(ZETAFILL)), clapTexts);
+
+  const page = await openPage('?until=50');
+  await settled(page);
+  const said = await page.evaluate(async () => {
+    const m = await import('./zetafill_web.js');
+    await m.default();
+    const refused = (argv) => {
+      try {
+        new m.Session(argv);
+        return null;
+      } catch (e) {
+        return String(e);
+      }
+    };
+    return {
+      fixed: refused(['--scalar', 'fixed', '--count', '5', '-o', 'x.svg']),
+      f64: refused(['--scalar', 'f64', '--count', '5', '-o', 'x.svg']),
+      typo: refused(['--cuont', '5', '-o', 'x.svg']),
+    };
+  });
+  assert.equal(said.f64, null);
+  assert.match(said.fixed, /^error: --scalar: this build computes in f64 only/);
+  // Unknown flags get the first line of the CLI's message, and its closing hint.
+  const cli = cliMessage(['--cuont', '5', '-o', 'x.svg']).split('\n');
+  assert.equal(said.typo, `${cli[0]}\n\n${cli.at(-1)}`);
+  await page.close();
+});

@@ -238,10 +238,12 @@ pub fn compute_watched(a: &FillRun, watch: &mut dyn FnMut(&zetafill::Placement<f
     let sequence = stopping::sequence(region.area(), params.c, params.n_offset)?;
     stopping::check_min_size(&stop, zetafill::first_shape(&sequence, &params.shape).width, SHAPES)?;
     let cap = stopping::slots(zetafill::shape_capacity(&sequence, &params.shape, &stop, SHAPES.max), SHAPES)? as usize;
-    let run = if a.fixed_point {
-        run_engine::<zetafill::Fixed>(a, params, region, &sequence, &stop, cap, watch)?
-    } else {
-        run_engine::<f64>(a, params, region, &sequence, &stop, cap, watch)?
+    let run = match a.fixed_point {
+        #[cfg(feature = "fixed-point")]
+        true => run_engine::<zetafill::Fixed>(a, params, region, &sequence, &stop, cap, watch)?,
+        #[cfg(not(feature = "fixed-point"))]
+        true => return Err(crate::plan::fill::no_fixed_point()),
+        false => run_engine::<f64>(a, params, region, &sequence, &stop, cap, watch)?,
     };
     let EngineRun {
         shapes: shapes_doc,

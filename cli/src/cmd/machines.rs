@@ -24,12 +24,26 @@ pub fn run(plan: &MachinesPlan) -> Result<(), CliError> {
         MachinesPlan::Show(name) => match Machine::builtin_text(name) {
             Some(t) => t.to_string(),
             None => {
-                // A file: check it, then print it normalised.
+                // A file: check it, then print it normalised (a build without profile files
+                // refuses it in `load`).
                 let m = Machine::load(name, crate::plan::plot::profile_text).map_err(profile_error)?;
-                toml::to_string(&m).map_err(|e| CliError::Io(format!("cannot encode TOML: {e}")))?
+                normalised(&m)?
             }
         },
     };
     print!("{text}");
     Ok(())
+}
+
+/// A profile as TOML text.
+#[cfg(feature = "profile-files")]
+fn normalised(m: &Machine) -> Result<String, CliError> {
+    toml::to_string(m).map_err(|e| CliError::Io(format!("cannot encode TOML: {e}")))
+}
+
+/// A profile as TOML text: a build without profile files has no TOML writer, and no file
+/// profile reaches here.
+#[cfg(not(feature = "profile-files"))]
+fn normalised(_: &Machine) -> Result<String, CliError> {
+    Err(CliError::Io("this build reads and writes no machine profile files".into()))
 }

@@ -12,7 +12,7 @@ pub const MAX_IMAGE_BYTES: u64 = 64 << 20;
 pub const MAX_PIXELS: u64 = 64_000_000;
 
 /// A picture as luminance, row by row from the top.
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct Grey {
     /// Width in pixels.
     pub width: usize,

@@ -31,8 +31,16 @@ pub const SHAPES: Unit = Unit {
 /// A checked `zetafill fill`: where it writes, what it runs and how it draws.
 pub type FillPlan = super::Planned<Format, FillRun, FillDraw>;
 
+/// The refusal of `--scalar fixed` by a build without the `fixed-point` feature.
+pub fn no_fixed_point() -> CliError {
+    CliError::arg(
+        "--scalar",
+        "this build computes in f64 only (the browser page has no fixed point); use --scalar f64, or the command-line tool",
+    )
+}
+
 /// What the engine runs.
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct FillRun {
     /// The region (an SVG region is read when the run starts; a mask or a text is already
     /// rings).
@@ -63,7 +71,7 @@ pub struct FillRun {
 }
 
 /// The names of a run's settings as its JSON document writes them.
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct FillNames {
     /// `--shape` as written back.
     pub shape: String,
@@ -260,6 +268,9 @@ pub fn resolve_as(a: &FillArgs, format: Format) -> Result<(FillRun, FillDraw), C
         density_sha256: picture.as_ref().map(|p| p.sha256.clone()),
         source,
     };
+    if a.scalar == ScalarArg::Fixed && !cfg!(feature = "fixed-point") {
+        return Err(no_fixed_point());
+    }
     let run = FillRun {
         region,
         periodic: a.periodic,

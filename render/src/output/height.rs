@@ -13,6 +13,7 @@
 
 use crate::error::CliError;
 use crate::model::doc::{FillDoc, ShapeDoc};
+#[cfg(feature = "parallel")]
 use rayon::prelude::*;
 use zetafill::internals::geom::{edges, point_in_poly, seg_dist2};
 use zetafill::Point;
@@ -219,29 +220,30 @@ pub fn render_shapes(
         }
     }
     let mut sum = vec![0.0f64; nx * ny];
-    sum.par_chunks_mut(BAND * nx)
-        .zip(bands.par_iter())
-        .enumerate()
-        .for_each(|(b, (rows, list))| {
-            let (lo, hi) = (b * band_rows, (b + 1) * band_rows - 1);
-            for &p in list {
-                let Some(&(k, (dx, dy), (i0, i1), (j0, j1))) = pieces.get(p) else {
-                    continue;
-                };
-                let Some(stone) = stones.get(k) else { continue };
-                for j in j0.max(lo)..=j1.min(hi) {
-                    let y = y1 - (j as f64 + 0.5) * sh - dy;
-                    for i in i0..=i1 {
-                        let x = x0 + (i as f64 + 0.5) * sw - dx;
-                        if let Some(d) = stone.depth(Point::new(x, y)) {
-                            if let Some(s) = rows.get_mut((j / SUB - b * BAND) * nx + i / SUB) {
-                                *s += relief.height(d, stone.rho);
-                            }
+    #[cfg(feature = "parallel")]
+    let rows = sum.par_chunks_mut(BAND * nx).zip(bands.par_iter()).enumerate();
+    #[cfg(not(feature = "parallel"))]
+    let rows = sum.chunks_mut(BAND * nx).zip(bands.iter()).enumerate();
+    rows.for_each(|(b, (rows, list))| {
+        let (lo, hi) = (b * band_rows, (b + 1) * band_rows - 1);
+        for &p in list {
+            let Some(&(k, (dx, dy), (i0, i1), (j0, j1))) = pieces.get(p) else {
+                continue;
+            };
+            let Some(stone) = stones.get(k) else { continue };
+            for j in j0.max(lo)..=j1.min(hi) {
+                let y = y1 - (j as f64 + 0.5) * sh - dy;
+                for i in i0..=i1 {
+                    let x = x0 + (i as f64 + 0.5) * sw - dx;
+                    if let Some(d) = stone.depth(Point::new(x, y)) {
+                        if let Some(s) = rows.get_mut((j / SUB - b * BAND) * nx + i / SUB) {
+                            *s += relief.height(d, stone.rho);
                         }
                     }
                 }
             }
-        });
+        }
+    });
     let samples = (SUB * SUB) as f64;
     let scale = if top > 0.0 { 65535.0 / (top * samples) } else { 0.0 };
     let mut data = Vec::with_capacity(2 * nx * ny);

@@ -22,6 +22,7 @@
 use crate::model::solid::{
     add, circle_distance, cross, dot, is_rotation, mul, mul_t, norm, scale, sub, unit, Region3, Solid, SolidKind, V3,
 };
+#[cfg(feature = "parallel")]
 use rayon::prelude::*;
 
 /// Which solids a cut-away leaves out.
@@ -420,8 +421,11 @@ pub fn pixels(solids: &[Solid], region: &Region3, opt: &RenderOptions) -> Result
             }
         }
     };
-    let rows: Vec<Vec<u8>> = (0..h)
-        .into_par_iter()
+    #[cfg(feature = "parallel")]
+    let ys = (0..h).into_par_iter();
+    #[cfg(not(feature = "parallel"))]
+    let ys = 0..h;
+    let rows: Vec<Vec<u8>> = ys
         .map(|y| {
             let mut row = Vec::with_capacity(3 * w as usize);
             for x in 0..w {

@@ -136,7 +136,8 @@ pub fn optional_table<'de, D: Deserializer<'de>, T: Fields + Deserialize<'de>>(d
     table(d).map(Some)
 }
 
-#[cfg(test)]
+// The cases are TOML text: they need the TOML reader.
+#[cfg(all(test, feature = "toml"))]
 mod tests {
     use crate::output::machine::Machine;
 

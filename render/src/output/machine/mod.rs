@@ -2,6 +2,11 @@
 //! built-ins) read with serde into [`Machine`] and checked once by [`Machine::validate`], so
 //! the writer can trust every field. Unknown or missing fields are errors that name the field.
 //!
+//! TOML is read behind the `toml` feature (on by default). Without it, as in the browser page,
+//! there are no profile files and the built-ins are read from JSON the build script writes
+//! from the same TOML files, through the same `Deserialize`; a test holds the two readings
+//! equal.
+//!
 //! All lengths are mm and all feeds mm/min in the profile, whatever `units` says: `units`
 //! only chooses what the G-code is written in (G21 mm with 3 decimals and whole mm/min
 //! feeds; G20 inch with 5 decimals, feeds too).
@@ -22,12 +27,9 @@ pub const MIN_BED: f64 = 1.0;
 /// Largest machine profile file (bytes).
 pub const MAX_PROFILE_BYTES: u64 = 1 << 20;
 
-/// The built-in profiles: name and TOML text.
-pub const BUILTINS: &[(&str, &str)] = &[
-    ("grbl-laser", include_str!("../../../machines/grbl-laser.toml")),
-    ("grbl-servo-pen", include_str!("../../../machines/grbl-servo-pen.toml")),
-    ("z-lift-pen", include_str!("../../../machines/z-lift-pen.toml")),
-];
+// `BUILTIN_NAMES`, `BUILTINS` (name and TOML text) and `BUILTIN_JSON`, one entry per file of
+// `render/machines/`, written by the build script.
+include!(concat!(env!("OUT_DIR"), "/machines.rs"));
 
 /// Units the G-code is written in.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
@@ -171,23 +173,36 @@ fn default_pen_change() -> String {
 impl Machine {
     /// A built-in profile by name.
     pub fn builtin(name: &str) -> Option<Machine> {
-        BUILTINS
-            .iter()
-            .find(|(n, _)| *n == name)
-            .and_then(|(_, text)| Machine::parse(text).ok())
+        Machine::read_builtin(name)?.ok()
     }
 
-    /// The TOML text of a built-in.
+    /// A built-in read from its TOML text and checked, or `None` if no built-in has that name.
+    #[cfg(feature = "toml")]
+    fn read_builtin(name: &str) -> Option<Result<Machine, String>> {
+        Machine::builtin_text(name).map(Machine::parse)
+    }
+
+    /// A built-in read from its JSON and checked, or `None` if no built-in has that name.
+    #[cfg(not(feature = "toml"))]
+    fn read_builtin(name: &str) -> Option<Result<Machine, String>> {
+        BUILTIN_JSON
+            .iter()
+            .find(|(n, _)| *n == name)
+            .map(|(_, json)| Machine::from_json(json))
+    }
+
+    /// The TOML text of a built-in (with or without the `toml` feature: it is only text).
     pub fn builtin_text(name: &str) -> Option<&'static str> {
         BUILTINS.iter().find(|(n, _)| *n == name).map(|(_, t)| *t)
     }
 
-    /// Names of the built-ins.
+    /// Names of the built-ins, sorted.
     pub fn builtin_names() -> Vec<&'static str> {
-        BUILTINS.iter().map(|(n, _)| *n).collect()
+        BUILTIN_NAMES.to_vec()
     }
 
     /// Parses and checks a profile.
+    #[cfg(feature = "toml")]
     pub fn parse(text: &str) -> Result<Machine, String> {
         // A parse error quotes the file: control bytes in it are shown as escapes.
         let m: Machine = toml::from_str(text).map_err(|e| printable(&e.to_string().trim_end().replace('\n', " ")))?;
@@ -195,21 +210,47 @@ impl Machine {
         Ok(m)
     }
 
+    /// Reads and checks a built-in's JSON, the build script's copy of its TOML.
+    #[cfg(any(test, not(feature = "toml")))]
+    fn from_json(text: &str) -> Result<Machine, String> {
+        let m: Machine = serde_json::from_str(text).map_err(|e| printable(&e.to_string()))?;
+        m.validate()?;
+        Ok(m)
+    }
+
     /// `--machine`: a built-in name, or a profile file whose text `read` gives (the caller owns
     /// the file system; its error is the message's end, such as "it is not UTF-8 text").
+    /// Without the `toml` feature a file is refused, with the names of the built-ins, and
+    /// `read` is not called.
     pub fn load(spec: &str, read: impl FnOnce(&std::path::Path) -> Result<String, String>) -> Result<Machine, String> {
-        if let Some(m) = Machine::builtin_text(spec) {
-            return Machine::parse(m).map_err(|e| format!("built-in '{spec}': {e}"));
+        if let Some(m) = Machine::read_builtin(spec) {
+            return m.map_err(|e| format!("built-in '{spec}': {e}"));
         }
         let looks_like_file = spec.ends_with(".toml") || spec.contains('/') || spec.contains('\\');
-        if !looks_like_file {
-            return Err(format!(
-                "unknown machine '{spec}'; built-ins are {}, or give a profile FILE.toml (see `zetafill machines`)",
-                Machine::builtin_names().join(", ")
-            ));
+        let names = || Machine::builtin_names().join(", ");
+        #[cfg(feature = "toml")]
+        {
+            if !looks_like_file {
+                return Err(format!(
+                    "unknown machine '{spec}'; built-ins are {}, or give a profile FILE.toml (see `zetafill machines`)",
+                    names()
+                ));
+            }
+            let text = read(std::path::Path::new(spec)).map_err(|e| format!("cannot read '{spec}': {e}"))?;
+            Machine::parse(&text).map_err(|e| format!("'{spec}': {e}"))
         }
-        let text = read(std::path::Path::new(spec)).map_err(|e| format!("cannot read '{spec}': {e}"))?;
-        Machine::parse(&text).map_err(|e| format!("'{spec}': {e}"))
+        #[cfg(not(feature = "toml"))]
+        {
+            let _ = read;
+            Err(if looks_like_file {
+                format!(
+                    "'{spec}': machine profile files need the `toml` feature, which this build leaves out; use a built-in: {}",
+                    names()
+                )
+            } else {
+                format!("unknown machine '{spec}'; built-ins are {}", names())
+            })
+        }
     }
 
     /// Checks every field; the message names the field.
@@ -419,20 +460,37 @@ mod tests {
 
     #[test]
     fn builtins_parse_and_validate() {
-        for name in Machine::builtin_names() {
-            let m = Machine::builtin(name).unwrap_or_else(|| {
-                panic!(
-                    "{name} does not parse: {:?}",
-                    Machine::parse(Machine::builtin_text(name).unwrap_or(""))
-                )
-            });
+        let names = Machine::builtin_names();
+        assert!(names.len() >= 3 && names.is_sorted(), "{names:?}");
+        assert_eq!(BUILTINS.iter().map(|(n, _)| *n).collect::<Vec<_>>(), names);
+        for name in names {
+            let m = Machine::builtin(name).unwrap_or_else(|| panic!("{name} does not read: {:?}", Machine::read_builtin(name)));
             assert_eq!(m.name, name);
+            let loaded = Machine::load(name, |_| Err("a built-in is not read from a file".into()));
+            assert_eq!(loaded.as_ref().ok(), Some(&m), "{loaded:?}");
+            assert!(Machine::builtin_text(name).is_some_and(|t| t.contains(&format!("name = \"{name}\""))));
         }
         let laser = Machine::builtin("grbl-laser").map(|m| m.power.is_some());
         assert_eq!(laser, Some(true));
         assert_eq!(Machine::dwell_seconds("M3 S90\nG4 P0.15 ; wait"), 0.15);
     }
 
+    /// The JSON a build without the `toml` feature reads its built-ins from is the same
+    /// profile as the TOML: every field, to the bit (the debug text tells -0.0 from 0.0).
+    #[cfg(feature = "toml")]
+    #[test]
+    fn builtin_json_reads_as_its_toml() {
+        assert_eq!(BUILTIN_JSON.len(), BUILTINS.len());
+        for ((name, json), (toml_name, text)) in BUILTIN_JSON.iter().zip(BUILTINS) {
+            assert_eq!(name, toml_name);
+            let from_json = Machine::from_json(json).unwrap_or_else(|e| panic!("{name}: {e}\n{json}"));
+            let from_toml = Machine::parse(text).unwrap_or_else(|e| panic!("{name}: {e}"));
+            assert_eq!(from_json, from_toml, "{name}: {json}");
+            assert_eq!(format!("{from_json:?}"), format!("{from_toml:?}"), "{name}: {json}");
+        }
+    }
+
+    #[cfg(feature = "toml")]
     #[test]
     fn bad_profiles_name_the_field() {
         let good = Machine::builtin_text("grbl-servo-pen").unwrap_or("");
@@ -456,6 +514,7 @@ mod tests {
 
     /// Bug: `tool_off = "M3 S1000"` in a laser profile was accepted (every rapid with the laser
     /// on, and the program ended with it on); so were `G91`, `G28` and a feed of 1e-300.
+    #[cfg(feature = "toml")]
     #[test]
     fn profiles_that_leave_the_tool_on_or_leave_the_bed_are_refused() {
         let laser = Machine::builtin_text("grbl-laser").unwrap_or("");
@@ -515,6 +574,7 @@ mod tests {
         }
     }
 
+    #[cfg(feature = "toml")]
     #[test]
     fn toml_errors_show_control_bytes_as_escapes() {
         let e = Machine::parse("name = \"a\u{1b}[31m\nunits = ").err().unwrap_or_default();
@@ -525,5 +585,20 @@ mod tests {
     fn unknown_machine_lists_the_builtins() {
         let e = Machine::load("grbl-lazer", |_| Err("not read".into())).err().unwrap_or_default();
         assert!(e.contains("unknown machine") && e.contains("grbl-laser"), "{e}");
+    }
+
+    /// Without the `toml` feature a profile file is refused, naming the built-ins, unread.
+    #[cfg(not(feature = "toml"))]
+    #[test]
+    fn without_toml_files_are_refused_naming_the_builtins() {
+        for spec in ["my-plotter.toml", "profiles/plotter", "C:\\profiles\\plotter"] {
+            let e = Machine::load(spec, |_| panic!("{spec} is read")).err().unwrap_or_default();
+            assert!(
+                e.contains(spec) && e.contains("`toml` feature") && e.contains("grbl-laser, grbl-servo-pen, z-lift-pen"),
+                "{e}"
+            );
+        }
+        let e = Machine::load("grbl-lazer", |_| panic!("read")).err().unwrap_or_default();
+        assert!(!e.contains("FILE.toml"), "{e}");
     }
 }

@@ -51,6 +51,14 @@ fn value_name(long: &str) -> String {
     }
 }
 
+/// clap's message for a flag with a value that must be given and is not.
+fn not_provided(long: &str) -> String {
+    message(&format!(
+        "the following required arguments were not provided:\n  --{long} <{}>",
+        value_name(long)
+    ))
+}
+
 impl Words {
     /// Splits `argv` into flags and values; `shorts` maps each one-letter flag to its long
     /// name, and the flags in `plain` take no value that starts with `-`.
@@ -207,12 +215,7 @@ impl Words {
 
     /// A flag with a value that must be given.
     pub fn required<T>(&mut self, long: &'static str, parse: impl Fn(&str) -> Result<T, String>) -> Result<T, String> {
-        self.opt(long, parse)?.ok_or_else(|| {
-            message(&format!(
-                "the following required arguments were not provided:\n  --{long} <{}>",
-                value_name(long)
-            ))
-        })
+        self.opt(long, parse)?.ok_or_else(|| not_provided(long))
     }
 
     /// A flag that may be given any number of times, its values in order.
@@ -223,7 +226,7 @@ impl Words {
             .collect()
     }
 
-    /// Refuses `a` and `b` together (`a` shown as a flag alone when `a_flag`).
+    /// Refuses `a` and `b` together.
     pub fn conflict(&self, a: &str, b: &str) -> Result<(), String> {
         let at = |name: &str| self.given.iter().position(|g| g.long == name);
         let (Some(i), Some(j)) = (at(a), at(b)) else { return Ok(()) };
@@ -239,10 +242,7 @@ impl Words {
     /// Refuses `a` without `b`.
     pub fn requires(&self, a: &str, b: &str) -> Result<(), String> {
         if self.given(a) && !self.given(b) {
-            return Err(message(&format!(
-                "the following required arguments were not provided:\n  --{b} <{}>",
-                value_name(b)
-            )));
+            return Err(not_provided(b));
         }
         Ok(())
     }

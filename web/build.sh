@@ -29,10 +29,13 @@ wasm-bindgen --target web --no-typescript --out-dir web/dist \
     "$target_dir/wasm32-unknown-unknown/web/zetafill_web.wasm"
 # binaryen's wasm-opt (npm, pinned in web/package.json) shrinks the code, repeating its passes
 # until they gain nothing more, and drops the names section; it keeps the semantics exactly (no
-# fast-math), so every file stays the CLI's.
+# fast-math), so every file stays the CLI's. It may assume what holds for Rust's code: memory
+# starts zeroed, its first 1 KiB is never read (the stack lies below the data, from the top of
+# the first megabyte down), and no load or store traps (every access is in bounds).
 (cd web && npm ci --no-audit --no-fund --silent)
 web/node_modules/.bin/wasm-opt -Oz --converge --strip-debug --strip-producers \
     --enable-bulk-memory --enable-nontrapping-float-to-int --enable-sign-ext --enable-mutable-globals \
+    --low-memory-unused --zero-filled-memory --ignore-implicit-traps --gufa-optimizing \
     web/dist/zetafill_web_bg.wasm -o web/dist/zetafill_web_bg.wasm
 cp web/static/* web/dist/
 # The built-in font is fetched by the page when a text region asks for it, not embedded.

@@ -32,6 +32,10 @@
 //!   step gives a [`Placement`] of a [`Placed`] shape, whose exact outline is a [`Geo`] of
 //!   [`Point`]s (a polygon's in [`Verts`]).
 //! - Stopping and failing: [`Stop`], [`StopReason`], [`StepError`], [`ParamError`], [`Stats`].
+//! - Symmetric fills: [`Region::Wallpaper`] over a [`Wallpaper`] (one of the 17 [`Group`]s on
+//!   its [`LatticeKind`] of lattice; [`WallpaperError`]), whose first shape
+//!   [`check_first_orbit`] checks up front ([`FirstOrbitError`]); each placement stores its
+//!   orbit's [`Engine::images`].
 //! - Samplers: the paper's uniform sampler is [`Engine::step`]; the cell sampler
 //!   [`CellSampler`] (storage [`CellWords`], sized with [`cells_for`]; [`NoCells`] when there
 //!   is none) draws from exactly the same distribution with far fewer trials
@@ -130,13 +134,13 @@ mod zeta;
 pub use self::fixed::Fixed;
 pub use engine::{index_words, Batches, Density, Engine, Lane, NoLanes, Placement, Plan, Stats, Storage, DEFAULT_BATCH, LANE_EVENTS};
 pub use feasibility::{
-    check_first_two, check_largest, check_smallest, first_shape, shape_capacity, AreaSequence, CapacityError, FirstShape, FirstTwoError,
-    TooLarge, TooSmall,
+    check_first_orbit, check_first_two, check_largest, check_smallest, first_shape, shape_capacity, AreaSequence, CapacityError,
+    FirstOrbitError, FirstShape, FirstTwoError, TooLarge, TooSmall,
 };
 pub use geom::{Geo, Point, Verts};
 pub use noise::{Noise, NoiseError, NoiseKind, MAX_OCTAVES};
 pub use params::{ParamError, Params, StepError, Stop, StopReason};
-pub use region::{PolygonRegion, Region, RegionError};
+pub use region::{Group, LatticeKind, PolygonRegion, Region, RegionError, Wallpaper, WallpaperError};
 pub use rng::{rng_from_seed, ZetaRng};
 pub use sampler::{cells_for, CellSampler, CellWords, NoCells};
 pub use scalar::Scalar;

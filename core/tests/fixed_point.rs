@@ -203,7 +203,7 @@ fn check(geos: &[G], region: &Region<'_>) -> Result<(), String> {
             }
         }
         let out = match (*region, a) {
-            (Region::Rect { periodic: true, .. }, _) => None,
+            (Region::Rect { periodic: true, .. } | Region::Wallpaper(_), _) => None,
             (Region::Rect { width, height, .. }, _) => outline(a)
                 .into_iter()
                 .find(|p| p[0] < -EPS || p[1] < -EPS || p[0] > width + EPS || p[1] > height + EPS),

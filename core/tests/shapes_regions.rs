@@ -275,6 +275,7 @@ fn region_inside(r: &Region<'_>, p: Point<f64>, pts: &[Point<f64>], ends: &[usiz
             }
             inside
         }
+        Region::Wallpaper(_) => true,
     }
 }
 
@@ -305,6 +306,7 @@ fn boundary_distance(r: &Region<'_>, p: Point<f64>, pts: &[Point<f64>], ends: &[
             }
             best
         }
+        Region::Wallpaper(_) => f64::INFINITY,
     }
 }
 

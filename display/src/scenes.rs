@@ -20,8 +20,8 @@ use zetafill::{
     digest, Batches, CellSampler, CellWords, Engine, Lane, ParamError, Params, Point, Region, Scalar, ShapeKind, StepError, Stop,
     StopReason, Storage,
 };
+use zetafill::{Group, PolygonRegion, RegionError, Wallpaper};
 use zetafill::{MixOrder, ShapeList};
-use zetafill::{PolygonRegion, RegionError};
 
 use crate::draw::View;
 
@@ -73,6 +73,8 @@ pub enum SceneRegion {
     Annulus(f64, f64),
     /// `Region::Polygon`: rings of vertices split at the exclusive indices given.
     Polygon(&'static [Point<f64>], &'static [usize]),
+    /// `Region::Wallpaper`: a group on a lattice of sides a and b at an angle in degrees.
+    Wallpaper(Group, f64, f64, f64),
 }
 
 impl SceneRegion {
@@ -83,7 +85,20 @@ impl SceneRegion {
             SceneRegion::Circle(radius) => Region::Circle { radius },
             SceneRegion::Annulus(outer, inner) => Region::Annulus { outer, inner },
             SceneRegion::Polygon(points, ends) => Region::Polygon(PolygonRegion::new(points, ends)?),
+            // The scenes' lattices are finite and positive: a refusal could only be of
+            // numbers that are not.
+            SceneRegion::Wallpaper(g, a, b, angle) => {
+                Region::Wallpaper(Wallpaper::new(g, a, b, angle).map_err(|_| RegionError::NotFinite)?)
+            }
         })
+    }
+
+    /// The entries a placement stores: a wallpaper group's images, otherwise 1.
+    pub const fn images(&self) -> usize {
+        match *self {
+            SceneRegion::Wallpaper(g, ..) => g.order(),
+            _ => 1,
+        }
     }
 }
 
@@ -244,6 +259,8 @@ pub const SCENES: &[Scene] = &[
     filled(scene("stars-filled", F64, &[ShapeKind::Star { points: 5, inner: 0.45 }], true, torus(100.0, 100.0), 1.25, 4.0, 0.0, 18, 50)),
     filled(scene("rings-filled-fixed", FX, &[ShapeKind::Ring { inner: 0.5 }], false, SceneRegion::Circle(60.0), 1.3, 3.0, 0.0, 19, 60)),
     filled(fast(scene("squares-cells-filled", F64, &[Square], true, rect(200.0, 100.0), 1.25, 2.0, 0.0, 20, 150))),
+    // The symmetry of a wallpaper group: each placement an orbit of eight images.
+    scene("p4m-mix", F64, &[Circle, Square], true, SceneRegion::Wallpaper(Group::P4m, 60.0, 60.0, 90.0), 1.3, 3.0, 0.0, 23, 40),
     // The whole capacity: 1,024 rectangles.
     scene("capacity",        F64, &[RECT2],  false, rect(150.0, 100.0),  1.2,  3.0, 0.0, 8, CAPACITY as u64),
 ];
@@ -254,7 +271,10 @@ pub const SCENES: &[Scene] = &[
 const _: () = {
     let mut i = 0;
     while i < SCENES.len() {
-        assert!(SCENES[i].count as usize <= CAPACITY, "a scene needs more shapes than CAPACITY");
+        assert!(
+            SCENES[i].count as usize * SCENES[i].region.images() <= CAPACITY,
+            "a scene needs more shapes than CAPACITY"
+        );
         assert!(
             !SCENES[i].fast || SCENES[i].count as usize <= FAST_CAPACITY,
             "a cell-sampler scene needs more shapes than FAST_CAPACITY"
@@ -269,8 +289,10 @@ const _: () = {
 /// What a run produced.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Outcome {
-    /// Shapes placed.
+    /// Entries the digest covers: the shapes placed (a wallpaper scene's every image).
     pub count: u64,
+    /// Placements made (a wallpaper scene's orbits).
+    pub placed: u64,
     /// The determinism digest (`zetafill::digest`).
     pub digest: u64,
     /// Trials made.
@@ -317,6 +339,35 @@ fn paint<S: Scalar, D: DrawTarget<Color = BinaryColor>>(
     }
 }
 
+/// Draws placement `index` of `engine`: its shape, or on a wallpaper torus every image of its
+/// orbit with the lattice translates that can show in the cell.
+fn paint_placement<S: Scalar, D: DrawTarget<Color = BinaryColor>>(
+    scene: &Scene,
+    view: &View,
+    engine: &Engine<'_, S>,
+    index: u64,
+    target: &mut D,
+) -> Result<(), D::Error> {
+    let m = engine.images();
+    let first = index as usize * m;
+    for e in first..first + m {
+        let Some(geo) = engine.geo(e) else { continue };
+        match engine.region().wallpaper() {
+            Some(w) => {
+                let (ax, bx, by) = w.lattice();
+                for l in -1i32..=1 {
+                    for k in -1i32..=1 {
+                        let (dx, dy) = (f64::from(k) * ax + f64::from(l) * bx, f64::from(l) * by);
+                        paint(scene, view, &geo.shift(S::from_f64(dx), S::from_f64(dy)), target)?;
+                    }
+                }
+            }
+            None => paint(scene, view, &geo, target)?,
+        }
+    }
+    Ok(())
+}
+
 /// Runs `scene` on the caller's storage, drawing each shape onto `target` as it is placed.
 /// `clock` is read before and after each step, so [`Outcome::ticks`] counts the engine's
 /// time only (pass `|| 0` where there is no clock).
@@ -333,18 +384,17 @@ pub fn run<S: Scalar, D: DrawTarget<Color = BinaryColor>>(
     let view = View::new(&region, size.width, size.height);
     let mut rng = zetafill::rng_from_seed(scene.seed);
     let mut ticks = 0u64;
-    while (engine.placed().len() as u64) < scene.count {
+    while engine.stats().placed < scene.count {
         let t0 = clock();
         let step = engine.step(&mut rng);
         ticks = ticks.wrapping_add(clock().wrapping_sub(t0));
         let placement = step.map_err(RunError::Step)?;
-        if let Some(geo) = engine.geo(placement.index as usize) {
-            paint(scene, &view, &geo, target).map_err(RunError::Draw)?;
-        }
+        paint_placement(scene, &view, &engine, placement.index, target).map_err(RunError::Draw)?;
     }
     let (count, digest) = digest::engine_digest(&engine);
     Ok(Outcome {
         count,
+        placed: engine.stats().placed,
         digest,
         trials: engine.stats().trials,
         ticks,
@@ -372,18 +422,17 @@ pub fn run_fast<S: Scalar, D: DrawTarget<Color = BinaryColor>>(
     if scene.batched {
         ticks = run_batches(scene, &mut engine, &mut sampler, &view, target, &mut clock)?;
     }
-    while (engine.placed().len() as u64) < scene.count {
+    while engine.stats().placed < scene.count {
         let t0 = clock();
         let step = engine.step_fast(&mut sampler, &mut rng);
         ticks = ticks.wrapping_add(clock().wrapping_sub(t0));
         let placement = step.map_err(RunError::Step)?;
-        if let Some(geo) = engine.geo(placement.index as usize) {
-            paint(scene, &view, &geo, target).map_err(RunError::Draw)?;
-        }
+        paint_placement(scene, &view, &engine, placement.index, target).map_err(RunError::Draw)?;
     }
     let (count, digest) = digest::engine_digest(&engine);
     Ok(Outcome {
         count,
+        placed: engine.stats().placed,
         digest,
         trials: engine.stats().trials,
         ticks,

@@ -153,6 +153,7 @@ pub fn run_space<S: Scalar>(
     let (count, digest) = digest::space_digest(&engine);
     Ok(Outcome {
         count,
+        placed: count,
         digest,
         trials: engine.stats().trials,
         ticks,

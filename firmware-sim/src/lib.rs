@@ -67,16 +67,16 @@ pub fn report(name: &str, scalar: &str, unit: &str, outcome: &Outcome, cal: &Cal
     eprintln!("digest {} {} {:016x}", name, outcome.count, outcome.digest);
     eprintln!(
         "cost {} scalar={} placements={} trials={} instructions={}",
-        name, scalar, outcome.count, outcome.trials, instructions
+        name, scalar, outcome.placed, outcome.trials, instructions
     );
     defmt::info!(
         "{=str} ({=str}): {=u64} {=str}, {=u64} trials, {=u64} instructions per placement",
         name,
         scalar,
-        outcome.count,
+        outcome.placed,
         unit,
         outcome.trials,
-        instructions / outcome.count.max(1)
+        instructions / outcome.placed.max(1)
     );
 }
 

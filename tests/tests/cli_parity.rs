@@ -204,10 +204,11 @@ fn fill_args(s: &zetafill_display::Scene) -> Vec<String> {
     } else {
         format!("mix:{}", names.join(","))
     };
-    let (region, periodic) = match s.region {
-        SceneRegion::Rect(w, h, periodic) => (format!("rect:{w}:{h}"), periodic),
-        SceneRegion::Circle(r) => (format!("circle:{r}"), false),
-        SceneRegion::Annulus(o, i) => (format!("annulus:{o}:{i}"), false),
+    let region = |r: String| vec!["--region".to_string(), r];
+    let (place, periodic) = match s.region {
+        SceneRegion::Rect(w, h, periodic) => (region(format!("rect:{w}:{h}")), periodic),
+        SceneRegion::Circle(r) => (region(format!("circle:{r}")), false),
+        SceneRegion::Annulus(o, i) => (region(format!("annulus:{o}:{i}")), false),
         SceneRegion::Polygon(points, ends) => {
             let mut rings = Vec::new();
             let mut start = 0;
@@ -216,12 +217,20 @@ fn fill_args(s: &zetafill_display::Scene) -> Vec<String> {
                 rings.push(ring.join(","));
                 start = end;
             }
-            (format!("polygon:{}", rings.join("/")), false)
+            (region(format!("polygon:{}", rings.join("/"))), false)
+        }
+        // A wallpaper scene's place is its group and lattice.
+        SceneRegion::Wallpaper(g, a, b, angle) => {
+            let lattice = match g.lattice().arity() {
+                1 => format!("{a}"),
+                2 => format!("{a}:{b}"),
+                _ => format!("{a}:{b}:{angle}"),
+            };
+            (vec!["--symmetry".into(), g.name().into(), "--lattice".into(), lattice], false)
         }
     };
-    let mut a: Vec<String> = ["zetafill", "fill", "-q", "--shape", &shape, "--region", &region]
-        .map(String::from)
-        .to_vec();
+    let mut a: Vec<String> = ["zetafill", "fill", "-q", "--shape", &shape].map(String::from).to_vec();
+    a.extend(place);
     if periodic {
         a.push("--periodic".into());
     }

@@ -14,6 +14,7 @@ use zetafill_cli::args::plot::{self, OrderArg, PlotArgs};
 use zetafill_cli::args::raster::{RasterArgs, ReliefArg};
 use zetafill_cli::args::spec;
 use zetafill_cli::args::style::StyleArg;
+use zetafill_cli::args::symmetry::{self, SymmetryArg, SymmetryArgs};
 use zetafill_cli::args::territory::{self, RenderArg as TerritoryRender, TerritoryArgs, TerritoryFormatArg, MAX_POINTS};
 use zetafill_cli::args::tile::{self, LayoutArg, RenderArg as TileRender, TileArgs, TileFormatArg};
 use zetafill_render::output::palette;
@@ -30,6 +31,8 @@ pub const PLAIN: &[&str] = &[
     "mix-order",
     "rotate",
     "region",
+    "symmetry",
+    "repeat",
     "sampler",
     "cells",
     "threads",
@@ -68,6 +71,26 @@ pub mod names {
     ];
     /// `--scalar`.
     pub const SCALAR: [(&str, ScalarArg); 2] = [("f64", ScalarArg::F64), ("fixed", ScalarArg::Fixed)];
+    /// `--symmetry`.
+    pub const SYMMETRY: [(&str, SymmetryArg); 17] = [
+        ("p1", SymmetryArg::P1),
+        ("p2", SymmetryArg::P2),
+        ("pm", SymmetryArg::Pm),
+        ("pg", SymmetryArg::Pg),
+        ("cm", SymmetryArg::Cm),
+        ("pmm", SymmetryArg::Pmm),
+        ("pmg", SymmetryArg::Pmg),
+        ("pgg", SymmetryArg::Pgg),
+        ("cmm", SymmetryArg::Cmm),
+        ("p4", SymmetryArg::P4),
+        ("p4m", SymmetryArg::P4m),
+        ("p4g", SymmetryArg::P4g),
+        ("p3", SymmetryArg::P3),
+        ("p3m1", SymmetryArg::P3m1),
+        ("p31m", SymmetryArg::P31m),
+        ("p6", SymmetryArg::P6),
+        ("p6m", SymmetryArg::P6m),
+    ];
     /// `--format` of `fill` and `line`.
     pub const FORMAT: [(&str, FormatArg); 6] = [
         ("svg", FormatArg::Svg),
@@ -283,6 +306,7 @@ pub fn fill(w: &mut Words) -> Result<FillArgs, String> {
         region: w.or("region", "rect:200:200", spec::fill_region)?,
         input: region_input(w)?,
         periodic: w.flag("periodic")?,
+        symmetry: symmetry(w)?,
         run: run(w, Pieces::Shapes)?,
         sampler: w.or("sampler", "fast", |s| choice(s, &SAMPLER))?,
         cells: w.opt("cells", whole(1, None))?,
@@ -302,6 +326,23 @@ pub fn fill(w: &mut Words) -> Result<FillArgs, String> {
         quiet: w.flag("quiet")?,
         plot: plot(w)?,
     })
+}
+
+/// The symmetry flags of `zetafill fill`, with clap's rules between them and the flags
+/// the pattern replaces.
+fn symmetry(w: &mut Words) -> Result<SymmetryArgs, String> {
+    let a = SymmetryArgs {
+        symmetry: w.opt("symmetry", |s| choice(s, &SYMMETRY))?,
+        lattice: w.opt("lattice", symmetry::lattice)?,
+        repeat: w.opt("repeat", symmetry::repeat)?,
+    };
+    for other in ["region", "periodic", "density", "voronoi"] {
+        w.conflict("symmetry", other)?;
+    }
+    w.requires("symmetry", "lattice")?;
+    w.requires("lattice", "symmetry")?;
+    w.requires("repeat", "symmetry")?;
+    Ok(a)
 }
 
 /// `zetafill line ARGV`.

@@ -227,6 +227,8 @@ impl Words {
     }
 
     /// Refuses `a` and `b` together.
+    // Out of line: a dozen flags call it, and each copy would cost the page's download.
+    #[inline(never)]
     pub fn conflict(&self, a: &str, b: &str) -> Result<(), String> {
         let at = |name: &str| self.given.iter().position(|g| g.long == name);
         let (Some(i), Some(j)) = (at(a), at(b)) else { return Ok(()) };
@@ -240,6 +242,7 @@ impl Words {
     }
 
     /// Refuses `a` without `b`.
+    #[inline(never)]
     pub fn requires(&self, a: &str, b: &str) -> Result<(), String> {
         if self.given(a) && !self.given(b) {
             return Err(not_provided(b));

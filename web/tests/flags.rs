@@ -118,6 +118,10 @@ fn choices_have_the_names_clap_gives() {
     assert_eq!(page_names(&names::MIX), clap_names::<fill::MixArg>());
     assert_eq!(page_names(&names::SAMPLER), clap_names::<fill::Sampler>());
     assert_eq!(page_names(&names::SCALAR), clap_names::<fill::ScalarArg>());
+    assert_eq!(
+        page_names(&names::SYMMETRY),
+        clap_names::<zetafill_cli::args::symmetry::SymmetryArg>()
+    );
     assert_eq!(page_names(&names::FORMAT), clap_names::<format::FormatArg>());
     assert_eq!(page_names(&names::STYLE), clap_names::<style::StyleArg>());
     assert_eq!(page_names(&names::RELIEF), clap_names::<raster::ReliefArg>());
@@ -143,6 +147,9 @@ fn samples(long: &str) -> Vec<&'static str> {
         "region" => vec!["circle:50", "annulus:50:20", "polygon:0,0,10,0,0,10", "text:ZF", "rect:300:100"],
         "sampler" => vec!["fast", "reference", "batched"],
         "scalar" => vec!["f64", "fixed"],
+        "symmetry" => vec!["p4m", "p31m", "cm", "p1", "p7"],
+        "lattice" => vec!["40", "40:30", "40:30:70", "40:30:180", "1:2:3:4", "0:1"],
+        "repeat" => vec!["3:3", "2", "0:1", "101:1", "3:x", "2:7"],
         "format" => vec!["svg", "json", "csv", "png", "digest", "gcode"],
         "style" => vec!["outline", "filled"],
         "relief" => vec!["dome", "cone", "flat"],
@@ -227,6 +234,15 @@ fn rules_and_malformed_lines_read_alike() {
         ("fill", "-o x.svg --hatch-only"),
         ("fill", "-o x.svg --cross-hatch --hatch 1"),
         ("fill", "-o x.svg --arcs --no-arcs"),
+        ("fill", "-o x.svg --symmetry p4m"),
+        ("fill", "-o x.svg --lattice 40"),
+        ("fill", "-o x.svg --repeat 2:2 --symmetry p4m --lattice 40"),
+        ("fill", "-o x.svg --repeat 2:2"),
+        ("fill", "-o x.svg --symmetry p4m --lattice 40 --region circle:50"),
+        ("fill", "-o x.svg --periodic --symmetry p6m --lattice 40"),
+        ("fill", "-o x.svg --symmetry pgg --lattice 40:30 --density noise:value:10"),
+        ("fill", "-o x.svg --voronoi --symmetry p2 --lattice 40:30:70"),
+        ("fill", "-o x.svg --symmetry p4m --lattice 40:30"),
         ("fill", "-o x.svg --bogus"),
         ("fill", "-o x.svg stray"),
         ("fill", "-o"),

@@ -135,6 +135,9 @@ pub struct FillArgs {
     /// Periodic (toroidal) boundary: the fill tiles seamlessly (rect regions only).
     #[arg(long)]
     pub periodic: bool,
+    /// The symmetry of a wallpaper group.
+    #[command(flatten)]
+    pub symmetry: super::symmetry::SymmetryArgs,
     /// The power law, stops, clearance, trial limit and seed.
     #[command(flatten)]
     pub run: RunArgs,

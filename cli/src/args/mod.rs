@@ -15,6 +15,7 @@ pub mod space;
 pub mod spec;
 pub mod stats;
 pub mod style;
+pub mod symmetry;
 pub mod territory;
 pub mod tile;
 

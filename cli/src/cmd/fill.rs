@@ -9,8 +9,8 @@ use crate::model::doc::{kind_name, FillDoc, ParamsDoc, ShapeDoc, ShapeParamsDoc,
 use crate::output;
 use crate::output::stream::{Output, Size};
 use crate::plan::fill::{
-    first_shape_error, first_two_error, fixed_outline_error, halt_advice, param_error, too_large_error, too_small_error, FillDraw,
-    FillPlan, FillRun, FIXED_MAX_VERTICES, SHAPES,
+    first_orbit_error, first_shape_error, first_two_error, fixed_outline_error, halt_advice, param_error, too_large_error, too_small_error,
+    FillDraw, FillPlan, FillRun, FIXED_MAX_VERTICES, SHAPES,
 };
 use crate::plan::format::Format;
 use crate::plan::raster::{height_map_error, png_error};
@@ -102,8 +102,10 @@ fn run_engine<S: zetafill::Scalar>(
     if let Some(d) = &density {
         density::refuse_zero(d, &region, false)?;
     }
-    let mut shapes = vec![Placed::<S>::default(); cap];
-    let mut index = vec![0u32; index_words(cap)];
+    // A symmetric fill stores each orbit's images.
+    let images = region.wallpaper().map_or(1, |w| w.order());
+    let mut shapes = vec![Placed::<S>::default(); cap * images];
+    let mut index = vec![0u32; index_words(cap * images)];
     // Only the paper's sampler asks the coverage bitmap (the cell sampler never does).
     let mut coverage = vec![0u64; if a.reference_sampler { COVERAGE_WORDS } else { 0 }];
     let storage = Storage {
@@ -159,19 +161,21 @@ fn run_engine<S: zetafill::Scalar>(
     if let Some(b) = &bar {
         b.finish_and_clear();
     }
+    // (Of a symmetric fill, the representatives: each orbit's first entry.)
     let shapes_doc = engine
         .placed()
         .iter()
         .enumerate()
-        .filter_map(|(i, p)| {
-            let g = geo_f64(&engine.geo(i)?);
+        .step_by(images)
+        .filter_map(|(e, p)| {
+            let g = geo_f64(&engine.geo(e)?);
             let pf = Placed {
                 x: p.x.to_f64(),
                 y: p.y.to_f64(),
                 scale: p.scale.to_f64(),
                 angle: p.angle.to_f64(),
             };
-            let i = i as u64;
+            let i = (e / images) as u64;
             let t = trials.get(i as usize).copied().unwrap_or(0);
             Some(shape_doc(&engine.kind_of(i), &g, &pf, i, engine.area_of(i), t))
         })
@@ -198,7 +202,9 @@ fn screen_on<S: zetafill::Scalar>(
 ) {
     const LANES_AT_ONCE: usize = 4;
     let threads = threads.min(lanes.len().div_ceil(LANES_AT_ONCE)).max(1);
-    if threads == 1 {
+    // Without the `parallel` feature (the browser page, which has no threads) every lane is
+    // screened here: the same fill, as for any number of threads.
+    if threads == 1 || !cfg!(feature = "parallel") {
         e.screen(cells, plan, lanes);
         return;
     }
@@ -232,8 +238,14 @@ pub fn compute(a: &FillRun) -> Result<(FillDoc, Option<StepError>), CliError> {
 pub fn compute_watched(a: &FillRun, watch: &mut dyn FnMut(&zetafill::Placement<f64>)) -> Result<(FillDoc, Option<StepError>), CliError> {
     let data = RegionData::load(&a.region)?;
     let mut scratch = Vec::new();
-    let region = data.region(a.periodic, &mut scratch)?;
+    let region = match &a.symmetry {
+        Some(s) => Region::Wallpaper(s.wallpaper),
+        None => data.region(a.periodic, &mut scratch)?,
+    };
     let params = &a.params;
+    if let Some(s) = &a.symmetry {
+        zetafill::check_first_orbit(params, &s.wallpaper).map_err(|e| first_orbit_error(e, params, &s.wallpaper))?;
+    }
     let stop = a.stop;
     let sequence = stopping::sequence(region.area(), params.c, params.n_offset)?;
     stopping::check_min_size(&stop, zetafill::first_shape(&sequence, &params.shape).width, SHAPES)?;
@@ -258,7 +270,12 @@ pub fn compute_watched(a: &FillRun, watch: &mut dyn FnMut(&zetafill::Placement<f
         StopReason::Fill => ("fill", None),
         StopReason::MinSize => ("min-size", None),
         StopReason::Step(StepError::CannotFit { index: 0 }) => {
-            return Err(first_shape_error(params, &zetafill::first_shape(&sequence, &params.shape), None))
+            return Err(first_shape_error(
+                params,
+                &zetafill::first_shape(&sequence, &params.shape),
+                None,
+                a.symmetry.is_some(),
+            ))
         }
         StopReason::Step(StepError::Halted { index: 0, trials }) => {
             // Nothing placed: a density of zero everywhere is the reason, not the size.
@@ -269,6 +286,7 @@ pub fn compute_watched(a: &FillRun, watch: &mut dyn FnMut(&zetafill::Placement<f
                 params,
                 &zetafill::first_shape(&sequence, &params.shape),
                 Some(trials),
+                a.symmetry.is_some(),
             ));
         }
         StopReason::Step(e @ StepError::Halted { .. }) => ("halted", Some(e)),
@@ -303,7 +321,10 @@ pub fn compute_watched(a: &FillRun, watch: &mut dyn FnMut(&zetafill::Placement<f
             max_trials: params.max_trials,
             dimension: 2.0 / params.c,
         },
-        region: data.doc(&region),
+        region: match &a.symmetry {
+            Some(s) => region::wallpaper_doc(&s.wallpaper, s.repeat),
+            None => data.doc(&region),
+        },
         area,
         zeta,
         shapes: shapes_doc,

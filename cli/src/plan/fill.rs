@@ -6,6 +6,7 @@
 use crate::args::fill::{FillArgs, MixArg, Rotate, Sampler, ScalarArg, DEFAULT_MAX_TRIALS, MAX_SHAPES};
 use crate::args::plot::{Layers, PlotArgs, SVG_FLAGS};
 use crate::args::style::StyleArg;
+use crate::args::symmetry::SymmetryArgs;
 use crate::error::CliError;
 use crate::model::doc::kind_name;
 use crate::model::fill::BuildOptions;
@@ -20,7 +21,7 @@ use crate::plan::plot::{GcodePlan, PagePlan};
 use crate::plan::raster::{self, only_png};
 use crate::plan::Unit;
 use zetafill::ParamError;
-use zetafill::{FirstShape, FirstTwoError, MixOrder, Params, ShapeList, Stop, TooLarge, TooSmall};
+use zetafill::{FirstOrbitError, FirstShape, FirstTwoError, LatticeKind, MixOrder, Params, ShapeList, Stop, TooLarge, TooSmall};
 
 /// What a 2D run places, and the most one run may hold.
 pub const SHAPES: Unit = Unit {
@@ -39,6 +40,55 @@ pub fn no_fixed_point() -> CliError {
     )
 }
 
+/// A fill with the symmetry of a wallpaper group: the group on its lattice, and the cells
+/// drawn across and up.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SymmetryPlan {
+    /// The group and its lattice.
+    pub wallpaper: zetafill::Wallpaper,
+    /// `--repeat`.
+    pub repeat: (u32, u32),
+}
+
+/// The lattice a group needs, as its message names it.
+fn lattice_form(kind: LatticeKind) -> &'static str {
+    match kind {
+        LatticeKind::Oblique => "an oblique lattice: give A:B:ANGLE (sides in mm, angle in degrees)",
+        LatticeKind::Rectangular => "a rectangular lattice: give A:B (sides in mm)",
+        LatticeKind::Centred => "a centred rectangular lattice: give A:B (sides in mm)",
+        LatticeKind::Square => "a square lattice: give A (side in mm)",
+        LatticeKind::Hexagonal => "a hexagonal lattice: give A (side in mm)",
+    }
+}
+
+/// `--symmetry`, `--lattice` and `--repeat` checked against each other.
+pub fn symmetry(a: &SymmetryArgs) -> Result<Option<SymmetryPlan>, CliError> {
+    let (Some(s), Some(l)) = (a.symmetry, &a.lattice) else {
+        return Ok(None);
+    };
+    let group = s.group();
+    let kind = group.lattice();
+    let v = &l.0;
+    if v.len() != kind.arity() {
+        return Err(CliError::arg(
+            "--lattice",
+            format!(
+                "{} has {}, not {} number{}",
+                group.name(),
+                lattice_form(kind),
+                v.len(),
+                if v.len() == 1 { "" } else { "s" }
+            ),
+        ));
+    }
+    let side = v.first().copied().unwrap_or(0.0);
+    let other = v.get(1).copied().unwrap_or(side);
+    let angle = v.get(2).copied().unwrap_or(90.0);
+    let wallpaper = zetafill::Wallpaper::new(group, side, other, angle).map_err(|e| CliError::arg("--lattice", e.to_string()))?;
+    let repeat = a.repeat.map_or((3, 3), |r| (r.0, r.1));
+    Ok(Some(SymmetryPlan { wallpaper, repeat }))
+}
+
 /// What the engine runs.
 #[derive(Debug, Clone, PartialEq)]
 pub struct FillRun {
@@ -47,6 +97,8 @@ pub struct FillRun {
     pub region: RegionSpec,
     /// Periodic boundary.
     pub periodic: bool,
+    /// The symmetry of a wallpaper group, which takes the place of the region.
+    pub symmetry: Option<SymmetryPlan>,
     /// The core's parameters.
     pub params: Params,
     /// The stop conditions.
@@ -271,9 +323,11 @@ pub fn resolve_as(a: &FillArgs, format: Format) -> Result<(FillRun, FillDraw), C
     if a.scalar == ScalarArg::Fixed && !cfg!(feature = "fixed-point") {
         return Err(no_fixed_point());
     }
+    let symmetry = symmetry(&a.symmetry)?;
     let run = FillRun {
         region,
         periodic: a.periodic,
+        symmetry,
         params,
         stop: crate::plan::stops(&a.run.stop),
         seed,
@@ -351,7 +405,14 @@ pub fn batch_size(asked: Option<u64>) -> usize {
 /// The threads `--threads` asks for, or one per core.
 pub fn threads(asked: Option<u64>) -> usize {
     asked.map_or_else(
-        || std::thread::available_parallelism().map_or(1, |n| n.get()),
+        // (A build without `parallel`, the browser page, has one thread.)
+        || {
+            if cfg!(feature = "parallel") {
+                std::thread::available_parallelism().map_or(1, |n| n.get())
+            } else {
+                1
+            }
+        },
         |n| usize::try_from(n).unwrap_or(1),
     )
 }
@@ -488,22 +549,34 @@ pub fn halt_advice(index: u64, proven: bool) -> &'static str {
 /// core knows the shape is too large for the region, or the trials spent before giving up.
 /// `first` is the shape, as the core describes it. Nothing is written: an output with no shape
 /// is no drawing.
-pub fn first_shape_error(params: &Params, first: &FirstShape, halt: Option<u64>) -> CliError {
+///
+/// `symmetric` names a fill with the symmetry of a wallpaper group, whose shape must clear
+/// its own images in the lattice's cell.
+pub fn first_shape_error(params: &Params, first: &FirstShape, halt: Option<u64>, symmetric: bool) -> CliError {
     let FirstShape {
         kind,
         area: first_area,
         width,
     } = *first;
+    let region = if symmetric {
+        "the cell clear of its own images"
+    } else {
+        "the region"
+    };
     let what = match halt {
-        None => "does not fit the region".to_string(),
-        Some(t) if t < params.max_trials => "does not fit anywhere in the region".to_string(),
-        Some(t) => format!("never fit in the region ({t} trials found no place for it)"),
+        None => format!("does not fit {region}"),
+        Some(t) if t < params.max_trials => format!("does not fit anywhere in {region}"),
+        Some(t) => format!("never fit in {region} ({t} trials found no place for it)"),
     };
     let mut advice = String::from("lower --c or raise --n-offset (a smaller first shape)");
     if params.gap > 0.0 {
         advice.push_str(", lower --gap");
     }
-    advice.push_str(" or use a larger --region");
+    advice.push_str(if symmetric {
+        " or use a larger --lattice"
+    } else {
+        " or use a larger --region"
+    });
     if halt.is_some_and(|t| t >= params.max_trials && params.max_trials < DEFAULT_MAX_TRIALS) {
         advice.push_str("; if it does fit, raise --max-trials");
     }
@@ -547,6 +620,31 @@ pub fn first_two_error(e: FirstTwoError, params: &Params) -> CliError {
             format!(
                 "with N = {n_offset} the first two {}s cannot both fit in this region when c > {max_c:.4} (the paper's hard limit, section 3); lower --c or raise --n-offset",
                 kind_name(&kind),
+            ),
+        ),
+    }
+}
+
+/// The usage error of a symmetric fill whose first shape can never clear its own images
+/// (the core's [`zetafill::check_first_orbit`]).
+pub fn first_orbit_error(e: FirstOrbitError, params: &Params, w: &zetafill::Wallpaper) -> CliError {
+    let lattice = crate::model::wallpaper::lattice_arg(w);
+    match e {
+        FirstOrbitError::Gap { gap, max_gap, .. } => CliError::arg(
+            "--gap",
+            format!(
+                "{gap} mm leaves no shape room to clear its own images on this lattice, whatever --c and --n-offset; lower it below {max_gap:.4} mm or use a larger --lattice"
+            ),
+        ),
+        FirstOrbitError::Exponent { kind, max_c, room, .. } => CliError::arg(
+            "--c",
+            format!(
+                "the first {} cannot clear its own images in {} on the lattice {lattice} (the most room anywhere is a disc of radius {room:.4} mm); lower --c to {} or less, raise --n-offset{}, or use a larger --lattice",
+                kind_name(&kind),
+                w.group().name(),
+                // Rounded down, so that the value named works.
+                (max_c * 1e4).floor() / 1e4,
+                if params.gap > 0.0 { ", lower --gap" } else { "" }
             ),
         ),
     }

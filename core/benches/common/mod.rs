@@ -47,7 +47,14 @@ pub fn cell_fill(params: Params, cap: usize, count: u64) -> CellFill {
 
 /// [`cell_fill`] with `cells` cells lent to the sampler instead (`zetafill fill --cells`).
 #[allow(dead_code)] // (not every benchmark fills in 2D)
-pub fn cell_fill_lent(mut params: Params, cap: usize, count: u64, cells: usize) -> CellFill {
+pub fn cell_fill_lent(params: Params, cap: usize, count: u64, cells: usize) -> CellFill {
+    cell_fill_in(RECT, params, cap, count, cells)
+}
+
+/// [`cell_fill_lent`] in `region`, with `cap` entries of storage (a wallpaper group's
+/// placements take one entry per image).
+#[allow(dead_code)] // (not every benchmark fills in 2D)
+pub fn cell_fill_in(region: Region<'_>, mut params: Params, cap: usize, count: u64, cells: usize) -> CellFill {
     let cap = cap.max(1);
     let mut shapes = vec![Placed::<f64>::default(); cap];
     let mut index = vec![0u32; index_words(cap)];
@@ -69,7 +76,7 @@ pub fn cell_fill_lent(mut params: Params, cap: usize, count: u64, cells: usize) 
     touch_pages(storage.index);
     touch_pages(&mut pool);
     let start = cpu_seconds();
-    let mut e = Engine::<f64>::new(params, RECT, storage).expect("valid parameters");
+    let mut e = Engine::<f64>::new(params, region, storage).expect("valid parameters");
     let mut rng = zetafill::rng_from_seed(1);
     let mut cells = CellSampler::new(&mut pool).expect("cells");
     let reason = e.run_fast(&mut cells, &mut rng, &stop, |_| {});

@@ -330,7 +330,7 @@ impl<S: Scalar> Engine<'_, S> {
         match self.check_into(next, c, angle, Some(&known), g) {
             Ok(shape) => Some(Found {
                 shape,
-                event: Event::of(d, What::Placed(next.index as u32)),
+                event: Event::of(d, What::Placed(next.index as u32 * self.images.get())),
                 upto: self.len,
             }),
             Err(Some(j)) if known.contains(&j) => {
@@ -360,6 +360,13 @@ impl<S: Scalar> Engine<'_, S> {
         let r = kind.bounding_radius(shape.scale);
         let solid = kind.solid_radius(shape.scale);
         let mut other = Geo::Circle { c, r };
+        if self.region.wallpaper().is_some() {
+            // The whole test again: the orbit against every stored image, those since included.
+            if let Some(k) = self.blocker(&g, c.x, c.y, (r, solid), true) {
+                return Err(Some(k));
+            }
+            return self.orbit_refuses(&g, c, (r, solid), true).map_or(Ok(()), Err);
+        }
         for j in from..self.len {
             let j = j as u32;
             // On a torus the nearest image by centre is the only one in reach while two
@@ -387,9 +394,9 @@ impl<S: Scalar> Engine<'_, S> {
     /// Places the lane's placement: its screened candidate if it clears the batch's earlier
     /// shapes, or the first that passes of those it draws on from its own stream.
     fn commit(&mut self, cells: &mut CellSampler<'_, S>, plan: &Plan<S>, lane: &mut Lane<S>) -> Result<Placement<S>, StepError> {
-        if self.len >= self.shapes.len() {
+        if self.len + self.per().get() > self.shapes.len() {
             return Err(StepError::Capacity {
-                capacity: self.shapes.len() as u64,
+                capacity: (self.shapes.len() / self.per()) as u64,
             });
         }
         let (next, own) = lane.next?;
@@ -442,7 +449,7 @@ impl<S: Scalar> Engine<'_, S> {
     /// Wakes the cells for a batch and seeds its lanes: the plan of the batch at the next
     /// placement.
     fn begin_batch(&self, cells: &mut CellSampler<'_, S>, batches: &mut Batches<'_, S>) -> Plan<S> {
-        let first = self.len as u64;
+        let first = self.orbits() as u64;
         let end = first + batches.size_at(first);
         let mut clearance: Option<S> = None;
         for (k, lane) in batches.lanes.iter_mut().take((end - first) as usize).enumerate() {
@@ -514,7 +521,7 @@ impl<S: Scalar> Engine<'_, S> {
                     }
                 }
             }
-            let next = self.len as u64;
+            let next = self.orbits() as u64;
             let size = batch_size(next, batches.size);
             if let Some(c) = self.batch_clearance(next, next + size).or(plan.clearance) {
                 cells.begin_replay();

@@ -52,8 +52,12 @@ impl<S: Scalar> Field<S> for FieldOf<'_, '_, S> {
         match e.shapes.get(j as usize) {
             // On hosts a polygon's outline is built once for the four points, as
             // `shape_dist` builds it for one (a board keeps the flash this would take).
-            Some(s) if cfg!(not(target_os = "none")) && !matches!(e.kind_of(u64::from(j)), ShapeKind::Circle | ShapeKind::Ring { .. }) => {
-                let outline = e.kind_of(u64::from(j)).geo(Point::new(s.x, s.y), s.scale, s.angle);
+            Some(s) if cfg!(not(target_os = "none")) && !matches!(e.entry_kind(j), ShapeKind::Circle | ShapeKind::Ring { .. }) => {
+                let mut outline = Geo::Circle {
+                    c: Point::new(s.x, s.y),
+                    r: s.scale,
+                };
+                e.entry_geo_into(j, s, S::ZERO, S::ZERO, &mut outline);
                 ps.map(|p| poly_dist(&outline, e.image_near(p, s)))
             }
             _ => ps.map(|p| e.shape_dist(j, p)),
@@ -164,7 +168,7 @@ impl<S: Scalar> Engine<'_, S> {
     /// bounds than their distances do.
     pub(super) fn disc(&self, j: u32, p: Point<S>) -> Option<(Point<S>, S)> {
         let s = self.shapes.get(j as usize)?;
-        if self.kind_of(u64::from(j)) != ShapeKind::Circle {
+        if self.entry_kind(j) != ShapeKind::Circle {
             return None;
         }
         // `image_near` moves `p` next to the circle; the circle moves by the opposite shift.
@@ -187,7 +191,7 @@ impl<S: Scalar> Engine<'_, S> {
             // With every place taken, a polygon whose bounding disc lies beyond the farthest
             // kept (by far more than any rounding) cannot take a place: on hosts its outline
             // is not built (a board keeps the flash).
-            if cfg!(not(target_os = "none")) && best.is_full() && self.kind_of(u64::from(j)) != ShapeKind::Circle {
+            if cfg!(not(target_os = "none")) && best.is_full() && self.entry_kind(j) != ShapeKind::Circle {
                 let far = best.iter().fold(S::from_f64(f64::MIN), |m, b| m.max(b.0));
                 if self.dist_floor(j, c).is_some_and(|lo| lo > far + S::from_f64(1e-6)) {
                     return;
@@ -214,7 +218,7 @@ impl<S: Scalar> Engine<'_, S> {
             let mut look = |qx: S, qy: S| {
                 self.hash.query(level, [qx - rr, qy - rr, qx + rr, qy + rr], total, |j| {
                     if let Some(p) = self.shapes.get(j as usize) {
-                        let contact = reach + self.kind_of(u64::from(j)).bounding_radius(p.scale);
+                        let contact = reach + self.entry_kind(j).bounding_radius(p.scale);
                         let (dx, dy) = (p.x - qx, p.y - qy);
                         if dx * dx + dy * dy < contact * contact {
                             offer(j);
@@ -240,13 +244,18 @@ impl<S: Scalar> Engine<'_, S> {
     fn dist_floor(&self, j: u32, p: Point<S>) -> Option<S> {
         let s = self.shapes.get(j as usize)?;
         let q = self.image_near(p, s);
-        Some(Point::new(s.x, s.y).dist2(q).sqrt() - self.kind_of(u64::from(j)).bounding_radius(s.scale))
+        Some(Point::new(s.x, s.y).dist2(q).sqrt() - self.entry_kind(j).bounding_radius(s.scale))
     }
 
     /// `p`, or on a torus its copy nearest the centre of `s`.
     pub(super) fn image_near(&self, p: Point<S>, s: &Placed<S>) -> Point<S> {
         if !self.region.periodic() {
             return p;
+        }
+        if self.shear != S::ZERO {
+            // The shift `nearest_image` moves the shape by, the other way.
+            let ((ox, oy), _) = self.nearest_image(s, p);
+            return p.shift(S::ZERO - ox, S::ZERO - oy);
         }
         let (w, h) = self.period;
         // Shift p by the period that brings it nearest to the shape's centre.
@@ -272,7 +281,7 @@ impl<S: Scalar> Engine<'_, S> {
         let Some(s) = self.shapes.get(j as usize) else {
             return S::from_f64(f64::MAX);
         };
-        let kind = self.kind_of(u64::from(j));
+        let kind = self.entry_kind(j);
         let q = self.image_near(p, s);
         let centre = Point::new(s.x, s.y);
         let d = centre.diff(q);
@@ -293,7 +302,11 @@ impl<S: Scalar> Engine<'_, S> {
                     }
                 }
             }
-            _ => poly_dist(&kind.geo(centre, s.scale, s.angle), q),
+            _ => {
+                let mut outline = Geo::Circle { c: centre, r: s.scale };
+                self.entry_geo_into(j, s, S::ZERO, S::ZERO, &mut outline);
+                poly_dist(&outline, q)
+            }
         }
     }
 
@@ -444,7 +457,8 @@ impl<S: Scalar> Engine<'_, S> {
             let known = if slot == usize::MAX { drawn.near() } else { cells.known(slot) };
             match self.try_at(next, c, angle, trials, Some(&known)) {
                 Ok(placed) => {
-                    cells.learn(slot, next.index as u32, clearance, &FieldOf(self));
+                    // The shape placed is the first entry of its orbit.
+                    cells.learn(slot, next.index as u32 * self.images.get(), clearance, &FieldOf(self));
                     cells.end_step(x1 - x0, y1 - y0);
                     return Ok(placed);
                 }

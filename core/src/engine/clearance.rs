@@ -9,7 +9,7 @@ use crate::scalar::Scalar;
 use crate::shape::{Placed, ShapeKind};
 
 /// How many periods of length `p` a reach can span (at least 1, at most 64).
-fn periods<S: Scalar>(reach: S, p: S) -> i64 {
+pub(super) fn periods<S: Scalar>(reach: S, p: S) -> i64 {
     if p <= S::ZERO {
         return 1;
     }
@@ -36,7 +36,7 @@ impl<S: Scalar> Engine<'_, S> {
             self.hash
                 .query(level, [qx - reach, qy - reach, qx + reach, qy + reach], total, |j| {
                     let Some(p) = self.shapes.get(j as usize) else { return true };
-                    let kind = self.kind_of(u64::from(j));
+                    let kind = self.entry_kind(j);
                     let their_r = kind.bounding_radius(p.scale);
                     let contact = r + their_r + gap;
                     let (dx, dy) = (p.x - qx, p.y - qy);
@@ -45,7 +45,7 @@ impl<S: Scalar> Engine<'_, S> {
                     // discs meet: no geometry to build.
                     let ok = d2 > contact * contact
                         || (!((circle && kind == ShapeKind::Circle) || self.solids_meet(d2, solid, kind, p.scale)) && {
-                            kind.geo_into(&mut other, Point::new(p.x, p.y), p.scale, p.angle);
+                            self.entry_geo_into(j, p, S::ZERO, S::ZERO, &mut other);
                             separated(image, &other, gap)
                         });
                     if !ok && (!lowest || self.hash.level_for(their_r + their_r) == level) {
@@ -83,12 +83,21 @@ impl<S: Scalar> Engine<'_, S> {
     /// `reach` of the region's box, where stored shapes' images may lie: one period each way
     /// unless a long shape in a narrow torus reaches further.
     /// Calls `f` with each, in order, until it returns false.
+    /// On a wallpaper torus the shifts are its lattice's vectors `k a + l b`.
     pub(super) fn each_image(&self, x: S, y: S, reach: S, mut f: impl FnMut(S, S) -> bool) {
         let (w, h) = self.period;
         let (kx, ky) = (periods(reach, w), periods(reach, h));
+        let sheared = self.shear != S::ZERO;
         for l in -ky..=ky {
+            // A sheared row is moved by l b: a's that many more may bring it back.
+            let (sx, kx) = if sheared {
+                (self.shear * S::from_f64(l as f64), kx + l.abs())
+            } else {
+                (S::ZERO, kx)
+            };
             for k in -kx..=kx {
                 let (ox, oy) = (w * S::from_f64(k as f64), h * S::from_f64(l as f64));
+                let ox = if sheared { ox + sx } else { ox };
                 let (qx, qy) = (x + ox, y + oy);
                 if qx + reach < S::ZERO || qx - reach > w || qy + reach < S::ZERO || qy - reach > h {
                     continue;
@@ -105,7 +114,7 @@ impl<S: Scalar> Engine<'_, S> {
     /// [`Engine::blocker`] for one shape.
     pub(super) fn hits(&self, g: &Geo<S>, c: Point<S>, (r, solid): (S, Option<S>), j: u32, other: &mut Geo<S>) -> bool {
         let Some(p) = self.shapes.get(j as usize) else { return false };
-        let kind = self.kind_of(u64::from(j));
+        let kind = self.entry_kind(j);
         let ((ox, oy), (dx, dy)) = self.nearest_image(p, c);
         let contact = r + kind.bounding_radius(p.scale) + self.gap;
         let d2 = dx * dx + dy * dy;
@@ -115,7 +124,7 @@ impl<S: Scalar> Engine<'_, S> {
         if (kind == ShapeKind::Circle && matches!(g, Geo::Circle { .. })) || self.solids_meet(d2, solid, kind, p.scale) {
             return true;
         }
-        kind.geo_into(other, Point::new(p.x + ox, p.y + oy), p.scale, p.angle);
+        self.entry_geo_into(j, p, ox, oy, other);
         !separated(g, other, self.gap)
     }
 
@@ -137,7 +146,7 @@ impl<S: Scalar> Engine<'_, S> {
     /// when `j` is another kind. The same answer as [`Engine::hits`] for two circles.
     pub(super) fn circles_meet(&self, c: Point<S>, r: S, j: u32) -> bool {
         let Some(p) = self.shapes.get(j as usize) else { return false };
-        if self.kind_of(u64::from(j)) != ShapeKind::Circle {
+        if self.entry_kind(j) != ShapeKind::Circle {
             return false;
         }
         let (_, (dx, dy)) = self.nearest_image(p, c);
@@ -151,7 +160,21 @@ impl<S: Scalar> Engine<'_, S> {
     pub(super) fn nearest_image(&self, p: &Placed<S>, c: Point<S>) -> ((S, S), (S, S)) {
         let (dx, dy) = (p.x - c.x, p.y - c.y);
         let (mut ox, mut oy) = (S::ZERO, S::ZERO);
-        if self.region.periodic() {
+        if self.shear != S::ZERO {
+            // A sheared lattice: the row first (moving by b), then along a.
+            let (w, h) = self.period;
+            if dy > h.half() {
+                (ox, oy) = (-self.shear, -h);
+            } else if -dy > h.half() {
+                (ox, oy) = (self.shear, h);
+            }
+            let ex = dx + ox;
+            if ex > w.half() {
+                ox = ox - w;
+            } else if -ex > w.half() {
+                ox = ox + w;
+            }
+        } else if self.region.periodic() {
             let (w, h) = self.period;
             if dx > w.half() {
                 ox = -w;

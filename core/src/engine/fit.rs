@@ -91,18 +91,19 @@ impl<S: Scalar> Engine<'_, S> {
                 !(in_band || around)
             }
             Region::Polygon(_) => false,
+            Region::Wallpaper(_) => self.wider_than_lattice(inr),
         }
     }
 
     /// What the next placement needs that stays fixed over its trials, or why it cannot be
     /// made.
     pub(super) fn next_shape(&self) -> Result<NextShape<S>, StepError> {
-        if self.len >= self.shapes.len() {
+        if self.len + self.per().get() > self.shapes.len() {
             return Err(StepError::Capacity {
-                capacity: self.shapes.len() as u64,
+                capacity: (self.shapes.len() / self.per()) as u64,
             });
         }
-        self.shape_at(self.len as u64)
+        self.shape_at(self.orbits() as u64)
     }
 
     /// [`Engine::next_shape`] for placement `index`, whether or not the storage has room for

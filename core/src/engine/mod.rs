@@ -36,6 +36,7 @@ mod cells;
 mod clearance;
 mod density;
 mod fit;
+mod orbit;
 
 use crate::coverage::Coverage;
 use crate::geom::{Geo, Point};
@@ -180,6 +181,11 @@ pub struct Engine<'a, S: Scalar> {
     min_size: f64,
     /// Where centres are wanted, when not uniformly.
     density: Option<Thinning<'a>>,
+    /// Entries stored per placement: the images of an orbit on a wallpaper torus, else 1
+    /// (never 0: a division by it cannot fail).
+    images: core::num::NonZeroU32,
+    /// The x of the torus's second lattice vector (0 for a rectangle's).
+    shear: S,
 }
 
 /// Index words needed for `capacity` shapes: one link each plus at least `2 * capacity`
@@ -272,9 +278,12 @@ impl<'a, S: Scalar> Engine<'a, S> {
         if params.max_trials == 0 {
             return Err(ParamError::MaxTrials);
         }
-        if shapes.is_empty() || index.len() <= shapes.len() {
+        let images = region.wallpaper().map_or(1, |w| w.order());
+        if shapes.len() < images || index.len() <= shapes.len() {
             return Err(ParamError::Storage);
         }
+        // The coverage bitmap knows rectangular tori only.
+        let coverage = if region.wallpaper().is_some() { &mut [] } else { coverage };
         let seq = AreaSequence::new(region.area(), params.c, params.n_offset).map_err(|_| ParamError::Zeta)?;
         let (next, heads) = index.split_at_mut(shapes.len());
         let hash = SpatialHash::new(heads, next, S::from_f64(w.max(h))).map_err(|_| ParamError::Storage)?;
@@ -301,6 +310,8 @@ impl<'a, S: Scalar> Engine<'a, S> {
             period: (S::from_f64(w), S::from_f64(h)),
             min_size: crate::feasibility::min_size::<S>(&region),
             density: None,
+            images: core::num::NonZeroU32::new(images as u32).unwrap_or(core::num::NonZeroU32::MIN),
+            shear: S::from_f64(region.wallpaper().map_or(0.0, |w| w.lattice().1)),
         })
     }
 
@@ -349,21 +360,36 @@ impl<'a, S: Scalar> Engine<'a, S> {
         self.params.shape.kind_of(i)
     }
 
-    /// The shapes placed so far, in placement order.
+    /// The shapes placed so far, in placement order. On a wallpaper torus
+    /// ([`Region::Wallpaper`]) each placement is its orbit's [`Engine::images`] entries in a
+    /// row: the shape, then its images under the group's operations, each at its centre in
+    /// the fundamental domain.
     pub fn placed(&self) -> &[Placed<S>] {
         self.shapes.get(..self.len).unwrap_or(&[])
     }
 
-    /// The concrete geometry of placed shape `i`: exactly what was tested, and what to draw.
+    /// Entries of [`Engine::placed`] per placement: the group's order on a wallpaper torus,
+    /// otherwise 1.
+    pub fn images(&self) -> usize {
+        self.images.get() as usize
+    }
+
+    /// The concrete geometry of entry `i` of [`Engine::placed`]: exactly what was tested, and
+    /// what to draw (on a wallpaper torus, the image the entry holds).
     pub fn geo(&self, i: usize) -> Option<Geo<S>> {
         let p = self.placed().get(i)?;
-        Some(self.kind_of(i as u64).geo(Point::new(p.x, p.y), p.scale, p.angle))
+        let mut g = Geo::Circle {
+            c: Point::new(p.x, p.y),
+            r: p.scale,
+        };
+        self.entry_geo_into(i as u32, p, S::ZERO, S::ZERO, &mut g);
+        Some(g)
     }
 
     /// Statistics so far.
     pub fn stats(&self) -> Stats {
         Stats {
-            placed: self.len as u64,
+            placed: self.orbits() as u64,
             trials: self.trials,
             fill_fraction: self.placed_area / self.seq.total(),
         }
@@ -463,7 +489,7 @@ impl<'a, S: Scalar> Engine<'a, S> {
             (next.base_scale, next.base_r, next.base_solid)
         };
         // (Known circles were tested above for a circle.)
-        let tested = |j: u32| kind == ShapeKind::Circle && self.kind_of(u64::from(j)) == ShapeKind::Circle;
+        let tested = |j: u32| kind == ShapeKind::Circle && self.entry_kind(j) == ShapeKind::Circle;
         let mut other = Geo::Circle { c, r };
         if let Some(&j) = known
             .unwrap_or(&[])
@@ -475,11 +501,20 @@ impl<'a, S: Scalar> Engine<'a, S> {
         if !self.region.contains(g, self.gap) {
             return Err(None);
         }
-        if self.region.periodic() && self.self_overlaps(g, r) {
-            return Err(None);
-        }
-        if let Some(j) = self.blocker(g, c.x, c.y, (r, solid), known.is_some()) {
-            return Err(Some(j));
+        if self.region.wallpaper().is_some() {
+            if let Some(j) = self.blocker(g, c.x, c.y, (r, solid), known.is_some()) {
+                return Err(Some(j));
+            }
+            if let Some(hit) = self.orbit_refuses(g, c, (r, solid), known.is_some()) {
+                return Err(hit);
+            }
+        } else {
+            if self.region.periodic() && self.self_overlaps(g, r) {
+                return Err(None);
+            }
+            if let Some(j) = self.blocker(g, c.x, c.y, (r, solid), known.is_some()) {
+                return Err(Some(j));
+            }
         }
         Ok(Placed {
             x: c.x,
@@ -511,6 +546,18 @@ impl<'a, S: Scalar> Engine<'a, S> {
             self.coverage.mark(g, c, kind.inradius(shape.scale), period);
         }
         self.len += 1;
+        // The orbit's other images, each at its centre in the domain.
+        if let Some(w) = self.region.wallpaper() {
+            for k in 1..w.order() {
+                let q = w.image_centre(k, c);
+                let j = self.len;
+                if let Some(slot) = self.shapes.get_mut(j) {
+                    *slot = Placed { x: q.x, y: q.y, ..shape };
+                }
+                self.hash.insert(j as u32, q.x, q.y, r);
+                self.len += 1;
+            }
+        }
         self.placed_area += next.area;
         Placement {
             index: next.index,
@@ -528,7 +575,7 @@ impl<'a, S: Scalar> Engine<'a, S> {
 
     /// The stop condition that holds before the next placement, if any.
     fn stops(&self, stop: &Stop) -> Option<StopReason> {
-        let n = self.len as u64;
+        let n = self.orbits() as u64;
         stop.holds(n, self.placed_area, self.seq.total(), || {
             let kind = self.kind_of(n);
             kind.min_width(kind.scale_for_area(self.area_of(n)))

@@ -4,7 +4,7 @@
 
 use super::AreaSequence;
 use crate::params::Params;
-use crate::region::Region;
+use crate::region::{Region, Wallpaper};
 use crate::scalar::sqrtf;
 use crate::shape::{ShapeKind, ShapeList};
 
@@ -228,4 +228,101 @@ pub(crate) fn bisect(mut ok: f64, mut bad: f64, works: impl Fn(f64) -> bool) -> 
         }
     }
     ok
+}
+
+/// Why the first shape of a symmetric fill can never clear its own images
+/// ([`check_first_orbit`]).
+///
+/// # Examples
+///
+/// ```
+/// use zetafill::{check_first_orbit, FirstOrbitError, Group, Params, Wallpaper};
+///
+/// // A disc in p4m on a 60 mm square has room for a radius of about 8.79 mm.
+/// let w = Wallpaper::new(Group::P4m, 60.0, 60.0, 90.0)?;
+/// assert!(check_first_orbit(&Params::circles(1.3, 3.0), &w).is_ok());
+/// let Err(FirstOrbitError::Exponent { max_c, room, .. }) = check_first_orbit(&Params::circles(1.3, 0.3), &w) else {
+///     panic!("the first circle is too large");
+/// };
+/// assert!((room - 8.7868).abs() < 1e-4 && max_c > 1.0 && max_c < 1.3);
+/// # Ok::<(), zetafill::WallpaperError>(())
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub enum FirstOrbitError {
+    /// With this gap no point has room for a shape at all, whatever c and N; `max_gap` is the
+    /// largest gap that leaves some.
+    Gap {
+        /// The shape kind.
+        kind: ShapeKind,
+        /// The gap asked for.
+        gap: f64,
+        /// Twice the largest disc that clears its orbit.
+        max_gap: f64,
+    },
+    /// The first shape's inscribed disc is wider than the room any point keeps from its own
+    /// images (`room`, a radius); up to `max_c` its bounding disc clears them.
+    Exponent {
+        /// The shape kind.
+        kind: ShapeKind,
+        /// The exponent asked for.
+        c: f64,
+        /// The largest c found at which the first shape certainly fits (60 halvings).
+        max_c: f64,
+        /// The radius of the largest disc that clears its own orbit, less half the gap.
+        room: f64,
+    },
+}
+
+impl core::fmt::Display for FirstOrbitError {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self {
+            FirstOrbitError::Gap { gap, max_gap, .. } => {
+                write!(
+                    f,
+                    "a gap of {gap} leaves no shape room to clear its own images; at most {max_gap} does"
+                )
+            }
+            FirstOrbitError::Exponent { c, max_c, .. } => {
+                write!(
+                    f,
+                    "the first shape cannot clear its own images when c = {c}; it does up to c = {max_c}"
+                )
+            }
+        }
+    }
+}
+
+impl core::error::Error for FirstOrbitError {}
+
+/// Checks that the first shape of a fill with the symmetry of `w` can clear its own images
+/// somewhere: refused when its inscribed disc (with the gap) is wider than the largest disc
+/// that clears its orbit ([`Wallpaper::largest_disc`]), which no position or angle can help.
+pub fn check_first_orbit(params: &Params, w: &Wallpaper) -> Result<(), FirstOrbitError> {
+    let kind = params.shape.kind_of(0);
+    let disc = w.largest_disc();
+    let room = disc - params.gap / 2.0;
+    if room <= 0.0 {
+        return Err(FirstOrbitError::Gap {
+            kind,
+            gap: params.gap,
+            max_gap: 2.0 * disc,
+        });
+    }
+    let first = |c: f64| {
+        let seq = AreaSequence::new(w.fundamental_area(), c, params.n_offset).ok()?;
+        Some(kind.scale_for_area(seq.area(0)))
+    };
+    let Some(scale) = first(params.c) else { return Ok(()) };
+    if kind.inradius(scale) < room {
+        return Ok(());
+    }
+    let lowest = 1.0 + 1e-9;
+    let fits = |c: f64| first(c).is_some_and(|s| kind.bounding_radius(s) < room);
+    Err(FirstOrbitError::Exponent {
+        kind,
+        c: params.c,
+        max_c: 1.0 + bisect_ratio(lowest - 1.0, params.c - 1.0, |t| fits(1.0 + t)),
+        room,
+    })
 }

@@ -16,7 +16,7 @@ use crate::zeta::{self, ZetaError};
 
 mod first;
 pub(crate) use first::bisect;
-pub use first::{check_first_two, first_shape, first_two_fit, FirstShape, FirstTwoError};
+pub use first::{check_first_orbit, check_first_two, first_shape, first_two_fit, FirstOrbitError, FirstShape, FirstTwoError};
 
 /// The power-law sequence of areas (lengths in 1D, volumes in 3D)
 /// `A_i = A / (zeta(c, N) (i + N)^c)`, `i = 0, 1, 2, ...`, whose sum is `A`; `zeta(c, N)` is

@@ -55,8 +55,10 @@ mod polygon;
 mod rings;
 mod simple;
 mod tree;
+mod wallpaper;
 
 pub use polygon::PolygonRegion;
+pub use wallpaper::{Group, Iso, LatticeKind, Wallpaper, WallpaperError, MAX_IMAGES};
 
 use crate::geom::{separated, Geo, Point};
 use crate::scalar::Scalar;
@@ -169,6 +171,10 @@ pub enum Region<'a> {
     },
     /// A polygon with optional holes.
     Polygon(PolygonRegion<'a>),
+    /// The plane with the symmetry of a wallpaper group: a fill places orbits (a shape and
+    /// its images), on the torus of the group's lattice; the power law divides the area of the
+    /// fundamental region.
+    Wallpaper(Wallpaper),
 }
 
 impl Region<'_> {
@@ -179,7 +185,7 @@ impl Region<'_> {
             Region::Rect { width, height, .. } => ok(width) && ok(height),
             Region::Circle { radius } => ok(radius),
             Region::Annulus { outer, inner } => ok(outer) && ok(inner) && inner < outer,
-            Region::Polygon(_) => true,
+            Region::Polygon(_) | Region::Wallpaper(_) => true,
         }
     }
 
@@ -191,12 +197,22 @@ impl Region<'_> {
             Region::Circle { radius } => PI * radius * radius,
             Region::Annulus { outer, inner } => PI * (outer * outer - inner * inner),
             Region::Polygon(p) => p.area(),
+            Region::Wallpaper(w) => w.fundamental_area(),
         }
     }
 
-    /// Whether the boundary is periodic.
+    /// Whether the region has no boundary: a periodic rectangle (a torus) or a wallpaper
+    /// group's torus.
     pub fn periodic(&self) -> bool {
-        matches!(self, Region::Rect { periodic: true, .. })
+        matches!(self, Region::Rect { periodic: true, .. } | Region::Wallpaper(_))
+    }
+
+    /// The wallpaper group, for a symmetric fill.
+    pub fn wallpaper(&self) -> Option<&Wallpaper> {
+        match self {
+            Region::Wallpaper(w) => Some(w),
+            _ => None,
+        }
     }
 
     /// Bounding box (min x, min y, max x, max y).
@@ -205,6 +221,10 @@ impl Region<'_> {
             Region::Rect { width, height, .. } => (0.0, 0.0, width, height),
             Region::Circle { radius: r } | Region::Annulus { outer: r, .. } => (0.0, 0.0, 2.0 * r, 2.0 * r),
             Region::Polygon(p) => p.bbox,
+            Region::Wallpaper(w) => {
+                let (ax, _, by) = w.lattice();
+                (0.0, 0.0, ax, by)
+            }
         }
     }
 
@@ -256,7 +276,7 @@ impl Region<'_> {
     /// accept every shape (its own images are tested by the engine).
     pub fn contains<S: Scalar>(&self, g: &Geo<S>, gap: S) -> bool {
         match *self {
-            Region::Rect { periodic: true, .. } => true,
+            Region::Rect { periodic: true, .. } | Region::Wallpaper(_) => true,
             Region::Rect { width, height, .. } => {
                 let (x0, y0, x1, y1) = g.bounds();
                 x0 >= gap && y0 >= gap && x1 <= S::from_f64(width) - gap && y1 <= S::from_f64(height) - gap
@@ -287,6 +307,7 @@ impl Region<'_> {
                 d <= S::from_f64(outer * outer) && d >= S::from_f64(inner * inner)
             }
             Region::Polygon(p) => p.inside(q),
+            Region::Wallpaper(_) => true,
         }
     }
 
@@ -309,6 +330,12 @@ impl Region<'_> {
                 (a * a).min(b * b)
             }
             Region::Polygon(p) => p.dist2(q),
+            // No boundary: farther than any shape reaches.
+            Region::Wallpaper(w) => {
+                let (ax, _, by) = w.lattice();
+                let d = S::from_f64(4.0 * ax.max(by));
+                d * d
+            }
         }
     }
 
@@ -357,11 +384,18 @@ impl Region<'_> {
                 (S::from_f64(outer) - near).min(far - S::from_f64(inner))
             }
             Region::Polygon(p) => p.signed_clearance(q),
+            Region::Wallpaper(w) => {
+                let (ax, _, by) = w.lattice();
+                S::from_f64(4.0 * ax.max(by))
+            }
         }
     }
 
     /// The point `p` wrapped into the period (unchanged unless periodic).
     pub fn wrap<S: Scalar>(&self, p: Point<S>) -> Point<S> {
+        if let Region::Wallpaper(w) = self {
+            return w.wrap(p);
+        }
         if !self.periodic() {
             return p;
         }

@@ -53,7 +53,7 @@ impl Clip {
     /// The clip region of a document's region (periodic rectangles clip to their tile).
     pub fn from_doc(r: &RegionDoc) -> Clip {
         match r {
-            RegionDoc::Rect { width, height, .. } => Clip::Rect {
+            RegionDoc::Rect { width, height, .. } | RegionDoc::Wallpaper { width, height, .. } => Clip::Rect {
                 x0: 0.0,
                 y0: 0.0,
                 x1: *width,

@@ -134,6 +134,24 @@ pub enum RegionDoc {
         #[serde(skip_serializing_if = "Vec::is_empty")]
         outers: Vec<Vec<[f64; 2]>>,
     },
+    /// The plane with the symmetry of a wallpaper group: the shapes are the orbits'
+    /// representatives, the pattern is drawn over `repeat` cells from the origin.
+    Wallpaper {
+        /// The group's short name (`p4m`, ...).
+        group: String,
+        /// `--lattice` as used: sides a and b (mm) and the angle between them (degrees).
+        lattice: [f64; 3],
+        /// The primitive lattice vectors `a = (ax, 0)` and `b = (bx, by)`: `[ax, bx, by]`.
+        vectors: [f64; 3],
+        /// The images of a shape in one primitive cell.
+        order: usize,
+        /// Cells drawn across and up (`--repeat`).
+        repeat: [u32; 2],
+        /// The window drawn: `repeat` cells of the conventional cell's size.
+        width: f64,
+        /// Its height.
+        height: f64,
+    },
 }
 
 impl RegionDoc {
@@ -155,6 +173,7 @@ impl RegionDoc {
                 let rings = std::iter::once(vertices).chain(outers).chain(holes);
                 format!("polygon:{}", rings.map(|r| ring(r)).collect::<Vec<_>>().join("/"))
             }
+            RegionDoc::Wallpaper { width, height, .. } => format!("rect:{width}:{height}"),
         }
     }
 
@@ -162,7 +181,7 @@ impl RegionDoc {
     /// the holes) or full circles.
     pub fn outline(&self) -> Vec<Path> {
         match self {
-            RegionDoc::Rect { width, height, .. } => vec![Path::polyline(
+            RegionDoc::Rect { width, height, .. } | RegionDoc::Wallpaper { width, height, .. } => vec![Path::polyline(
                 vec![[0.0, 0.0], [*width, 0.0], [*width, *height], [0.0, *height]],
                 true,
             )],
@@ -227,7 +246,7 @@ impl FillDoc {
     /// The region's bounding box (min x, min y, max x, max y).
     pub fn bbox(&self) -> (f64, f64, f64, f64) {
         match &self.region {
-            RegionDoc::Rect { width, height, .. } => (0.0, 0.0, *width, *height),
+            RegionDoc::Rect { width, height, .. } | RegionDoc::Wallpaper { width, height, .. } => (0.0, 0.0, *width, *height),
             RegionDoc::Circle { center, radius: r }
             | RegionDoc::Annulus {
                 center, radius_outer: r, ..
@@ -250,6 +269,17 @@ impl FillDoc {
     /// Whether the region is periodic.
     pub fn periodic(&self) -> bool {
         matches!(self.region, RegionDoc::Rect { periodic: true, .. })
+    }
+
+    /// The wallpaper group of a symmetric fill, with its lattice.
+    pub fn wallpaper(&self) -> Option<zetafill::Wallpaper> {
+        match &self.region {
+            RegionDoc::Wallpaper { group, lattice, .. } => {
+                let g = zetafill::Group::from_name(group)?;
+                zetafill::Wallpaper::new(g, lattice[0], lattice[1], lattice[2]).ok()
+            }
+            _ => None,
+        }
     }
 }
 

@@ -109,6 +109,10 @@ fn outline(sh: &ShapeDoc, off: (f64, f64), min_feature: f64) -> Item {
     }
 }
 
+/// A shape as drawn: its position in the document (for its colour and layer), the shape, and
+/// the shifts at which it shows.
+type Shown<'d> = (usize, &'d ShapeDoc, Vec<(f64, f64)>);
+
 /// The fill as a picture (title and description left to the caller).
 pub fn picture(doc: &FillDoc, look: &FillLook) -> Picture {
     let (x0, y0, x1, y1) = doc.bbox();
@@ -148,16 +152,28 @@ pub fn picture(doc: &FillDoc, look: &FillLook) -> Picture {
         y1: h,
     };
     let min_feature = look.build.min_feature;
-    for (k, sh) in doc.shapes.iter().enumerate() {
+    // Each shape with the shifts at which it shows (in a symmetric fill, each image of each
+    // representative, with the lattice translates that meet the window).
+    let symmetric = super::wallpaper::images(doc);
+    let cut_to_tile = periodic || symmetric.is_some();
+    let drawn: Vec<Shown> = match &symmetric {
+        Some(images) => images.iter().map(|im| (im.of, &im.shape, im.shifts.clone())).collect(),
+        None => doc
+            .shapes
+            .iter()
+            .enumerate()
+            .map(|(k, sh)| (k, sh, if periodic { shape_images(sh, w, h) } else { vec![(0.0, 0.0)] }))
+            .collect(),
+    };
+    for (k, sh, offs) in drawn {
         if min_feature > 0.0 && shape_width(sh) < min_feature {
             continue;
         }
         let colour = look.colours.as_ref().and_then(|c| c.get(k));
         let layer = look.layer_of.get(k).copied().unwrap_or(0);
-        let offs = if periodic { shape_images(sh, w, h) } else { vec![(0.0, 0.0)] };
         let sb = shape_bounds(sh);
         for (dx, dy) in offs {
-            let cut = periodic && {
+            let cut = cut_to_tile && {
                 let image = Bounds {
                     x0: sb.x0 + dx,
                     y0: sb.y0 + dy,
@@ -184,7 +200,7 @@ pub fn picture(doc: &FillDoc, look: &FillLook) -> Picture {
                 if !lines.is_empty() {
                     let mut item = Item::new(Shape::Path(lines));
                     item.class = Some("hatch");
-                    items.extend(if periodic { item.clipped(&tile) } else { Some(item) });
+                    items.extend(if cut_to_tile { item.clipped(&tile) } else { Some(item) });
                 }
             }
             for mut item in items {

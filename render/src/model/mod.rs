@@ -54,6 +54,7 @@ pub mod slices;
 pub mod solid;
 pub mod space;
 pub mod tile;
+pub mod wallpaper;
 
 pub use clip::{clip_area, clip_path, clip_polygon, clip_segment};
 pub use path::{arc_extremes, polar, Bounds, Drawing, Path, Pt};

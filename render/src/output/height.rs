@@ -168,7 +168,10 @@ fn span(lo: f64, hi: f64, step: f64, n: usize) -> Option<(usize, usize)> {
 /// Renders the height map of `doc`: `nx` by `ny` pixels over the region's bounding box, with
 /// the command that reproduces it in a text chunk.
 pub fn render(doc: &FillDoc, relief: Relief, size: (usize, usize), command: &str) -> Result<Vec<u8>, CliError> {
-    render_shapes(&doc.shapes, doc.bbox(), doc.periodic(), relief, size, command)
+    match crate::model::wallpaper::placed_images(doc) {
+        Some(shapes) => render_shapes(&shapes, doc.bbox(), false, relief, size, command),
+        None => render_shapes(&doc.shapes, doc.bbox(), doc.periodic(), relief, size, command),
+    }
 }
 
 /// Renders the height map of `shapes` over the box `(x0, y0, x1, y1)`, `nx` by `ny` pixels;

@@ -11,7 +11,7 @@
 //! behind the drawing. Without them the output is exactly the region-sized drawing above
 //! (the gallery pins it byte for byte).
 
-use crate::model::doc::FillDoc;
+use crate::model::doc::{FillDoc, RegionDoc};
 use crate::model::fill::{FillLook, LayerSpec};
 use crate::model::picture::{Frame, Item, Layer, Paint, Picture, Shape};
 use crate::model::{Path, Pt};
@@ -432,12 +432,19 @@ pub fn command_line(doc: &FillDoc) -> String {
     let p = &doc.params;
     // A region made from a picture or a text is named by its input (and that input's digest);
     // any other travels as its rings.
-    let region = match &p.of.source {
-        Some(src) => format!("{}{}", crate::model::region::shell_word(&src.region), src.flags()),
-        None => doc.region.arg(),
+    let region = match (&p.of.source, &doc.region) {
+        (Some(src), _) => format!(" --region {}{}", crate::model::region::shell_word(&src.region), src.flags()),
+        (None, RegionDoc::Wallpaper { group, repeat, .. }) => {
+            let lattice = doc
+                .wallpaper()
+                .map(|w| crate::model::wallpaper::lattice_arg(&w))
+                .unwrap_or_default();
+            format!(" --symmetry {group} --lattice {lattice} --repeat {}:{}", repeat[0], repeat[1])
+        }
+        (None, r) => format!(" --region {}", r.arg()),
     };
     let mut s = format!(
-        "zetafill fill --shape {}{} --rotate {} --region {}{} --c {} --n-offset {} --gap {} --max-trials {} --seed {} --sampler {}{}",
+        "zetafill fill --shape {}{} --rotate {}{}{} --c {} --n-offset {} --gap {} --max-trials {} --seed {} --sampler {}{}",
         p.of.shape,
         p.of.mix_order.map_or_else(String::new, |m| format!(" --mix-order {m}")),
         p.of.rotate,

@@ -292,16 +292,16 @@ fn cost_per_placement_is_reported_for_both_scalars() {
             let host = &host_runs()[name].outcome;
             assert_eq!(
                 (field(c, "placements"), field(c, "trials")),
-                (host.count, host.trials),
+                (host.placed, host.trials),
                 "{name}: trials differ from the host"
             );
             let i = field(c, "instructions");
             assert!(i > 0);
             println!(
                 "cost {name}: {} instructions per placement, {} per trial ({} placements, {} trials)",
-                i / host.count,
+                i / host.placed,
                 i / host.trials,
-                host.count,
+                host.placed,
                 host.trials
             );
         }

@@ -85,7 +85,24 @@ impl RegionData {
                 }
                 RegionDoc::Polygon { vertices, holes, outers }
             }
+            Region::Wallpaper(w) => wallpaper_doc(&w, (3, 3)),
         }
+    }
+}
+
+/// A wallpaper group's region as written in JSON, drawn over `repeat` cells.
+pub fn wallpaper_doc(w: &zetafill::Wallpaper, repeat: (u32, u32)) -> RegionDoc {
+    let (a, b, angle) = w.sides();
+    let (ax, bx, by) = w.lattice();
+    let (cw, ch) = w.cell();
+    RegionDoc::Wallpaper {
+        group: w.group().name().to_string(),
+        lattice: [a, b, angle],
+        vectors: [ax, bx, by],
+        order: w.order(),
+        repeat: [repeat.0, repeat.1],
+        width: f64::from(repeat.0) * cw,
+        height: f64::from(repeat.1) * ch,
     }
 }
 

@@ -8,10 +8,10 @@
 
 mod common;
 
-use common::ks;
+use common::{ks, Buffers};
 use zetafill::{
-    index_words, rng_from_seed, Batches, CellSampler, Engine, Geo, Group, Lane, MixOrder, Params, Placed, Point, Region, ShapeKind,
-    ShapeList, Stop, StopReason, Storage, Wallpaper,
+    rng_from_seed, Batches, CellSampler, Engine, Geo, Group, Lane, MixOrder, Params, Placed, Point, Region, ShapeKind, ShapeList, Stop,
+    StopReason, Wallpaper,
 };
 
 /// An isometry of the plane, given by the images of the origin and of the two unit vectors.
@@ -144,13 +144,8 @@ fn fill_with(
 ) -> (Vec<Placed<f64>>, Wallpaper, Vec<Geo<f64>>) {
     let w = Wallpaper::new(group, sides.0, sides.1, sides.2).expect("a lattice");
     let cap = count as usize * w.order();
-    let mut shapes = vec![Placed::<f64>::default(); cap];
-    let mut index = vec![0u32; index_words(cap)];
-    let storage = Storage {
-        shapes: &mut shapes,
-        index: &mut index,
-        coverage: &mut [],
-    };
+    let mut buffers = Buffers::<f64>::new(cap);
+    let storage = buffers.storage(&mut []);
     let mut e = Engine::new(params, Region::Wallpaper(w), storage).expect("an engine");
     let stop = Stop {
         count: Some(count),
@@ -262,13 +257,8 @@ fn sampled(group: Group, kind: ShapeKind, sampler: Sampler, seed: u64) -> (Vec<P
     let side = if sampler == Sampler::Narrow { 36.0 } else { 40.0 };
     let w = Wallpaper::new(group, side, 30.0, 90.0).expect("a lattice");
     let cap = COUNT as usize * w.order();
-    let mut shapes = vec![Placed::<f64>::default(); cap];
-    let mut index = vec![0u32; index_words(cap)];
-    let storage = Storage {
-        shapes: &mut shapes,
-        index: &mut index,
-        coverage: &mut [],
-    };
+    let mut buffers = Buffers::<f64>::new(cap);
+    let storage = buffers.storage(&mut []);
     let params = Params {
         shape: kind.into(),
         rotate: kind.rotates(),

@@ -9,11 +9,12 @@ use crate::model::doc::{kind_name, FillDoc, ParamsDoc, ShapeDoc, ShapeParamsDoc,
 use crate::output;
 use crate::output::stream::{Output, Size};
 use crate::plan::fill::{
-    first_orbit_error, first_shape_error, first_two_error, fixed_outline_error, halt_advice, param_error, too_large_error, too_small_error,
-    FillDraw, FillPlan, FillRun, FIXED_MAX_VERTICES, SHAPES,
+    first_shape_error, first_two_error, fixed_outline_error, halt_advice, param_error, too_large_error, too_small_error, FillDraw,
+    FillPlan, FillRun, FIXED_MAX_VERTICES, SHAPES,
 };
 use crate::plan::format::Format;
 use crate::plan::raster::{height_map_error, png_error};
+use crate::plan::symmetry::first_orbit_error;
 use region::RegionData;
 use zetafill::StepError;
 use zetafill::{index_words, AreaSequence, CellSampler, Engine, Geo, Params, Placed, Region, ShapeKind, Stop, StopReason, Storage};

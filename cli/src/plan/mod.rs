@@ -15,6 +15,7 @@ pub mod region;
 pub mod region_input;
 pub mod space;
 pub mod stats;
+pub mod symmetry;
 pub mod territory;
 pub mod tile;
 

@@ -49,8 +49,8 @@ const CORPUS: &[(&str, i32, &str)] = &[
     ("fill --gap 1 --shape square --rotate none --c 1.25 --n-offset 2 --count 200 --boundary -o gap.svg", 0, "75987f9749bc0958bce40f226c8b51b0b2ba2306bd1041b0097d3f5346920a7c"),
     ("fill --c 1.45 --count 300 --max-trials 300 -o halted.json", 3, "e84ac5fe26d1a22d569fddd87238a9273b4f63735d3e34c608e7f1986d879c3f"),
     // fill: pictures and colour
-    ("fill --count 300 --style filled --palette {P5} --background fefae0 --pixels 200 -o palette.png", 0, "7f28aff83924e7ac2e86c2114e1e8225dfd94935aee8ebb32a9bd697807c302c"),
-    ("fill --count 200 --boundary --pen-width 0.5 --region circle:60 --dpi 48 -o circle.png", 0, "34ab17b609bab1fc610c870dcef0103c2a780adc0a0111bd6d659168e024d274"),
+    ("fill --count 300 --style filled --palette {P5} --background fefae0 --pixels 200 -o palette.png", 0, "45744172ebbb66fc6a95706f5ea3d1f244b92980c78b2deec708e7c58a90e2ab"),
+    ("fill --count 200 --boundary --pen-width 0.5 --region circle:60 --dpi 48 -o circle.png", 0, "6a774411a8f96b7779e8c5ada65fabc13ab49c31477c07153cb0738b6cd5b560"),
     ("fill --count 300 --periodic --relief dome --pixels 160 -o relief-dome.png", 0, "da5244fa8cfa4cf7114df1d8d3581c7782ae6d0abb154290703d59aea9c9e789"),
     ("fill --shape star:5:0.45 --c 1.2 --n-offset 3 --count 200 --relief cone --pixels 160 -o relief-cone.png", 0, "0b73836a7425c91e6eeca0ae07f30ab530ed6505e2b130fcdbb944803ba7ab2e"),
     ("fill --shape ring:0.5 --n-offset 2 --count 200 --relief flat --pixels 120 -o relief-flat.png", 0, "42a2b786b630626cc97e64aa6a9a918e4d0929ff0c7cacbb71c1b81296e6fe76"),

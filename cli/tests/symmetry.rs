@@ -92,6 +92,22 @@ fn crowded(shapes: &[Drawn], gap: f64, slack: f64) -> Vec<(usize, usize, f64)> {
     bad
 }
 
+/// The command an SVG's `<desc>` holds, and the bytes it writes.
+fn remade(dir: &std::path::Path, svg: &[u8]) -> (String, Vec<u8>) {
+    let text = String::from_utf8(svg.to_vec()).expect("UTF-8");
+    let desc = text
+        .split("<desc>")
+        .nth(1)
+        .and_then(|t| t.split("</desc>").next())
+        .expect("a <desc>")
+        .to_string();
+    let mut again = vec!["fill"];
+    again.extend(desc.split_whitespace().skip(2));
+    again.extend(["-q", "-o", "remade.svg"]);
+    zf_ok(dir, &again);
+    (desc, read(&dir.join("remade.svg")))
+}
+
 /// A lattice for each group: oblique 50:40:70, rectangular and centred 50:36, square and
 /// hexagonal 40.
 fn lattice(group: &str) -> &'static str {
@@ -273,19 +289,9 @@ fn prefixes_reruns_and_the_reproducing_command() {
     a.extend(["--count", "80", "--style", "filled", "--palette", "264653,2a9d8f,e9c46a"]);
     let first = fill_to(dir.path(), "a.svg", &a);
     assert_eq!(fill_to(dir.path(), "b.svg", &a), first);
-    let text = String::from_utf8(first.clone()).expect("UTF-8");
-    let desc = text
-        .split("<desc>")
-        .nth(1)
-        .and_then(|t| t.split("</desc>").next())
-        .expect("a <desc>");
-    let words: Vec<&str> = desc.split_whitespace().skip(2).collect();
-    assert!(words.contains(&"--symmetry") && words.contains(&"--repeat"), "{desc}");
-    let mut again = vec!["fill"];
-    again.extend(words);
-    again.extend(["-q", "-o", "c.svg"]);
-    zf_ok(dir.path(), &again);
-    assert_eq!(read(&dir.path().join("c.svg")), first, "the <desc> command gives the same file");
+    let (desc, again) = remade(dir.path(), &first);
+    assert!(desc.contains("--symmetry") && desc.contains("--repeat"), "{desc}");
+    assert_eq!(again, first, "the <desc> command gives the same file");
     // Every format draws the pattern.
     for name in ["p.png", "p.gcode", "p.csv"] {
         let mut a = base.to_vec();
@@ -329,7 +335,7 @@ fn periodic_is_p1_on_a_rectangular_cell() {
 #[test]
 fn bad_symmetry_input_is_refused_naming_the_flag() {
     let dir = tmp();
-    let cases: [(&[&str], &str, &str); 12] = [
+    let cases: [(&[&str], &str, &str); 15] = [
         (&["--symmetry", "p5", "--lattice", "40"], "--symmetry", "p31m"),
         (&["--symmetry", "p4m", "--lattice", "40:30"], "--lattice", "square lattice"),
         (&["--symmetry", "pmg", "--lattice", "40"], "--lattice", "rectangular lattice"),
@@ -346,6 +352,21 @@ fn bad_symmetry_input_is_refused_naming_the_flag() {
             "lower --c to",
         ),
         (&["--symmetry", "p4m", "--lattice", "40", "--gap", "20"], "--gap", "lower it below"),
+        (
+            &["--symmetry", "p4m", "--lattice", "40", "--repeat", "2:2", "--region", "circle:50"],
+            "--region",
+            "cannot be used",
+        ),
+        (
+            &["--symmetry", "p4m", "--lattice", "40", "--region", "polygon:0,0,10,0"],
+            "--region",
+            "",
+        ),
+        (
+            &["--symmetry", "p4m", "--lattice", "40", "--periodic"],
+            "--periodic",
+            "cannot be used",
+        ),
     ];
     for (args, flag, says) in cases {
         let mut a = vec!["fill", "-o", "x.svg"];
@@ -399,4 +420,309 @@ fn bad_symmetry_input_is_refused_naming_the_flag() {
         above.stderr
     );
     assert_eq!(run(c - 0.01).code, 0);
+}
+
+/// The regions a pattern is cut to, all with the bounding box [0, 140]^2, and each one's
+/// distance to its outline, negative outside: a disc, an annulus, and a U (concave).
+const WINDOWS: [&str; 3] = [
+    "circle:70",
+    "annulus:70:25",
+    "polygon:0,0,140,0,140,140,90,140,90,40,50,40,50,140,0,140",
+];
+
+fn signed_distance(region: &str, p: [f64; 2]) -> f64 {
+    let r = (p[0] - 70.0).hypot(p[1] - 70.0);
+    match region.split(':').next() {
+        Some("circle") => 70.0 - r,
+        Some("annulus") => (70.0 - r).min(r - 25.0),
+        _ => {
+            let u = [
+                [0.0, 0.0],
+                [140.0, 0.0],
+                [140.0, 140.0],
+                [90.0, 140.0],
+                [90.0, 40.0],
+                [50.0, 40.0],
+                [50.0, 140.0],
+                [0.0, 140.0],
+            ];
+            let d = (0..u.len())
+                .map(|i| seg_dist(p, u[i], u[(i + 1) % u.len()]))
+                .fold(f64::MAX, f64::min);
+            let inside = (0.0..=140.0).contains(&p[0]) && (0.0..=140.0).contains(&p[1]) && !(p[0] > 50.0 && p[0] < 90.0 && p[1] > 40.0);
+            if inside {
+                d
+            } else {
+                -d
+            }
+        }
+    }
+}
+
+/// The first channel of a PNG, row by row from the top, and its width.
+fn grey(png: &[u8]) -> (Vec<u8>, usize) {
+    let mut reader = png::Decoder::new(png).read_info().unwrap_or_else(|e| panic!("{e}"));
+    let mut buf = vec![0u8; reader.output_buffer_size()];
+    let frame = reader.next_frame(&mut buf).unwrap_or_else(|e| panic!("{e}"));
+    let step = frame.color_type.samples();
+    (buf.iter().step_by(step).copied().collect(), frame.width as usize)
+}
+
+/// The pixels of `cut` (a picture of [0, 140]^2) that differ from `whole` masked by the
+/// region: inside, farther than two pixels from the outline, they must be `whole`'s; outside,
+/// the background. A cut shape's arcs are other Bézier curves than its whole circle's, which
+/// moves the anti-aliasing of its edge pixels by up to three of the renderer's 16 coverage
+/// steps (48 grey levels); a piece missing or too many changes pixels by far more.
+fn unmasked(region: &str, cut: &[u8], whole: &[u8], width: usize) -> usize {
+    let s = width as f64 / 140.0;
+    let (c, wc) = grey(cut);
+    let (w, ww) = grey(whole);
+    assert_eq!((wc, ww), (width, width));
+    let mut bad = 0;
+    for (k, (&a, &b)) in c.iter().zip(&w).enumerate() {
+        let (i, j) = (k % width, k / width);
+        let p = [(i as f64 + 0.5) / s, 140.0 - (j as f64 + 0.5) / s];
+        let d = signed_distance(region, p) * s;
+        if d > 2.0 && a.abs_diff(b) > 64 || d < -2.0 && a != 255 {
+            bad += 1;
+        }
+    }
+    bad
+}
+
+#[test]
+fn a_pattern_cut_to_a_region_is_its_square_masked_by_the_region() {
+    let dir = tmp();
+    let run = |name: &str, region: &str, seed: &str| {
+        let a = [
+            "--symmetry",
+            "p6m",
+            "--lattice",
+            "40",
+            "--shape",
+            "mix:circle,triangle,blob:0.3",
+            "--n-offset",
+            "3",
+            "--count",
+            "120",
+            "--style",
+            "filled",
+            "--pixels",
+            "560",
+            "--seed",
+            seed,
+            "--region",
+            region,
+            "-q",
+        ];
+        fill_to(dir.path(), name, &a)
+    };
+    let square = run("square.png", "rect:140:140", "5");
+    for region in WINDOWS {
+        let cut = run("cut.png", region, "5");
+        assert_eq!(unmasked(region, &cut, &square, 560), 0, "{region}");
+    }
+    // The check sees a picture that is not the square's: another seed's pattern.
+    let other = run("other.png", "circle:70", "6");
+    assert!(unmasked("circle:70", &other, &square, 560) > 1000, "another pattern went unseen");
+}
+
+/// The open pieces and the vertices of every path an outline SVG draws, in mm with y up
+/// (the SVG read by usvg, arcs as its curves).
+fn strokes(svg: &[u8], height: f64) -> (Vec<[f64; 2]>, Vec<[f64; 2]>) {
+    let tree = usvg::Tree::from_data(svg, &usvg::Options::default()).expect("an SVG");
+    let k = height / f64::from(tree.size().height());
+    let (mut points, mut ends) = (Vec::new(), Vec::new());
+    fn walk(g: &usvg::Group, k: f64, height: f64, points: &mut Vec<[f64; 2]>, ends: &mut Vec<[f64; 2]>) {
+        for node in g.children() {
+            match node {
+                usvg::Node::Group(g) => walk(g, k, height, points, ends),
+                usvg::Node::Path(p) => {
+                    let ts = p.abs_transform();
+                    let mm = |q: usvg::tiny_skia_path::Point| {
+                        let mut q = q;
+                        ts.map_point(&mut q);
+                        [f64::from(q.x) * k, height - f64::from(q.y) * k]
+                    };
+                    let mut open: Option<([f64; 2], [f64; 2])> = None;
+                    let finish = |open: &mut Option<([f64; 2], [f64; 2])>, ends: &mut Vec<[f64; 2]>| {
+                        if let Some((a, b)) = open.take() {
+                            ends.extend([a, b]);
+                        }
+                    };
+                    use usvg::tiny_skia_path::PathSegment as S;
+                    for seg in p.data().segments() {
+                        match seg {
+                            S::MoveTo(q) => {
+                                finish(&mut open, ends);
+                                let q = mm(q);
+                                points.push(q);
+                                open = Some((q, q));
+                            }
+                            S::LineTo(q) | S::QuadTo(_, q) | S::CubicTo(_, _, q) => {
+                                let q = mm(q);
+                                points.push(q);
+                                if let Some(o) = &mut open {
+                                    o.1 = q;
+                                }
+                            }
+                            S::Close => open = None,
+                        }
+                    }
+                    finish(&mut open, ends);
+                }
+                _ => {}
+            }
+        }
+    }
+    walk(tree.root(), k, height, &mut points, &mut ends);
+    (points, ends)
+}
+
+#[test]
+fn strokes_cut_to_a_region_stay_inside_and_end_on_its_outline() {
+    let dir = tmp();
+    for region in WINDOWS {
+        let a = [
+            "--symmetry",
+            "p4m",
+            "--lattice",
+            "40",
+            "--shape",
+            "mix:circle,square,star:5:0.45",
+            "--n-offset",
+            "3",
+            "--count",
+            "100",
+            "--region",
+            region,
+            "-q",
+        ];
+        let svg = fill_to(dir.path(), "cut.svg", &a);
+        let (points, ends) = strokes(&svg, 140.0);
+        assert!(
+            points.len() > 5000 && ends.len() > 100,
+            "{region}: {} points, {} ends",
+            points.len(),
+            ends.len()
+        );
+        // Coordinates are written to 1e-4 mm, and read back in f32.
+        let outside: Vec<_> = points.iter().filter(|p| signed_distance(region, **p) < -1e-3).collect();
+        assert!(
+            outside.is_empty(),
+            "{region}: {} points outside, first {:?}",
+            outside.len(),
+            outside.first()
+        );
+        let loose: Vec<_> = ends.iter().filter(|p| signed_distance(region, **p).abs() > 1e-3).collect();
+        assert!(
+            loose.is_empty(),
+            "{region}: {} piece ends off the outline, first {:?}",
+            loose.len(),
+            loose.first()
+        );
+        // Its command makes it again, and the JSON says what it was cut to.
+        let (desc, again) = remade(dir.path(), &svg);
+        assert!(desc.contains(&format!("--region {region}")) && !desc.contains("--repeat"), "{desc}");
+        assert_eq!(again, svg, "{region}: the <desc> command");
+        let doc = fill_json(dir.path(), &a);
+        assert_eq!(s(&doc["region"]["window"], "kind"), region.split(':').next().expect("a kind"));
+        assert!(doc["region"].get("repeat").is_none());
+    }
+    // The check sees a piece that does not end on the outline: the whole pattern's square.
+    let square = fill_to(
+        dir.path(),
+        "square.svg",
+        &[
+            "--symmetry",
+            "p4m",
+            "--lattice",
+            "40",
+            "--n-offset",
+            "3",
+            "--count",
+            "100",
+            "--region",
+            "rect:140:140",
+            "-q",
+        ],
+    );
+    let (points, _) = strokes(&square, 140.0);
+    assert!(points.iter().any(|p| signed_distance("circle:70", *p) < -1e-3));
+}
+
+/// The representatives whose centre lies outside the left half of the primitive cell, in
+/// the lattice's own coordinate `u = (x - y bx / by) mod ax` (with half a pixel of a 64-pixel
+/// picture's blend).
+fn right_of_half(doc: &Value) -> usize {
+    let v: Vec<f64> = doc["region"]["vectors"]
+        .as_array()
+        .expect("vectors")
+        .iter()
+        .map(|x| x.as_f64().expect("a number"))
+        .collect();
+    let (ax, bx, by) = (v[0], v[1], v[2]);
+    shapes(doc)
+        .iter()
+        .filter(|sh| {
+            let c = pt(&sh["center"]);
+            (c[0] - c[1] * bx / by).rem_euclid(ax) > 32.5 / 64.0 * ax
+        })
+        .count()
+}
+
+#[test]
+fn a_density_picture_covers_one_primitive_cell() {
+    let dir = tmp();
+    let pic = dir.path().join("half.png");
+    png_picture(&pic, 64, 64, |i, _| i < 32);
+    let density = format!("image:{},floor=0", pic.display());
+    for (group, lattice) in [("p6", "50"), ("pmg", "50:36"), ("p2", "50:40:70")] {
+        for sampler in ["fast", "reference", "batched"] {
+            let a = [
+                "--symmetry",
+                group,
+                "--lattice",
+                lattice,
+                "--shape",
+                "mix:circle,square",
+                "--n-offset",
+                "3",
+                "--count",
+                "60",
+                "--sampler",
+                sampler,
+                "--density",
+                &density,
+                "-q",
+            ];
+            let doc = fill_json(dir.path(), &a);
+            assert_eq!(shapes(&doc).len(), 60, "{group} {sampler}");
+            assert_eq!(right_of_half(&doc), 0, "{group} {sampler}: centres where the density is zero");
+            assert_eq!(fill_json(dir.path(), &a)["shapes"], doc["shapes"], "{group} {sampler}: a rerun");
+        }
+        // The check sees centres in the other half: the same fill without the density.
+        let doc = fill_json(
+            dir.path(),
+            &["--symmetry", group, "--lattice", lattice, "--n-offset", "3", "--count", "60", "-q"],
+        );
+        assert!(right_of_half(&doc) > 10, "{group}: no centre found outside the half");
+    }
+    // Noise repeats with the lattice: it runs, and its reruns are the same.
+    let a = [
+        "--symmetry",
+        "p31m",
+        "--lattice",
+        "50",
+        "--n-offset",
+        "3",
+        "--count",
+        "80",
+        "--density",
+        "noise:gradient:12",
+        "-q",
+    ];
+    let doc = fill_json(dir.path(), &a);
+    assert_eq!(fill_json(dir.path(), &a)["shapes"], doc["shapes"]);
+    assert_eq!(s(&doc["params"], "density"), "noise:gradient:12:4:0.5:2");
 }

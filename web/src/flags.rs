@@ -303,7 +303,7 @@ pub fn fill(w: &mut Words) -> Result<FillArgs, String> {
         shape: w.or("shape", "circle", spec::shape)?,
         mix_order: w.or("mix-order", "cycle", |s| choice(s, &MIX))?,
         rotate: w.opt("rotate", |s| choice(s, &ROTATE))?,
-        region: w.or("region", "rect:200:200", spec::fill_region)?,
+        region: w.opt("region", spec::fill_region)?,
         input: region_input(w)?,
         periodic: w.flag("periodic")?,
         symmetry: symmetry(w)?,
@@ -336,9 +336,10 @@ fn symmetry(w: &mut Words) -> Result<SymmetryArgs, String> {
         lattice: w.opt("lattice", symmetry::lattice)?,
         repeat: w.opt("repeat", symmetry::repeat)?,
     };
-    for other in ["region", "periodic", "density", "voronoi"] {
+    for other in ["periodic", "voronoi"] {
         w.conflict("symmetry", other)?;
     }
+    w.conflict("repeat", "region")?;
     w.requires("symmetry", "lattice")?;
     w.requires("lattice", "symmetry")?;
     w.requires("repeat", "symmetry")?;

@@ -27,6 +27,25 @@ use zetafill_cli::model::region::RegionSpec;
 use zetafill_cli::plan::fill::{resolve_as, FillDraw, FillRun};
 use zetafill_cli::plan::format::Format;
 
+#[wasm_bindgen]
+extern "C" {
+    /// The PNG module's renderer (`web/png`), which `static/worker.js` loads and sets as
+    /// `globalThis.zetafillRasterise` before it asks for a PNG.
+    #[wasm_bindgen(catch, js_name = zetafillRasterise)]
+    fn rasterise_in_js(svg: &[u8], scale: f32, w: u32, h: u32) -> Result<Vec<u8>, JsValue>;
+}
+
+/// Renders a PNG through the PNG module (see [`zetafill_render::output::png::Rasteriser`]).
+fn rasterise(svg: &[u8], scale: f32, w: u32, h: u32) -> Result<Vec<u8>, String> {
+    rasterise_in_js(svg, scale, w, h).map_err(|e| e.as_string().unwrap_or_else(|| "the PNG module is not loaded".into()))
+}
+
+/// Sets up the module when the page loads it: PNGs go to the PNG module.
+#[wasm_bindgen(start)]
+fn start() {
+    zetafill_render::output::png::set_rasteriser(rasterise);
+}
+
 /// An error as the command line prints it.
 fn said(e: CliError) -> String {
     format!("error: {e}")
@@ -44,7 +63,7 @@ fn read<A>(argv: &[String], read: impl FnOnce(&mut Words) -> Result<A, String>) 
 /// (the bytes of the file the command names), and its format.
 fn parse(argv: &[String], outline: Option<&[u8]>) -> Result<(FillArgs, Format), String> {
     let mut a = read(argv, flags::fill)?;
-    if let RegionSpec::Svg(path) = &a.region {
+    if let Some(RegionSpec::Svg(path)) = &a.region {
         let Some(bytes) = outline else {
             return Err(format!(
                 "error: --region: no outline file chosen for '{}'; choose an SVG file",
@@ -54,7 +73,7 @@ fn parse(argv: &[String], outline: Option<&[u8]>) -> Result<(FillArgs, Format), 
         let (points, ends) =
             zetafill_cli::io::svgin::outline_of(bytes.to_vec()).map_err(|e| said(zetafill_cli::plan::region::outline_error(path, e)))?;
         // What the binary does with the file's outline once read (`RegionData::load`).
-        a.region = RegionSpec::Polygon { points, ends };
+        a.region = Some(RegionSpec::Polygon { points, ends });
     }
     let format = Format::resolve(a.output.format, &a.output.output).map_err(said)?;
     Ok((a, format))
@@ -68,12 +87,27 @@ fn plan(argv: &[String], outline: Option<&[u8]>) -> Result<(FillRun, FillDraw, F
 }
 
 /// The region's frame for drawing: its bounding box `[x0, y0, x1, y1]` in mm, and its area.
-fn frame(run: &FillRun) -> Result<[f64; 5], String> {
+/// A symmetric fill's is the box drawn (its region, or its cells from the origin), the
+/// fundamental region's area, and the lattice `[ax, bx, by]`.
+fn frame(run: &FillRun) -> Result<Vec<f64>, String> {
     let data = RegionData::load(&run.region).map_err(said)?;
     let mut scratch = Vec::new();
     let region = data.region(run.periodic, &mut scratch).map_err(said)?;
     let (x0, y0, x1, y1) = region.bbox();
-    Ok([x0, y0, x1, y1, region.area()])
+    Ok(match &run.symmetry {
+        Some(s) => {
+            let w = &s.wallpaper;
+            let (cw, ch) = w.cell();
+            let (ax, bx, by) = w.lattice();
+            let (x0, y0, x1, y1) = if s.cut {
+                (x0, y0, x1, y1)
+            } else {
+                (0.0, 0.0, f64::from(s.repeat.0) * cw, f64::from(s.repeat.1) * ch)
+            };
+            vec![x0, y0, x1, y1, w.fundamental_area(), ax, bx, by]
+        }
+        None => vec![x0, y0, x1, y1, region.area()],
+    })
 }
 
 /// Appends a shape's outline for the page's canvas: `0 x y r` (a disc), `1 x y r inner` (a
@@ -100,7 +134,7 @@ pub struct Session {
     argv: Vec<String>,
     outline: Option<Vec<u8>>,
     run: FillRun,
-    frame: [f64; 5],
+    frame: Vec<f64>,
     doc: Option<FillDoc>,
     halt: Option<String>,
 }
@@ -128,9 +162,10 @@ impl Session {
         })
     }
 
-    /// The region's bounding box and area: `[x0, y0, x1, y1, area]` (mm, y up).
+    /// The region's bounding box and area: `[x0, y0, x1, y1, area]` (mm, y up); a symmetric
+    /// fill's box drawn, fundamental area and lattice `[.., ax, bx, by]` (see `frame`).
     pub fn frame(&self) -> Vec<f64> {
-        self.frame.to_vec()
+        self.frame.clone()
     }
 
     /// Runs the fill, calling `progress(shapes, [placed, trials, area])` every few tens of
@@ -148,12 +183,22 @@ impl Session {
             let _ = progress.call2(&JsValue::NULL, &shapes, &totals);
             batch.clear();
         };
+        let wallpaper = self.run.symmetry.map(|s| s.wallpaper);
         let mut watch = |p: &Placement<f64>| {
             placed += 1;
             trials += p.trials;
             area += p.area;
             let s = p.shape;
-            encode(&mut batch, &shapes.kind_of(p.index).geo(Point::new(s.x, s.y), s.scale, s.angle));
+            let c = Point::new(s.x, s.y);
+            let geo = shapes.kind_of(p.index).geo(c, s.scale, s.angle);
+            // An orbit is drawn as all its images in the fundamental rectangle.
+            for k in 0..wallpaper.map_or(1, |w| w.order()) {
+                let mut image = geo.clone();
+                if let Some(w) = &wallpaper {
+                    w.image_in_place(k, &mut image, c, w.image_centre(k, c));
+                }
+                encode(&mut batch, &image);
+            }
             // The clock is read every 16 placements: reading it costs more than a small shape.
             if placed == 1 || placed % 16 == 0 {
                 let now = js_sys::Date::now();

@@ -60,6 +60,10 @@ function argvOf(v, colour) {
   if (v.rotate) add('rotate', v.rotate);
   add('region', v.region);
   if (v.periodic) a.push('--periodic');
+  if (v.symmetry) {
+    add('symmetry', v.symmetry);
+    add('lattice', v.lattice);
+  }
   add(v.law, v.exponent);
   add('n-offset', v['n-offset']);
   add(v.stop, v.until);
@@ -196,7 +200,8 @@ function draw(shapes) {
   const s = Math.min(canvas.width / (x1 - x0), canvas.height / (y1 - y0));
   const w = x1 - x0;
   const h = y1 - y0;
-  const images = shown.periodic ? [-1, 0, 1].flatMap((i) => [-1, 0, 1].map((j) => [i * w, j * h])) : [[0, 0]];
+  const images = shown.frame.length > 5 ? latticeShifts(shown.frame)
+    : shown.periodic ? [-1, 0, 1].flatMap((i) => [-1, 0, 1].map((j) => [i * w, j * h])) : [[0, 0]];
   g.save();
   g.beginPath();
   g.rect(0, 0, w * s, h * s);
@@ -234,6 +239,26 @@ function draw(shapes) {
   }
   g.restore();
 }
+
+// A symmetric fill's frame ends with its lattice [ax, bx, by]: the translates k a + l b that
+// bring a shape of the fundamental rectangle [0, ax) x [0, by) into view.
+function latticeShifts([x0, y0, x1, y1, , ax, bx, by]) {
+  const out = [];
+  for (let l = Math.floor(y0 / by) - 1; l <= Math.ceil(y1 / by) + 1; l++) {
+    const sx = l * bx;
+    for (let k = Math.floor((x0 - sx) / ax) - 1; k <= Math.ceil((x1 - sx) / ax) + 1; k++) out.push([k * ax + sx, l * by]);
+  }
+  return out;
+}
+
+// A group's lattice takes one, two or three numbers: a lattice of another arity becomes one
+// that fits, so that picking a group gives a pattern at once.
+const LATTICES = { p1: '40:30:70', p2: '40:30:70', pm: '40:30', pg: '40:30', cm: '40:30', pmm: '40:30', pmg: '40:30', pgg: '40:30', cmm: '40:30' };
+form.elements.symmetry.addEventListener('input', () => {
+  const g = form.elements.symmetry.value;
+  const want = LATTICES[g] ?? '40';
+  if (g && form.elements.lattice.value.split(':').length !== want.split(':').length) form.elements.lattice.value = want;
+});
 
 // The bytes of one file of the fill shown (what `zetafill fill` writes for its command).
 function exportBytes(kind, machine = $('machine').value) {

@@ -17,6 +17,19 @@ async function fontFor(argv) {
   return new Uint8Array(await (await fetch(FONT)).arrayBuffer());
 }
 
+// A PNG's pixels come from a second module (web/png), loaded the first time a command line
+// asks for a PNG; the page's module hands it the SVG through `zetafillRasterise`.
+let png = null;
+function pngReady(argv) {
+  const wants = argv.some((w, i) => /\.png$/i.test(w) || (w === 'png' && argv[i - 1] === '--format') || w === '--format=png');
+  if (!wants) return Promise.resolve();
+  png ??= import('./zetafill_web_png.js').then(async (m) => {
+    await m.default({ module_or_path: 'zetafill_web_png_bg.wasm' });
+    globalThis.zetafillRasterise = m.rasterise;
+  });
+  return png;
+}
+
 function fail(e) {
   postMessage({ type: 'error', message: String(e) });
 }
@@ -51,6 +64,7 @@ async function run({ module, argv, digestArgv, outline }) {
 // One file of `zetafill line`, `territory` or `tile`.
 async function once({ module, argv }) {
   await init({ module_or_path: module });
+  await pngReady(argv);
   const t0 = performance.now();
   try {
     const bytes = output(argv);
@@ -67,11 +81,9 @@ onmessage = (ev) => {
   } else if (m.type === 'run') {
     run(m).catch(fail);
   } else if (m.type === 'export') {
-    try {
+    pngReady(m.argv).then(() => {
       const bytes = session.export(m.argv);
       postMessage({ type: 'bytes', id: m.id, bytes }, [bytes.buffer]);
-    } catch (e) {
-      postMessage({ type: 'bytes', id: m.id, error: String(e) });
-    }
+    }).catch((e) => postMessage({ type: 'bytes', id: m.id, error: String(e) }));
   }
 };

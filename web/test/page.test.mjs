@@ -124,6 +124,8 @@ const SETS = [
   '?shape=blob:0.3&region=polygon:0,0,200,0,100,173.2&stop=min-size&until=4&seed=5&color-by=random',
   // Letters: the built-in font is fetched by the worker, not embedded in the wasm.
   '?region=text:ZF&n-offset=10&until=300&seed=2',
+  // A wallpaper group's pattern, cut to the region.
+  '?symmetry=p6m&lattice=50&shape=mix:circle,triangle&region=circle:90&n-offset=3&until=120&seed=4',
 ];
 
 for (const query of SETS) {
@@ -136,6 +138,37 @@ for (const query of SETS) {
     await page.close();
   });
 }
+
+test('the PNG module is fetched only when a PNG is asked for, and its PNG is the CLI\'s', async () => {
+  const page = await openPage('?until=200&seed=3');
+  const fetched = [];
+  page.on('request', (r) => fetched.push(r.url()));
+  assert.equal(await settled(page), 'done');
+  await pageFile(page, 'svg');
+  await pageFile(page, 'gcode', MACHINES[0]);
+  assert.ok(!fetched.some((u) => u.includes('zetafill_web_png')), fetched.join(' '));
+  const { argv, bytes } = await pageFile(page, 'png');
+  sameBytes(bytes, cliFile(argv), `png of ${argv.join(' ')}`);
+  assert.ok(fetched.some((u) => u.endsWith('zetafill_web_png_bg.wasm')), fetched.join(' '));
+  await page.close();
+});
+
+test('the symmetry control: a group takes a lattice that fits it, and the files are the CLI\'s', async () => {
+  const page = await openPage('?shape=mix:circle,square&n-offset=3&until=100&region=rect:120:90');
+  assert.equal(await settled(page), 'done');
+  await page.selectOption('select[name=symmetry]', 'pmg');
+  assert.equal(await page.inputValue('input[name=lattice]'), '40:30', 'a rectangular lattice for pmg');
+  await page.waitForFunction(() => window.zetafill.argv?.includes('--symmetry') && window.zetafill.state === 'done', null, {
+    timeout: 120_000,
+  });
+  const argv = await page.evaluate(() => window.zetafill.argv);
+  assert.deepEqual(argv.slice(argv.indexOf('--symmetry'), argv.indexOf('--symmetry') + 4), ['--symmetry', 'pmg', '--lattice', '40:30']);
+  await compareAll(page);
+  // The fill fraction shown is over the fundamental region, as the JSON's is.
+  const json = JSON.parse(Buffer.from((await pageFile(page, 'json')).bytes).toString());
+  assert.equal(Number(await page.textContent('#fraction')), Number(json.stats.fill_fraction.toFixed(4)));
+  await page.close();
+});
 
 test('an uploaded SVG outline gives the files of --region svg:FILE', async () => {
   const svg = '<svg xmlns="http://www.w3.org/2000/svg" width="240mm" height="200mm" viewBox="0 0 120 100">'
@@ -326,20 +359,28 @@ test("the other tabs' controls and their command line set each other", async () 
   await page.close();
 });
 
-// The page's size targets: at most 2 MB of WebAssembly, 700 KB gzipped (level 9), with no
-// argument parser inside; and what the page leaves out is refused with a message.
+// The page's size targets: at most 2 MB of WebAssembly, 700 KB gzipped (level 9), loaded to
+// run, with no argument parser inside; the PNG renderer, loaded only for a PNG, within 350 KB
+// gzipped; and what the page leaves out is refused with a message.
 test('the wasm is small, links no argument parser, and refuses what it leaves out', async () => {
-  const file = join(root, 'web/dist/zetafill_web_bg.wasm');
-  const wasm = readFileSync(file);
-  const gz = spawnSync('gzip', ['-9', '-c', file], { maxBuffer: 1 << 26 }).stdout.length;
-  console.log(`wasm: ${wasm.length} bytes, ${gz} gzipped`);
-  assert.ok(wasm.length <= 2_000_000, `${wasm.length} bytes`);
-  assert.ok(gz <= 700_000, `${gz} bytes gzipped`);
+  const size = (name) => {
+    const file = join(root, 'web/dist', name);
+    const bytes = readFileSync(file);
+    const gz = spawnSync('gzip', ['-9', '-c', file], { maxBuffer: 1 << 26 }).stdout.length;
+    console.log(`${name}: ${bytes.length} bytes, ${gz} gzipped`);
+    return { bytes, gz };
+  };
+  const wasm = size('zetafill_web_bg.wasm');
+  assert.ok(wasm.bytes.length <= 2_000_000, `${wasm.bytes.length} bytes`);
+  assert.ok(wasm.gz <= 700_000, `${wasm.gz} bytes gzipped`);
+  const png = size('zetafill_web_png_bg.wasm');
+  assert.ok(png.gz <= 350_000, `the PNG module: ${png.gz} bytes gzipped`);
   // clap's own texts, which any build that links its parser carries; the checker fails on
   // such a build: the CLI binary holds them.
   const clapTexts = ['Usage:', 'Print help', 'possible values: '];
   const holds = (bytes) => clapTexts.filter((t) => bytes.includes(Buffer.from(t)));
-  assert.deepEqual(holds(wasm), []);
+  assert.deepEqual(holds(wasm.bytes), []);
+  assert.deepEqual(holds(png.bytes), []);
   assert.deepEqual(holds(readFileSync(ZETAFILL)), clapTexts);
 
   const page = await openPage('?until=50');

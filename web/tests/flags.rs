@@ -239,6 +239,8 @@ fn rules_and_malformed_lines_read_alike() {
         ("fill", "-o x.svg --repeat 2:2 --symmetry p4m --lattice 40"),
         ("fill", "-o x.svg --repeat 2:2"),
         ("fill", "-o x.svg --symmetry p4m --lattice 40 --region circle:50"),
+        ("fill", "-o x.svg --symmetry p4m --lattice 40 --repeat 2:2 --region circle:50"),
+        ("fill", "-o x.svg --region rect:90:90 --repeat 2:2 --symmetry p4m --lattice 40"),
         ("fill", "-o x.svg --periodic --symmetry p6m --lattice 40"),
         ("fill", "-o x.svg --symmetry pgg --lattice 40:30 --density noise:value:10"),
         ("fill", "-o x.svg --voronoi --symmetry p2 --lattice 40:30:70"),

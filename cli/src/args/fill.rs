@@ -126,9 +126,10 @@ pub struct FillArgs {
     pub rotate: Option<Rotate>,
     /// rect:W:H | circle:R | annulus:R_OUTER:R_INNER | polygon:X1,Y1,X2,Y2,...[/X1,Y1,...] (rings,
     /// even-odd) | svg:FILE (mm) | mask:FILE or mask:FILE:THRESHOLD (the dark areas of a PNG
-    /// or JPEG, luminance below THRESHOLD, default 0.5) | text:STRING (letters; \n starts a line).
-    #[arg(long, default_value = "rect:200:200", value_parser = spec::fill_region)]
-    pub region: RegionSpec,
+    /// or JPEG, luminance below THRESHOLD, default 0.5) | text:STRING (letters; \n starts a line)
+    /// [default: rect:200:200]. With --symmetry: the region the pattern is cut to.
+    #[arg(long, value_parser = spec::fill_region)]
+    pub region: Option<RegionSpec>,
     /// The flags of mask: and text: regions.
     #[command(flatten)]
     pub input: RegionInputArgs,
@@ -207,4 +208,17 @@ pub struct FillArgs {
     /// Plotter and laser output: G-code machine, path order, hatch, pages, layers.
     #[command(flatten)]
     pub plot: PlotArgs,
+}
+
+/// The region of a fill without `--region`: the 200 mm square.
+pub const DEFAULT_REGION: RegionSpec = RegionSpec::Rect {
+    width: 200.0,
+    height: 200.0,
+};
+
+impl FillArgs {
+    /// The region to fill: `--region`, or the 200 mm square.
+    pub fn region(&self) -> RegionSpec {
+        self.region.clone().unwrap_or(DEFAULT_REGION)
+    }
 }

@@ -119,15 +119,15 @@ pub fn repeat(s: &str) -> Result<RepeatArg, String> {
 #[derive(Debug, Args, Default)]
 pub struct SymmetryArgs {
     /// Fill the plane with the symmetry of a wallpaper group: each shape comes with all its
-    /// images under the group (needs --lattice; the pattern takes the place of --region).
-    #[arg(long, value_enum, requires = "lattice", conflicts_with_all = ["region", "periodic", "density", "voronoi"], help_heading = "Symmetry")]
+    /// images under the group (needs --lattice; drawn over --repeat cells, or cut to --region).
+    #[arg(long, value_enum, requires = "lattice", conflicts_with_all = ["periodic", "voronoi"], help_heading = "Symmetry")]
     pub symmetry: Option<SymmetryArg>,
     /// The group's lattice in mm: A for square and hexagonal groups (p4.., p3.., p6..), A:B
     /// for rectangular and centred ones (pm, pg, cm, pmm, pmg, pgg, cmm), A:B:ANGLE for the
     /// oblique p1 and p2 (ANGLE in degrees).
     #[arg(long, value_parser = lattice, requires = "symmetry", allow_hyphen_values = true, help_heading = "Symmetry")]
     pub lattice: Option<LatticeArg>,
-    /// The cells drawn, across and up: C:R (default 3:3).
-    #[arg(long, value_parser = repeat, requires = "symmetry", help_heading = "Symmetry")]
+    /// The cells drawn, across and up: C:R (default 3:3, unless --region gives the outline).
+    #[arg(long, value_parser = repeat, requires = "symmetry", conflicts_with = "region", help_heading = "Symmetry")]
     pub repeat: Option<RepeatArg>,
 }

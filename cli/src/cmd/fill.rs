@@ -243,6 +243,12 @@ pub fn compute_watched(a: &FillRun, watch: &mut dyn FnMut(&zetafill::Placement<f
         Some(s) => Region::Wallpaper(s.wallpaper),
         None => data.region(a.periodic, &mut scratch)?,
     };
+    // The region a symmetric pattern is cut to, checked as a region to fill is.
+    let mut window_scratch = Vec::new();
+    let window = match &a.symmetry {
+        Some(s) if s.cut => Some(data.doc(&data.region(false, &mut window_scratch)?)),
+        _ => None,
+    };
     let params = &a.params;
     if let Some(s) = &a.symmetry {
         zetafill::check_first_orbit(params, &s.wallpaper).map_err(|e| first_orbit_error(e, params, &s.wallpaper))?;
@@ -323,7 +329,7 @@ pub fn compute_watched(a: &FillRun, watch: &mut dyn FnMut(&zetafill::Placement<f
             dimension: 2.0 / params.c,
         },
         region: match &a.symmetry {
-            Some(s) => region::wallpaper_doc(&s.wallpaper, s.repeat),
+            Some(s) => region::wallpaper_doc(&s.wallpaper, s.repeat, window),
             None => data.doc(&region),
         },
         area,

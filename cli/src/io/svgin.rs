@@ -15,7 +15,6 @@
 //! at [`MAX_VERTICES`] vertices in [`MAX_RINGS`] rings (the core checks an outline through a
 //! tree of its edges, in a time that grows as E log E: well under a second at the limits).
 
-use resvg::usvg;
 use std::path::Path;
 use zetafill::Point;
 

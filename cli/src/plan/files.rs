@@ -17,7 +17,9 @@ pub fn of(cmd: &Command) -> Files<'_> {
     match cmd {
         Command::Fill(a) => {
             f.output("--output", &a.output.output);
-            region(&mut f, &a.region);
+            if let Some(r) = &a.region {
+                region(&mut f, r);
+            }
             if let Some(p) = &a.input.font {
                 f.input("--font", p);
             }

@@ -257,7 +257,7 @@ pub fn resolve_as(a: &FillArgs, format: Format) -> Result<(FillRun, FillDraw), C
         max_trials: a.run.max_trials,
     };
     let picture = density_picture(a)?;
-    let (region, source) = crate::plan::region_input::resolve(&a.region, &a.input)?;
+    let (region, source) = crate::plan::region_input::resolve(&a.region(), &a.input)?;
     let names = FillNames {
         shape: a.shape.name(),
         rotate: if params.rotate && a.shape.rotates() { "random" } else { "none" },
@@ -273,7 +273,7 @@ pub fn resolve_as(a: &FillArgs, format: Format) -> Result<(FillRun, FillDraw), C
     if a.scalar == ScalarArg::Fixed && !cfg!(feature = "fixed-point") {
         return Err(no_fixed_point());
     }
-    let symmetry = super::symmetry::resolve(&a.symmetry)?;
+    let symmetry = super::symmetry::resolve(&a.symmetry, a.region.is_some())?;
     let run = FillRun {
         region,
         periodic: a.periodic,

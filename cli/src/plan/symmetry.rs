@@ -1,4 +1,4 @@
-//! `--symmetry`, `--lattice` and `--repeat` resolved into the group on its lattice, and the
+//! `--symmetry`, `--lattice` and `--repeat` (or `--region`) resolved into the group on its lattice, and the
 //! message of a first shape that can never clear its own images.
 
 use crate::args::symmetry::SymmetryArgs;
@@ -14,6 +14,8 @@ pub struct SymmetryPlan {
     pub wallpaper: zetafill::Wallpaper,
     /// `--repeat`.
     pub repeat: (u32, u32),
+    /// Whether the pattern is cut to `--region` (instead of drawn over `repeat` cells).
+    pub cut: bool,
 }
 
 /// The lattice a group needs, as its message names it.
@@ -28,7 +30,7 @@ fn lattice_form(kind: LatticeKind) -> &'static str {
 }
 
 /// `--symmetry`, `--lattice` and `--repeat` checked against each other.
-pub fn resolve(a: &SymmetryArgs) -> Result<Option<SymmetryPlan>, CliError> {
+pub fn resolve(a: &SymmetryArgs, cut: bool) -> Result<Option<SymmetryPlan>, CliError> {
     let (Some(s), Some(l)) = (a.symmetry, &a.lattice) else {
         return Ok(None);
     };
@@ -52,7 +54,7 @@ pub fn resolve(a: &SymmetryArgs) -> Result<Option<SymmetryPlan>, CliError> {
     let angle = v.get(2).copied().unwrap_or(90.0);
     let wallpaper = zetafill::Wallpaper::new(group, side, other, angle).map_err(|e| CliError::arg("--lattice", e.to_string()))?;
     let repeat = a.repeat.map_or((3, 3), |r| (r.0, r.1));
-    Ok(Some(SymmetryPlan { wallpaper, repeat }))
+    Ok(Some(SymmetryPlan { wallpaper, repeat, cut }))
 }
 
 /// The usage error of a symmetric fill whose first shape can never clear its own images

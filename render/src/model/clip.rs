@@ -33,7 +33,7 @@ pub fn clip_segment(a: Pt, b: Pt, r: &Bounds) -> Option<(f64, f64)> {
     (t0 < t1).then_some((t0, t1))
 }
 
-fn lerp(a: Pt, b: Pt, t: f64) -> Pt {
+pub(super) fn lerp(a: Pt, b: Pt, t: f64) -> Pt {
     if t == 0.0 {
         a
     } else if t == 1.0 {
@@ -104,7 +104,7 @@ fn clip_polyline(points: &[Pt], closed: bool, r: &Bounds) -> Vec<Path> {
 }
 
 /// Normalises an angle into [0, 2π).
-fn norm_angle(a: f64) -> f64 {
+pub(super) fn norm_angle(a: f64) -> f64 {
     let t = a.rem_euclid(TAU);
     if t >= TAU {
         0.0
@@ -145,16 +145,22 @@ fn clip_arc(c: Pt, rad: f64, start: f64, sweep: f64, r: &Bounds) -> Vec<Path> {
             }
         }
     }
+    arc_pieces(c, rad, s0, full, cuts, |p| {
+        p[0] >= r.x0 && p[0] <= r.x1 && p[1] >= r.y0 && p[1] <= r.y1
+    })
+}
+
+/// The arcs of the circle `(c, rad)` between consecutive `cuts` (angles after `s0`, the arc's
+/// ends among them) whose middle is `inside`, pieces that meet joined; for a `full` circle
+/// the piece through its start continues across the seam, and a circle kept all round is
+/// the whole circle.
+pub(super) fn arc_pieces(c: Pt, rad: f64, s0: f64, full: bool, mut cuts: Vec<f64>, inside: impl Fn(Pt) -> bool) -> Vec<Path> {
     cuts.sort_by(f64::total_cmp);
     cuts.dedup();
-    let inside = |a: f64| {
-        let p = polar(c, rad, s0 + a);
-        p[0] >= r.x0 && p[0] <= r.x1 && p[1] >= r.y0 && p[1] <= r.y1
-    };
     let mut pieces: Vec<(f64, f64)> = Vec::new();
     for w in cuts.windows(2) {
         let (a, b) = (w[0], w[1]);
-        if b - a <= 0.0 || !inside(0.5 * (a + b)) {
+        if b <= a || !inside(polar(c, rad, s0 + 0.5 * (a + b))) {
             continue;
         }
         match pieces.last_mut() {

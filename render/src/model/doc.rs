@@ -135,7 +135,8 @@ pub enum RegionDoc {
         outers: Vec<Vec<[f64; 2]>>,
     },
     /// The plane with the symmetry of a wallpaper group: the shapes are the orbits'
-    /// representatives, the pattern is drawn over `repeat` cells from the origin.
+    /// representatives, the pattern is drawn over `repeat` cells from the origin, or cut to
+    /// `window`.
     Wallpaper {
         /// The group's short name (`p4m`, ...).
         group: String,
@@ -145,12 +146,17 @@ pub enum RegionDoc {
         vectors: [f64; 3],
         /// The images of a shape in one primitive cell.
         order: usize,
-        /// Cells drawn across and up (`--repeat`).
-        repeat: [u32; 2],
-        /// The window drawn: `repeat` cells of the conventional cell's size.
+        /// Cells drawn across and up (`--repeat`), when no window is given.
+        #[serde(skip_serializing_if = "Option::is_none")]
+        repeat: Option<[u32; 2]>,
+        /// The width of what is drawn: `repeat` cells of the conventional cell's size, or
+        /// the window's bounding box.
         width: f64,
         /// Its height.
         height: f64,
+        /// The region the pattern is cut to (`--region`), when given.
+        #[serde(skip_serializing_if = "Option::is_none")]
+        window: Option<Box<RegionDoc>>,
     },
 }
 
@@ -173,6 +179,7 @@ impl RegionDoc {
                 let rings = std::iter::once(vertices).chain(outers).chain(holes);
                 format!("polygon:{}", rings.map(|r| ring(r)).collect::<Vec<_>>().join("/"))
             }
+            RegionDoc::Wallpaper { window: Some(w), .. } => w.arg(),
             RegionDoc::Wallpaper { width, height, .. } => format!("rect:{width}:{height}"),
         }
     }
@@ -181,6 +188,7 @@ impl RegionDoc {
     /// the holes) or full circles.
     pub fn outline(&self) -> Vec<Path> {
         match self {
+            RegionDoc::Wallpaper { window: Some(w), .. } => w.outline(),
             RegionDoc::Rect { width, height, .. } | RegionDoc::Wallpaper { width, height, .. } => vec![Path::polyline(
                 vec![[0.0, 0.0], [*width, 0.0], [*width, *height], [0.0, *height]],
                 true,
@@ -245,19 +253,7 @@ pub struct StatsDoc {
 impl FillDoc {
     /// The region's bounding box (min x, min y, max x, max y).
     pub fn bbox(&self) -> (f64, f64, f64, f64) {
-        match &self.region {
-            RegionDoc::Rect { width, height, .. } | RegionDoc::Wallpaper { width, height, .. } => (0.0, 0.0, *width, *height),
-            RegionDoc::Circle { center, radius: r }
-            | RegionDoc::Annulus {
-                center, radius_outer: r, ..
-            } => (center[0] - r, center[1] - r, center[0] + r, center[1] + r),
-            RegionDoc::Polygon { vertices, holes, outers } => {
-                let all = vertices.iter().chain(holes.iter().flatten()).chain(outers.iter().flatten());
-                all.fold((f64::MAX, f64::MAX, f64::MIN, f64::MIN), |b, v| {
-                    (b.0.min(v[0]), b.1.min(v[1]), b.2.max(v[0]), b.3.max(v[1]))
-                })
-            }
-        }
+        self.region.bbox()
     }
 
     /// Width and height of the region's bounding box.
@@ -314,5 +310,25 @@ pub fn kind_name(k: &ShapeKind) -> &'static str {
         ShapeKind::Ring { .. } => "ring",
         ShapeKind::Blob { .. } => "blob",
         ShapeKind::Noisy { .. } => "noisy",
+    }
+}
+
+impl RegionDoc {
+    /// The bounding box (min x, min y, max x, max y) of what is drawn.
+    pub fn bbox(&self) -> (f64, f64, f64, f64) {
+        match self {
+            RegionDoc::Wallpaper { window: Some(w), .. } => w.bbox(),
+            RegionDoc::Rect { width, height, .. } | RegionDoc::Wallpaper { width, height, .. } => (0.0, 0.0, *width, *height),
+            RegionDoc::Circle { center, radius: r }
+            | RegionDoc::Annulus {
+                center, radius_outer: r, ..
+            } => (center[0] - r, center[1] - r, center[0] + r, center[1] + r),
+            RegionDoc::Polygon { vertices, holes, outers } => {
+                let all = vertices.iter().chain(holes.iter().flatten()).chain(outers.iter().flatten());
+                all.fold((f64::MAX, f64::MAX, f64::MIN, f64::MIN), |b, v| {
+                    (b.0.min(v[0]), b.1.min(v[1]), b.2.max(v[0]), b.3.max(v[1]))
+                })
+            }
+        }
     }
 }

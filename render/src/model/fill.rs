@@ -7,7 +7,8 @@
 //! outline and hatching into path pieces (the strokes the G-code draws, the same in every
 //! SVG), or, filled, its area into a polygon or a loop of arcs and edges.
 
-use super::doc::{FillDoc, ShapeDoc};
+use super::cut::Window;
+use super::doc::{FillDoc, RegionDoc, ShapeDoc};
 use super::hatch;
 use super::picture::{Colour, Item, Layer, PageLayout, Paint, Picture, Shape};
 use super::{shape_bounds, shape_images, shape_width, Bounds, Drawing, Path};
@@ -155,7 +156,12 @@ pub fn picture(doc: &FillDoc, look: &FillLook) -> Picture {
     // Each shape with the shifts at which it shows (in a symmetric fill, each image of each
     // representative, with the lattice translates that meet the window).
     let symmetric = super::wallpaper::images(doc);
-    let cut_to_tile = periodic || symmetric.is_some();
+    // A symmetric pattern cut to a region; a rectangle is cut as a window of cells is.
+    let window = match &doc.region {
+        RegionDoc::Wallpaper { window: Some(r), .. } if !matches!(**r, RegionDoc::Rect { .. }) => Some(Window::new(&r.outline())),
+        _ => None,
+    };
+    let cut_to_tile = (periodic || symmetric.is_some()) && window.is_none();
     let drawn: Vec<Shown> = match &symmetric {
         Some(images) => images.iter().map(|im| (im.of, &im.shape, im.shifts.clone())).collect(),
         None => doc
@@ -173,22 +179,28 @@ pub fn picture(doc: &FillDoc, look: &FillLook) -> Picture {
         let layer = look.layer_of.get(k).copied().unwrap_or(0);
         let sb = shape_bounds(sh);
         for (dx, dy) in offs {
-            let cut = cut_to_tile && {
-                let image = Bounds {
-                    x0: sb.x0 + dx,
-                    y0: sb.y0 + dy,
-                    x1: sb.x1 + dx,
-                    y1: sb.y1 + dy,
-                };
-                !image.inside(&tile, 0.0)
+            let image = Bounds {
+                x0: sb.x0 + dx,
+                y0: sb.y0 + dy,
+                x1: sb.x1 + dx,
+                y1: sb.y1 + dy,
+            };
+            let cut = cut_to_tile && !image.inside(&tile, 0.0);
+            // In a region, a shape no outline edge comes near lies wholly inside or outside.
+            let cut_in = match &window {
+                Some(win) if win.meets(&image) => Some(win),
+                Some(win) if !win.contains([sh.center[0] + dx, sh.center[1] + dy]) => continue,
+                _ => None,
             };
             let mut items = Vec::with_capacity(2);
             if !look.build.no_outline {
                 let o = outline(sh, (dx, dy), min_feature);
-                items.extend(match (cut, look.filled) {
-                    (false, _) => Some(o),
-                    (true, false) => o.clipped(&tile),
-                    (true, true) => o.cut_area(&tile),
+                items.extend(match (cut_in, cut, look.filled) {
+                    (Some(win), _, false) => o.clipped_in(win),
+                    (Some(win), _, true) => o.cut_area_in(win),
+                    (None, false, _) => Some(o),
+                    (None, true, false) => o.clipped(&tile),
+                    (None, true, true) => o.cut_area(&tile),
                 });
             }
             if let Some(hatch) = &look.build.hatch {
@@ -200,7 +212,11 @@ pub fn picture(doc: &FillDoc, look: &FillLook) -> Picture {
                 if !lines.is_empty() {
                     let mut item = Item::new(Shape::Path(lines));
                     item.class = Some("hatch");
-                    items.extend(if cut_to_tile { item.clipped(&tile) } else { Some(item) });
+                    items.extend(match cut_in {
+                        Some(win) => item.clipped_in(win),
+                        None if cut_to_tile => item.clipped(&tile),
+                        None => Some(item),
+                    });
                 }
             }
             for mut item in items {

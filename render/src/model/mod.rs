@@ -40,6 +40,7 @@
 //! deterministic: the same input gives the same values.
 
 pub mod clip;
+pub mod cut;
 pub mod density;
 pub mod doc;
 pub mod fill;

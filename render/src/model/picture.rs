@@ -15,6 +15,7 @@
 //! one drawing per pen colour; PNG is the SVG rendered. [`Frame`] is the one place where the
 //! region's frame becomes the page's (the y flip, the page placement).
 
+use super::cut::Window;
 use super::{clip_area, clip_path, clip_polygon, Bounds, Drawing, Path, Pt};
 
 /// A colour as `#rrggbb`.
@@ -164,6 +165,48 @@ impl Item {
         (!pieces.is_empty()).then(|| Item {
             shape: Shape::Path(pieces),
             evenodd: false,
+            ..self.clone()
+        })
+    }
+
+    /// The item's strokes cut exactly to the region `w` ([`Window::cut_path`]); `None` when
+    /// nothing of it is left.
+    pub fn clipped_in(&self, w: &Window) -> Option<Item> {
+        let strokes = self.strokes();
+        let pieces: Vec<Vec<Path>> = strokes.iter().map(|p| w.cut_path(p)).collect();
+        if pieces
+            .iter()
+            .zip(&strokes)
+            .all(|(cut, p)| matches!(cut.as_slice(), [one] if one == p))
+        {
+            return Some(self.clone());
+        }
+        let pieces: Vec<Path> = pieces.into_iter().flatten().collect();
+        (!pieces.is_empty()).then(|| Item {
+            shape: Shape::Path(pieces),
+            evenodd: false,
+            ..self.clone()
+        })
+    }
+
+    /// The item's area cut exactly to the region `w`, each closed piece on its own as in
+    /// [`Item::cut_area`] ([`Window::cut_area`]); a line is cut as a stroke. `None` when
+    /// nothing of it is left.
+    pub fn cut_area_in(&self, w: &Window) -> Option<Item> {
+        if matches!(self.shape, Shape::Line(..)) {
+            return self.clipped_in(w);
+        }
+        let strokes = self.strokes();
+        let loops: Vec<Vec<Path>> = strokes.iter().flat_map(|p| w.cut_area(p)).collect();
+        // Nothing cut off: the item as it was.
+        if loops.len() == strokes.len() && loops.iter().zip(&strokes).all(|(l, p)| matches!(l.as_slice(), [one] if one == p)) {
+            return Some(self.clone());
+        }
+        // The region's holes come out as loops of their own, which only the even-odd rule
+        // leaves open whatever their direction.
+        (!loops.is_empty()).then(|| Item {
+            shape: Shape::Loops(loops),
+            evenodd: true,
             ..self.clone()
         })
     }

@@ -1,9 +1,11 @@
 //! The drawing of a symmetric fill: each orbit's images (from the representative the document
 //! holds, by the core's own operations, so every image is the outline the engine tested), at
-//! every lattice translate that meets the window of `--repeat` cells.
+//! every lattice translate that meets the window: `--repeat` cells, or the bounding box of the
+//! region it is cut to.
 
 use super::doc::{FillDoc, ShapeDoc};
 use super::shape::shape_bounds;
+use super::Bounds;
 use zetafill::{Geo, Point, Verts, Wallpaper};
 
 /// One image of a representative: the representative's position in the document, the image
@@ -66,22 +68,25 @@ pub fn image_doc(w: &Wallpaper, sh: &ShapeDoc, k: usize) -> ShapeDoc {
     }
 }
 
-/// The lattice shifts `k a + l b` at which a shape's bounding box meets the window
-/// `[0, width] x [0, height]`, row by row from the bottom.
-fn shifts(w: &Wallpaper, sh: &ShapeDoc, (width, height): (f64, f64)) -> Vec<(f64, f64)> {
+/// The lattice shifts `k a + l b` at which a shape's bounding box meets the box `win`, row
+/// by row from the bottom.
+fn shifts(w: &Wallpaper, sh: &ShapeDoc, win: &Bounds) -> Vec<(f64, f64)> {
     let (ax, bx, by) = w.lattice();
     let b = shape_bounds(sh);
     let mut out = Vec::new();
-    let (l0, l1) = ((-b.y1 / by).floor() as i64, ((height - b.y0) / by).ceil() as i64);
+    let (l0, l1) = (((win.y0 - b.y1) / by).floor() as i64, ((win.y1 - b.y0) / by).ceil() as i64);
     for l in l0..=l1 {
         let (sx, dy) = (l as f64 * bx, l as f64 * by);
-        if !(b.y1 + dy > 0.0 && b.y0 + dy < height) {
+        if !(b.y1 + dy > win.y0 && b.y0 + dy < win.y1) {
             continue;
         }
-        let (k0, k1) = (((-b.x1 - sx) / ax).floor() as i64, ((width - b.x0 - sx) / ax).ceil() as i64);
+        let (k0, k1) = (
+            ((win.x0 - b.x1 - sx) / ax).floor() as i64,
+            ((win.x1 - b.x0 - sx) / ax).ceil() as i64,
+        );
         for k in k0..=k1 {
             let dx = k as f64 * ax + sx;
-            if b.x1 + dx > 0.0 && b.x0 + dx < width {
+            if b.x1 + dx > win.x0 && b.x0 + dx < win.x1 {
                 out.push((dx, dy));
             }
         }
@@ -93,12 +98,13 @@ fn shifts(w: &Wallpaper, sh: &ShapeDoc, (width, height): (f64, f64)) -> Vec<(f64
 /// for a document without symmetry.
 pub fn images(doc: &FillDoc) -> Option<Vec<Image>> {
     let w = doc.wallpaper()?;
-    let window = doc.extent();
+    let (x0, y0, x1, y1) = doc.bbox();
+    let window = Bounds { x0, y0, x1, y1 };
     let mut out = Vec::with_capacity(doc.shapes.len() * w.order());
     for (of, sh) in doc.shapes.iter().enumerate() {
         for k in 0..w.order() {
             let shape = image_doc(&w, sh, k);
-            let shifts = shifts(&w, &shape, window);
+            let shifts = shifts(&w, &shape, &window);
             if !shifts.is_empty() {
                 out.push(Image { of, shape, shifts });
             }

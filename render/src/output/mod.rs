@@ -8,6 +8,7 @@
 #[doc(hidden)]
 pub mod control;
 pub mod csv;
+pub mod curves;
 pub mod digest;
 pub mod gcode;
 pub mod glb;

@@ -432,17 +432,24 @@ pub fn command_line(doc: &FillDoc) -> String {
     let p = &doc.params;
     // A region made from a picture or a text is named by its input (and that input's digest);
     // any other travels as its rings.
-    let region = match (&p.of.source, &doc.region) {
-        (Some(src), _) => format!(" --region {}{}", crate::model::region::shell_word(&src.region), src.flags()),
-        (None, RegionDoc::Wallpaper { group, repeat, .. }) => {
+    // A symmetric fill names its group and lattice, then its cells or the region it is cut to.
+    let symmetry = match &doc.region {
+        RegionDoc::Wallpaper { group, repeat, .. } => {
             let lattice = doc
                 .wallpaper()
                 .map(|w| crate::model::wallpaper::lattice_arg(&w))
                 .unwrap_or_default();
-            format!(" --symmetry {group} --lattice {lattice} --repeat {}:{}", repeat[0], repeat[1])
+            let cells = repeat.map_or_else(String::new, |r| format!(" --repeat {}:{}", r[0], r[1]));
+            format!(" --symmetry {group} --lattice {lattice}{cells}")
         }
+        _ => String::new(),
+    };
+    let region = match (&p.of.source, &doc.region) {
+        (Some(src), _) => format!(" --region {}{}", crate::model::region::shell_word(&src.region), src.flags()),
+        (None, RegionDoc::Wallpaper { window: None, .. }) => String::new(),
         (None, r) => format!(" --region {}", r.arg()),
     };
+    let region = symmetry + &region;
     let mut s = format!(
         "zetafill fill --shape {}{} --rotate {}{}{} --c {} --n-offset {} --gap {} --max-trials {} --seed {} --sampler {}{}",
         p.of.shape,

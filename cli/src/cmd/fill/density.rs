@@ -27,6 +27,11 @@ const MARGIN: f64 = 1e-12;
 pub(super) enum Field {
     /// Noise: `0.5 + contrast (noise - 0.5)`, clamped (no bound below 1 is known).
     Noise { noise: zetafill::Noise, contrast: f64 },
+    /// A density on a wallpaper group's torus, read in the lattice's own coordinates: at
+    /// `(x - shear y) mod ax, y`, so that it repeats with the lattice vectors `(ax, 0)` and
+    /// `(shear by, by)`, and a picture covers one primitive cell (a parallelogram on an
+    /// oblique or hexagonal lattice).
+    Lattice { field: Box<Field>, ax: f64, shear: f64 },
     /// A picture over the region's bounding box `(x0, y0, x1, y1)`.
     Picture {
         grey: Arc<Grey>,
@@ -50,6 +55,7 @@ impl Field {
 impl zetafill::Density for Field {
     fn at(&self, x: f64, y: f64) -> f64 {
         match self {
+            Field::Lattice { field, ax, shear } => field.at((x - shear * y).rem_euclid(*ax), y),
             Field::Noise { noise, contrast } => (0.5 + contrast * (noise.at(x, y) - 0.5)).clamp(0.0, 1.0),
             Field::Picture {
                 grey,
@@ -65,6 +71,24 @@ impl zetafill::Density for Field {
     fn max_over(&self, x0: f64, y0: f64, x1: f64, y1: f64) -> f64 {
         match self {
             Field::Noise { .. } => 1.0,
+            Field::Lattice { field, ax, shear } => {
+                // The lattice coordinate over the box: from its corner of least `x - shear y`
+                // to that of the most, widened by far more than the rounding of `at`.
+                let (lo, hi) = if *shear >= 0.0 {
+                    (x0 - shear * y1, x1 - shear * y0)
+                } else {
+                    (x0 - shear * y0, x1 - shear * y1)
+                };
+                let slack = 1e-9 * ax;
+                let (lo, span) = ((lo - slack).rem_euclid(*ax), hi - lo + 2.0 * slack);
+                if span.is_nan() || span >= *ax {
+                    field.max_over(0.0, y0, *ax, y1)
+                } else if lo + span <= *ax {
+                    field.max_over(lo, y0, lo + span, y1)
+                } else {
+                    field.max_over(lo, y0, *ax, y1).max(field.max_over(0.0, y0, lo + span - ax, y1))
+                }
+            }
             Field::Picture {
                 grey,
                 pyramid,
@@ -202,6 +226,23 @@ impl Pyramid {
 /// The run's `--density` as a field: noise gets the fill's seed, and a period of the region's
 /// size when the fill is periodic; a picture covers the region's bounding box.
 pub(super) fn field(a: &FillRun, region: &Region<'_>) -> Result<Option<Field>, CliError> {
+    let Some(field) = plain_field(a, region)? else { return Ok(None) };
+    // A wallpaper's torus is sheared by its lattice: the field is read along it.
+    Ok(Some(match region.wallpaper() {
+        Some(w) => {
+            let (ax, bx, by) = w.lattice();
+            Field::Lattice {
+                field: Box::new(field),
+                ax,
+                shear: bx / by,
+            }
+        }
+        None => field,
+    }))
+}
+
+/// The run's `--density` over the region's bounding box.
+fn plain_field(a: &FillRun, region: &Region<'_>) -> Result<Option<Field>, CliError> {
     let Some(d) = &a.density else { return Ok(None) };
     Ok(Some(match *d {
         DensitySpec::Noise {
@@ -211,8 +252,12 @@ pub(super) fn field(a: &FillRun, region: &Region<'_>) -> Result<Option<Field>, C
             gain,
             contrast,
         } => {
-            let period = match (&a.region, a.periodic) {
-                (crate::model::region::RegionSpec::Rect { width, height }, true) => Some((*width, *height)),
+            let period = match (&a.region, a.periodic, region.wallpaper()) {
+                (_, _, Some(w)) => {
+                    let (ax, _, by) = w.lattice();
+                    Some((ax, by))
+                }
+                (crate::model::region::RegionSpec::Rect { width, height }, true, _) => Some((*width, *height)),
                 _ => None,
             };
             // As many lattice cells across the region as a periodic noise may have (2^40 at
@@ -261,6 +306,12 @@ pub(super) fn refuse_zero(field: &Field, region: &Region<'_>, after_halt: bool) 
     use zetafill::Density;
     let (x0, y0, x1, y1) = region.bbox();
     match field {
+        Field::Lattice { field: inner, .. } => match **inner {
+            // A picture: its densest pixel, over the cell it covers.
+            Field::Picture { .. } => refuse_zero(inner, region, after_halt),
+            // Noise: looked at where the fill is.
+            _ => refuse_zero_noise(field, inner, region, after_halt),
+        },
         Field::Picture { invert, floor, .. } => {
             if field.max_over(x0, y0, x1, y1) > 0.0 {
                 return Ok(());
@@ -277,6 +328,15 @@ pub(super) fn refuse_zero(field: &Field, region: &Region<'_>, after_halt: bool) 
                 ),
             ))
         }
+        Field::Noise { .. } => refuse_zero_noise(field, field, region, after_halt),
+    }
+}
+
+/// [`refuse_zero`] for a noise (`noise`) read as `field`.
+fn refuse_zero_noise(field: &Field, noise: &Field, region: &Region<'_>, after_halt: bool) -> Result<(), CliError> {
+    use zetafill::Density;
+    let (x0, y0, x1, y1) = region.bbox();
+    match noise {
         Field::Noise { contrast, .. } => {
             if !after_halt {
                 return Ok(());
@@ -298,6 +358,7 @@ pub(super) fn refuse_zero(field: &Field, region: &Region<'_>, after_halt: bool) 
                 ),
             ))
         }
+        _ => Ok(()),
     }
 }
 

@@ -85,24 +85,33 @@ impl RegionData {
                 }
                 RegionDoc::Polygon { vertices, holes, outers }
             }
-            Region::Wallpaper(w) => wallpaper_doc(&w, (3, 3)),
+            Region::Wallpaper(w) => wallpaper_doc(&w, (3, 3), None),
         }
     }
 }
 
-/// A wallpaper group's region as written in JSON, drawn over `repeat` cells.
-pub fn wallpaper_doc(w: &zetafill::Wallpaper, repeat: (u32, u32)) -> RegionDoc {
+/// A wallpaper group's region as written in JSON: drawn over `repeat` cells, or cut to
+/// `window`.
+pub fn wallpaper_doc(w: &zetafill::Wallpaper, repeat: (u32, u32), window: Option<RegionDoc>) -> RegionDoc {
     let (a, b, angle) = w.sides();
     let (ax, bx, by) = w.lattice();
     let (cw, ch) = w.cell();
+    let (width, height) = match &window {
+        Some(r) => {
+            let (x0, y0, x1, y1) = r.bbox();
+            (x1 - x0, y1 - y0)
+        }
+        None => (f64::from(repeat.0) * cw, f64::from(repeat.1) * ch),
+    };
     RegionDoc::Wallpaper {
         group: w.group().name().to_string(),
         lattice: [a, b, angle],
         vectors: [ax, bx, by],
         order: w.order(),
-        repeat: [repeat.0, repeat.1],
-        width: f64::from(repeat.0) * cw,
-        height: f64::from(repeat.1) * ch,
+        repeat: window.is_none().then_some([repeat.0, repeat.1]),
+        width,
+        height,
+        window: window.map(Box::new),
     }
 }
 

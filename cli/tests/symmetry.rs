@@ -726,3 +726,47 @@ fn a_density_picture_covers_one_primitive_cell() {
     assert_eq!(fill_json(dir.path(), &a)["shapes"], doc["shapes"]);
     assert_eq!(s(&doc["params"], "density"), "noise:gradient:12:4:0.5:2");
 }
+
+#[test]
+fn a_pattern_on_a_page_fills_its_drawing_area() {
+    let dir = tmp();
+    let base = [
+        "--symmetry",
+        "p4m",
+        "--lattice",
+        "40",
+        "--shape",
+        "mix:circle,square",
+        "--n-offset",
+        "3",
+        "--count",
+        "120",
+        "-q",
+    ];
+    let with = |name: &str, more: &[&str]| {
+        let mut a = base.to_vec();
+        a.extend(more);
+        fill_to(dir.path(), name, &a)
+    };
+    // A4 less its 10 mm margins is the region rect:190:277, placed at the margins.
+    let page = with("page.svg", &["--page", "a4"]);
+    assert_eq!(with("region.svg", &["--region", "rect:190:277", "--page", "a4"]), page);
+    let (points, _) = strokes(&page, 297.0);
+    let span = points.iter().fold([f64::MAX, f64::MIN, f64::MAX, f64::MIN], |b, p| {
+        [b[0].min(p[0]), b[1].max(p[0]), b[2].min(p[1]), b[3].max(p[1])]
+    });
+    assert!(
+        span[0] >= 10.0 - 1e-3 && span[1] <= 200.0 + 1e-3 && span[2] >= 10.0 - 1e-3 && span[3] <= 287.0 + 1e-3,
+        "{span:?}"
+    );
+    assert!(
+        span[0] < 10.5 && span[1] > 199.5 && span[2] < 10.5 && span[3] > 286.5,
+        "the page is covered: {span:?}"
+    );
+    // Other margins give another area; --repeat draws its cells on the page instead.
+    assert_eq!(
+        with("m.svg", &["--page", "a4", "--margin", "20"]),
+        with("mr.svg", &["--region", "rect:170:257", "--page", "a4", "--margin", "20"])
+    );
+    assert_ne!(with("r.svg", &["--page", "a4", "--repeat", "3:3"]), page);
+}

@@ -127,7 +127,8 @@ pub struct SymmetryArgs {
     /// oblique p1 and p2 (ANGLE in degrees).
     #[arg(long, value_parser = lattice, requires = "symmetry", allow_hyphen_values = true, help_heading = "Symmetry")]
     pub lattice: Option<LatticeArg>,
-    /// The cells drawn, across and up: C:R (default 3:3, unless --region gives the outline).
+    /// The cells drawn, across and up: C:R (default 3:3, unless --region gives the outline or
+    /// --page the sheet).
     #[arg(long, value_parser = repeat, requires = "symmetry", conflicts_with = "region", help_heading = "Symmetry")]
     pub repeat: Option<RepeatArg>,
 }

@@ -257,7 +257,20 @@ pub fn resolve_as(a: &FillArgs, format: Format) -> Result<(FillRun, FillDraw), C
         max_trials: a.run.max_trials,
     };
     let picture = density_picture(a)?;
-    let (region, source) = crate::plan::region_input::resolve(&a.region(), &a.input)?;
+    // A symmetric pattern on a page, with neither --region nor --repeat, is cut to the page's
+    // drawing area (the page less its margins), which it then fills.
+    let page_window = match (&a.symmetry.symmetry, &a.region, &a.symmetry.repeat, &a.plot.page) {
+        (Some(_), None, None, Some(page)) => {
+            let margin = a.plot.margin.unwrap_or(super::plot::DEFAULT_PAGE_MARGIN);
+            (2.0 * margin < page.width.min(page.height)).then_some(RegionSpec::Rect {
+                width: page.width - 2.0 * margin,
+                height: page.height - 2.0 * margin,
+            })
+        }
+        _ => None,
+    };
+    let cut = a.region.is_some() || page_window.is_some();
+    let (region, source) = crate::plan::region_input::resolve(&page_window.unwrap_or_else(|| a.region()), &a.input)?;
     let names = FillNames {
         shape: a.shape.name(),
         rotate: if params.rotate && a.shape.rotates() { "random" } else { "none" },
@@ -273,7 +286,7 @@ pub fn resolve_as(a: &FillArgs, format: Format) -> Result<(FillRun, FillDraw), C
     if a.scalar == ScalarArg::Fixed && !cfg!(feature = "fixed-point") {
         return Err(no_fixed_point());
     }
-    let symmetry = super::symmetry::resolve(&a.symmetry, a.region.is_some())?;
+    let symmetry = super::symmetry::resolve(&a.symmetry, cut)?;
     let run = FillRun {
         region,
         periodic: a.periodic,

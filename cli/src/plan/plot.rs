@@ -80,6 +80,9 @@ impl GcodePlan {
     }
 }
 
+/// The margin of an SVG page without `--margin` (mm).
+pub const DEFAULT_PAGE_MARGIN: f64 = 10.0;
+
 /// An SVG page: its size, the margin and how the drawing is placed on it.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct PagePlan {
@@ -97,7 +100,7 @@ impl PagePlan {
     /// The page `--page` asks for, if any, with `--margin` (default 10 mm) checked against it.
     pub fn resolve(a: &PlotArgs) -> Result<Option<PagePlan>, CliError> {
         let Some(page) = a.page else { return Ok(None) };
-        let margin = a.margin.unwrap_or(10.0);
+        let margin = a.margin.unwrap_or(DEFAULT_PAGE_MARGIN);
         if 2.0 * margin >= page.width.min(page.height) {
             return Err(CliError::arg(
                 "--margin",

@@ -335,7 +335,7 @@ fn clip_disc(c: Pt, rad: f64, r: &Bounds) -> Vec<Path> {
 }
 
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use super::*;
 
     fn unit() -> Bounds {
@@ -374,7 +374,7 @@ mod tests {
     }
 
     /// The area inside a loop of pieces (Green's theorem: ½∮ x dy − y dx).
-    fn loop_area(pieces: &[Path]) -> f64 {
+    pub(in crate::model) fn loop_area(pieces: &[Path]) -> f64 {
         let mut a = 0.0;
         for p in pieces {
             match p {
@@ -401,7 +401,7 @@ mod tests {
     }
 
     /// Whether each piece starts where the one before it ends, around the loop.
-    fn chained(pieces: &[Path]) -> bool {
+    pub(in crate::model) fn chained(pieces: &[Path]) -> bool {
         let n = pieces.len();
         (0..n).all(|i| dist(pieces[i].end_point(), pieces[(i + 1) % n].start_point()) < 1e-12)
     }

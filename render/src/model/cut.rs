@@ -330,6 +330,7 @@ impl Window {
 
 #[cfg(test)]
 mod tests {
+    use super::super::clip::tests::chained;
     use super::*;
     use std::f64::consts::PI;
 
@@ -337,35 +338,9 @@ mod tests {
         Window::new(&[Path::circle([0.0, 0.0], r)])
     }
 
-    /// The area a loop of pieces bounds (Green's theorem), its sign dropped.
+    /// The area a loop of pieces bounds, its sign dropped.
     fn loop_area(pieces: &[Path]) -> f64 {
-        let mut a = 0.0;
-        for p in pieces {
-            match p {
-                Path::Polyline { points, closed } => {
-                    let n = points.len();
-                    for i in 0..if *closed { n } else { n - 1 } {
-                        let (p, q) = (points[i], points[(i + 1) % n]);
-                        a += 0.5 * cross(p, q);
-                    }
-                }
-                Path::Arc {
-                    center: c,
-                    radius: r,
-                    start,
-                    sweep,
-                } => {
-                    let (t0, t1) = (*start, start + sweep);
-                    a += 0.5 * (r * c[0] * (libm::sin(t1) - libm::sin(t0)) - r * c[1] * (libm::cos(t1) - libm::cos(t0)) + r * r * sweep);
-                }
-            }
-        }
-        a.abs()
-    }
-
-    fn chained(pieces: &[Path]) -> bool {
-        let n = pieces.len();
-        (0..n).all(|i| dist(pieces[i].end_point(), pieces[(i + 1) % n].start_point()) < 1e-9)
+        super::super::clip::tests::loop_area(pieces).abs()
     }
 
     #[test]

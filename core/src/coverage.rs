@@ -150,7 +150,7 @@ impl<'a, S: Scalar> Coverage<'a, S> {
         let disc;
         let solid = match geo {
             Geo::Ring { .. } => return,
-            Geo::Poly { convex: false, .. } => {
+            Geo::Poly { convex: false, .. } | Geo::Motif { .. } => {
                 disc = Geo::Circle { c: centre, r: inscribed };
                 &disc
             }
@@ -241,7 +241,7 @@ impl<'a, S: Scalar> Coverage<'a, S> {
                         cx += 1;
                     }
                 }
-                Geo::Ring { .. } => return,
+                Geo::Ring { .. } | Geo::Motif { .. } => return,
             }
         }
     }

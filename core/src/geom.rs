@@ -9,6 +9,11 @@
 //! `separated(a, b, g) == separated(b, a, g)`.
 
 use crate::scalar::Scalar;
+use crate::shape::{Frame, Motif};
+
+/// Whether motifs are built in (the `motif` feature): without it no engine accepts one, and
+/// their tests are never linked (a motif then counts as meeting everything).
+pub(crate) const MOTIFS: bool = cfg!(feature = "motif");
 
 /// A point (or vector) in the plane, in the region's frame (x right, y up).
 ///
@@ -110,7 +115,7 @@ pub type Verts<S> = heapless::Vec<Point<S>, MAX_VERTS>;
 /// assert_eq!(diamond.shift(1.0, 0.0).bounds().0, x0 + 1.0);
 /// ```
 #[derive(Clone, Debug, PartialEq)]
-pub enum Geo<S> {
+pub enum Geo<'m, S> {
     /// A disc.
     Circle {
         /// Centre.
@@ -134,9 +139,18 @@ pub enum Geo<S> {
         /// Whether the polygon is convex (enables the faster separating-axis test).
         convex: bool,
     },
+    /// A motif (a polygon with holes of up to [`crate::MAX_MOTIF_VERTICES`] vertices) placed
+    /// by a frame: its vertices are computed from the unit outline when asked for
+    /// ([`Motif::rings_at`]).
+    Motif {
+        /// The unit outline.
+        m: &'m Motif<'m>,
+        /// Where it is placed.
+        f: Frame<S>,
+    },
 }
 
-impl<S: Scalar> Geo<S> {
+impl<S: Scalar> Geo<'_, S> {
     /// The shape moved by (dx, dy).
     pub fn shift(&self, dx: S, dy: S) -> Self {
         match *self {
@@ -153,10 +167,26 @@ impl<S: Scalar> Geo<S> {
                 }
                 Geo::Poly { v, convex }
             }
+            Geo::Motif { m, f } => Geo::Motif {
+                m,
+                f: Frame { t: f.t.shift(dx, dy), ..f },
+            },
         }
     }
 
-    /// The vertices of a polygon (empty for circles and rings).
+    /// The shape as a value that borrows nothing, for a built-in kind (a motif borrows its
+    /// outline: `None`).
+    pub fn owned(&self) -> Option<Geo<'static, S>> {
+        match *self {
+            Geo::Circle { c, r } => Some(Geo::Circle { c, r }),
+            Geo::Ring { c, r, inner } => Some(Geo::Ring { c, r, inner }),
+            Geo::Poly { ref v, convex } => Some(Geo::Poly { v: v.clone(), convex }),
+            Geo::Motif { .. } => None,
+        }
+    }
+
+    /// The vertices of a polygon (empty for circles, rings and motifs: see
+    /// [`Motif::rings_at`]).
     pub fn vertices(&self) -> &[Point<S>] {
         match self {
             Geo::Poly { v, .. } => v,
@@ -177,6 +207,15 @@ impl<S: Scalar> Geo<S> {
                 }
                 b
             }
+            Geo::Motif { m, ref f } => {
+                let mut b = (f.t.x, f.t.y, f.t.x, f.t.y);
+                for ring in m.rings_at(f).filter(|_| MOTIFS) {
+                    for p in ring {
+                        b = (b.0.min(p.x), b.1.min(p.y), b.2.max(p.x), b.3.max(p.y));
+                    }
+                }
+                b
+            }
         }
     }
 
@@ -190,12 +229,19 @@ impl<S: Scalar> Geo<S> {
                 d * d
             }
             Geo::Poly { .. } => self.vertices().iter().fold(S::ZERO, |m, v| m.max(v.dist2(p))),
+            Geo::Motif { m, ref f } if MOTIFS => m.rings_at(f).flatten().fold(S::ZERO, |m, v| m.max(v.dist2(p))),
+            Geo::Motif { .. } => S::ZERO,
         }
     }
 
-    /// Twice the signed area of a polygon (0 for circles and rings).
+    /// Twice the signed area of a polygon, twice the area of a motif (holes subtracted), 0
+    /// for circles and rings.
     pub fn poly_area2(&self) -> S {
-        edges(self.vertices()).fold(S::ZERO, |s, (a, b)| s + a.cross(b))
+        match self {
+            Geo::Motif { m, f } if MOTIFS => m.area2_at(f),
+            Geo::Motif { .. } => S::ZERO,
+            _ => edges(self.vertices()).fold(S::ZERO, |s, (a, b)| s + a.cross(b)),
+        }
     }
 }
 
@@ -416,7 +462,7 @@ pub(crate) fn boxes_meet<S: Scalar>(a: [S; 4], b: [S; 4], d: S) -> bool {
 
 /// Whether `g` lies in the hole of a ring (centre `c`, inner radius `inner`) with `gap` to
 /// the inner circle.
-fn in_hole<S: Scalar>(g: &Geo<S>, c: Point<S>, inner: S, gap: S) -> bool {
+fn in_hole<S: Scalar>(g: &Geo<'_, S>, c: Point<S>, inner: S, gap: S) -> bool {
     let room = inner - gap;
     if room <= S::ZERO {
         return false;
@@ -427,12 +473,15 @@ fn in_hole<S: Scalar>(g: &Geo<S>, c: Point<S>, inner: S, gap: S) -> bool {
             d > S::ZERO && gc.dist2(c) < d * d
         }
         Geo::Poly { .. } => g.vertices().iter().all(|v| v.dist2(c) < room * room),
+        Geo::Motif { m, ref f } => MOTIFS && m.within(f, c, room),
     }
 }
 
 /// Whether the distance between `a` and `b` is greater than `gap` (`gap >= 0`).
-pub fn separated<S: Scalar>(a: &Geo<S>, b: &Geo<S>, gap: S) -> bool {
+pub fn separated<S: Scalar>(a: &Geo<'_, S>, b: &Geo<'_, S>, gap: S) -> bool {
     match (a, b) {
+        (Geo::Motif { .. }, _) | (_, Geo::Motif { .. }) if !MOTIFS => false,
+        (Geo::Motif { m: ma, f: fa }, Geo::Motif { m: mb, f: fb }) => ma.clear_of_motif(fa, mb, fb, gap),
         (Geo::Circle { c: c1, r: r1 }, Geo::Circle { c: c2, r: r2 }) => {
             let reach = *r1 + *r2 + gap;
             c1.dist2(*c2) > reach * reach
@@ -444,6 +493,10 @@ pub fn separated<S: Scalar>(a: &Geo<S>, b: &Geo<S>, gap: S) -> bool {
         }
         (Geo::Ring { c, r, inner }, other) | (other, Geo::Ring { c, r, inner }) => {
             in_hole(other, *c, *inner, gap) || separated(&Geo::Circle { c: *c, r: *r }, other, gap)
+        }
+        (Geo::Circle { c, r }, Geo::Motif { m, f }) | (Geo::Motif { m, f }, Geo::Circle { c, r }) => m.clear_of_disc(f, *c, *r, gap),
+        (poly @ Geo::Poly { convex, .. }, Geo::Motif { m, f }) | (Geo::Motif { m, f }, poly @ Geo::Poly { convex, .. }) => {
+            m.clear_of_poly(f, poly.vertices(), *convex, gap)
         }
         (Geo::Circle { c, r }, poly @ Geo::Poly { convex, .. }) | (poly @ Geo::Poly { convex, .. }, Geo::Circle { c, r }) => {
             disc_poly(*c, *r, poly.vertices(), *convex, gap)

@@ -144,7 +144,7 @@ pub use region::{Group, LatticeKind, PolygonRegion, Region, RegionError, Wallpap
 pub use rng::{rng_from_seed, ZetaRng};
 pub use sampler::{cells_for, CellSampler, CellWords, NoCells};
 pub use scalar::Scalar;
-pub use shape::{MixOrder, Placed, ShapeKind, ShapeList, MAX_MIX};
+pub use shape::{Frame, MixOrder, Motif, MotifError, Placed, ShapeKind, ShapeList, MAX_MIX, MAX_MOTIF_VERTICES};
 pub use zeta::ZetaError;
 
 /// The 1D fill: segments on an interval whose lengths follow the power law, placed by the

@@ -50,7 +50,7 @@ const RUN: Run = Run {
 };
 
 /// One batched fill: the shapes placed, the outlines and the reason it stopped.
-fn fill<S: Scalar>(p: Params, region: Region<'_>, seed: u64, run: Run) -> (Vec<Placed<S>>, Vec<zetafill::Geo<S>>, StopReason) {
+fn fill<S: Scalar>(p: Params, region: Region<'_>, seed: u64, run: Run) -> (Vec<Placed<S>>, Vec<zetafill::Geo<'static, S>>, StopReason) {
     let mut buffers = Buffers::<S>::new(run.cap);
     let mut e = Engine::<S>::new(p, region, buffers.storage(&mut [])).expect("valid parameters");
     if run.density {
@@ -80,7 +80,9 @@ fn fill<S: Scalar>(p: Params, region: Region<'_>, seed: u64, run: Run) -> (Vec<P
             });
         },
     );
-    let geos = (0..e.placed().len()).map(|i| e.geo(i).expect("placed")).collect();
+    let geos = (0..e.placed().len())
+        .map(|i| e.geo(i).and_then(|g| g.owned()).expect("placed"))
+        .collect();
     (e.placed().to_vec(), geos, reason)
 }
 

@@ -39,6 +39,7 @@ fn to_g(g: &Geo<Fixed>, centre: [f64; 2]) -> G {
         Geo::Circle { c, r } => G::Circle(p(c), r.to_f64()),
         Geo::Ring { c, r, inner } => G::Ring(p(c), r.to_f64(), inner.to_f64()),
         Geo::Poly { v, .. } => G::Poly(centre, v.iter().map(p).collect()),
+        Geo::Motif { .. } => panic!("these fills have no motifs (core/tests/motifs.rs checks them)"),
     }
 }
 

@@ -440,7 +440,7 @@ fn fixed_point_fast_fills_are_valid_and_deterministic() {
             ..Stop::default()
         };
         assert_eq!(e.run_fast(&mut cells, &mut rng, &stop, |_| {}), StopReason::Count);
-        (0..cap).filter_map(|i| e.geo(i)).collect::<Vec<_>>()
+        (0..cap).filter_map(|i| e.geo(i).and_then(|g| g.owned())).collect::<Vec<_>>()
     };
     let geos = run();
     assert_eq!(geos.len(), 400);

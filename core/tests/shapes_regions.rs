@@ -63,6 +63,14 @@ fn outline(g: &Geo<f64>, per_edge: usize) -> Vec<Point<f64>> {
             }
             out
         }
+        Geo::Motif { m, ref f } => m.rings_at(f).flat_map(|r| outline(&poly_of(r.collect()), per_edge)).collect(),
+    }
+}
+
+fn poly_of(v: Vec<Point<f64>>) -> Geo<'static, f64> {
+    Geo::Poly {
+        v: v.iter().copied().collect(),
+        convex: false,
     }
 }
 
@@ -85,6 +93,15 @@ fn in_material(p: Point<f64>, g: &Geo<f64>) -> bool {
         Geo::Circle { c, r } => d(c) <= r,
         Geo::Ring { c, r, inner } => d(c) <= r && d(c) >= inner,
         Geo::Poly { ref v, .. } => in_polygon(p, v),
+        Geo::Motif { m, ref f } => {
+            m.rings_at(f)
+                .filter(|_| true)
+                .map(|r| in_polygon(p, &r.collect::<Vec<_>>()))
+                .filter(|&h| h)
+                .count()
+                % 2
+                == 1
+        }
     }
 }
 
@@ -104,7 +121,7 @@ fn sampled_distance(a: &Geo<f64>, b: &Geo<f64>) -> f64 {
     best.sqrt()
 }
 
-fn at(kind: ShapeKind, x: f64, y: f64, area: f64, angle: f64) -> Geo<f64> {
+fn at(kind: ShapeKind, x: f64, y: f64, area: f64, angle: f64) -> Geo<'static, f64> {
     let s: f64 = kind.scale_for(area, angle);
     kind.geo(Point::new(x, y), s, angle)
 }
@@ -349,7 +366,14 @@ fn check(geos: &[Geo<f64>], region: &Region<'_>, gap: f64, pts: &[Point<f64>], e
 
 /// A fill with the reference sampler, or (`fast`) with the cell sampler over a pool of
 /// `cells` cells.
-fn fill_with(kind: ShapeKind, region: Region<'_>, gap: f64, count: u64, seed: u64, fast: Option<usize>) -> (Vec<Geo<f64>>, StopReason) {
+fn fill_with(
+    kind: ShapeKind,
+    region: Region<'_>,
+    gap: f64,
+    count: u64,
+    seed: u64,
+    fast: Option<usize>,
+) -> (Vec<Geo<'static, f64>>, StopReason) {
     let cap = count as usize;
     let mut shapes = vec![Placed::<f64>::default(); cap];
     let mut index = vec![0u32; index_words(cap)];
@@ -381,10 +405,13 @@ fn fill_with(kind: ShapeKind, region: Region<'_>, gap: f64, count: u64, seed: u6
             e.run_fast(&mut cells, &mut rng, &stop, |_| {})
         }
     };
-    ((0..e.placed().len()).filter_map(|i| e.geo(i)).collect(), reason)
+    (
+        (0..e.placed().len()).filter_map(|i| e.geo(i).and_then(|g| g.owned())).collect(),
+        reason,
+    )
 }
 
-fn fill(kind: ShapeKind, region: Region<'_>, gap: f64, count: u64, seed: u64) -> (Vec<Geo<f64>>, StopReason) {
+fn fill(kind: ShapeKind, region: Region<'_>, gap: f64, count: u64, seed: u64) -> (Vec<Geo<'static, f64>>, StopReason) {
     fill_with(kind, region, gap, count, seed, None)
 }
 

@@ -79,7 +79,7 @@ fn asymmetric(g: Group, a: f64, b: f64, middle: &[Geo<f64>], all: &[Geo<f64>]) -
                     all.iter()
                         .any(|t| matches!(t, Geo::Circle { c: c2, r: r2 } if close(q, *c2) && (r - r2).abs() < 1e-9))
                 }
-                Geo::Ring { .. } => panic!("no rings here"),
+                Geo::Ring { .. } | Geo::Motif { .. } => panic!("no rings or motifs here"),
                 Geo::Poly { v, .. } => {
                     let img: Vec<Point<f64>> = v.iter().map(|p| op.apply(*p)).collect();
                     all.iter().any(|t| {
@@ -97,11 +97,11 @@ fn asymmetric(g: Group, a: f64, b: f64, middle: &[Geo<f64>], all: &[Geo<f64>]) -
 }
 
 /// Every entry's outline over a block of `n x n` primitive cells around the domain.
-fn tiled(e: &Engine<'_, f64>, w: &Wallpaper, n: i64) -> Vec<Geo<f64>> {
+fn tiled(e: &Engine<'_, f64>, w: &Wallpaper, n: i64) -> Vec<Geo<'static, f64>> {
     let (ax, bx, by) = w.lattice();
     let mut out = Vec::new();
     for i in 0..e.placed().len() {
-        let g = e.geo(i).expect("an entry");
+        let g = e.geo(i).and_then(|g| g.owned()).expect("an entry");
         for l in -n..=n {
             for k in -n - 1..=n + 1 {
                 out.push(g.shift(k as f64 * ax + l as f64 * bx, l as f64 * by));
@@ -114,6 +114,7 @@ fn tiled(e: &Engine<'_, f64>, w: &Wallpaper, n: i64) -> Vec<Geo<f64>> {
 fn centre(g: &Geo<f64>) -> Point<f64> {
     match g {
         Geo::Circle { c, .. } | Geo::Ring { c, .. } => *c,
+        Geo::Motif { f, .. } => f.t,
         Geo::Poly { v, .. } => {
             let n = v.len() as f64;
             Point::new(v.iter().map(|p| p.x).sum::<f64>() / n, v.iter().map(|p| p.y).sum::<f64>() / n)
@@ -129,7 +130,7 @@ fn discs_clear(a: &Geo<f64>, b: &Geo<f64>) -> bool {
     }
 }
 
-fn fill(group: Group, sides: (f64, f64, f64), count: u64, fast: bool, seed: u64) -> (Vec<Placed<f64>>, Wallpaper, Vec<Geo<f64>>) {
+fn fill(group: Group, sides: (f64, f64, f64), count: u64, fast: bool, seed: u64) -> (Vec<Placed<f64>>, Wallpaper, Vec<Geo<'static, f64>>) {
     fill_with(Params::circles(1.3, 1.0), group, sides, count, fast, seed, 1)
 }
 
@@ -141,7 +142,7 @@ fn fill_with(
     fast: bool,
     seed: u64,
     block: i64,
-) -> (Vec<Placed<f64>>, Wallpaper, Vec<Geo<f64>>) {
+) -> (Vec<Placed<f64>>, Wallpaper, Vec<Geo<'static, f64>>) {
     let w = Wallpaper::new(group, sides.0, sides.1, sides.2).expect("a lattice");
     let cap = count as usize * w.order();
     let mut buffers = Buffers::<f64>::new(cap);
@@ -194,7 +195,7 @@ fn no_two_images_meet_in_any_group() {
 }
 
 /// The shapes of `geos` centred in the domain `[0, ax) x [0, by)`.
-fn middle(w: &Wallpaper, geos: &[Geo<f64>]) -> Vec<Geo<f64>> {
+fn middle(w: &Wallpaper, geos: &[Geo<'static, f64>]) -> Vec<Geo<'static, f64>> {
     let (ax, _, by) = w.lattice();
     geos.iter()
         .filter(|g| {

@@ -226,17 +226,33 @@ impl View {
                     push(cx + half, &mut n);
                 }
             }
-            Geo::Poly { .. } => {
+            Geo::Poly { .. } | Geo::Motif { .. } => {
+                let mut edge = |a: zetafill::Point<S>, b: zetafill::Point<S>, n: &mut usize| {
+                    let (ax, ay) = self.px_of(a.x.to_f64() + dx, a.y.to_f64() + dy);
+                    let (bx, by) = self.px_of(b.x.to_f64() + dx, b.y.to_f64() + dy);
+                    // Half-open in y, so a vertex on the line counts once.
+                    if (ay <= yc) != (by <= yc) {
+                        push(ax + (yc - ay) * (bx - ax) / (by - ay), n);
+                    }
+                };
+                if let Geo::Motif { m, ref f } = *geo {
+                    for ring in m.rings_at(f) {
+                        let mut ring = ring.peekable();
+                        let first = ring.peek().copied();
+                        let mut prev = None;
+                        for p in ring.chain(first) {
+                            if let Some(a) = prev {
+                                edge(a, p, &mut n);
+                            }
+                            prev = Some(p);
+                        }
+                    }
+                }
                 let vs = geo.vertices();
                 let m = vs.len();
                 for i in 0..m {
-                    if let (Some(a), Some(b)) = (vs.get(i), vs.get((i + 1) % m)) {
-                        let (ax, ay) = self.px_of(a.x.to_f64() + dx, a.y.to_f64() + dy);
-                        let (bx, by) = self.px_of(b.x.to_f64() + dx, b.y.to_f64() + dy);
-                        // Half-open in y, so a vertex on the line counts once.
-                        if (ay <= yc) != (by <= yc) {
-                            push(ax + (yc - ay) * (bx - ax) / (by - ay), &mut n);
-                        }
+                    if let (Some(&a), Some(&b)) = (vs.get(i), vs.get((i + 1) % m)) {
+                        edge(a, b, &mut n);
                     }
                 }
                 // Insertion sort: at most MAX_VERTS crossings.
@@ -286,6 +302,20 @@ impl View {
                 for i in 0..vs.len() {
                     if let (Some(a), Some(b)) = (px(i), px(i + 1)) {
                         Line::new(a, b).into_styled(style).draw(target)?;
+                    }
+                }
+                Ok(())
+            }
+            Geo::Motif { m, ref f } => {
+                for ring in m.rings_at(f) {
+                    let mut ring = ring.map(|p| self.pixel(p.x.to_f64() + dx, p.y.to_f64() + dy)).peekable();
+                    let first = ring.peek().copied();
+                    let mut prev = None;
+                    for p in ring.chain(first) {
+                        if let Some(a) = prev {
+                            Line::new(a, p).into_styled(style).draw(target)?;
+                        }
+                        prev = Some(p);
                     }
                 }
                 Ok(())

@@ -26,7 +26,7 @@ type Tft = Framebuffer<Rgb565, RawU16, LittleEndian, TFT_W, TFT_H, { buffer_size
 const PALETTE: [Rgb565; 5] = [Rgb565::RED, Rgb565::GREEN, Rgb565::BLUE, Rgb565::YELLOW, Rgb565::CYAN];
 
 /// A scene's shapes, placed on the host in f64, and its region.
-fn placed(scene: &Scene) -> (Region<'static>, Vec<Geo<f64>>) {
+fn placed(scene: &Scene) -> (Region<'static>, Vec<Geo<'static, f64>>) {
     let region = scene.region.region().unwrap_or_else(|e| panic!("{}: {e}", scene.name));
     let params = scene.params().unwrap_or_else(|e| panic!("{}: {e}", scene.name));
     let mut shapes = vec![Placed::<f64>::default(); CAPACITY];
@@ -41,7 +41,7 @@ fn placed(scene: &Scene) -> (Region<'static>, Vec<Geo<f64>>) {
     while (e.placed().len() as u64) < scene.count {
         e.step(&mut rng).unwrap_or_else(|err| panic!("{}: {err}", scene.name));
     }
-    let geos = (0..e.placed().len()).filter_map(|i| e.geo(i)).collect();
+    let geos = (0..e.placed().len()).filter_map(|i| e.geo(i).and_then(|g| g.owned())).collect();
     (region, geos)
 }
 
@@ -72,6 +72,7 @@ fn judge(g: &Geo<f64>, p: [f64; 2]) -> (bool, f64) {
             }
             (inside, near)
         }
+        Geo::Motif { .. } => unreachable!("the scenes have no motifs"),
     }
 }
 

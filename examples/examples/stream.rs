@@ -60,5 +60,10 @@ fn inside(g: &Geo<f64>, x: f64, y: f64) -> bool {
             d2 <= r * r && d2 >= inner * inner
         }
         Geo::Poly { .. } => zetafill::internals::geom::point_in_poly(zetafill::Point::new(x, y), g.vertices()),
+        // Even-odd over the rings.
+        Geo::Motif { m, f } => {
+            let ring_holds = |r: Vec<zetafill::Point<f64>>| zetafill::internals::geom::point_in_poly(zetafill::Point::new(x, y), &r);
+            m.rings_at(f).map(|r| ring_holds(r.collect())).filter(|&h| h).count() % 2 == 1
+        }
     }
 }

@@ -111,7 +111,7 @@ fn frame(run: &FillRun) -> Result<Vec<f64>, String> {
 }
 
 /// Appends a shape's outline for the page's canvas: `0 x y r` (a disc), `1 x y r inner` (a
-/// ring), `2 n x1 y1 ... xn yn` (a polygon).
+/// ring), `2 n x1 y1 ... xn yn` (a polygon, or each ring of a motif).
 fn encode(out: &mut Vec<f64>, geo: &Geo<f64>) {
     match geo {
         Geo::Circle { c, r } => out.extend_from_slice(&[0.0, c.x, c.y, *r]),
@@ -120,6 +120,20 @@ fn encode(out: &mut Vec<f64>, geo: &Geo<f64>) {
             out.extend_from_slice(&[2.0, v.len() as f64]);
             for p in v {
                 out.extend_from_slice(&[p.x, p.y]);
+            }
+        }
+        // A motif: each ring as a polygon.
+        Geo::Motif { m, f } => {
+            for ring in m.rings_at(f) {
+                let at = out.len();
+                out.extend_from_slice(&[2.0, 0.0]);
+                for p in ring {
+                    out.extend_from_slice(&[p.x, p.y]);
+                }
+                let n = ((out.len() - at - 2) / 2) as f64;
+                if let Some(slot) = out.get_mut(at + 1) {
+                    *slot = n;
+                }
             }
         }
     }

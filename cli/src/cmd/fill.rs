@@ -22,17 +22,31 @@ use zetafill::{index_words, AreaSequence, CellSampler, Engine, Geo, Params, Plac
 /// Words of the coverage bitmap (2 MiB): a 4096 x 4096 grid.
 const COVERAGE_WORDS: usize = 1 << 18;
 
-/// The concrete geometry of a placed shape as a [`ShapeDoc`].
-fn shape_doc(kind: &ShapeKind, geo: &Geo<f64>, p: &Placed<f64>, index: u64, area: f64, trials: u64) -> ShapeDoc {
-    let name = kind_name(kind);
-    let (radius, inner_radius, angle, vertices) = match geo {
-        Geo::Circle { r, .. } => (Some(*r), None, None, None),
-        Geo::Ring { r, inner, .. } => (Some(*r), Some(*inner), None, None),
-        Geo::Poly { .. } => (None, None, Some(p.angle), Some(geo.vertices().iter().map(|v| [v.x, v.y]).collect())),
+/// The concrete geometry of a placed shape as a [`ShapeDoc`], each point computed in the
+/// scalar that tested it and then written as `f64`.
+fn shape_doc<S: zetafill::Scalar>(kind: &ShapeKind, geo: &Geo<'_, S>, p: &Placed<f64>, index: u64, area: f64, trials: u64) -> ShapeDoc {
+    let pt = |p: zetafill::Point<S>| [p.x.to_f64(), p.y.to_f64()];
+    let (radius, inner_radius, angle, vertices, outlines) = match geo {
+        Geo::Circle { r, .. } => (Some(r.to_f64()), None, None, None, None),
+        Geo::Ring { r, inner, .. } => (Some(r.to_f64()), Some(inner.to_f64()), None, None, None),
+        Geo::Poly { .. } => (
+            None,
+            None,
+            Some(p.angle),
+            Some(geo.vertices().iter().map(|v| pt(*v)).collect()),
+            None,
+        ),
+        Geo::Motif { m, f } => (
+            None,
+            None,
+            Some(p.angle),
+            None,
+            Some(m.rings_at(f).map(|r| r.map(pt).collect()).collect()),
+        ),
     };
     ShapeDoc {
         index,
-        kind: name,
+        kind: kind_name(kind),
         center: [p.x, p.y],
         radius,
         inner_radius,
@@ -40,6 +54,7 @@ fn shape_doc(kind: &ShapeKind, geo: &Geo<f64>, p: &Placed<f64>, index: u64, area
         area,
         trials,
         vertices,
+        outlines,
     }
 }
 
@@ -51,26 +66,6 @@ struct EngineRun {
     zeta: f64,
     area: f64,
     digest: (u64, u64),
-}
-
-fn geo_f64<S: zetafill::Scalar>(g: &Geo<S>) -> Geo<f64> {
-    let pt = |p: zetafill::Point<S>| zetafill::Point::new(p.x.to_f64(), p.y.to_f64());
-    match *g {
-        Geo::Circle { c, r } => Geo::Circle { c: pt(c), r: r.to_f64() },
-        Geo::Ring { c, r, inner } => Geo::Ring {
-            c: pt(c),
-            r: r.to_f64(),
-            inner: inner.to_f64(),
-        },
-        Geo::Poly { ref v, convex } => {
-            let mut out = zetafill::Verts::new();
-            for p in v {
-                // Cannot fail: both lists have the same capacity.
-                let _ = out.push(pt(*p));
-            }
-            Geo::Poly { v: out, convex }
-        }
-    }
 }
 
 /// Runs the engine on scalar `S` with the CLI's storage, progress bar and known-limit checks
@@ -169,7 +164,7 @@ fn run_engine<S: zetafill::Scalar>(
         .enumerate()
         .step_by(images)
         .filter_map(|(e, p)| {
-            let g = geo_f64(&engine.geo(e)?);
+            let g = engine.geo(e)?;
             let pf = Placed {
                 x: p.x.to_f64(),
                 y: p.y.to_f64(),

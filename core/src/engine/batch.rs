@@ -221,7 +221,7 @@ fn mix64(z: u64) -> u64 {
     z ^ (z >> 31)
 }
 
-impl<S: Scalar> Engine<'_, S> {
+impl<'a, S: Scalar> Engine<'a, S> {
     /// The least clearance of the shapes `first .. end` that use the cells (None when none
     /// does). Shapes that cannot be placed at all count for nothing: the fill ends at them.
     fn batch_clearance(&self, first: u64, end: u64) -> Option<S> {
@@ -308,7 +308,7 @@ impl<S: Scalar> Engine<'_, S> {
         d: &Drawn<S>,
         angle: S,
         lane: &mut Lane<S>,
-        g: &mut Geo<S>,
+        g: &mut Geo<'a, S>,
     ) -> Option<Found<S>> {
         if cells.overhangs(d.point) {
             return None;
@@ -356,7 +356,7 @@ impl<S: Scalar> Engine<'_, S> {
         }
         let kind = next.kind;
         let c = Point::new(shape.x, shape.y);
-        let g = kind.geo(c, shape.scale, shape.angle);
+        let g = kind.geo_in(self.motifs, c, shape.scale, shape.angle);
         let r = kind.bounding_radius(shape.scale);
         let solid = kind.solid_radius(shape.scale);
         let mut other = Geo::Circle { c, r };
@@ -412,7 +412,7 @@ impl<S: Scalar> Engine<'_, S> {
                         self.trials = self.trials.saturating_add(lane.trials);
                         let _ = lane.events.push(found.event);
                         let c = Point::new(found.shape.x, found.shape.y);
-                        let g = next.kind.geo(c, found.shape.scale, found.shape.angle);
+                        let g = next.kind.geo_in(self.motifs, c, found.shape.scale, found.shape.angle);
                         return Ok(self.place(&next, found.shape, &g, lane.trials, false));
                     }
                     Err(j) => {

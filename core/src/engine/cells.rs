@@ -52,7 +52,13 @@ impl<S: Scalar> Field<S> for FieldOf<'_, '_, S> {
         match e.shapes.get(j as usize) {
             // On hosts a polygon's outline is built once for the four points, as
             // `shape_dist` builds it for one (a board keeps the flash this would take).
-            Some(s) if cfg!(not(target_os = "none")) && !matches!(e.entry_kind(j), ShapeKind::Circle | ShapeKind::Ring { .. }) => {
+            Some(s)
+                if cfg!(not(target_os = "none"))
+                    && !matches!(
+                        e.entry_kind(j),
+                        ShapeKind::Circle | ShapeKind::Ring { .. } | ShapeKind::Motif { .. }
+                    ) =>
+            {
                 let mut outline = Geo::Circle {
                     c: Point::new(s.x, s.y),
                     r: s.scale,
@@ -302,6 +308,9 @@ impl<S: Scalar> Engine<'_, S> {
                     }
                 }
             }
+            // The distance to the inscribed disc, which lies in the material: never below the
+            // distance to the material (inside the disc, never below its signed depth).
+            ShapeKind::Motif { inner, .. } => far - s.scale * S::from_f64(inner),
             _ => {
                 let mut outline = Geo::Circle { c: centre, r: s.scale };
                 self.entry_geo_into(j, s, S::ZERO, S::ZERO, &mut outline);

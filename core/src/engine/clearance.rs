@@ -16,7 +16,7 @@ pub(super) fn periods<S: Scalar>(reach: S, p: S) -> i64 {
     (reach / p).floor_i64().saturating_add(1).clamp(1, 64)
 }
 
-impl<S: Scalar> Engine<'_, S> {
+impl<'a, S: Scalar> Engine<'a, S> {
     /// A placed shape that `g` (centred at `(x, y)`, bounding radius `r`) comes within its gap
     /// of (or of an image of, in a periodic region); `None` when it keeps clear of all.
     ///
@@ -112,7 +112,7 @@ impl<S: Scalar> Engine<'_, S> {
     /// Whether `g` (centred at `c`, bounding radius `r`) comes within the gap of placed shape
     /// `j` (of its image nearest by centre, in a periodic region): the exact test of
     /// [`Engine::blocker`] for one shape.
-    pub(super) fn hits(&self, g: &Geo<S>, c: Point<S>, (r, solid): (S, Option<S>), j: u32, other: &mut Geo<S>) -> bool {
+    pub(super) fn hits(&self, g: &Geo<S>, c: Point<S>, (r, solid): (S, Option<S>), j: u32, other: &mut Geo<'a, S>) -> bool {
         let Some(p) = self.shapes.get(j as usize) else { return false };
         let kind = self.entry_kind(j);
         let ((ox, oy), (dx, dy)) = self.nearest_image(p, c);

@@ -60,13 +60,13 @@ impl<S: Scalar> Engine<'_, S> {
                 };
                 let (w, h) = (S::from_f64(width), S::from_f64(height));
                 !angles.iter().any(|&a| {
-                    let (x0, y0, x1, y1) = kind.geo(Point::new(S::ZERO, S::ZERO), scale, a).bounds();
+                    let (x0, y0, x1, y1) = kind.geo_in(self.motifs, Point::new(S::ZERO, S::ZERO), scale, a).bounds();
                     x1 - x0 + self.gap + self.gap <= w && y1 - y0 + self.gap + self.gap <= h
                 })
             }
             Region::Rect { periodic: true, .. } => {
                 matches!(kind, ShapeKind::Circle | ShapeKind::Ring { .. })
-                    && self.self_overlaps(&kind.geo(Point::new(S::ZERO, S::ZERO), scale, S::ZERO), scale)
+                    && self.self_overlaps(&kind.geo_in(self.motifs, Point::new(S::ZERO, S::ZERO), scale, S::ZERO), scale)
             }
             // A regular shape's smallest enclosing circle is its circumcircle (a blob's is not
             // known, so only its inscribed circle is used).
@@ -137,7 +137,7 @@ impl<S: Scalar> Engine<'_, S> {
             let inr = kind.inradius(base_scale);
             (inr, inr)
         } else {
-            let (x0, y0, x1, y1) = kind.geo(Point::new(S::ZERO, S::ZERO), base_scale, S::ZERO).bounds();
+            let (x0, y0, x1, y1) = kind.geo_in(self.motifs, Point::new(S::ZERO, S::ZERO), base_scale, S::ZERO).bounds();
             ((-x0).max(x1), (-y0).max(y1))
         };
         let range = self

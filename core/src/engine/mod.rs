@@ -44,7 +44,7 @@ pub use crate::params::{ParamError, Params, StepError, Stop, StopReason};
 use crate::region::Region;
 use crate::rng;
 use crate::scalar::Scalar;
-use crate::shape::{Placed, ShapeKind};
+use crate::shape::{Motif, Placed, ShapeKind};
 use crate::spatial::SpatialHash;
 use crate::AreaSequence;
 pub use batch::{Batches, Lane, NoLanes, Plan, DEFAULT_BATCH, LANE_EVENTS};
@@ -186,6 +186,8 @@ pub struct Engine<'a, S: Scalar> {
     images: core::num::NonZeroU32,
     /// The x of the torus's second lattice vector (0 for a rectangle's).
     shear: S,
+    /// The motifs the shape kinds name ([`Engine::with_motifs`]).
+    motifs: &'a [Motif<'a>],
 }
 
 /// Index words needed for `capacity` shapes: one link each plus at least `2 * capacity`
@@ -260,9 +262,52 @@ impl<'a, S: Scalar> Engine<'a, S> {
     /// Validates the parameters and builds an engine over the caller's storage. A region
     /// larger than the scalar computes exactly ([`Scalar::MAX_EXTENT`]) is refused.
     pub fn new(params: Params, region: Region<'a>, storage: Storage<'a, S>) -> Result<Self, ParamError> {
+        Self::with_motifs(params, region, storage, &[])
+    }
+
+    /// [`Engine::new`] with the table of motifs that the [`ShapeKind::Motif`] kinds of the
+    /// parameters name: kind `id` is entry `id`, and must be that entry's
+    /// [`Motif::kind`] (else [`ParamError::Shape`]).
+    ///
+    /// # Examples
+    ///
+    /// Thirty L-shaped motifs, each one the outline that was tested.
+    ///
+    /// ```
+    /// use zetafill::{index_words, rng_from_seed, Engine, Geo, Motif, Params, Placed, Point, Region, Stop, StopReason, Storage};
+    ///
+    /// let p = Point::new;
+    /// let mut ell = [p(0.0, 0.0), p(3.0, 0.0), p(3.0, 1.0), p(1.0, 1.0), p(1.0, 3.0), p(0.0, 3.0)];
+    /// let motifs = [Motif::new(&mut ell, &[6])?];
+    /// let params = Params { shape: motifs[0].kind(0).into(), rotate: true, ..Params::circles(1.3, 2.0) };
+    /// let mut shapes = [Placed::<f64>::default(); 30];
+    /// let mut index = [0u32; index_words(30)];
+    /// let storage = Storage { shapes: &mut shapes, index: &mut index, coverage: &mut [] };
+    /// let region = Region::Rect { width: 100.0, height: 100.0, periodic: false };
+    /// let mut engine = Engine::with_motifs(params, region, storage, &motifs)?;
+    /// assert_eq!(engine.run(&mut rng_from_seed(3), &Stop { count: Some(30), ..Stop::default() }, |_| {}), StopReason::Count);
+    /// for i in 0..30 {
+    ///     let Some(g @ Geo::Motif { .. }) = engine.geo(i) else { panic!("a motif") };
+    ///     assert!((g.poly_area2() / 2.0 - engine.area_of(i as u64)).abs() < 1e-9 * engine.area_of(i as u64));
+    /// }
+    /// // A kind that names no motif of the table is refused.
+    /// let (mut shapes, mut index) = ([Placed::<f64>::default(); 30], [0u32; index_words(30)]);
+    /// let storage = Storage { shapes: &mut shapes, index: &mut index, coverage: &mut [] };
+    /// let params = Params { shape: motifs[0].kind(1).into(), ..Params::circles(1.3, 2.0) };
+    /// assert!(Engine::with_motifs(params, region, storage, &motifs).is_err());
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn with_motifs(params: Params, region: Region<'a>, storage: Storage<'a, S>, motifs: &'a [Motif<'a>]) -> Result<Self, ParamError> {
         let Storage { shapes, index, coverage } = storage;
         crate::params::check_power_law(params.c, params.n_offset)?;
         if !params.shape.is_valid() {
+            return Err(ParamError::Shape);
+        }
+        let named = |k: &ShapeKind| match *k {
+            ShapeKind::Motif { id, .. } => motifs.get(usize::from(id)).is_some_and(|m| m.kind(id) == *k),
+            _ => true,
+        };
+        if !params.shape.kinds().iter().all(named) {
             return Err(ParamError::Shape);
         }
         if !region.is_valid() {
@@ -312,6 +357,7 @@ impl<'a, S: Scalar> Engine<'a, S> {
             density: None,
             images: core::num::NonZeroU32::new(images as u32).unwrap_or(core::num::NonZeroU32::MIN),
             shear: S::from_f64(region.wallpaper().map_or(0.0, |w| w.lattice().1)),
+            motifs,
         })
     }
 
@@ -327,6 +373,11 @@ impl<'a, S: Scalar> Engine<'a, S> {
     fn kept<R: RngCore + ?Sized>(&self, c: Point<S>, class: u32, rng: &mut R) -> bool {
         let Some(Thinning(d)) = self.density else { return true };
         kept_at(d, c.x.to_f64(), c.y.to_f64(), class, rng::unit(rng))
+    }
+
+    /// The motifs the shape kinds name.
+    pub fn motifs(&self) -> &'a [Motif<'a>] {
+        self.motifs
     }
 
     /// The parameters.
@@ -376,7 +427,7 @@ impl<'a, S: Scalar> Engine<'a, S> {
 
     /// The concrete geometry of entry `i` of [`Engine::placed`]: exactly what was tested, and
     /// what to draw (on a wallpaper torus, the image the entry holds).
-    pub fn geo(&self, i: usize) -> Option<Geo<S>> {
+    pub fn geo(&self, i: usize) -> Option<Geo<'a, S>> {
         let p = self.placed().get(i)?;
         let mut g = Geo::Circle {
             c: Point::new(p.x, p.y),
@@ -465,7 +516,7 @@ impl<'a, S: Scalar> Engine<'a, S> {
         c: Point<S>,
         angle: S,
         known: Option<&[u32]>,
-        g: &mut Geo<S>,
+        g: &mut Geo<'a, S>,
     ) -> Result<Placed<S>, Option<u32>> {
         let kind = next.kind;
         // A circle against known circles needs no geometry: most of the cell sampler's
@@ -477,7 +528,7 @@ impl<'a, S: Scalar> Engine<'a, S> {
         }
         let (scale, r, solid) = if next.is_blob {
             let s: S = kind.scale_for(next.area, angle);
-            kind.geo_into(g, c, s, angle);
+            kind.geo_into_in(self.motifs, g, c, s, angle);
             (s, kind.bounding_radius(s), kind.solid_radius(s))
         } else {
             let (sin, cos) = if next.rotated {
@@ -485,7 +536,7 @@ impl<'a, S: Scalar> Engine<'a, S> {
             } else {
                 (S::ZERO, S::ONE)
             };
-            kind.geo_sc_into(g, c, next.base_scale, sin, cos);
+            kind.geo_sc_into_in(self.motifs, g, c, next.base_scale, sin, cos);
             (next.base_scale, next.base_r, next.base_solid)
         };
         // (Known circles were tested above for a circle.)

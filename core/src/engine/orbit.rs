@@ -19,7 +19,7 @@ use crate::geom::{separated, Geo, Point};
 use crate::scalar::Scalar;
 use crate::shape::{Placed, ShapeKind};
 
-impl<S: Scalar> Engine<'_, S> {
+impl<'a, S: Scalar> Engine<'a, S> {
     /// The placement that stored entry `j` belongs to.
     #[inline(always)]
     pub(super) fn owner(&self, j: u32) -> u64 {
@@ -51,11 +51,11 @@ impl<S: Scalar> Engine<'_, S> {
     /// The outline of stored entry `j` (`p` is its slot), moved by `(ox, oy)`, into `out`: the
     /// shape itself, or for an image, the group's operation applied to the shape's outline.
     #[inline(always)]
-    pub(super) fn entry_geo_into(&self, j: u32, p: &Placed<S>, ox: S, oy: S, out: &mut Geo<S>) {
+    pub(super) fn entry_geo_into(&self, j: u32, p: &Placed<S>, ox: S, oy: S, out: &mut Geo<'a, S>) {
         let kind = self.entry_kind(j);
         let k = if self.images.get() == 1 { 0 } else { j % self.images };
         if k == 0 {
-            kind.geo_into(out, Point::new(p.x + ox, p.y + oy), p.scale, p.angle);
+            kind.geo_into_in(self.motifs, out, Point::new(p.x + ox, p.y + oy), p.scale, p.angle);
         } else {
             self.image_geo_into(kind, j - k, k as usize, Point::new(p.x + ox, p.y + oy), out);
         }
@@ -63,12 +63,12 @@ impl<S: Scalar> Engine<'_, S> {
 
     /// Image `k` of the shape stored at entry `first` (a kind of `kind`), centred at `centre`.
     #[inline(never)]
-    fn image_geo_into(&self, kind: ShapeKind, first: u32, k: usize, centre: Point<S>, out: &mut Geo<S>) {
+    fn image_geo_into(&self, kind: ShapeKind, first: u32, k: usize, centre: Point<S>, out: &mut Geo<'a, S>) {
         let (Some(w), Some(rep)) = (self.region.wallpaper(), self.shapes.get(first as usize)) else {
             return;
         };
         let c = Point::new(rep.x, rep.y);
-        kind.geo_into(out, c, rep.scale, rep.angle);
+        kind.geo_into_in(self.motifs, out, c, rep.scale, rep.angle);
         w.image_in_place(k, out, c, centre);
     }
 
@@ -97,7 +97,7 @@ impl<S: Scalar> Engine<'_, S> {
 
     /// Image `k` of the candidate (`g`, centred at `c`) written into `out`, with its centre
     /// (the candidate itself for `k = 0`).
-    fn candidate_image(&self, k: usize, g: &Geo<S>, c: Point<S>, out: &mut Geo<S>) -> Point<S> {
+    fn candidate_image<'m>(&self, k: usize, g: &Geo<'m, S>, c: Point<S>, out: &mut Geo<'m, S>) -> Point<S> {
         match self.region.wallpaper() {
             Some(w) if k > 0 => {
                 let centre = w.image_centre(k, c);

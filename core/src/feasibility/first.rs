@@ -50,7 +50,8 @@ pub fn first_shape(seq: &AreaSequence, shapes: &ShapeList) -> FirstShape {
 /// Whether shapes 0 and 1, of areas `a0` and `a1`, can both lie in a `width` x `height`
 /// rectangle (inclusive boundary) at least `gap` from the boundary and from each other, for the
 /// kinds whose limit is known: unrotated squares and rectangles (side by side or one above the
-/// other), circles and rings (in opposite corners). True for every other kind (no known limit).
+/// other), circles and rings (in opposite corners), motifs (their inscribed discs, as circles).
+/// True for every other kind (no known limit).
 pub fn first_two_fit(kind: &ShapeKind, a0: f64, a1: f64, width: f64, height: f64, gap: f64) -> bool {
     let (w, h) = (width - 2.0 * gap, height - 2.0 * gap);
     match kind {
@@ -60,8 +61,11 @@ pub fn first_two_fit(kind: &ShapeKind, a0: f64, a1: f64, width: f64, height: f64
             let (w0, h0, w1, h1) = (2.0 * aspect * s0, 2.0 * s0, 2.0 * aspect * s1, 2.0 * s1);
             w0 <= w && h0 <= h && (w0 + w1 + gap < w || h0 + h1 + gap < h)
         }
-        ShapeKind::Circle | ShapeKind::Ring { .. } => {
-            let (r0, r1) = (kind.scale_for_area(a0), kind.scale_for_area(a1));
+        ShapeKind::Circle | ShapeKind::Ring { .. } | ShapeKind::Motif { .. } => {
+            // A motif holds its inscribed disc: where two such discs cannot both lie, the two
+            // motifs cannot either, whatever their angles.
+            let f = if let ShapeKind::Motif { inner, .. } = kind { *inner } else { 1.0 };
+            let (r0, r1) = (f * kind.scale_for_area(a0), f * kind.scale_for_area(a1));
             let (dx, dy) = ((w - r0 - r1).max(0.0), (h - r0 - r1).max(0.0));
             2.0 * r0 <= w.min(h) && dx * dx + dy * dy > (r0 + r1 + gap) * (r0 + r1 + gap)
         }
@@ -161,7 +165,8 @@ pub fn check_first_two(params: &Params, region: &Region<'_>) -> Result<(), First
         return Ok(());
     };
     let (kind, width, height) = (*kind, *width, *height);
-    if params.rotate && kind.rotates() {
+    // (A motif's bound comes from its inscribed disc, which turns with it.)
+    if params.rotate && kind.rotates() && !matches!(kind, ShapeKind::Motif { .. }) {
         return Ok(());
     }
     let n_offset = params.n_offset;

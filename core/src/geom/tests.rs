@@ -1,6 +1,6 @@
 use super::*;
 
-fn sq(cx: f64, cy: f64, h: f64) -> Geo<f64> {
+fn sq(cx: f64, cy: f64, h: f64) -> Geo<'static, f64> {
     let p = |x, y| Point::new(x, y);
     let v = Verts::from_slice(&[p(cx - h, cy - h), p(cx + h, cy - h), p(cx + h, cy + h), p(cx - h, cy + h)]).unwrap();
     Geo::Poly { v, convex: true }

@@ -278,17 +278,32 @@ impl Region<'_> {
         match *self {
             Region::Rect { periodic: true, .. } | Region::Wallpaper(_) => true,
             Region::Rect { width, height, .. } => {
-                let (x0, y0, x1, y1) = g.bounds();
-                x0 >= gap && y0 >= gap && x1 <= S::from_f64(width) - gap && y1 <= S::from_f64(height) - gap
+                let inside = |(x0, y0, x1, y1): (S, S, S, S)| {
+                    x0 >= gap && y0 >= gap && x1 <= S::from_f64(width) - gap && y1 <= S::from_f64(height) - gap
+                };
+                // A motif's bounding box first: it holds every vertex, so it never changes
+                // the answer, and most motifs lie well inside.
+                if let Geo::Motif { m, f } = g {
+                    if !crate::geom::MOTIFS {
+                        return false;
+                    }
+                    let [x0, y0, x1, y1] = m.world_box(f);
+                    if inside((x0, y0, x1, y1)) {
+                        return true;
+                    }
+                }
+                inside(g.bounds())
             }
             Region::Circle { radius } => {
                 let room = S::from_f64(radius) - gap;
-                room > S::ZERO && g.max_dist2(self.centre()) <= room * room
+                room > S::ZERO && (motif_within(g, self.centre(), room) || g.max_dist2(self.centre()) <= room * room)
             }
             Region::Annulus { outer, inner } => {
                 let room = S::from_f64(outer) - gap;
                 let c = self.centre();
-                room > S::ZERO && g.max_dist2(c) <= room * room && separated(g, &Geo::Circle { c, r: S::from_f64(inner) }, gap)
+                room > S::ZERO
+                    && (motif_within(g, c, room) || g.max_dist2(c) <= room * room)
+                    && separated(g, &Geo::Circle { c, r: S::from_f64(inner) }, gap)
             }
             Region::Polygon(p) => poly_contains(&p, g, gap),
         }
@@ -415,6 +430,15 @@ impl Region<'_> {
     }
 }
 
+/// Whether `g` is a motif whose bounding disc lies within `room` of `c` (then every vertex
+/// does: a shortcut that never changes the answer).
+fn motif_within<S: Scalar>(g: &Geo<'_, S>, c: Point<S>, room: S) -> bool {
+    match g {
+        Geo::Motif { m, f } => crate::geom::MOTIFS && m.reach_from(f, c) <= room,
+        _ => false,
+    }
+}
+
 // Out of line: its frame stays off the stack of the other regions' tests.
 #[inline(never)]
 fn poly_contains<S: Scalar>(p: &PolygonRegion<'_>, g: &Geo<S>, gap: S) -> bool {
@@ -427,6 +451,7 @@ fn poly_contains<S: Scalar>(p: &PolygonRegion<'_>, g: &Geo<S>, gap: S) -> bool {
             let vs = g.vertices();
             vs.iter().all(|&v| p.inside(v)) && p.clear_of_poly(vs, gap)
         }
+        Geo::Motif { m, ref f } => crate::geom::MOTIFS && p.holds_motif(m, f, gap),
     }
 }
 

@@ -8,6 +8,7 @@ use crate::geom::{
     boxes_meet, edges, in_box, point_in_poly, ray_crosses, seg_box, seg_dist2, seg_seg_dist2, segments_intersect, vbox, Point,
 };
 use crate::scalar::Scalar;
+use crate::shape::{pair_near, Frame, Motif};
 use core::cmp::Ordering;
 
 /// A validated polygonal region over caller-owned vertices: one or more simple rings that do
@@ -260,6 +261,48 @@ impl<'a> PolygonRegion<'a> {
         self.rings().flat_map(edges).map(|(a, b)| (conv(a), conv(b)))
     }
 
+    /// The box of every vertex (min x, min y, max x, max y).
+    pub(crate) fn bounds(&self) -> tree::Bbox {
+        self.bbox
+    }
+
+    /// Calls `edge` with the ends of every edge in the tree's nodes whose box `enter`
+    /// accepts (of every edge, without a tree) and whether it starts its ring, until `edge`
+    /// returns true (then returns true). Whatever the scalar: the caller's pruning proves
+    /// itself ([`crate::Motif`]'s tests bound their own rounding).
+    pub(crate) fn walk_edges(
+        &self,
+        enter: impl FnMut(tree::Bbox) -> bool,
+        mut edge: impl FnMut(Point<f64>, Point<f64>, bool) -> bool,
+    ) -> bool {
+        if let Some(t) = &self.tree {
+            let rings = self.ring_index();
+            return t.walk(enter, |k| {
+                let (a, b) = rings.edge(k);
+                edge(a, b, t.is_start(k))
+            });
+        }
+        self.rings()
+            .any(|ring| edges(ring).enumerate().any(|(k, (a, b))| edge(a, b, k == 0)))
+    }
+
+    /// Calls `pair` with the ends of a pair of edges, one of this outline (with whether it
+    /// starts its ring) and one of `other`, for every pair of the two trees' nodes that `enter`
+    /// accepts (for every pair without both trees), until `pair` returns true.
+    pub(crate) fn walk_edge_pairs(
+        &self,
+        other: &PolygonRegion<'_>,
+        enter: impl FnMut(tree::Bbox, tree::Bbox) -> bool,
+        mut pair: impl FnMut((Point<f64>, Point<f64>), (Point<f64>, Point<f64>)) -> bool,
+    ) -> bool {
+        if let (Some(ta), Some(tb)) = (&self.tree, &other.tree) {
+            let (ra, rb) = (self.ring_index(), other.ring_index());
+            return ta.walk_pairs(tb, enter, |i, j| pair(ra.edge(i), rb.edge(j)));
+        }
+        self.rings()
+            .any(|r| edges(r).any(|ea| other.rings().any(|q| edges(q).any(|eb| pair(ea, eb)))))
+    }
+
     /// [`Region::signed_clearance`] of the polygon: its edges' distance rounded up inside,
     /// down outside. On `f64` (the only scalar the tree serves) the rounded-up distance is
     /// the plain one, so the tree's nearest edge gives it.
@@ -288,7 +331,7 @@ impl<'a> PolygonRegion<'a> {
     }
 
     /// Even-odd: the parity of the edges [`ray_crosses`] counts from `p`.
-    pub(super) fn inside<S: Scalar>(&self, p: Point<S>) -> bool {
+    pub(crate) fn inside<S: Scalar>(&self, p: Point<S>) -> bool {
         if let Some(t) = self.tree_for::<S>() {
             let (rings, pf) = (self.ring_index(), Point::new(p.x.to_f64(), p.y.to_f64()));
             let mut odd = false;
@@ -334,7 +377,7 @@ impl<'a> PolygonRegion<'a> {
     }
 
     /// The smallest [`seg_dist2`] from `q` to an edge.
-    pub(super) fn dist2<S: Scalar>(&self, q: Point<S>) -> S {
+    pub(crate) fn dist2<S: Scalar>(&self, q: Point<S>) -> S {
         let qf = (q.x.to_f64(), q.y.to_f64());
         // Through the tree only where no distance can overflow to NaN (a minimum with a NaN
         // in it depends on the order of the edges).
@@ -379,12 +422,24 @@ impl<'a> PolygonRegion<'a> {
         };
         // No outline (a hole) may lie wholly inside the shape: its first vertex tells.
         let ring_clear = |q: Point<S>| !(in_box(q, sb, m) && point_in_poly(q, vs));
+        self.all_edges_clear(sb, reach + m, edge_clear, ring_clear)
+    }
+
+    /// Whether every edge of the region passes `edge_clear` and the first vertex of every
+    /// ring passes `ring_clear`, where neither can fail for an edge whose box keeps `wide`
+    /// from the box `sb`: the edge tree skips those.
+    fn all_edges_clear<S: Scalar>(
+        &self,
+        sb: [S; 4],
+        wide: S,
+        edge_clear: impl Fn(Point<S>, Point<S>) -> bool,
+        ring_clear: impl Fn(Point<S>) -> bool,
+    ) -> bool {
         if let Some(t) = self.tree_for::<S>() {
             let rings = self.ring_index();
             let f = |v: S| v.to_f64();
             let sbf = (f(sb[0]), f(sb[1]), f(sb[2]), f(sb[3]));
-            // Wider than both tests above: a box outside it holds no edge either looks at.
-            let wide = f(reach) + f(m);
+            let wide = f(wide);
             return !t.walk(
                 |b| simple::near(b, sbf, wide),
                 |k| {
@@ -395,6 +450,38 @@ impl<'a> PolygonRegion<'a> {
             );
         }
         self.edges_s::<S>().all(|(a, b)| edge_clear(a, b)) && self.rings().all(|ring| ring.first().is_none_or(|&q| ring_clear(conv(q))))
+    }
+}
+
+impl PolygonRegion<'_> {
+    /// Whether a motif placed by `f` lies inside the region with `gap` to every edge: the
+    /// first vertex of each of its rings inside, no edge near (as [`PolygonRegion::clear_of_poly`]
+    /// asks of a polygon) and no ring of the region in its material. Its bounding disc clear
+    /// of every edge, about a centre inside, answers first (it never changes the answer).
+    pub(super) fn holds_motif<S: Scalar>(&self, m: &Motif<'_>, f: &Frame<S>, gap: S) -> bool {
+        let reach = m.reach_from(f, f.t) + gap;
+        if self.inside(f.t) && self.clear_of(f.t, reach * reach) {
+            return true;
+        }
+        m.ring_starts(f).all(|v| self.inside(v)) && self.clear_of_motif(m, f, gap)
+    }
+
+    #[inline(never)]
+    fn clear_of_motif<S: Scalar>(&self, m: &Motif<'_>, f: &Frame<S>, gap: S) -> bool {
+        let sb = m.world_box(f);
+        let big = sb.iter().fold(S::ONE.max(S::from_f64(scale_of(self.bbox))), |m, &v| m.max(v.abs()));
+        let mm = big * S::from_f64(1e-9);
+        let reach = gap.max(S::ZERO) + mm;
+        let edge_clear = |a: Point<S>, b: Point<S>| {
+            let eb = seg_box(a, b);
+            !boxes_meet(eb, sb, reach)
+                || !m.edges_near(f, eb, reach, |c, d, _| {
+                    boxes_meet(eb, seg_box(c, d), reach) && pair_near(a, b, c, d, gap)
+                })
+        };
+        let ring_clear = |q: Point<S>| !(in_box(q, sb, mm) && m.holds(f, q));
+        // Wider than both tests above: a box outside it holds no edge either looks at.
+        self.all_edges_clear(sb, reach + mm, edge_clear, ring_clear)
     }
 }
 

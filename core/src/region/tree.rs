@@ -282,6 +282,58 @@ impl<'a> EdgeTree<'a> {
         false
     }
 
+    /// Visits, depth first, every pair of a node of this tree and a node of `other` whose
+    /// boxes `enter` accepts, splitting the larger of the two (a leaf never), and calls `pair`
+    /// on each pair of edges of two leaves visited, until `pair` returns true (then returns
+    /// true): the pairs of two shapes' edges that come near, without a walk per edge.
+    #[inline(never)]
+    pub fn walk_pairs(
+        &self,
+        other: &EdgeTree<'_>,
+        mut enter: impl FnMut(Bbox, Bbox) -> bool,
+        mut pair: impl FnMut(usize, usize) -> bool,
+    ) -> bool {
+        // Each pop pushes at most two pairs, each one level deeper on one side: never more
+        // pending than the two trees' depths together.
+        let mut stack = [(0u32, 0u32); 2 * STACK];
+        let mut top = 1usize;
+        let (fa, na) = (self.leaves as usize - 1, self.nodes());
+        let (fb, nb) = (other.leaves as usize - 1, other.nodes());
+        let size = |b: Bbox| (b.2 - b.0).max(b.3 - b.1);
+        while let Some(t) = top.checked_sub(1) {
+            top = t;
+            let (i, j) = stack.get(t).map_or((0, 0), |&(i, j)| (i as usize, j as usize));
+            let (bi, bj) = (Self::load(na, i), Self::load(nb, j));
+            if !enter(bi, bj) {
+                continue;
+            }
+            let (leaf_i, leaf_j) = (i >= fa, j >= fb);
+            if leaf_i && leaf_j {
+                for &e in self.leaf_edges(i) {
+                    for &f in other.leaf_edges(j) {
+                        if pair(e as usize, f as usize) {
+                            return true;
+                        }
+                    }
+                }
+                continue;
+            }
+            let split_i = !leaf_i && (leaf_j || size(bi) >= size(bj));
+            let children = if split_i {
+                [(2 * i + 2, j), (2 * i + 1, j)]
+            } else {
+                [(i, 2 * j + 2), (i, 2 * j + 1)]
+            };
+            for (a, b) in children {
+                if let Some(s) = stack.get_mut(top) {
+                    *s = (a as u32, b as u32);
+                    top += 1;
+                }
+            }
+        }
+        false
+    }
+
     /// The smallest `edge(e)` over every edge whose leaf's lower bound (`bound`, which must
     /// not exceed `edge(e)` for any edge in the box) is below the best so far, nearer boxes
     /// first. `None` with no edges.

@@ -498,7 +498,7 @@ impl Wallpaper {
     /// Image `k` of `shape` (centred at `c`) written into `out`, centred at `centre` (its
     /// [`Wallpaper::image_centre`], or that moved by a lattice vector): `centre + M (v - c)`
     /// for every point `v` of the outline, listed in reverse under a mirror.
-    pub fn image_into<S: Scalar>(&self, k: usize, shape: &Geo<S>, c: Point<S>, centre: Point<S>, out: &mut Geo<S>) {
+    pub fn image_into<'m, S: Scalar>(&self, k: usize, shape: &Geo<'m, S>, c: Point<S>, centre: Point<S>, out: &mut Geo<'m, S>) {
         out.clone_from(shape);
         self.image_in_place(k, out, c, centre);
     }
@@ -522,11 +522,12 @@ impl Wallpaper {
                     v.reverse();
                 }
             }
+            Geo::Motif { f, .. } => *f = f.then([m00, m01, m10, m11], centre),
         }
     }
 
     /// Image `k` of `shape` (centred at `c`), at its wrapped centre.
-    pub fn image<S: Scalar>(&self, k: usize, shape: &Geo<S>, c: Point<S>) -> Geo<S> {
+    pub fn image<'m, S: Scalar>(&self, k: usize, shape: &Geo<'m, S>, c: Point<S>) -> Geo<'m, S> {
         let mut out = Geo::Circle { c, r: S::ZERO };
         self.image_into(k, shape, c, self.image_centre(k, c), &mut out);
         out

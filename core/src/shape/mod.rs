@@ -14,6 +14,10 @@
 //! polygon of [`BLOB_VERTICES`] vertices (tested and drawn alike).
 
 mod blob;
+mod motif;
+
+pub(crate) use motif::pair_near;
+pub use motif::{Frame, Motif, MotifError, MAX_MOTIF_VERTICES};
 
 use crate::geom::{Geo, Point, Verts, MAX_VERTS};
 use crate::scalar::Scalar;
@@ -107,6 +111,19 @@ pub enum ShapeKind {
         /// Octaves, 1..=4, with `features << (octaves - 1)` at most 16 (two vertices a cell
         /// of the finest octave).
         octaves: u8,
+    },
+    /// The caller's own outline: entry `id` of the engine's table of motifs
+    /// ([`crate::Engine::with_motifs`]), with the numbers every placement needs copied from
+    /// it ([`Motif::kind`] gives them). The scale is the factor applied to the unit outline.
+    Motif {
+        /// The motif's place in the table.
+        id: u8,
+        /// The unit outline's area ([`Motif::area`]).
+        area: f64,
+        /// Its bounding radius about the reference point ([`Motif::bound`]).
+        bound: f64,
+        /// Its inscribed radius about the reference point ([`Motif::inner`]).
+        inner: f64,
     },
 }
 
@@ -306,6 +323,15 @@ impl ShapeKind {
                     && (1..=4).contains(&octaves)
                     && u32::from(features) << (octaves - 1) <= 16
             }
+            ShapeKind::Motif { area, bound, inner, .. } => {
+                cfg!(feature = "motif")
+                    && area.is_finite()
+                    && area > 0.0
+                    && bound.is_finite()
+                    && inner.is_finite()
+                    && inner > 0.0
+                    && inner <= bound
+            }
             ShapeKind::Circle | ShapeKind::Square | ShapeKind::Triangle => true,
         }
     }
@@ -317,7 +343,10 @@ impl ShapeKind {
 
     /// Whether the shape's polygon is convex.
     pub fn convex(&self) -> bool {
-        !matches!(self, ShapeKind::Star { .. } | ShapeKind::Blob { .. } | ShapeKind::Noisy { .. })
+        !matches!(
+            self,
+            ShapeKind::Star { .. } | ShapeKind::Blob { .. } | ShapeKind::Noisy { .. } | ShapeKind::Motif { .. }
+        )
     }
 
     /// Whether the outline is drawn anew at every trial from its angle (a blob or a noisy
@@ -355,6 +384,7 @@ impl ShapeKind {
                 0.5 * n * libm::sin(2.0 * PI / n)
             }
             ShapeKind::Star { points, inner } => f64::from(points) * inner * libm::sin(PI / f64::from(points)),
+            ShapeKind::Motif { area, .. } => area,
         }
     }
 
@@ -391,6 +421,7 @@ impl ShapeKind {
             }
             ShapeKind::Blob { delta } => scale * S::from_f64(1.0 + 3.0 * delta),
             ShapeKind::Noisy { amplitude, .. } => scale * S::from_f64(1.0 + amplitude),
+            ShapeKind::Motif { bound, .. } => scale * S::from_f64(bound),
             _ => scale,
         };
         let [rel, abs] = S::OUTLINE_SLACK;
@@ -421,19 +452,25 @@ impl ShapeKind {
             // Every vertex lies at least (1 - a) from the centre, and an edge spans 2 pi / n,
             // so every point of an edge lies at least (1 - a) cos(pi / n) from it.
             ShapeKind::Noisy { amplitude, .. } => (1.0 - amplitude) * libm::cos(PI / BLOB_VERTICES as f64) * 0.999_999,
+            // Already a lower bound, by 1e-6 of it (the drawn outline's rounding is far below).
+            ShapeKind::Motif { inner, .. } => inner,
         };
         scale * S::from_f64(f)
     }
 
     /// The radius of a disc about the centre that lies inside the shape's material (its
     /// inscribed disc, see [`ShapeKind::inradius`]), for the kinds where it is tight:
-    /// circles, squares, rectangles and regular polygons. None for the others (a ring's centre
-    /// is in its hole; a star's or a blob's disc is loose and dearer to compute).
+    /// circles, squares, rectangles, regular polygons and motifs (whose reference point is
+    /// chosen for it). None for the others (a ring's centre is in its hole; a star's or a
+    /// blob's disc is loose and dearer to compute).
     pub fn solid_radius<S: Scalar>(&self, scale: S) -> Option<S> {
         match self {
-            ShapeKind::Circle | ShapeKind::Square | ShapeKind::Rect { .. } | ShapeKind::Triangle | ShapeKind::Polygon { .. } => {
-                Some(self.inradius(scale))
-            }
+            ShapeKind::Circle
+            | ShapeKind::Square
+            | ShapeKind::Rect { .. }
+            | ShapeKind::Triangle
+            | ShapeKind::Polygon { .. }
+            | ShapeKind::Motif { .. } => Some(self.inradius(scale)),
             _ => None,
         }
     }
@@ -470,17 +507,28 @@ impl ShapeKind {
         }
     }
 
-    /// The concrete shape at a place.
-    pub fn geo<S: Scalar>(&self, c: Point<S>, scale: S, angle: S) -> Geo<S> {
+    /// The concrete shape at a place. A motif needs its table: see [`ShapeKind::geo_in`]
+    /// (without it, a motif's inscribed disc stands in for it).
+    pub fn geo<S: Scalar>(&self, c: Point<S>, scale: S, angle: S) -> Geo<'static, S> {
+        self.geo_in(&[], c, scale, angle)
+    }
+
+    /// The concrete shape at a place, a motif taken from `motifs` (entry `id` of the table).
+    pub fn geo_in<'m, S: Scalar>(&self, motifs: &'m [Motif<'m>], c: Point<S>, scale: S, angle: S) -> Geo<'m, S> {
         let mut g = Geo::Circle { c, r: scale };
-        self.geo_into(&mut g, c, scale, angle);
+        self.geo_into_in(motifs, &mut g, c, scale, angle);
         g
     }
 
     /// [`ShapeKind::geo`] written into `out`. When `out` already holds a polygon its vertex
     /// list is refilled in place: only the vertices in use are written, no 512-byte array is
     /// zeroed or copied, which is what most exact tests would spend.
-    pub fn geo_into<S: Scalar>(&self, out: &mut Geo<S>, c: Point<S>, scale: S, angle: S) {
+    pub fn geo_into<S: Scalar>(&self, out: &mut Geo<'_, S>, c: Point<S>, scale: S, angle: S) {
+        self.geo_into_in(&[], out, c, scale, angle);
+    }
+
+    /// [`ShapeKind::geo_in`] written into `out`, as [`ShapeKind::geo_into`] does.
+    pub fn geo_into_in<'m, S: Scalar>(&self, motifs: &'m [Motif<'m>], out: &mut Geo<'m, S>, c: Point<S>, scale: S, angle: S) {
         match *self {
             ShapeKind::Blob { .. } | ShapeKind::Noisy { .. } => {
                 let (u, _) = self.blob_outline(angle);
@@ -493,22 +541,39 @@ impl ShapeKind {
             }
             _ => {
                 let (sin, cos) = Self::sin_cos(angle);
-                self.geo_sc_into(out, c, scale, sin, cos);
+                self.geo_sc_into_in(motifs, out, c, scale, sin, cos);
             }
         }
     }
 
     /// The concrete shape at a place, rotation given by [`ShapeKind::sin_cos`] of its angle
     /// (not for blobs, whose outline depends on the angle itself: use [`ShapeKind::geo`]).
-    pub fn geo_sc<S: Scalar>(&self, c: Point<S>, scale: S, sin: S, cos: S) -> Geo<S> {
+    pub fn geo_sc<S: Scalar>(&self, c: Point<S>, scale: S, sin: S, cos: S) -> Geo<'static, S> {
         let mut g = Geo::Circle { c, r: scale };
         self.geo_sc_into(&mut g, c, scale, sin, cos);
         g
     }
 
     /// [`ShapeKind::geo_sc`] written into `out`, as [`ShapeKind::geo_into`] does.
-    pub fn geo_sc_into<S: Scalar>(&self, out: &mut Geo<S>, c: Point<S>, scale: S, sin: S, cos: S) {
+    pub fn geo_sc_into<S: Scalar>(&self, out: &mut Geo<'_, S>, c: Point<S>, scale: S, sin: S, cos: S) {
+        self.geo_sc_into_in(&[], out, c, scale, sin, cos);
+    }
+
+    /// [`ShapeKind::geo_sc_into`], a motif taken from `motifs`.
+    pub fn geo_sc_into_in<'m, S: Scalar>(&self, motifs: &'m [Motif<'m>], out: &mut Geo<'m, S>, c: Point<S>, scale: S, sin: S, cos: S) {
         match *self {
+            ShapeKind::Motif { id, inner, .. } => {
+                *out = match motifs.get(usize::from(id)) {
+                    Some(m) => Geo::Motif {
+                        m,
+                        f: Frame::new(c, scale, sin, cos),
+                    },
+                    None => Geo::Circle {
+                        c,
+                        r: scale * S::from_f64(inner),
+                    },
+                }
+            }
             ShapeKind::Circle => *out = Geo::Circle { c, r: scale },
             ShapeKind::Ring { inner } => {
                 *out = Geo::Ring {
@@ -550,14 +615,14 @@ impl ShapeKind {
                     }
                 });
             }
-            ShapeKind::Blob { .. } | ShapeKind::Noisy { .. } => self.geo_into(out, c, scale, S::ZERO),
+            ShapeKind::Blob { .. } | ShapeKind::Noisy { .. } => self.geo_into_in(motifs, out, c, scale, S::ZERO),
         }
     }
 }
 
 /// Makes `out` a polygon with no vertices (keeping its vertex storage in place when it
 /// already held one) and lets `fill` push the vertices.
-fn set_poly<S: Scalar>(out: &mut Geo<S>, convex: bool, fill: impl FnOnce(&mut Verts<S>)) {
+fn set_poly<S: Scalar>(out: &mut Geo<'_, S>, convex: bool, fill: impl FnOnce(&mut Verts<S>)) {
     // The list is filled where it lies: building it aside and moving it in would copy it.
     if !matches!(out, Geo::Poly { .. }) {
         *out = Geo::Poly { v: Verts::new(), convex };

@@ -21,7 +21,7 @@ fn area(g: &Geo<f64>) -> f64 {
     match *g {
         Geo::Circle { r, .. } => core::f64::consts::PI * r * r,
         Geo::Ring { r, inner, .. } => core::f64::consts::PI * (r * r - inner * inner),
-        Geo::Poly { .. } => g.poly_area2() / 2.0,
+        Geo::Poly { .. } | Geo::Motif { .. } => g.poly_area2() / 2.0,
     }
 }
 

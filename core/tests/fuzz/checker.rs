@@ -245,6 +245,7 @@ impl Mat {
                 inner: inner.to_f64(),
             },
             zetafill::Geo::Poly { v, .. } => Mat::Poly(v.iter().map(p).collect()),
+            zetafill::Geo::Motif { .. } => panic!("the fuzz checker takes the built-in kinds (motifs: core/tests/motifs.rs)"),
         }
     }
 

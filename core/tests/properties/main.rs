@@ -43,7 +43,7 @@ mod checker {
     #[derive(Clone, Debug)]
     pub struct Item {
         pub centre: Point<f64>,
-        pub geo: Geo<f64>,
+        pub geo: Geo<'static, f64>,
     }
 
     /// (min x, min y, max x, max y), computed here rather than by `Geo::bounds`.
@@ -58,6 +58,7 @@ mod checker {
                 }
                 b
             }
+            Geo::Motif { .. } => panic!("the property tests place the built-in kinds"),
         }
     }
 
@@ -66,6 +67,7 @@ mod checker {
     /// `centre`.
     fn well_formed(it: &Item) -> Result<(), String> {
         match it.geo {
+            Geo::Motif { .. } => return Err("a motif: the property tests place the built-in kinds".into()),
             Geo::Circle { c, r } | Geo::Ring { c, r, .. } => {
                 if !(r > 0.0 && r.is_finite() && c.x.is_finite() && c.y.is_finite()) {
                     return Err(format!("bad circle {:?}", it.geo));
@@ -162,6 +164,7 @@ mod checker {
                 let ok = match it.geo {
                     Geo::Circle { c, r } | Geo::Ring { c, r, .. } => inside(c.x - r, c.y - r) && inside(c.x + r, c.y + r),
                     Geo::Poly { ref v, .. } => v.iter().all(|p| inside(p.x, p.y)),
+                    Geo::Motif { .. } => false,
                 };
                 if !ok {
                     return Err(format!("shape {i} is not inside the region with gap {gap}: {:?}", it.geo));
@@ -299,7 +302,10 @@ fn items_of(e: &Engine<'_, f64>) -> Vec<Item> {
     (0..e.placed().len())
         .map(|i| {
             let p = e.placed()[i];
-            let geo = e.geo(i).unwrap_or_else(|| panic!("no geometry for placed shape {i}"));
+            let geo = e
+                .geo(i)
+                .and_then(|g| g.owned())
+                .unwrap_or_else(|| panic!("no geometry for placed shape {i}"));
             Item {
                 centre: Point::new(p.x, p.y),
                 geo,

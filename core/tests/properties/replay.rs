@@ -17,6 +17,7 @@ pub(super) fn brute_accepts(case: &Case, placed: &[Item], g: &Geo<f64>) -> bool 
         let ok = match *g {
             Geo::Circle { c, r } | Geo::Ring { c, r, .. } => inside(c.x - r, c.y - r) && inside(c.x + r, c.y + r),
             Geo::Poly { ref v, .. } => v.iter().all(|p| inside(p.x, p.y)),
+            Geo::Motif { .. } => false,
         };
         if !ok {
             return false;

@@ -213,7 +213,8 @@ impl RegionDoc {
 pub struct ShapeDoc {
     /// Placement index.
     pub index: u64,
-    /// `circle`, `square`, `rect`, `triangle`, `polygon`, `star`, `ring`, `blob`.
+    /// `circle`, `square`, `rect`, `triangle`, `polygon`, `star`, `ring`, `blob`, `noisy`,
+    /// `motif`.
     pub kind: &'static str,
     /// Centre (mm).
     pub center: [f64; 2],
@@ -233,6 +234,10 @@ pub struct ShapeDoc {
     /// Vertices counter-clockwise (polygonal kinds): exactly the polygon that was tested.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub vertices: Option<Vec<[f64; 2]>>,
+    /// The rings of a motif (filled by the even-odd rule): exactly the outline that was
+    /// tested.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub outlines: Option<Vec<Vec<[f64; 2]>>>,
 }
 
 /// Run statistics.
@@ -295,6 +300,7 @@ pub fn shape_name(k: &ShapeKind) -> String {
             features,
             octaves,
         } => format!("noisy:{amplitude}:{features}:{octaves}"),
+        ShapeKind::Motif { id, .. } => format!("motif:{id}"),
     }
 }
 
@@ -310,6 +316,7 @@ pub fn kind_name(k: &ShapeKind) -> &'static str {
         ShapeKind::Ring { .. } => "ring",
         ShapeKind::Blob { .. } => "blob",
         ShapeKind::Noisy { .. } => "noisy",
+        ShapeKind::Motif { .. } => "motif",
     }
 }
 

@@ -103,10 +103,19 @@ fn outline(sh: &ShapeDoc, off: (f64, f64), min_feature: f64) -> Item {
     match (sh.radius, hole(sh.inner_radius, min_feature)) {
         (Some(r), Some(inner)) => Item::new(Shape::Path(vec![Path::circle(c, r), Path::circle(c, inner)])).evenodd(),
         (Some(r), None) => Item::new(Shape::Circle { c, r }),
-        _ => {
-            let vs = sh.vertices.as_deref().unwrap_or(&[]);
-            Item::new(Shape::Polygon(vs.iter().map(|v| [v[0] + off.0, v[1] + off.1]).collect()))
-        }
+        _ => match &sh.outlines {
+            Some(rings) => Item::new(Shape::Path(
+                rings
+                    .iter()
+                    .map(|r| Path::polyline(r.iter().map(|v| [v[0] + off.0, v[1] + off.1]).collect(), true))
+                    .collect(),
+            ))
+            .evenodd(),
+            None => {
+                let vs = sh.vertices.as_deref().unwrap_or(&[]);
+                Item::new(Shape::Polygon(vs.iter().map(|v| [v[0] + off.0, v[1] + off.1]).collect()))
+            }
+        },
     }
 }
 

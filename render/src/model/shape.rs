@@ -10,6 +10,10 @@ pub fn shape_width(sh: &ShapeDoc) -> f64 {
     if let Some(r) = sh.radius {
         return 2.0 * r;
     }
+    if let Some(rings) = &sh.outlines {
+        let all: Vec<Pt> = rings.iter().flatten().copied().collect();
+        return polygon_width(&all);
+    }
     let vs = sh.vertices.as_deref().unwrap_or(&[]);
     polygon_width(vs)
 }
@@ -47,7 +51,7 @@ pub fn shape_bounds(sh: &ShapeDoc) -> Bounds {
         b.add([sh.center[0] - r, sh.center[1] - r]);
         b.add([sh.center[0] + r, sh.center[1] + r]);
     } else {
-        for v in sh.vertices.as_deref().unwrap_or(&[]) {
+        for v in sh.vertices.iter().flatten().chain(sh.outlines.iter().flatten().flatten()) {
             b.add(*v);
         }
     }

@@ -28,7 +28,7 @@ pub fn lattice_arg(w: &Wallpaper) -> String {
 }
 
 /// The outline a document records for a shape.
-fn geo_of(sh: &ShapeDoc) -> Geo<f64> {
+fn geo_of(sh: &ShapeDoc) -> Geo<'static, f64> {
     let c = Point::new(sh.center[0], sh.center[1]);
     match (sh.radius, sh.inner_radius) {
         (Some(r), Some(inner)) => Geo::Ring { c, r, inner },
@@ -58,12 +58,23 @@ pub fn image_doc(w: &Wallpaper, sh: &ShapeDoc, k: usize) -> ShapeDoc {
         Geo::Poly { v, .. } => Some(v.iter().map(|p| [p.x, p.y]).collect()),
         _ => None,
     };
+    // A motif's rings go by the same map: centre + M (v - c).
+    let outlines = sh.outlines.as_ref().and_then(|rings| {
+        let iso = w.iso(k)?;
+        let [m00, m01, m10, m11] = iso.m;
+        let map = |p: &[f64; 2]| {
+            let (dx, dy) = (p[0] - c.x, p[1] - c.y);
+            [centre.x + (m00 * dx + m01 * dy), centre.y + (m10 * dx + m11 * dy)]
+        };
+        Some(rings.iter().map(|r| r.iter().map(map).collect()).collect())
+    });
     // The angle of an image is not one number (a mirror image has none): it is left out,
     // the vertices say it all.
     ShapeDoc {
         center: [centre.x, centre.y],
         angle: None,
         vertices,
+        outlines,
         ..sh.clone()
     }
 }
@@ -119,6 +130,10 @@ pub fn placed_images(doc: &FillDoc) -> Option<Vec<ShapeDoc>> {
     let shift = |sh: &ShapeDoc, (dx, dy): (f64, f64)| ShapeDoc {
         center: [sh.center[0] + dx, sh.center[1] + dy],
         vertices: sh.vertices.as_ref().map(|v| v.iter().map(|p| [p[0] + dx, p[1] + dy]).collect()),
+        outlines: sh
+            .outlines
+            .as_ref()
+            .map(|r| r.iter().map(|v| v.iter().map(|p| [p[0] + dx, p[1] + dy]).collect()).collect()),
         ..sh.clone()
     };
     Some(

@@ -74,6 +74,11 @@ pub fn max_size(doc: &FillDoc) -> Result<u64, CliError> {
             } else {
                 0
             };
+            let rings = sh.outlines.as_ref().map_or(0, |r| {
+                let points: u64 = r.iter().map(|v| v.len() as u64).sum();
+                ",\"outlines\":[]".len() as u64 + r.len() as u64 * 3 + points * (2 * MAX_JSON_NUMBER + 4)
+            });
+            let list = list + rings;
             keys.len() as u64 + 6 * sh.kind.len() as u64 + 2 * MAX_U64 + 6 * MAX_JSON_NUMBER + list
         })
         .sum();
@@ -129,6 +134,23 @@ fn shape(s: &mut String, sh: &ShapeDoc) -> Result<(), CliError> {
                 s.push(',');
             }
             pair(s, *v);
+        }
+        s.push(']');
+    }
+    if let Some(rings) = &sh.outlines {
+        s.push_str(",\"outlines\":[");
+        for (k, ring) in rings.iter().enumerate() {
+            if k > 0 {
+                s.push(',');
+            }
+            s.push('[');
+            for (i, v) in ring.iter().enumerate() {
+                if i > 0 {
+                    s.push(',');
+                }
+                pair(s, *v);
+            }
+            s.push(']');
         }
         s.push(']');
     }

@@ -243,6 +243,7 @@ pub fn stones(tile: &Tile, render: Render) -> Result<Vec<crate::model::doc::Shap
         area: 0.0,
         trials: 0,
         vertices,
+        outlines: None,
     };
     Ok(match render {
         Render::Discs => images(tile, 0.0)

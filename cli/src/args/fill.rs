@@ -115,7 +115,8 @@ pub struct RegionInputArgs {
 pub struct FillArgs {
     /// circle | square | rect:ASPECT | triangle | polygon:SIDES | star:POINTS:INNER_RATIO |
     /// ring:INNER_RATIO | blob:DELTA | noisy:AMPLITUDE (then optionally :FEATURES and :OCTAVES)
-    /// | mix:SHAPE,SHAPE,...
+    /// | svg:FILE (the filled outline of an SVG) | glyph:TEXT (each character of TEXT, from
+    /// --font or the built-in font) | mix:SHAPE,SHAPE,...
     #[arg(long, default_value = "circle", value_parser = spec::shape)]
     pub shape: spec::ShapeArg,
     /// Mixes: take the shapes in turn (cycle) or at random per placement.

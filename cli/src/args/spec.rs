@@ -199,38 +199,122 @@ fn noisy(a: &str, features: Option<&str>, octaves: Option<&str>) -> Result<Shape
     })
 }
 
-/// `--shape`: one shape, or `mix:SHAPE,SHAPE,...` (up to 8).
+/// `--shape`: one shape, or `mix:SHAPE,SHAPE,...` (up to [`MAX_MIX`] once each `glyph:`
+/// is counted as its characters). A shape is a built-in kind, `svg:FILE` (the filled outline
+/// of an SVG) or `glyph:TEXT` (each character of TEXT); in a mix, neither FILE nor TEXT can
+/// hold a comma.
 pub fn shape(s: &str) -> Result<ShapeArg, String> {
-    if let Some(list) = s.strip_prefix("mix:") {
-        let kinds = list.split(',').map(one_shape).collect::<Result<Vec<_>, _>>()?;
-        if kinds.is_empty() || kinds.len() > MAX_MIX {
-            return Err(format!("mix: needs 1 to {MAX_MIX} shapes separated by commas"));
-        }
-        return Ok(ShapeArg(kinds));
+    let specs = match s.strip_prefix("mix:") {
+        Some(list) => list.split(',').map(shape_spec).collect::<Result<Vec<_>, _>>()?,
+        None => vec![shape_spec(s)?],
+    };
+    let count: usize = specs.iter().map(ShapeSpec::count).sum();
+    if specs.is_empty() || count > MAX_MIX {
+        return Err(format!(
+            "mix: needs 1 to {MAX_MIX} shapes separated by commas (each character of a glyph: counts as one; this has {count})"
+        ));
     }
-    Ok(ShapeArg(vec![one_shape(s)?]))
+    Ok(ShapeArg(specs))
 }
 
-/// The parsed `--shape`: one kind, or the kinds of a mix.
-#[derive(Debug, Clone, PartialEq)]
-pub struct ShapeArg(pub Vec<ShapeKind>);
+/// One entry of `--shape`.
+fn shape_spec(s: &str) -> Result<ShapeSpec, String> {
+    if let Some(file) = s.strip_prefix("svg:") {
+        if file.is_empty() {
+            return Err("svg:FILE: give the SVG file whose filled outline is the shape, for example svg:heart.svg".into());
+        }
+        return Ok(ShapeSpec::Svg(file.into()));
+    }
+    if let Some(text) = s.strip_prefix("glyph:") {
+        if text.chars().all(char::is_whitespace) {
+            return Err("glyph:TEXT: give at least one visible character, for example glyph:0123456789".into());
+        }
+        return Ok(ShapeSpec::Glyph(text.to_string()));
+    }
+    one_shape(s).map(ShapeSpec::Kind)
+}
 
-impl ShapeArg {
-    /// The core's shape list.
-    pub fn list(&self, order: MixOrder, salt: u64) -> ShapeList {
-        ShapeList::mix(&self.0, order, salt).unwrap_or_else(|| ShapeKind::Circle.into())
+/// An entry of `--shape`: a built-in kind, or a motif from a file or a font.
+#[derive(Debug, Clone, PartialEq)]
+pub enum ShapeSpec {
+    /// A built-in kind.
+    Kind(ShapeKind),
+    /// `svg:FILE`: the filled outline of an SVG file.
+    Svg(std::path::PathBuf),
+    /// `glyph:TEXT`: each visible character of TEXT, in turn.
+    Glyph(String),
+}
+
+impl ShapeSpec {
+    /// The entries this one adds to the mix.
+    pub fn count(&self) -> usize {
+        match self {
+            ShapeSpec::Glyph(t) => t.chars().filter(|c| !c.is_whitespace()).count(),
+            _ => 1,
+        }
     }
 
-    /// Whether any kind rotates.
+    /// The text form, as on the command line.
+    pub fn name(&self) -> String {
+        match self {
+            ShapeSpec::Kind(k) => shape_name(k),
+            ShapeSpec::Svg(p) => format!("svg:{}", p.display()),
+            ShapeSpec::Glyph(t) => format!("glyph:{t}"),
+        }
+    }
+}
+
+/// The parsed `--shape`: one entry, or the entries of a mix.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ShapeArg(pub Vec<ShapeSpec>);
+
+impl ShapeArg {
+    /// The built-in kinds, or `None` if an entry is a motif (whose kind is known once its
+    /// outline is read: see `plan::motif`).
+    pub fn kinds(&self) -> Option<Vec<ShapeKind>> {
+        self.0
+            .iter()
+            .map(|s| match s {
+                ShapeSpec::Kind(k) => Some(*k),
+                _ => None,
+            })
+            .collect()
+    }
+
+    /// The core's shape list of built-in kinds (a circle for a list with motifs).
+    pub fn list(&self, order: MixOrder, salt: u64) -> ShapeList {
+        let kinds = self.kinds().unwrap_or_default();
+        ShapeList::mix(&kinds, order, salt).unwrap_or_else(|| ShapeKind::Circle.into())
+    }
+
+    /// Whether any entry rotates (every motif does).
     pub fn rotates(&self) -> bool {
-        self.0.iter().any(ShapeKind::rotates)
+        self.0.iter().any(|s| match s {
+            ShapeSpec::Kind(k) => k.rotates(),
+            _ => true,
+        })
+    }
+
+    /// Whether the entries are more than one shape (a mix).
+    pub fn is_mix(&self) -> bool {
+        self.0.iter().map(ShapeSpec::count).sum::<usize>() > 1
+    }
+
+    /// Whether an entry is an SVG motif.
+    pub fn has_svg(&self) -> bool {
+        self.0.iter().any(|s| matches!(s, ShapeSpec::Svg(_)))
+    }
+
+    /// Whether an entry is a glyph motif (which reads `--font`).
+    pub fn has_glyph(&self) -> bool {
+        self.0.iter().any(|s| matches!(s, ShapeSpec::Glyph(_)))
     }
 
     /// The text form, as on the command line.
     pub fn name(&self) -> String {
         match self.0.as_slice() {
-            [one] => shape_name(one),
-            many => format!("mix:{}", many.iter().map(shape_name).collect::<Vec<_>>().join(",")),
+            [one] => one.name(),
+            many => format!("mix:{}", many.iter().map(ShapeSpec::name).collect::<Vec<_>>().join(",")),
         }
     }
 }

@@ -24,8 +24,24 @@ const COVERAGE_WORDS: usize = 1 << 18;
 
 /// The concrete geometry of a placed shape as a [`ShapeDoc`], each point computed in the
 /// scalar that tested it and then written as `f64`.
-fn shape_doc<S: zetafill::Scalar>(kind: &ShapeKind, geo: &Geo<'_, S>, p: &Placed<f64>, index: u64, area: f64, trials: u64) -> ShapeDoc {
+/// A motif's decorations (`sources`, by the kind's number) go by the frame it was placed by.
+fn shape_doc<S: zetafill::Scalar>(
+    kind: &ShapeKind,
+    geo: &Geo<'_, S>,
+    p: &Placed<f64>,
+    (index, area, trials): (u64, f64, u64),
+    sources: &[crate::plan::motif::MotifSource],
+) -> ShapeDoc {
     let pt = |p: zetafill::Point<S>| [p.x.to_f64(), p.y.to_f64()];
+    let decorations = match (kind, geo) {
+        (ShapeKind::Motif { id, .. }, Geo::Motif { m, f }) => sources.get(usize::from(*id)).filter(|s| !s.decoration.is_empty()).map(|s| {
+            s.decoration
+                .iter()
+                .map(|line| line.iter().map(|&q| pt(f.apply(m.to_unit(q)))).collect())
+                .collect()
+        }),
+        _ => None,
+    };
     let (radius, inner_radius, angle, vertices, outlines) = match geo {
         Geo::Circle { r, .. } => (Some(r.to_f64()), None, None, None, None),
         Geo::Ring { r, inner, .. } => (Some(r.to_f64()), Some(inner.to_f64()), None, None, None),
@@ -55,6 +71,7 @@ fn shape_doc<S: zetafill::Scalar>(kind: &ShapeKind, geo: &Geo<'_, S>, p: &Placed
         trials,
         vertices,
         outlines,
+        decorations,
     }
 }
 
@@ -109,7 +126,16 @@ fn run_engine<S: zetafill::Scalar>(
         index: &mut index,
         coverage: &mut coverage,
     };
-    let mut engine = Engine::<S>::new(params.clone(), region, storage).map_err(param_error)?;
+    // The motifs, each over its own copy of the outline and edge tree (checked when planned).
+    let mut buffers: Vec<(Vec<zetafill::Point<f64>>, Vec<u32>)> = a.motifs.iter().map(|_| Default::default()).collect();
+    let motifs = a
+        .motifs
+        .iter()
+        .zip(buffers.iter_mut())
+        .map(|(m, (points, scratch))| m.motif(points, scratch))
+        .collect::<Result<Vec<_>, _>>()
+        .map_err(|e| CliError::Io(format!("internal: a motif checked when planned is refused: {e}")))?;
+    let mut engine = Engine::<S>::with_motifs(params.clone(), region, storage, &motifs).map_err(param_error)?;
     zetafill::check_first_two(params, &region).map_err(|e| first_two_error(e, params))?;
     engine.set_density(density.as_ref().map(|d| d as &dyn zetafill::Density));
     let mut rng = zetafill::rng_from_seed(a.seed);
@@ -173,7 +199,7 @@ fn run_engine<S: zetafill::Scalar>(
             };
             let i = (e / images) as u64;
             let t = trials.get(i as usize).copied().unwrap_or(0);
-            Some(shape_doc(&engine.kind_of(i), &g, &pf, i, engine.area_of(i), t))
+            Some(shape_doc(&engine.kind_of(i), &g, &pf, (i, engine.area_of(i), t), &a.motifs))
         })
         .collect();
     Ok(EngineRun {

@@ -44,6 +44,8 @@ pub enum OutlineError {
     Svg(usvg::Error),
     /// The file has no closed path.
     NoClosedPath,
+    /// The file has no filled path outside its decorations (a motif).
+    NoFilledPath,
     /// A number of the geometry (as written, shortened) is beyond [`MAX_NUMBER`].
     Number(String),
     /// A vertex lies beyond [`MAX_COORDINATE_MM`] (or is not finite) once transformed: the
@@ -96,6 +98,215 @@ pub fn outline_of(mut data: Vec<u8>) -> Result<(Vec<Point<f64>>, Vec<usize>), Ou
         ends.push(points.len());
     }
     Ok((points, ends))
+}
+
+/// A motif read from an SVG (`--shape svg:FILE`): the rings of its filled paths, filled by
+/// the even-odd rule, and its decorations, in mm (y up).
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct MotifOutline {
+    /// Vertices, ring after ring.
+    pub points: Vec<Point<f64>>,
+    /// The exclusive end of each ring.
+    pub ends: Vec<usize>,
+    /// The polylines drawn with the motif and never tested: the subpaths of every path in a
+    /// decoration (see [`motif_of`]) and of every path with a stroke and no fill. A closed
+    /// subpath ends where it began.
+    pub decoration: Vec<Vec<Point<f64>>>,
+}
+
+/// The motif of the bytes of an SVG file, its curves flattened so that no chord strays more
+/// than `tolerance` mm from the curve (in the drawing's own size).
+///
+/// Every path with a fill gives its subpaths as rings (an open subpath is filled as if
+/// closed, as SVG fills it); a path filled by the nonzero rule keeps just the rings across
+/// which it changes from filled to empty, so that its rings together are filled by the
+/// even-odd rule as they were by their own. The rings of all filled paths together are then
+/// the motif under the even-odd rule: a path drawn inside another is a hole in it. A path or
+/// group whose `id` or Inkscape layer name (`inkscape:label`) begins with `decoration`
+/// (in any case), and everything inside one, is decoration, as is a path with a stroke and
+/// no fill: drawn with the motif, never tested.
+pub fn motif_of(mut data: Vec<u8>, tolerance: f64) -> Result<MotifOutline, OutlineError> {
+    if data.starts_with(&[0x1f, 0x8b]) {
+        data = gunzip(&data)?;
+    }
+    let mut named = std::collections::HashSet::new();
+    if let Ok(text) = std::str::from_utf8(&data) {
+        check_numbers(text)?;
+        named = decoration_ids(text);
+    }
+    let tree = usvg::Tree::from_data(&data, &usvg::Options::default()).map_err(OutlineError::Svg)?;
+    let mut walk = MotifWalk {
+        height: f64::from(tree.size().height()),
+        tolerance,
+        named,
+        left: MAX_VERTICES,
+        out: MotifOutline::default(),
+        rings: 0,
+    };
+    walk.group(tree.root(), false)?;
+    let out = walk.out;
+    if out.ends.is_empty() {
+        return Err(OutlineError::NoFilledPath);
+    }
+    if let Some(p) = out
+        .points
+        .iter()
+        .chain(out.decoration.iter().flatten())
+        .find(|p| !(p.x.abs() <= MAX_COORDINATE_MM && p.y.abs() <= MAX_COORDINATE_MM))
+    {
+        return Err(OutlineError::Far(if p.x.abs() <= MAX_COORDINATE_MM { p.y } else { p.x }));
+    }
+    Ok(out)
+}
+
+/// The ids of the elements named as decoration by their Inkscape layer name.
+fn decoration_ids(text: &str) -> std::collections::HashSet<String> {
+    const INKSCAPE: &str = "http://www.inkscape.org/namespaces/inkscape";
+    let opt = usvg::roxmltree::ParsingOptions {
+        allow_dtd: true,
+        ..Default::default()
+    };
+    let Ok(doc) = usvg::roxmltree::Document::parse_with_options(text, opt) else {
+        return Default::default();
+    };
+    doc.descendants()
+        .filter(|n| n.attribute((INKSCAPE, "label")).is_some_and(is_decoration))
+        .filter_map(|n| n.attribute("id").map(str::to_string))
+        .collect()
+}
+
+/// Whether a name marks a decoration.
+fn is_decoration(name: &str) -> bool {
+    name.get(..10).is_some_and(|p| p.eq_ignore_ascii_case("decoration"))
+}
+
+/// The walk of an SVG tree that gathers a motif.
+struct MotifWalk {
+    height: f64,
+    tolerance: f64,
+    named: std::collections::HashSet<String>,
+    left: usize,
+    out: MotifOutline,
+    rings: usize,
+}
+
+impl MotifWalk {
+    fn marked(&self, id: &str) -> bool {
+        is_decoration(id) || self.named.contains(id)
+    }
+
+    fn group(&mut self, g: &usvg::Group, decoration: bool) -> Result<(), OutlineError> {
+        let decoration = decoration || self.marked(g.id());
+        for node in g.children() {
+            match node {
+                usvg::Node::Group(g) => self.group(g, decoration)?,
+                usvg::Node::Path(p) => self.path(p, decoration || self.marked(p.id()))?,
+                _ => {}
+            }
+        }
+        Ok(())
+    }
+
+    fn path(&mut self, p: &usvg::Path, decoration: bool) -> Result<(), OutlineError> {
+        let tolerance = self.tolerance;
+        let pieces = |ctrl: &[Point<f64>]| pieces_within(ctrl, tolerance);
+        let fill = p.fill().filter(|_| !decoration);
+        if fill.is_none() && !decoration && p.stroke().is_none() {
+            return Ok(());
+        }
+        let subs = subpaths(p, self.height, &pieces, &mut self.left)?;
+        let Some(fill) = fill else {
+            for sub in subs {
+                let mut line = sub.points;
+                if sub.closed && line.first() != line.last() {
+                    if let Some(&first) = line.first() {
+                        line.push(first);
+                    }
+                }
+                line.dedup();
+                if line.len() >= 2 {
+                    self.out.decoration.push(line);
+                }
+            }
+            return Ok(());
+        };
+        let mut rings: Vec<Vec<Point<f64>>> = subs.into_iter().map(|s| ring_of(s.points)).filter(|r| r.len() >= 3).collect();
+        if fill.rule() == usvg::FillRule::NonZero && rings.len() > 1 {
+            rings = even_odd_of_nonzero(rings);
+        }
+        self.rings += rings.len();
+        if self.rings > MAX_RINGS {
+            return Err(OutlineError::TooManyRings);
+        }
+        for r in rings {
+            self.out.points.extend(r);
+            self.out.ends.push(self.out.points.len());
+        }
+        Ok(())
+    }
+}
+
+/// The rings of a path filled by the nonzero rule that bound its fill: those across which
+/// the winding number goes from zero to not zero, tested at two points either side of the
+/// middle of each ring's longest edge.
+fn even_odd_of_nonzero(rings: Vec<Vec<Point<f64>>>) -> Vec<Vec<Point<f64>>> {
+    let filled = |q: Point<f64>| winding(&rings, q) != 0;
+    let keep: Vec<bool> = rings
+        .iter()
+        .map(|r| {
+            let edges = r.iter().zip(r.iter().cycle().skip(1));
+            let Some((a, b)) = edges.max_by(|(a, b), (c, d)| len2(**a, **b).total_cmp(&len2(**c, **d))) else {
+                return true;
+            };
+            let (dx, dy) = (b.x - a.x, b.y - a.y);
+            let m = Point::new((a.x + b.x) / 2.0, (a.y + b.y) / 2.0);
+            // A step of a millionth of the edge across it: inside the ring's neighbourhood.
+            let e = 1e-6;
+            filled(Point::new(m.x - dy * e, m.y + dx * e)) != filled(Point::new(m.x + dy * e, m.y - dx * e))
+        })
+        .collect();
+    rings.into_iter().zip(keep).filter_map(|(r, k)| k.then_some(r)).collect()
+}
+
+fn len2(a: Point<f64>, b: Point<f64>) -> f64 {
+    (b.x - a.x).powi(2) + (b.y - a.y).powi(2)
+}
+
+/// The winding number of the rings about `q`.
+fn winding(rings: &[Vec<Point<f64>>], q: Point<f64>) -> i32 {
+    let mut w = 0;
+    for r in rings {
+        for (a, b) in r.iter().zip(r.iter().cycle().skip(1)) {
+            let side = (b.x - a.x) * (q.y - a.y) - (q.x - a.x) * (b.y - a.y);
+            if a.y <= q.y && b.y > q.y && side > 0.0 {
+                w += 1;
+            } else if a.y > q.y && b.y <= q.y && side < 0.0 {
+                w -= 1;
+            }
+        }
+    }
+    w
+}
+
+/// Pieces for a curve with this control polygon (3 points a quadratic, 4 a cubic) so that
+/// no chord strays more than `tolerance` from it: a uniform cut into n pieces strays at most
+/// max|B''| / (8 n^2), and |B''| is at most 2 (quadratic) or 6 (cubic) times the largest
+/// second difference of the control points. At least 1 piece, at most 4,096.
+fn pieces_within(ctrl: &[Point<f64>], tolerance: f64) -> usize {
+    let second = ctrl
+        .windows(3)
+        .map(|w| {
+            let (dx, dy) = (w[0].x - 2.0 * w[1].x + w[2].x, w[0].y - 2.0 * w[1].y + w[2].y);
+            (dx * dx + dy * dy).sqrt()
+        })
+        .fold(0.0, f64::max);
+    let k = if ctrl.len() == 3 { 0.25 } else { 0.75 };
+    let n = (k * second / tolerance).sqrt().ceil();
+    if n.is_finite() {
+        (n as usize).clamp(1, 4096)
+    } else {
+        4096
+    }
 }
 
 /// An SVGZ file expanded, to at most [`crate::io::read::MAX_SVG_BYTES`].
@@ -197,7 +408,35 @@ fn spend(left: &mut usize, n: usize) -> Result<(), OutlineError> {
     Ok(())
 }
 
+/// A subpath of a path, its curves flattened, in mm: its vertices and whether it is closed
+/// (by a `Z`, or by ending where it began).
+struct Subpath {
+    points: Vec<Point<f64>>,
+    closed: bool,
+}
+
+/// Every closed subpath of `p` as a ring (its repeated first vertex and repeated vertices
+/// dropped).
 fn flatten(p: &usvg::Path, height: f64, rings: &mut Vec<Vec<Point<f64>>>, left: &mut usize) -> Result<(), OutlineError> {
+    for sub in subpaths(p, height, &pieces, left)? {
+        if sub.closed {
+            rings.push(ring_of(sub.points));
+        }
+    }
+    Ok(())
+}
+
+/// A closed subpath's vertices as a ring: no repeated first vertex, no vertex twice in a row.
+fn ring_of(mut r: Vec<Point<f64>>) -> Vec<Point<f64>> {
+    if r.len() >= 2 && r.first() == r.last() {
+        r.pop();
+    }
+    r.dedup();
+    r
+}
+
+/// The subpaths of `p`, each curve cut into `pieces(control polygon)` chords.
+fn subpaths(p: &usvg::Path, height: f64, pieces: &dyn Fn(&[Point<f64>]) -> usize, left: &mut usize) -> Result<Vec<Subpath>, OutlineError> {
     let ts = p.abs_transform();
     let map = |x: f32, y: f32| {
         let (x, y) = (f64::from(x), f64::from(y));
@@ -214,24 +453,21 @@ fn flatten(p: &usvg::Path, height: f64, rings: &mut Vec<Vec<Point<f64>>>, left: 
         let snap = |v: f64| (v * 1e4).round() / 1e4;
         Point::new(snap(px * MM_PER_PX), snap((height - py) * MM_PER_PX))
     };
+    let mut out = Vec::new();
     let mut cur: Vec<Point<f64>> = Vec::new();
     let mut last = Point::new(0.0, 0.0);
-    fn push_ring(rings: &mut Vec<Vec<Point<f64>>>, cur: &mut Vec<Point<f64>>, closed: bool) {
-        let mut r = std::mem::take(cur);
-        if closed {
-            if r.len() >= 2 && r.first() == r.last() {
-                r.pop();
-            }
-            r.dedup();
-            rings.push(r);
+    let end = |out: &mut Vec<Subpath>, cur: &mut Vec<Point<f64>>, closed: bool| {
+        let points = std::mem::take(cur);
+        let closed = closed || (points.len() >= 3 && points.first() == points.last());
+        if !points.is_empty() {
+            out.push(Subpath { points, closed });
         }
-    }
+    };
     for seg in p.data().segments() {
         use usvg::tiny_skia_path::PathSegment as S;
         match seg {
             S::MoveTo(a) => {
-                let open_closed = cur.len() >= 3 && cur.first() == cur.last();
-                push_ring(rings, &mut cur, open_closed);
+                end(&mut out, &mut cur, false);
                 spend(left, 1)?;
                 last = map(a.x, a.y);
                 cur.push(last);
@@ -272,14 +508,13 @@ fn flatten(p: &usvg::Path, height: f64, rings: &mut Vec<Vec<Point<f64>>>, left: 
             }
             S::Close => {
                 let start = cur.first().copied().unwrap_or(last);
-                push_ring(rings, &mut cur, true);
+                end(&mut out, &mut cur, true);
                 last = start;
             }
         }
     }
-    let open_closed = cur.len() >= 3 && cur.first() == cur.last();
-    push_ring(rings, &mut cur, open_closed);
-    Ok(())
+    end(&mut out, &mut cur, false);
+    Ok(out)
 }
 
 /// Pieces for a curve with this control polygon: chords of at most 0.5 mm, at least 8.

@@ -51,6 +51,8 @@ pub struct FillRun {
     pub symmetry: Option<super::symmetry::SymmetryPlan>,
     /// The core's parameters.
     pub params: Params,
+    /// The motifs the shape kinds number (`--shape svg:FILE`, `glyph:TEXT`).
+    pub motifs: std::sync::Arc<Vec<super::motif::MotifSource>>,
     /// The stop conditions.
     pub stop: Stop,
     /// RNG seed.
@@ -145,12 +147,16 @@ fn mix_order(m: MixArg) -> MixOrder {
 }
 
 /// Checks that every plot flag given is one `format` reads (before the fill runs).
-fn check_plot(p: &PlotArgs, format: Format) -> Result<(), CliError> {
+/// `--chord-tolerance` is also read by every format when an SVG motif's curves are flattened
+/// (`motif_svg`).
+fn check_plot(p: &PlotArgs, format: Format, motif_svg: bool) -> Result<(), CliError> {
     p.build_options()?;
+    let tolerance: &[&str] = if motif_svg { &["--chord-tolerance"] } else { &[] };
     match format {
         Format::Gcode => p.check_gcode()?,
         Format::Svg | Format::Png => {
-            p.refuse_except(&SVG_FLAGS, |_| FOR_GCODE.to_string())?;
+            let allowed: Vec<&str> = SVG_FLAGS.iter().chain(tolerance).copied().collect();
+            p.refuse_except(&allowed, |_| FOR_GCODE.to_string())?;
             if (p.fit || p.center || p.margin.is_some()) && p.page.is_none() {
                 let flag = if p.fit {
                     "--fit"
@@ -165,7 +171,9 @@ fn check_plot(p: &PlotArgs, format: Format) -> Result<(), CliError> {
                 ));
             }
         }
-        other => p.refuse_except(&[], |_| format!("is for drawings (svg, png, gcode), not {} output", other.name()))?,
+        other => p.refuse_except(tolerance, |_| {
+            format!("is for drawings (svg, png, gcode), not {} output", other.name())
+        })?,
     }
     Ok(())
 }
@@ -221,7 +229,7 @@ pub fn resolve_as(a: &FillArgs, format: Format) -> Result<(FillRun, FillDraw), C
             "is not available with --relief (a height map has no page or layers)".to_string()
         })?;
     }
-    check_plot(&a.plot, format)?;
+    check_plot(&a.plot, format, a.shape.has_svg())?;
     check_cells(a)?;
     for (given, flag, what) in [
         (a.threads.is_some(), "--threads", "screens on threads"),
@@ -247,7 +255,10 @@ pub fn resolve_as(a: &FillArgs, format: Format) -> Result<(FillRun, FillDraw), C
         ));
     }
     let seed = a.run.seed.seed;
-    let shapes = a.shape.list(mix_order(a.mix_order), seed);
+    let tolerance = a.plot.chord_tolerance.unwrap_or(super::motif::DEFAULT_MOTIF_TOLERANCE);
+    let resolved = super::motif::resolve(&a.shape, &a.input, tolerance)?;
+    let shapes =
+        ShapeList::mix(&resolved.kinds, mix_order(a.mix_order), seed).unwrap_or_else(|| a.shape.list(mix_order(a.mix_order), seed));
     let params = Params {
         c: crate::plan::exponent(&a.run.power, 1.3, Params::c_from_dimension),
         n_offset: a.run.power.n_offset,
@@ -270,11 +281,11 @@ pub fn resolve_as(a: &FillArgs, format: Format) -> Result<(FillRun, FillDraw), C
         _ => None,
     };
     let cut = a.region.is_some() || page_window.is_some();
-    let (region, source) = crate::plan::region_input::resolve(&page_window.unwrap_or_else(|| a.region()), &a.input)?;
+    let (region, source) = crate::plan::region_input::resolve(&page_window.unwrap_or_else(|| a.region()), &a.input, a.shape.has_glyph())?;
     let names = FillNames {
         shape: a.shape.name(),
         rotate: if params.rotate && a.shape.rotates() { "random" } else { "none" },
-        mix_order: (a.shape.0.len() > 1).then(|| a.mix_order.name()),
+        mix_order: a.shape.is_mix().then(|| a.mix_order.name()),
         sampler: a.sampler.name(),
         scalar: a.scalar.name(),
         cells: a.cells,
@@ -292,6 +303,7 @@ pub fn resolve_as(a: &FillArgs, format: Format) -> Result<(FillRun, FillDraw), C
         periodic: a.periodic,
         symmetry,
         params,
+        motifs: std::sync::Arc::new(resolved.motifs),
         stop: crate::plan::stops(&a.run.stop),
         seed,
         reference_sampler: a.sampler == Sampler::Reference,

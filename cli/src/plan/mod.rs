@@ -9,6 +9,7 @@ pub mod fill;
 pub mod format;
 pub mod line;
 pub mod machines;
+pub mod motif;
 pub mod plot;
 pub mod raster;
 pub mod region;

@@ -9,15 +9,24 @@ use zetafill::RegionError;
 
 /// An SVG outline (`--region svg:FILE`, the file `path`) that cannot be read.
 pub fn outline_error(path: &Path, e: OutlineError) -> CliError {
+    svg_error("--region", "of 0.5 mm", path, e)
+}
+
+/// An SVG file that `flag` names (its curves cut into chords `chords`, as the message words
+/// it) that cannot be read.
+pub fn svg_error(flag: &str, chords: &str, path: &Path, e: OutlineError) -> CliError {
     let path = path.display();
     // usvg's messages quote the byte they stopped at, control bytes too: written as escapes.
     CliError::arg(
-        "--region",
+        flag,
         printable(&match e {
             OutlineError::Read(e) => format!("cannot read '{path}': {e}"),
             OutlineError::Svg(e) => format!("'{path}' is not a readable SVG file: {e}"),
             OutlineError::NoClosedPath => {
                 format!("'{path}' has no closed path; draw the outline as a closed path (ending in Z)")
+            }
+            OutlineError::NoFilledPath => {
+                format!("'{path}' has no filled path outside its decorations; give the motif's outline a fill (fill=\"black\")")
             }
             OutlineError::Number(n) => format!(
                 "'{path}' holds the number {n} in its path data, radii or styles, beyond {:e}; scale the drawing down",
@@ -33,7 +42,7 @@ pub fn outline_error(path: &Path, e: OutlineError) -> CliError {
                 crate::io::svgin::MAX_RINGS
             ),
             OutlineError::TooManyVertices => format!(
-                "'{path}' has more than {} vertices once its curves are cut into chords of 0.5 mm; simplify the outline",
+                "'{path}' has more than {} vertices once its curves are cut into chords {chords}; simplify the outline",
                 crate::io::svgin::MAX_VERTICES
             ),
         }),

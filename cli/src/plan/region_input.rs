@@ -51,10 +51,10 @@ pub const MAX_TRACED_VERTICES: usize = 4_000_000;
 
 /// The region `spec` resolved: a mask or a text as its rings and their source; any other
 /// region as it is, once the flags it does not read are refused.
-pub fn resolve(spec: &RegionSpec, a: &RegionInputArgs) -> Result<(RegionSpec, Option<RegionSource>), CliError> {
+pub fn resolve(spec: &RegionSpec, a: &RegionInputArgs, glyphs: bool) -> Result<(RegionSpec, Option<RegionSource>), CliError> {
     match spec {
         RegionSpec::Mask { path, threshold } => {
-            text_flags(a)?;
+            text_flags(a, glyphs)?;
             mask(path, *threshold, a, spec)
         }
         RegionSpec::Text { lines } => {
@@ -63,7 +63,7 @@ pub fn resolve(spec: &RegionSpec, a: &RegionInputArgs) -> Result<(RegionSpec, Op
         }
         other => {
             mask_flags(a)?;
-            text_flags(a)?;
+            text_flags(a, glyphs)?;
             Ok((other.clone(), None))
         }
     }
@@ -86,10 +86,12 @@ fn mask_flags(a: &RegionInputArgs) -> Result<(), CliError> {
     only_for(a.region_sha256.is_some(), "--region-sha256", "mask:FILE")
 }
 
-/// Refuses the flags of a text.
-fn text_flags(a: &RegionInputArgs) -> Result<(), CliError> {
-    only_for(a.font.is_some(), "--font", "text:STRING")?;
-    only_for(a.font_sha256.is_some(), "--font-sha256", "text:STRING")?;
+/// Refuses the flags of a text (but the font, with `glyphs`: `--shape glyph:TEXT` reads it).
+fn text_flags(a: &RegionInputArgs, glyphs: bool) -> Result<(), CliError> {
+    if !glyphs {
+        only_for(a.font.is_some(), "--font", "text:STRING (or a --shape glyph:TEXT)")?;
+        only_for(a.font_sha256.is_some(), "--font-sha256", "text:STRING (or a --shape glyph:TEXT)")?;
+    }
     only_for(a.text_size.is_some(), "--text-size", "text:STRING")?;
     only_for(a.letter_spacing.is_some(), "--letter-spacing", "text:STRING")
 }
@@ -276,7 +278,7 @@ fn letters_error(letters: &crate::io::font::Letters, e: zetafill::RegionError, o
 }
 
 /// A font or text that gives no outline, worded for the flag to change.
-fn font_error(e: FontError, path: Option<&Path>) -> CliError {
+pub fn font_error(e: FontError, path: Option<&Path>) -> CliError {
     let name = path.map_or_else(|| "the built-in font".to_string(), |p| format!("'{}'", p.display()));
     let (flag, msg) = match e {
         FontError::Read(e) => ("--font", format!("cannot read {name}: {e}")),

@@ -236,8 +236,18 @@ fn check_shape_text(text: &str, tally: &Tally) -> Result<(), String> {
             };
         }
     };
+    // A motif (svg:, glyph:) is read when the run is planned: its text form is what is checked.
+    let Some(kinds) = arg.kinds() else {
+        tally.add("motif");
+        let again = spec::shape(&arg.name()).map_err(|e| format!("{text:?}: its name {:?} is refused: {e}", arg.name()))?;
+        return if again == arg {
+            Ok(())
+        } else {
+            Err(format!("{text:?}: its name {:?} reads back as {again:?}, not {arg:?}", arg.name()))
+        };
+    };
     let list = arg.list(zetafill::MixOrder::Cycle, 7);
-    if arg.0.is_empty() || arg.0.len() > zetafill::MAX_MIX || !list.is_valid() || list.kinds() != arg.0.as_slice() {
+    if kinds.is_empty() || kinds.len() > zetafill::MAX_MIX || !list.is_valid() || list.kinds() != kinds.as_slice() {
         return Err(format!("{text:?}: accepted as {arg:?}, which the core calls invalid"));
     }
     // The name (as the JSON and the command in an SVG's <desc> write it) reads back the same.

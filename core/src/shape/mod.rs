@@ -27,7 +27,8 @@ use blob::{blob_unit, noisy_unit};
 pub const BLOB_VERTICES: usize = 32;
 const _: () = assert!(BLOB_VERTICES <= MAX_VERTS, "a blob must fit a polygon's vertex list");
 
-/// Most shapes in a mix.
+/// Most shapes in a mix: 32 with the `motif` feature (a word's letters, each a motif), 8
+/// without (a mix of the built-in kinds, in a smaller list).
 ///
 /// # Examples
 ///
@@ -37,7 +38,7 @@ const _: () = assert!(BLOB_VERTICES <= MAX_VERTS, "a blob must fit a polygon's v
 /// assert!(ShapeList::mix(&[ShapeKind::Circle; MAX_MIX], MixOrder::Cycle, 0).is_some());
 /// assert!(ShapeList::mix(&[ShapeKind::Circle; MAX_MIX + 1], MixOrder::Cycle, 0).is_none());
 /// ```
-pub const MAX_MIX: usize = 8;
+pub const MAX_MIX: usize = if cfg!(feature = "motif") { 32 } else { 8 };
 
 /// A kind of shape, with its fixed proportions. A fill places one kind, or a mix of them
 /// ([`ShapeList`]); the kind maps area to scale and back, and gives the exact outline.

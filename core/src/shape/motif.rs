@@ -362,6 +362,13 @@ impl<'a> Motif<'a> {
         if !boxes_meet(ba, bb, reach) {
             return true;
         }
+        // Each reference point lies in its own motif's material (the centre of an inscribed
+        // disc): one in the other's material is an overlap, found by one ray, where the walk
+        // below would find no near edge in a motif wholly inside the other's material and
+        // come to the same answer by a ring's first vertex only after visiting every pair.
+        if (in_box(f.t, bb, m) && o.holds(g, f.t)) || (in_box(g.t, ba, m) && self.holds(f, g.t)) {
+            return false;
+        }
         // Only edges near both boxes can come near each other; the two trees are walked
         // together, each pair of nodes kept while their placed boxes come within reach.
         let both = [ba[0].max(bb[0]), ba[1].max(bb[1]), ba[2].min(bb[2]), ba[3].min(bb[3])];

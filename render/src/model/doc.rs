@@ -238,6 +238,9 @@ pub struct ShapeDoc {
     /// tested.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub outlines: Option<Vec<Vec<[f64; 2]>>>,
+    /// A motif's decorations: polylines drawn with it and never tested.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub decorations: Option<Vec<Vec<[f64; 2]>>>,
 }
 
 /// Run statistics.

@@ -228,9 +228,26 @@ pub fn picture(doc: &FillDoc, look: &FillLook) -> Picture {
                     });
                 }
             }
+            // A motif's decorations: strokes, in either style, cut as the hatching is.
+            if let Some(lines) = sh.decorations.as_ref().filter(|_| !look.build.no_outline) {
+                let paths = lines
+                    .iter()
+                    .map(|l| Path::polyline(l.iter().map(|v| [v[0] + dx, v[1] + dy]).collect(), false))
+                    .collect();
+                let mut item = Item::new(Shape::Path(paths));
+                item.class = Some("decoration");
+                if look.filled {
+                    item.paint = Paint::outline(look.pen_width);
+                }
+                items.extend(match cut_in {
+                    Some(win) => item.clipped_in(win),
+                    None if cut_to_tile => item.clipped(&tile),
+                    None => Some(item),
+                });
+            }
             for mut item in items {
                 if let Some(c) = colour {
-                    if look.filled {
+                    if look.filled && item.class != Some("decoration") {
                         item.paint.fill = Some(c.clone());
                     } else {
                         item.paint.stroke = Some(c.clone());

@@ -58,16 +58,18 @@ pub fn image_doc(w: &Wallpaper, sh: &ShapeDoc, k: usize) -> ShapeDoc {
         Geo::Poly { v, .. } => Some(v.iter().map(|p| [p.x, p.y]).collect()),
         _ => None,
     };
-    // A motif's rings go by the same map: centre + M (v - c).
-    let outlines = sh.outlines.as_ref().and_then(|rings| {
+    // A motif's rings and decorations go by the same map: centre + M (v - c).
+    let mapped = |lines: &Option<Vec<Vec<[f64; 2]>>>| -> Option<Vec<Vec<[f64; 2]>>> {
+        let lines = lines.as_ref()?;
         let iso = w.iso(k)?;
         let [m00, m01, m10, m11] = iso.m;
         let map = |p: &[f64; 2]| {
             let (dx, dy) = (p[0] - c.x, p[1] - c.y);
             [centre.x + (m00 * dx + m01 * dy), centre.y + (m10 * dx + m11 * dy)]
         };
-        Some(rings.iter().map(|r| r.iter().map(map).collect()).collect())
-    });
+        Some(lines.iter().map(|r| r.iter().map(map).collect()).collect())
+    };
+    let (outlines, decorations) = (mapped(&sh.outlines), mapped(&sh.decorations));
     // The angle of an image is not one number (a mirror image has none): it is left out,
     // the vertices say it all.
     ShapeDoc {
@@ -75,6 +77,7 @@ pub fn image_doc(w: &Wallpaper, sh: &ShapeDoc, k: usize) -> ShapeDoc {
         angle: None,
         vertices,
         outlines,
+        decorations,
         ..sh.clone()
     }
 }
@@ -130,10 +133,8 @@ pub fn placed_images(doc: &FillDoc) -> Option<Vec<ShapeDoc>> {
     let shift = |sh: &ShapeDoc, (dx, dy): (f64, f64)| ShapeDoc {
         center: [sh.center[0] + dx, sh.center[1] + dy],
         vertices: sh.vertices.as_ref().map(|v| v.iter().map(|p| [p[0] + dx, p[1] + dy]).collect()),
-        outlines: sh
-            .outlines
-            .as_ref()
-            .map(|r| r.iter().map(|v| v.iter().map(|p| [p[0] + dx, p[1] + dy]).collect()).collect()),
+        outlines: sh.outlines.as_ref().map(|r| shift_lines(r, (dx, dy))),
+        decorations: sh.decorations.as_ref().map(|r| shift_lines(r, (dx, dy))),
         ..sh.clone()
     };
     Some(
@@ -142,4 +143,9 @@ pub fn placed_images(doc: &FillDoc) -> Option<Vec<ShapeDoc>> {
             .flat_map(|im| im.shifts.iter().map(|&d| shift(&im.shape, d)).collect::<Vec<_>>())
             .collect(),
     )
+}
+
+/// Polylines moved by `(dx, dy)`.
+fn shift_lines(lines: &[Vec<[f64; 2]>], (dx, dy): (f64, f64)) -> Vec<Vec<[f64; 2]>> {
+    lines.iter().map(|v| v.iter().map(|p| [p[0] + dx, p[1] + dy]).collect()).collect()
 }

@@ -74,11 +74,13 @@ pub fn max_size(doc: &FillDoc) -> Result<u64, CliError> {
             } else {
                 0
             };
-            let rings = sh.outlines.as_ref().map_or(0, |r| {
-                let points: u64 = r.iter().map(|v| v.len() as u64).sum();
-                ",\"outlines\":[]".len() as u64 + r.len() as u64 * 3 + points * (2 * MAX_JSON_NUMBER + 4)
-            });
-            let list = list + rings;
+            let lines = |key: &str, r: &Option<Vec<Vec<[f64; 2]>>>| {
+                r.as_ref().map_or(0, |r| {
+                    let points: u64 = r.iter().map(|v| v.len() as u64).sum();
+                    key.len() as u64 + 6 + r.len() as u64 * 3 + points * (2 * MAX_JSON_NUMBER + 4)
+                })
+            };
+            let list = list + lines("outlines", &sh.outlines) + lines("decorations", &sh.decorations);
             keys.len() as u64 + 6 * sh.kind.len() as u64 + 2 * MAX_U64 + 6 * MAX_JSON_NUMBER + list
         })
         .sum();
@@ -97,6 +99,18 @@ fn pair(s: &mut String, v: [f64; 2]) {
     push_json(s, v[0]);
     s.push(',');
     push_json(s, v[1]);
+    s.push(']');
+}
+
+/// Appends `[[x,y],...]`.
+fn points(s: &mut String, vs: &[[f64; 2]]) {
+    s.push('[');
+    for (i, v) in vs.iter().enumerate() {
+        if i > 0 {
+            s.push(',');
+        }
+        pair(s, *v);
+    }
     s.push(']');
 }
 
@@ -128,29 +142,17 @@ fn shape(s: &mut String, sh: &ShapeDoc) -> Result<(), CliError> {
     s.push_str(",\"trials\":");
     push_int(s, sh.trials);
     if let Some(vs) = &sh.vertices {
-        s.push_str(",\"vertices\":[");
-        for (i, v) in vs.iter().enumerate() {
-            if i > 0 {
-                s.push(',');
-            }
-            pair(s, *v);
-        }
-        s.push(']');
+        s.push_str(",\"vertices\":");
+        points(s, vs);
     }
-    if let Some(rings) = &sh.outlines {
-        s.push_str(",\"outlines\":[");
-        for (k, ring) in rings.iter().enumerate() {
+    for (key, lines) in [(",\"outlines\":[", &sh.outlines), (",\"decorations\":[", &sh.decorations)] {
+        let Some(lines) = lines else { continue };
+        s.push_str(key);
+        for (k, line) in lines.iter().enumerate() {
             if k > 0 {
                 s.push(',');
             }
-            s.push('[');
-            for (i, v) in ring.iter().enumerate() {
-                if i > 0 {
-                    s.push(',');
-                }
-                pair(s, *v);
-            }
-            s.push(']');
+            points(s, line);
         }
         s.push(']');
     }

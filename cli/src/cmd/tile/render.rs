@@ -244,6 +244,7 @@ pub fn stones(tile: &Tile, render: Render) -> Result<Vec<crate::model::doc::Shap
         trials: 0,
         vertices,
         outlines: None,
+        decorations: None,
     };
     Ok(match render {
         Render::Discs => images(tile, 0.0)

@@ -137,28 +137,32 @@ fn shapes(doc: &Value) -> Vec<Value> {
     doc["shapes"].as_array().cloned().unwrap_or_default()
 }
 
+/// `zetafill fill --shape SHAPE EXTRA... -o - --format FORMAT -q`, run in `dir`.
+fn fill_args<'a>(shape: &'a str, extra: &[&'a str], format: &'a str) -> Vec<&'a str> {
+    let mut args = vec!["fill", "--shape", shape];
+    args.extend_from_slice(extra);
+    args.extend(["-o", "-", "--format", format, "-q"]);
+    args
+}
+
+/// The JSON document of a fill of SHAPE.
+fn fill_json(dir: &Path, shape: &str, extra: &[&str]) -> Value {
+    zf_json(dir, &fill_args(shape, extra, "json"))
+}
+
+/// The SVG bytes of a fill of SHAPE.
+fn fill_svg(dir: &Path, shape: &str, extra: &[&str]) -> Vec<u8> {
+    zf_ok(dir, &fill_args(shape, extra, "svg")).stdout
+}
+
 #[test]
 fn svg_motifs_fill_without_overlap_at_their_areas_and_inside_the_region() {
     let dir = tmp();
     let heart = write(dir.path(), "heart.svg", HEART);
-    let doc = zf_json(
+    let doc = fill_json(
         dir.path(),
-        &[
-            "fill",
-            "--shape",
-            &format!("svg:{heart}"),
-            "--region",
-            "rect:120:100",
-            "--count",
-            "300",
-            "--seed",
-            "5",
-            "-o",
-            "-",
-            "--format",
-            "json",
-            "-q",
-        ],
+        &format!("svg:{heart}"),
+        &["--region", "rect:120:100", "--count", "300", "--seed", "5"],
     );
     let placed = shapes(&doc);
     assert_eq!(placed.len(), 300);
@@ -187,43 +191,18 @@ fn svg_motifs_fill_without_overlap_at_their_areas_and_inside_the_region() {
     }
     assert!(overlaps(&broken).contains(&(0, 1)));
     // The same command gives the same bytes.
-    let args = [
-        "fill",
-        "--shape",
-        "svg:heart.svg",
-        "--count",
-        "200",
-        "-o",
-        "-",
-        "--format",
-        "svg",
-        "-q",
-    ];
-    assert_eq!(zf_ok(dir.path(), &args).stdout, zf_ok(dir.path(), &args).stdout);
+    let run = || fill_svg(dir.path(), "svg:heart.svg", &["--count", "200"]);
+    assert_eq!(run(), run());
 }
 
 #[test]
 fn smaller_motifs_go_into_the_holes_of_larger_ones() {
     let dir = tmp();
     let ring = write(dir.path(), "ring.svg", RING_HEART);
-    let doc = zf_json(
+    let doc = fill_json(
         dir.path(),
-        &[
-            "fill",
-            "--shape",
-            &format!("svg:{ring}"),
-            "--c",
-            "1.2",
-            "--n-offset",
-            "3",
-            "--count",
-            "400",
-            "-o",
-            "-",
-            "--format",
-            "json",
-            "-q",
-        ],
+        &format!("svg:{ring}"),
+        &["--c", "1.2", "--n-offset", "3", "--count", "400"],
     );
     let all: Vec<Rings> = shapes(&doc).iter().map(rings_of).collect();
     assert!(all.iter().all(|r| r.len() == 2), "each motif is a ring and its hole");
@@ -245,23 +224,7 @@ fn smaller_motifs_go_into_the_holes_of_larger_ones() {
 #[test]
 fn glyphs_are_ten_mixed_shapes_taken_in_turn_and_mix_with_built_in_kinds() {
     let dir = tmp();
-    let doc = zf_json(
-        dir.path(),
-        &[
-            "fill",
-            "--shape",
-            "glyph:0123456789",
-            "--n-offset",
-            "4",
-            "--count",
-            "60",
-            "-o",
-            "-",
-            "--format",
-            "json",
-            "-q",
-        ],
-    );
+    let doc = fill_json(dir.path(), "glyph:0123456789", &["--n-offset", "4", "--count", "60"]);
     assert_eq!(doc["params"]["mix_order"], "cycle");
     let placed = shapes(&doc);
     let all: Vec<Rings> = placed.iter().map(rings_of).collect();
@@ -276,25 +239,7 @@ fn glyphs_are_ten_mixed_shapes_taken_in_turn_and_mix_with_built_in_kinds() {
     // A mix of an SVG motif, glyphs and a circle, at random.
     let heart = write(dir.path(), "heart.svg", HEART);
     let mix = format!("mix:svg:{heart},glyph:AZ,circle");
-    let doc = zf_json(
-        dir.path(),
-        &[
-            "fill",
-            "--shape",
-            &mix,
-            "--mix-order",
-            "random",
-            "--n-offset",
-            "4",
-            "--count",
-            "100",
-            "-o",
-            "-",
-            "--format",
-            "json",
-            "-q",
-        ],
-    );
+    let doc = fill_json(dir.path(), &mix, &["--mix-order", "random", "--n-offset", "4", "--count", "100"]);
     assert_eq!(doc["params"]["shape"], mix.as_str());
     let kinds: std::collections::BTreeSet<String> = shapes(&doc).iter().map(|s| s["kind"].as_str().unwrap_or("").to_string()).collect();
     assert_eq!(kinds.into_iter().collect::<Vec<_>>(), ["circle", "motif"]);
@@ -304,21 +249,7 @@ fn glyphs_are_ten_mixed_shapes_taken_in_turn_and_mix_with_built_in_kinds() {
 fn decorations_are_drawn_with_the_motif_and_never_tested() {
     let dir = tmp();
     let fly = write(dir.path(), "fly.svg", BUTTERFLY);
-    let doc = zf_json(
-        dir.path(),
-        &[
-            "fill",
-            "--shape",
-            &format!("svg:{fly}"),
-            "--count",
-            "150",
-            "-o",
-            "-",
-            "--format",
-            "json",
-            "-q",
-        ],
-    );
+    let doc = fill_json(dir.path(), &format!("svg:{fly}"), &["--count", "150"]);
     let placed = shapes(&doc);
     for sh in &placed {
         let lines = sh["decorations"].as_array().unwrap_or_else(|| panic!("no decorations: {sh}"));
@@ -339,24 +270,7 @@ fn decorations_are_drawn_with_the_motif_and_never_tested() {
     assert_eq!(overlaps(&all), vec![]);
     // The SVG draws them as open paths of class decoration, in both styles.
     for style in ["outline", "filled"] {
-        let svg = zf_ok(
-            dir.path(),
-            &[
-                "fill",
-                "--shape",
-                "svg:fly.svg",
-                "--count",
-                "150",
-                "--style",
-                style,
-                "-o",
-                "-",
-                "--format",
-                "svg",
-                "-q",
-            ],
-        )
-        .stdout;
+        let svg = fill_svg(dir.path(), "svg:fly.svg", &["--count", "150", "--style", style]);
         let text = String::from_utf8_lossy(&svg);
         assert_eq!(text.matches("class=\"decoration\"").count(), 150, "{style}");
         let tree = usvg::Tree::from_data(&svg, &usvg::Options::default()).unwrap_or_else(|e| panic!("{e}"));

@@ -10,6 +10,7 @@ pub mod line;
 pub mod machines;
 pub mod plot;
 pub mod raster;
+pub mod shape;
 pub mod shell;
 pub mod space;
 pub mod spec;

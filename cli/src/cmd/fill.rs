@@ -8,10 +8,8 @@ use crate::error::CliError;
 use crate::model::doc::{kind_name, FillDoc, ParamsDoc, ShapeDoc, ShapeParamsDoc, StatsDoc};
 use crate::output;
 use crate::output::stream::{Output, Size};
-use crate::plan::fill::{
-    first_shape_error, first_two_error, fixed_outline_error, halt_advice, param_error, too_large_error, too_small_error, FillDraw,
-    FillPlan, FillRun, FIXED_MAX_VERTICES, SHAPES,
-};
+use crate::plan::fill::{fixed_outline_error, FillDraw, FillPlan, FillRun, FIXED_MAX_VERTICES, SHAPES};
+use crate::plan::fill_errors::{first_shape_error, first_two_error, halt_advice, param_error, too_large_error, too_small_error};
 use crate::plan::format::Format;
 use crate::plan::raster::{height_map_error, png_error};
 use crate::plan::symmetry::first_orbit_error;

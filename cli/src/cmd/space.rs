@@ -48,7 +48,7 @@ fn run_engine<S: Scalar>(a: &SpaceRun) -> Result<EngineRun, CliError> {
         solids: &mut placed,
         index: &mut index,
     };
-    let mut engine = SpaceEngine::<S>::new(a.params.clone(), a.region, storage).map_err(crate::plan::fill::param_error)?;
+    let mut engine = SpaceEngine::<S>::new(a.params.clone(), a.region, storage).map_err(crate::plan::fill_errors::param_error)?;
     let mut rng = zetafill::rng_from_seed(a.seed);
     let bar = stopping::progress_bar(a.quiet, a.stop.count, SOLIDS);
     let mut trials = Vec::with_capacity(cap);

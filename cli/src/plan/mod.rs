@@ -6,6 +6,7 @@
 pub mod colour;
 pub mod files;
 pub mod fill;
+pub mod fill_errors;
 pub mod format;
 pub mod line;
 pub mod machines;

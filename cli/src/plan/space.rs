@@ -259,10 +259,10 @@ pub fn resolve_as(a: &SpaceArgs, format: SpaceFormat) -> Result<(SpaceRun, Space
     if fixed_point {
         let max = <zetafill::Fixed as Scalar>::MAX_EXTENT;
         if hi.iter().any(|&v| v > max) {
-            return Err(crate::plan::fill::param_error(zetafill::ParamError::Extent));
+            return Err(crate::plan::fill_errors::param_error(zetafill::ParamError::Extent));
         }
     }
-    region.check().map_err(crate::plan::fill::param_error)?;
+    region.check().map_err(crate::plan::fill_errors::param_error)?;
     if a.run.gap >= 0.5 * hi.iter().fold(f64::MAX, |m, &v| m.min(v)) {
         return Err(CliError::arg(
             "--gap",
@@ -413,7 +413,7 @@ pub fn first_solid_error(max_c: Option<f64>, params: &SpaceParams, region: &Spac
 
 /// The usage error of a first solid that found no place in `trials` trials (nothing is
 /// written: an output with no solid is no fill), in the words of the 2D fill's
-/// ([`crate::plan::fill::first_shape_error`]): the solid, what happened, and what to change,
+/// ([`crate::plan::fill_errors::first_shape_error`]): the solid, what happened, and what to change,
 /// `--max-trials` included when the limit was lowered and reached.
 pub fn first_halt_error(run: &SpaceRun, trials: u64) -> CliError {
     let params = &run.params;

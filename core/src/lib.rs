@@ -110,6 +110,8 @@
 // Unit tests may index and panic: a failing test should.
 #![cfg_attr(test, allow(clippy::unwrap_used, clippy::expect_used, clippy::panic, clippy::indexing_slicing))]
 
+/// Counts of the engine's work, for benchmarks (the `counters` feature).
+pub mod counters;
 mod coverage;
 pub mod digest;
 mod engine;
@@ -144,7 +146,7 @@ pub use region::{Group, LatticeKind, PolygonRegion, Region, RegionError, Wallpap
 pub use rng::{rng_from_seed, ZetaRng};
 pub use sampler::{cells_for, CellSampler, CellWords, NoCells};
 pub use scalar::Scalar;
-pub use shape::{Frame, MixOrder, Motif, MotifError, Placed, ShapeKind, ShapeList, MAX_MIX, MAX_MOTIF_VERTICES};
+pub use shape::{Frame, MixOrder, Motif, MotifError, Placed, ShapeKind, ShapeList, COVER_DISCS, MAX_MIX, MAX_MOTIF_VERTICES};
 pub use zeta::ZetaError;
 
 /// The 1D fill: segments on an interval whose lengths follow the power law, placed by the

@@ -234,6 +234,110 @@ fn a_twin_that_skips_the_containment_step_fails() {
     assert!(!wrong.is_empty(), "the twin passed every pair: the pairs never test containment");
 }
 
+/// The heart ring of the speed benchmark: a heart with a heart-shaped hole off its centre,
+/// 100 vertices each.
+fn heart_ring() -> (Vec<Point<f64>>, Vec<usize>) {
+    let heart = |s: f64, cx: f64, cy: f64, rev: bool| -> Vec<Point<f64>> {
+        let mut v: Vec<Point<f64>> = (0..100)
+            .map(|k| {
+                let t = std::f64::consts::TAU * k as f64 / 100.0;
+                let x = 16.0 * t.sin().powi(3);
+                let y = 13.0 * t.cos() - 5.0 * (2.0 * t).cos() - 2.0 * (3.0 * t).cos() - (4.0 * t).cos();
+                Point::new(cx + s * x, cy + s * y)
+            })
+            .collect();
+        if rev {
+            v.reverse();
+        }
+        v
+    };
+    let mut pts = heart(1.5, 50.0, 52.0, false);
+    pts.extend(heart(0.7, 50.0, 55.0, true));
+    (pts, vec![100, 200])
+}
+
+/// Whether some disc of `a`'s inner cover, placed by `fa`, meets one of `b`'s placed by `fb`
+/// within `gap` (the test's own computation, from the cover the motif reports), with every
+/// radius grown by `grow`.
+fn covers_meet(a: &Motif<'_>, fa: &Frame<f64>, b: &Motif<'_>, fb: &Frame<f64>, gap: f64, grow: f64) -> bool {
+    a.cover().iter().any(|&(ca, ra)| {
+        b.cover().iter().any(|&(cb, rb)| {
+            let d = fa.apply(ca).dist2(fb.apply(cb)).sqrt();
+            d < (ra * fa.norm + rb * fb.norm) * grow + gap
+        })
+    })
+}
+
+#[test]
+fn the_inner_cover_lies_in_the_material_and_decides_pairs_the_inscribed_disc_does_not() {
+    for (name, outline) in [("letter P", letter_p()), ("comb", comb()), ("heart ring", heart_ring())] {
+        let mut owned = Owned::new(outline);
+        let m = owned.with_tree();
+        let cover = m.cover();
+        assert!(cover.len() >= 8, "{name}: only {} discs", cover.len());
+        assert_eq!(
+            cover[0],
+            (Point::new(0.0, 0.0), m.inner()),
+            "{name}: the inscribed disc comes first"
+        );
+        // Each disc lies in the material, by geo: its centre inside, the outline no nearer
+        // than its radius.
+        let placed = Geo::Motif {
+            m: &m,
+            f: Frame::new(Point::new(0.0, 0.0), 1.0, 0.0, 1.0),
+        };
+        let material = mp_of(&placed);
+        let boundary: Vec<LineString<f64>> = material
+            .iter()
+            .flat_map(|p| std::iter::once(p.exterior().clone()).chain(p.interiors().iter().cloned()))
+            .collect();
+        for (k, &(c, r)) in cover.iter().enumerate() {
+            let gc = geo::Point::new(c.x, c.y);
+            assert!(material.contains(&gc), "{name}: disc {k}'s centre is outside the material");
+            let edge = boundary.iter().map(|l| Euclidean.distance(&gc, l)).fold(f64::MAX, f64::min);
+            assert!(edge >= r, "{name}: disc {k} of radius {r} pokes out ({edge} from the outline)");
+            // No disc holds the centre of another.
+            for &(d, s) in &cover[..k] {
+                assert!(c.dist2(d).sqrt() >= r.max(s) * (1.0 - 1e-12), "{name}: discs overlap centres");
+            }
+        }
+    }
+    // Random pairs of heart rings: every pair whose covers meet meets by geo, and many pairs
+    // are decided by the cover that the inscribed discs alone leave to the edges.
+    let (mut a, mut b) = (Owned::new(heart_ring()), Owned::new(heart_ring()));
+    let (ma, mb) = (a.with_tree(), b.with_tree());
+    let mut r = Lcg(11);
+    let (mut by_cover, mut beyond_inner, mut grown_wrong) = (0, 0, 0);
+    for i in 0..600 {
+        let gap = if i % 2 == 0 { 0.0 } else { 0.5 * r.f() };
+        let sb = 6.0 + 6.0 * r.f();
+        let (fa, fb) = (frame(&mut r, 10.0, 40.0), frame(&mut r, sb, 40.0));
+        let (ga, gb) = (Geo::Motif { m: &ma, f: fa }, Geo::Motif { m: &mb, f: fb });
+        let d = geo_distance(&ga, &gb);
+        if covers_meet(&ma, &fa, &mb, &fb, gap, 1.0) {
+            by_cover += 1;
+            assert!(d <= gap, "pair {i}: the covers meet but geo finds the rings {d} apart (gap {gap})");
+            assert!(!separated(&ga, &gb, gap), "pair {i}: the covers meet but the exact test passes");
+            let inner = fa.t.dist2(fb.t).sqrt() < (ma.inner() * fa.norm + mb.inner() * fb.norm) + gap;
+            if !inner {
+                beyond_inner += 1;
+            }
+        }
+        // The twin: covers grown by a fifth claim overlaps that are not there.
+        if covers_meet(&ma, &fa, &mb, &fb, gap, 1.2) && d > gap + 1e-3 {
+            grown_wrong += 1;
+        }
+    }
+    assert!(
+        by_cover > 100 && beyond_inner > 50,
+        "{by_cover} pairs decided by the covers, {beyond_inner} beyond the inscribed discs"
+    );
+    assert!(
+        grown_wrong > 0,
+        "a cover grown by 20% passed every pair: the pairs never come near a disc's rim"
+    );
+}
+
 /// Every kind of region with a motif fill: both samplers, both scalars.
 fn regions() -> Vec<(&'static str, Region<'static>)> {
     vec![

@@ -46,6 +46,7 @@ impl<'a, S: Scalar> Engine<'a, S> {
                     let ok = d2 > contact * contact
                         || (!((circle && kind == ShapeKind::Circle) || self.solids_meet(d2, solid, kind, p.scale)) && {
                             self.entry_geo_into(j, p, S::ZERO, S::ZERO, &mut other);
+                            crate::counters::exact();
                             separated(image, &other, gap)
                         });
                     if !ok && (!lowest || self.hash.level_for(their_r + their_r) == level) {
@@ -125,6 +126,7 @@ impl<'a, S: Scalar> Engine<'a, S> {
             return true;
         }
         self.entry_geo_into(j, p, ox, oy, other);
+        crate::counters::exact();
         !separated(g, other, self.gap)
     }
 

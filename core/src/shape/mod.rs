@@ -19,7 +19,7 @@ mod motif;
 
 pub use list::{mix64, MixOrder, ShapeList};
 pub(crate) use motif::pair_near;
-pub use motif::{Frame, Motif, MotifError, MAX_MOTIF_VERTICES};
+pub use motif::{Frame, Motif, MotifError, COVER_DISCS, MAX_MOTIF_VERTICES};
 
 use crate::geom::{Geo, Point, Verts, MAX_VERTS};
 use crate::scalar::Scalar;

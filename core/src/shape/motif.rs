@@ -27,10 +27,17 @@
 //! four nearly collinear points far apart a crossing).
 //!
 //! The edge tree finds those pairs without visiting the others. Its nodes' boxes are in the
-//! motif's own frame; a node is skipped when the box about its circumscribed circle, mapped
-//! by the frame and grown by the frame's rounding (a relative 10^-9, or a hundred times the
-//! scalar's [`Scalar::OUTLINE_SLACK`], and sixteen times its absolute part), lies farther
-//! than `gap + m` from the box asked about: every edge inside lies farther still. The pairs
+//! motif's own frame; a node is skipped when the box of the node's box as the frame maps it
+//! (half widths `|m00| hx + |m01| hy` and `|m10| hx + |m11| hy` about the mapped centre),
+//! grown by the frame's rounding (a relative 10^-9, or a hundred times the scalar's
+//! [`Scalar::OUTLINE_SLACK`], and sixteen times its absolute part), lies farther than
+//! `gap + m` from the box asked about: every edge inside lies farther still.
+//!
+//! Before any edge, two motifs compare their inner covers ([`Motif::cover`]): up to
+//! [`COVER_DISCS`] discs in each material. Two discs that come within `gap` by far more than
+//! any rounding (a relative 10^-6, 10^-9, and twice both frames' slack) show that the
+//! materials do, which the edges would show too: the shortcut never changes an answer, and
+//! most rejected candidates of a crowded fill end there instead of in the walk. The pairs
 //! tested, and so every answer, are the same with or without a tree ([`Motif::new`] lends
 //! none), on every scalar; the ray test of the even-odd rule skips nodes wholly left of,
 //! above, or at or below the point in the same way.
@@ -41,6 +48,9 @@ use crate::scalar::Scalar;
 
 /// Most vertices a motif may have, all rings together.
 pub const MAX_MOTIF_VERTICES: usize = 65_536;
+
+/// Most discs in a motif's inner cover ([`Motif::cover`]).
+pub const COVER_DISCS: usize = 32;
 
 /// What is wrong with a motif's outline ([`Motif::new_in`]).
 ///
@@ -136,6 +146,10 @@ pub struct Motif<'a> {
     /// The reference point in the caller's coordinates, and the factor that scaled them.
     pole: Point<f64>,
     unit: f64,
+    /// Discs in the material (centre and radius, in the unit outline's frame); the first
+    /// `discs` are used.
+    cover: [(Point<f64>, f64); COVER_DISCS],
+    discs: u8,
 }
 
 /// Where the pole search looks first: a grid of this many cells a side over the box.
@@ -193,12 +207,15 @@ impl<'a> Motif<'a> {
         if inner.is_nan() || inner <= bound * 1e-6 {
             return Err(MotifError::NoInterior);
         }
+        let (cover, discs) = cover(&outline, inner);
         Ok(Motif {
             outline,
             bound,
             inner,
             pole,
             unit: k,
+            cover,
+            discs,
         })
     }
 
@@ -245,6 +262,15 @@ impl<'a> Motif<'a> {
     /// the nearest edge, less 10^-6 of it).
     pub fn inner(&self) -> f64 {
         self.inner
+    }
+
+    /// The inner cover: up to [`COVER_DISCS`] discs in the material of the unit outline
+    /// (centre and radius), the inscribed disc about the reference point first. Two placed
+    /// motifs with discs that meet by far more than any rounding overlap, which the exact test
+    /// would find only after walking their edges; so the test looks at the discs first (the
+    /// answer is the same).
+    pub fn cover(&self) -> &[(Point<f64>, f64)] {
+        self.cover.get(..usize::from(self.discs)).unwrap_or(&[])
     }
 
     /// Vertices, all rings together.
@@ -362,6 +388,9 @@ impl<'a> Motif<'a> {
         if !boxes_meet(ba, bb, reach) {
             return true;
         }
+        if self.covers_meet(f, o, g, gap) {
+            return false;
+        }
         // Each reference point lies in its own motif's material (the centre of an inscribed
         // disc): one in the other's material is an overlap, found by one ray, where the walk
         // below would find no near edge in a motif wholly inside the other's material and
@@ -373,6 +402,7 @@ impl<'a> Motif<'a> {
         // together, each pair of nodes kept while their placed boxes come within reach.
         let both = [ba[0].max(bb[0]), ba[1].max(bb[1]), ba[2].min(bb[2]), ba[3].min(bb[3])];
         let (sa, sb) = (slack(self, f), slack(o, g));
+        crate::counters::walk();
         let hit = self.outline.walk_edge_pairs(
             &o.outline,
             |na, nb| {
@@ -389,6 +419,38 @@ impl<'a> Motif<'a> {
             return false;
         }
         !(self.ring_starts(f).any(|v| in_box(v, bb, m) && o.holds(g, v)) || o.ring_starts(g).any(|v| in_box(v, ba, m) && self.holds(f, v)))
+    }
+
+    /// Whether a disc of this motif's cover placed by `f` comes within `gap` of one of `o`'s
+    /// placed by `g` by far more than any rounding: then the two materials come within `gap`
+    /// (each disc lies in its material; the placed vertices and centres lie within the
+    /// frames' slack of where the exact maps put them), and the exact test finds it.
+    fn covers_meet<S: Scalar>(&self, f: &Frame<S>, o: &Motif<'_>, g: &Frame<S>, gap: S) -> bool {
+        let slop = slack(self, f) + slack(o, g);
+        let slop = slop + slop;
+        let gap = gap.max(S::ZERO);
+        // `o`'s discs that reach this motif's bounding disc, placed once.
+        let mut theirs: heapless::Vec<(Point<S>, S), COVER_DISCS> = heapless::Vec::new();
+        let mine = f.norm * S::from_f64(self.bound);
+        for &(c, r) in o.cover() {
+            let (c, r) = (g.apply(c), g.norm * S::from_f64(r));
+            let lim = mine + r + gap;
+            if c.dist2(f.t) < lim * lim {
+                let _ = theirs.push((c, r));
+            }
+        }
+        if theirs.is_empty() {
+            return false;
+        }
+        let keep = S::from_f64(1.0 - 1e-6);
+        let tiny = S::from_f64(1e-9);
+        self.cover().iter().any(|&(c, r)| {
+            let (c, r) = (f.apply(c), f.norm * S::from_f64(r));
+            theirs.iter().any(|&(d, s)| {
+                let contact = (r + s + gap) * keep - tiny - slop;
+                contact > S::ZERO && c.dist2(d) < contact * contact
+            })
+        })
     }
 
     /// A distance from `c` no vertex placed by `f` lies beyond.
@@ -449,15 +511,16 @@ fn slack<S: Scalar>(m: &Motif<'_>, f: &Frame<S>) -> S {
 }
 
 /// The box, in the region's frame, about a node's box `n` of the unit outline: the box of the
-/// placed circle about it, grown by `s`.
+/// node's box as the frame's matrix maps it (half widths `|m00| hx + |m01| hy` and
+/// `|m10| hx + |m11| hy` about the mapped centre), grown by `s`.
 fn node_box<S: Scalar>(f: &Frame<S>, n: (f64, f64, f64, f64), s: S) -> [S; 4] {
     let c = Point::new(0.5 * (n.0 + n.2), 0.5 * (n.1 + n.3));
-    // sqrt(2) max(hx, hy) is at least the half diagonal, without a root.
-    let (hx, hy) = (0.5 * (n.2 - n.0), 0.5 * (n.3 - n.1));
-    let r = hx.max(hy) * (core::f64::consts::SQRT_2 * (1.0 + 1e-12));
+    let grow = 1.0 + 1e-12;
+    let (hx, hy) = (S::from_f64(0.5 * (n.2 - n.0) * grow), S::from_f64(0.5 * (n.3 - n.1) * grow));
+    let [m00, m01, m10, m11] = f.m;
     let w = f.apply(c);
-    let e = f.norm * S::from_f64(r) + s;
-    [w.x - e, w.y - e, w.x + e, w.y + e]
+    let (ex, ey) = (m00.abs() * hx + m01.abs() * hy + s, m10.abs() * hx + m11.abs() * hy + s);
+    [w.x - ex, w.y - ey, w.x + ex, w.y + ey]
 }
 
 /// The best centre of an inscribed disc the fixed search finds, or none when no probe lies
@@ -473,11 +536,8 @@ fn pole(region: &PolygonRegion<'_>) -> Option<Point<f64>> {
         }
     };
     let (w, h) = (x1 - x0, y1 - y0);
-    for j in 0..POLE_GRID {
-        for i in 0..POLE_GRID {
-            let (u, v) = ((i as f64 + 0.5) / POLE_GRID as f64, (j as f64 + 0.5) / POLE_GRID as f64);
-            offer(Point::new(x0 + u * w, y0 + v * h));
-        }
+    for k in 0..POLE_GRID * POLE_GRID {
+        offer(probe(k, x0, y0, w, h));
     }
     // Just off the middle of every edge, both sides: a slender outline the grid misses.
     for ring in region.rings() {
@@ -517,6 +577,65 @@ fn pole(region: &PolygonRegion<'_>) -> Option<Point<f64>> {
         }
     }
     Some(p)
+}
+
+/// The inner cover of a unit outline whose inscribed disc about the origin has radius
+/// `inner` ([`Motif::cover`]): that disc, then greedily the probe of a 48 x 48 grid over the
+/// box with the most room about it, among those outside every disc taken whose own disc
+/// holds no centre taken. Each radius is the probe's distance to the outline less 10^-6 of it.
+/// The search is fixed: the same discs on every target.
+fn cover(region: &PolygonRegion<'_>, inner: f64) -> ([(Point<f64>, f64); COVER_DISCS], u8) {
+    let mut cover = [(Point::new(0.0, 0.0), 0.0); COVER_DISCS];
+    let mut n = 0usize;
+    if let Some(first) = cover.first_mut() {
+        *first = (Point::new(0.0, 0.0), inner);
+        n = 1;
+    }
+    let (x0, y0, x1, y1) = region.bounds();
+    let (w, h) = (x1 - x0, y1 - y0);
+    // The room about each probe inside (in single precision, for the ranking: 9 KB of
+    // stack); a probe covered, or outside, has a room of 0.
+    let room_at = |p: Point<f64>| crate::scalar::sqrtf(region.dist2(p)) * (1.0 - 1e-6);
+    let mut room = [0.0f32; POLE_GRID * POLE_GRID];
+    for (k, r) in room.iter_mut().enumerate() {
+        let p = probe(k, x0, y0, w, h);
+        if region.inside(p) {
+            *r = room_at(p) as f32;
+        }
+    }
+    while n < COVER_DISCS {
+        let taken = cover.get(..n).unwrap_or(&[]);
+        let mut best: Option<(usize, f32)> = None;
+        for (k, r) in room.iter_mut().enumerate() {
+            if *r <= 0.0 {
+                continue;
+            }
+            let p = probe(k, x0, y0, w, h);
+            let own = f64::from(*r);
+            if taken.iter().any(|&(c, cr)| c.dist2(p) < cr.max(own) * cr.max(own)) {
+                *r = 0.0;
+            } else if best.is_none_or(|(_, b)| *r > b) {
+                best = Some((k, *r));
+            }
+        }
+        let Some((k, _)) = best else { break };
+        let p = probe(k, x0, y0, w, h);
+        if let Some(slot) = cover.get_mut(n) {
+            *slot = (p, room_at(p));
+        }
+        if let Some(r) = room.get_mut(k) {
+            *r = 0.0;
+        }
+        n += 1;
+    }
+    (cover, n as u8)
+}
+
+/// Probe `k` of the pole search's grid over the box at `(x0, y0)` of size `w` by `h`.
+fn probe(k: usize, x0: f64, y0: f64, w: f64, h: f64) -> Point<f64> {
+    let (i, j) = (k % POLE_GRID, k / POLE_GRID);
+    let (u, v) = ((i as f64 + 0.5) / POLE_GRID as f64, (j as f64 + 0.5) / POLE_GRID as f64);
+    Point::new(x0 + u * w, y0 + v * h)
 }
 
 /// Where a motif's unit outline goes: `t + M p` for each of its points `p`, computed in the

@@ -167,6 +167,13 @@ fn svg_motifs_fill_without_overlap_at_their_areas_and_inside_the_region() {
     let placed = shapes(&doc);
     assert_eq!(placed.len(), 300);
     assert_eq!(doc["params"]["shape"], "svg:heart.svg");
+    // The file's SHA-256, computed here independently of the tool.
+    let digest = {
+        use sha2::Digest;
+        let d = sha2::Sha256::digest(HEART.as_bytes());
+        d.iter().map(|b| format!("{b:02x}")).collect::<String>()
+    };
+    assert_eq!(doc["params"]["motif_sha256"], serde_json::json!([digest]));
     let all: Vec<Rings> = placed.iter().map(rings_of).collect();
     for (sh, rings) in placed.iter().zip(&all) {
         assert_eq!(sh["kind"], "motif");

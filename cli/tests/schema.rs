@@ -53,6 +53,8 @@ const RUNS: &[&str] = &[
     "fill --shape noisy:0.3 --count 30",
     "fill --shape mix:circle,square --mix-order random --count 60",
     "fill --shape mix:ring:0.4,star:6:0.6,triangle --n-offset 6 --count 60",
+    "fill --shape svg:region.svg --n-offset 4 --count 40",
+    "fill --shape mix:svg:region.svg,glyph:Z,circle --n-offset 6 --count 40",
     "fill --region circle:80 --count 60",
     "fill --region annulus:80:30 --n-offset 6 --count 60",
     "fill --region polygon:0,0,100,0,100,100,0,100/30,30,70,30,70,70,30,70 --n-offset 10 --count 60",

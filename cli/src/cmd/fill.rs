@@ -338,6 +338,7 @@ pub fn compute_watched(a: &FillRun, watch: &mut dyn FnMut(&zetafill::Placement<f
                 batch: a.names.batch,
                 density: a.names.density.clone(),
                 density_sha256: a.names.density_sha256.clone(),
+                motif_sha256: a.names.motif_sha256.clone(),
                 source: a.names.source.clone(),
             },
             gap: params.gap,

@@ -93,6 +93,8 @@ pub struct FillNames {
     pub density: Option<String>,
     /// The SHA-256 of the `--density` picture.
     pub density_sha256: Option<String>,
+    /// The SHA-256 of each SVG motif's file, in the order `--shape` names them.
+    pub motif_sha256: Option<Vec<String>>,
     /// A region made from a picture or a text: the flags that make it again.
     pub source: Option<crate::model::region::RegionSource>,
 }
@@ -290,6 +292,7 @@ pub fn resolve_as(a: &FillArgs, format: Format) -> Result<(FillRun, FillDraw), C
         batch: (a.sampler == Sampler::Batched).then(|| batch_size(a.batch) as u64),
         density: a.density.as_ref().map(|d| d.name()),
         density_sha256: picture.as_ref().map(|p| p.sha256.clone()),
+        motif_sha256: Some(resolved.motifs.iter().filter_map(|m| m.sha256.clone()).collect::<Vec<_>>()).filter(|v| !v.is_empty()),
         source,
     };
     if a.scalar == ScalarArg::Fixed && !cfg!(feature = "fixed-point") {

@@ -31,6 +31,8 @@ pub struct MotifSource {
     pub ends: Vec<usize>,
     /// Polylines drawn with the motif and never tested, in the same frame as `points`.
     pub decoration: Vec<Vec<Point<f64>>>,
+    /// The SHA-256 of an SVG motif's file, as read.
+    pub sha256: Option<String>,
 }
 
 impl MotifSource {
@@ -108,12 +110,14 @@ fn read_svg(path: &Path, tolerance: f64) -> Result<MotifSource, CliError> {
     let fail = |e| crate::plan::region::svg_error("--shape", &chords, path, e);
     let data = crate::io::read::read_limited(path, crate::io::read::MAX_SVG_BYTES, "an SVG motif")
         .map_err(|e| fail(crate::io::svgin::OutlineError::Read(e)))?;
+    let sha256 = crate::io::read::sha256_hex(&data);
     let m = crate::io::svgin::motif_of(data, tolerance).map_err(fail)?;
     Ok(MotifSource {
         name: format!("svg:{}", path.display()),
         points: m.points,
         ends: m.ends,
         decoration: m.decoration,
+        sha256: Some(sha256),
     })
 }
 
@@ -141,6 +145,7 @@ fn glyph(bytes: &[u8], ch: char, font: Option<&Path>) -> Result<MotifSource, Cli
         points: letters.points,
         ends: letters.ends,
         decoration: Vec::new(),
+        sha256: None,
     })
 }
 

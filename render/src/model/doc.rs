@@ -89,6 +89,10 @@ pub struct ShapeParamsDoc {
     /// The SHA-256 of the `--density` picture.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub density_sha256: Option<String>,
+    /// The SHA-256 of each SVG motif's file (`--shape svg:FILE`), in the order `--shape` names
+    /// them.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub motif_sha256: Option<Vec<String>>,
     /// For a region made from a picture or a text: `region` (the `--region` argument) and the
     /// flags that go with it.
     #[serde(flatten, skip_serializing_if = "Option::is_none")]

@@ -28,10 +28,15 @@ fn first_difference(a: &[u8], b: &[u8]) -> Option<usize> {
 fn render(args_file: &Path) -> (PathBuf, Vec<u8>) {
     let text = std::fs::read_to_string(args_file).unwrap_or_default();
     let mut args: Vec<String> = vec!["zetafill".into()];
-    // A picture named by a relative path is in the gallery folder.
-    args.extend(text.split_whitespace().map(|a| match a.strip_prefix("image:") {
-        Some(rest) if !rest.starts_with('/') => format!("image:{}", gallery().join(rest).display()),
-        _ => a.to_string(),
+    // A picture or an SVG (a region or a motif) named by a relative path is found from the
+    // gallery folder, where the commands run.
+    args.extend(text.split_whitespace().map(|a| {
+        for prefix in ["image:", "svg:"] {
+            if let Some(rest) = a.strip_prefix(prefix).filter(|r| !r.starts_with('/')) {
+                return format!("{prefix}{}", gallery().join(rest).display());
+            }
+        }
+        a.to_string()
     }));
     use clap::Parser;
     let command = zetafill_cli::Cli::try_parse_from(&args)

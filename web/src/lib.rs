@@ -6,8 +6,9 @@
 //! crate reads it as the binary does ([`flags`], held to clap's reading by the tests, with
 //! no argument parser linked in), runs the fill while reporting each batch of
 //! placed shapes for drawing, and renders the finished document in any format the command
-//! line asks for. Only the file system is missing: an SVG outline (`--region svg:FILE`) comes
-//! as the file's bytes, and an output is returned instead of written. Nothing here decides a
+//! line asks for. Only the file system is missing: an SVG outline (`--region svg:FILE`) and an
+//! SVG motif (`--shape svg:FILE`) come as the files' bytes, and an output is returned instead
+//! of written. Nothing here decides a
 //! produced value; the core computes the same bits on every target.
 
 #![deny(missing_docs)]
@@ -60,9 +61,21 @@ fn read<A>(argv: &[String], read: impl FnOnce(&mut Words) -> Result<A, String>) 
 }
 
 /// `zetafill fill ARGS` parsed as the binary parses it, an SVG outline taken from `outline`
-/// (the bytes of the file the command names), and its format.
-fn parse(argv: &[String], outline: Option<&[u8]>) -> Result<(FillArgs, Format), String> {
+/// and an SVG motif from `motif` (the bytes of the files the command names), and its format.
+fn parse(argv: &[String], outline: Option<&[u8]>, motif: Option<&[u8]>) -> Result<(FillArgs, Format), String> {
     let mut a = read(argv, flags::fill)?;
+    for spec in &a.shape.0 {
+        if let zetafill_cli::args::spec::ShapeSpec::Svg(path) = spec {
+            let Some(bytes) = motif else {
+                return Err(format!(
+                    "error: --shape: no motif file chosen for '{}'; choose an SVG file",
+                    path.display()
+                ));
+            };
+            // Read as the binary reads the file it names.
+            zetafill_cli::plan::motif::provide_file(path, bytes.to_vec());
+        }
+    }
     if let Some(RegionSpec::Svg(path)) = &a.region {
         let Some(bytes) = outline else {
             return Err(format!(
@@ -80,8 +93,8 @@ fn parse(argv: &[String], outline: Option<&[u8]>) -> Result<(FillArgs, Format), 
 }
 
 /// The run and the drawing of a command line.
-fn plan(argv: &[String], outline: Option<&[u8]>) -> Result<(FillRun, FillDraw, Format), String> {
-    let (a, format) = parse(argv, outline)?;
+fn plan(argv: &[String], outline: Option<&[u8]>, motif: Option<&[u8]>) -> Result<(FillRun, FillDraw, Format), String> {
+    let (a, format) = parse(argv, outline, motif)?;
     let (run, draw) = resolve_as(&a, format).map_err(said)?;
     Ok((run, draw, format))
 }
@@ -147,6 +160,7 @@ const REPORT_MS: f64 = 40.0;
 pub struct Session {
     argv: Vec<String>,
     outline: Option<Vec<u8>>,
+    motif: Option<Vec<u8>>,
     run: FillRun,
     frame: Vec<f64>,
     doc: Option<FillDoc>,
@@ -158,17 +172,19 @@ impl Session {
     /// Checks `zetafill fill ARGV` (without the program and subcommand names) as the binary
     /// does; `outline` holds the bytes of the SVG file of `--region svg:FILE`, if any, and
     /// `font` those of the built-in font's file, which the wasm does not embed (a text region
-    /// without `--font` needs it). The error is the binary's message.
+    /// or a glyph motif without `--font` needs it), and `motif` those of the SVG file of
+    /// `--shape svg:FILE`, if any. The error is the binary's message.
     #[wasm_bindgen(constructor)]
-    pub fn new(argv: Vec<String>, outline: Option<Vec<u8>>, font: Option<Vec<u8>>) -> Result<Session, String> {
+    pub fn new(argv: Vec<String>, outline: Option<Vec<u8>>, font: Option<Vec<u8>>, motif: Option<Vec<u8>>) -> Result<Session, String> {
         if let Some(font) = font {
             zetafill_cli::io::font::provide_builtin(font);
         }
-        let (run, _, _) = plan(&argv, outline.as_deref())?;
+        let (run, _, _) = plan(&argv, outline.as_deref(), motif.as_deref())?;
         let frame = frame(&run)?;
         Ok(Session {
             argv,
             outline,
+            motif,
             run,
             frame,
             doc: None,
@@ -239,7 +255,7 @@ impl Session {
     /// page and pen flags). The error is the binary's message.
     pub fn export(&self, argv: Vec<String>) -> Result<Vec<u8>, String> {
         let doc = self.doc.as_ref().ok_or("error: the fill has not run yet")?;
-        let (run, draw, format) = plan(&argv, self.outline.as_deref())?;
+        let (run, draw, format) = plan(&argv, self.outline.as_deref(), self.motif.as_deref())?;
         if run != self.run {
             return Err(format!(
                 "error: '{}' runs another fill than '{}'",

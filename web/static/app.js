@@ -19,6 +19,7 @@ for (const name of machines()) $('machine').add(new Option(name, name));
 
 const defaults = Object.fromEntries(new FormData(form));
 let outline = null;
+let motif = null;
 
 // What the test and a curious reader can look at: the state of the fill shown.
 const page = {
@@ -114,7 +115,7 @@ function start() {
   const run = { worker, argv, periodic: v.periodic, v };
   pending = run;
   worker.onmessage = (ev) => onWorker(run, ev.data);
-  worker.postMessage({ type: 'run', module, argv, digestArgv: digestArgv(v), outline });
+  worker.postMessage({ type: 'run', module, argv, digestArgv: digestArgv(v), outline, motif });
   note('start');
 }
 
@@ -300,6 +301,15 @@ $('outline').addEventListener('change', async (ev) => {
   if (!file) return;
   outline = new Uint8Array(await file.arrayBuffer());
   form.elements.region.value = `svg:${file.name}`;
+  changed();
+});
+// A motif likewise: the file's bytes go with the command, which names it `svg:NAME`.
+$('motif').addEventListener('input', (ev) => ev.stopPropagation());
+$('motif').addEventListener('change', async (ev) => {
+  const file = ev.target.files[0];
+  if (!file) return;
+  motif = new Uint8Array(await file.arrayBuffer());
+  form.elements.shape.value = `svg:${file.name}`;
   changed();
 });
 

@@ -7,13 +7,14 @@ import init, { Session, output } from './zetafill_web.js';
 
 let session = null;
 
-// The built-in font is not in the wasm: a text region without `--font` fetches its file (once
-// per worker; the browser's cache keeps it between workers).
+// The built-in font is not in the wasm: a text region or a glyph motif without `--font` fetches
+// its file (once per worker; the browser's cache keeps it between workers).
 const FONT = 'DejaVuSans-Bold.ttf';
 async function fontFor(argv) {
   const at = argv.indexOf('--region');
   const text = argv.some((w) => w.startsWith('--region=text:')) || (at >= 0 && argv[at + 1]?.startsWith('text:'));
-  if (!text || argv.includes('--font')) return undefined;
+  const glyph = argv.some((w, i) => (argv[i - 1] === '--shape' || w.startsWith('--shape=')) && w.includes('glyph:'));
+  if (!(text || glyph) || argv.includes('--font')) return undefined;
   return new Uint8Array(await (await fetch(FONT)).arrayBuffer());
 }
 
@@ -34,10 +35,10 @@ function fail(e) {
   postMessage({ type: 'error', message: String(e) });
 }
 
-async function run({ module, argv, digestArgv, outline }) {
+async function run({ module, argv, digestArgv, outline, motif }) {
   await init({ module_or_path: module });
   try {
-    session = new Session(argv, outline ?? undefined, await fontFor(argv));
+    session = new Session(argv, outline ?? undefined, await fontFor(argv), motif ?? undefined);
   } catch (e) {
     return fail(e);
   }

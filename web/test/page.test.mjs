@@ -182,6 +182,21 @@ test('an uploaded SVG outline gives the files of --region svg:FILE', async () =>
   await page.close();
 });
 
+test('an uploaded SVG motif gives the files of --shape svg:FILE', async () => {
+  const heart = readFileSync(join(root, 'examples/motifs/heart-ring.svg'));
+  writeFileSync(join(work, 'heart-ring.svg'), heart);
+  const page = await openPage('?until=150&seed=3&exponent=1.15&n-offset=4');
+  await settled(page);
+  await page.setInputFiles('#motif', join(work, 'heart-ring.svg'));
+  await page.waitForFunction(() => window.zetafill.argv.includes('svg:heart-ring.svg') && window.zetafill.state === 'done');
+  await compareAll(page);
+  // The JSON names the file by its SHA-256, as the CLI's does.
+  const json = JSON.parse(Buffer.from((await pageFile(page, 'json')).bytes).toString());
+  assert.equal(json.params.motif_sha256.length, 1);
+  assert.equal(json.shapes[0].kind, 'motif');
+  await page.close();
+});
+
 test('the comparisons can fail: another seed gives other bytes and another digest', async () => {
   const page = await openPage('?until=300&seed=1');
   await settled(page);

@@ -22,12 +22,15 @@ pub fn read_limited(path: &Path, limit: u64, what: &str) -> std::io::Result<Vec<
     }
     file.take(limit.saturating_add(1)).read_to_end(&mut bytes)?;
     if bytes.len() as u64 > limit {
-        return Err(std::io::Error::other(format!(
-            "it holds more than {} MiB, the most {what} may be",
-            limit >> 20
-        )));
+        return Err(too_large(limit, what));
     }
     Ok(bytes)
+}
+
+/// The error of an input of more than `limit` bytes (`what` names it), as [`read_limited`]
+/// gives it.
+pub fn too_large(limit: u64, what: &str) -> std::io::Error {
+    std::io::Error::other(format!("it holds more than {} MiB, the most {what} may be", limit >> 20))
 }
 
 /// The SHA-256 of `bytes` in lower-case hex: how a picture or font input is named in the

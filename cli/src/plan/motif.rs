@@ -104,12 +104,39 @@ pub fn resolve(shape: &ShapeArg, input: &RegionInputArgs, tolerance: f64) -> Res
     Ok(out)
 }
 
+/// Motif files handed over by a caller without a file system (the browser page): a path
+/// named here is read from these bytes instead of from disk.
+static PROVIDED: std::sync::Mutex<Vec<(std::path::PathBuf, Vec<u8>)>> = std::sync::Mutex::new(Vec::new());
+
+/// Makes `--shape svg:PATH` read `bytes` (the file's content) instead of the file, with the
+/// same limits and messages; replaces what an earlier call gave for the same path.
+pub fn provide_file(path: &Path, bytes: Vec<u8>) {
+    let mut files = PROVIDED.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
+    files.retain(|(p, _)| p != path);
+    files.push((path.to_path_buf(), bytes));
+}
+
+/// The bytes [`provide_file`] gave for `path`, if any.
+fn provided(path: &Path) -> Option<Vec<u8>> {
+    let files = PROVIDED.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
+    files.iter().find(|(p, _)| p == path).map(|(_, b)| b.clone())
+}
+
 /// The motif of an SVG file.
 fn read_svg(path: &Path, tolerance: f64) -> Result<MotifSource, CliError> {
     let chords = format!("within {} mm", crate::error::num(tolerance));
     let fail = |e| crate::plan::region::svg_error("--shape", &chords, path, e);
-    let data = crate::io::read::read_limited(path, crate::io::read::MAX_SVG_BYTES, "an SVG motif")
-        .map_err(|e| fail(crate::io::svgin::OutlineError::Read(e)))?;
+    let limit = crate::io::read::MAX_SVG_BYTES;
+    let data = match provided(path) {
+        Some(bytes) if bytes.len() as u64 > limit => {
+            return Err(fail(crate::io::svgin::OutlineError::Read(crate::io::read::too_large(
+                limit,
+                "an SVG motif",
+            ))));
+        }
+        Some(bytes) => bytes,
+        None => crate::io::read::read_limited(path, limit, "an SVG motif").map_err(|e| fail(crate::io::svgin::OutlineError::Read(e)))?,
+    };
     let sha256 = crate::io::read::sha256_hex(&data);
     let m = crate::io::svgin::motif_of(data, tolerance).map_err(fail)?;
     Ok(MotifSource {
@@ -191,5 +218,27 @@ fn fix(e: zetafill::MotifError) -> String {
         zetafill::MotifError::Outline(_) => {
             "draw it as outlines that neither cross themselves nor each other (a hole inside its outline), with an area".to_string()
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_provided_file_is_read_in_place_of_the_disk_with_the_same_limit() {
+        let path = Path::new("/nonexistent/zetafill-provided-heart.svg");
+        let heart =
+            r#"<svg xmlns="http://www.w3.org/2000/svg" width="10mm" height="10mm" viewBox="0 0 10 10"><path d="M1 1H9V9H1Z"/></svg>"#;
+        // Not there: the disk's error.
+        assert!(read_svg(path, 0.05).is_err());
+        provide_file(path, heart.as_bytes().to_vec());
+        let m = read_svg(path, 0.05).unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(m.ends, vec![4]);
+        assert_eq!(m.sha256.as_deref(), Some(crate::io::read::sha256_hex(heart.as_bytes()).as_str()));
+        // Too large, as a file of that size would be.
+        provide_file(path, vec![b' '; crate::io::read::MAX_SVG_BYTES as usize + 1]);
+        let e = read_svg(path, 0.05).err().map(|e| e.to_string()).unwrap_or_default();
+        assert!(e.contains("more than 64 MiB"), "{e}");
     }
 }

@@ -294,24 +294,21 @@ $('new-seed').addEventListener('click', () => {
   form.elements.seed.value = String(Math.floor(Math.random() * 2 ** 32));
   changed();
 });
-// The outline is read first (below): its file input's own input event is not a change yet.
-$('outline').addEventListener('input', (ev) => ev.stopPropagation());
-$('outline').addEventListener('change', async (ev) => {
-  const file = ev.target.files[0];
-  if (!file) return;
-  outline = new Uint8Array(await file.arrayBuffer());
-  form.elements.region.value = `svg:${file.name}`;
-  changed();
-});
-// A motif likewise: the file's bytes go with the command, which names it `svg:NAME`.
-$('motif').addEventListener('input', (ev) => ev.stopPropagation());
-$('motif').addEventListener('change', async (ev) => {
-  const file = ev.target.files[0];
-  if (!file) return;
-  motif = new Uint8Array(await file.arrayBuffer());
-  form.elements.shape.value = `svg:${file.name}`;
-  changed();
-});
+// An SVG chosen from disk: an outline (`--region svg:NAME`) or a motif (`--shape svg:NAME`).
+// The file is read first (below): its input's own input event is not a change yet. `keep`
+// holds the bytes, which go with the command.
+function upload(id, field, keep) {
+  $(id).addEventListener('input', (ev) => ev.stopPropagation());
+  $(id).addEventListener('change', async (ev) => {
+    const file = ev.target.files[0];
+    if (!file) return;
+    keep(new Uint8Array(await file.arrayBuffer()));
+    form.elements[field].value = `svg:${file.name}`;
+    changed();
+  });
+}
+upload('outline', 'region', (bytes) => { outline = bytes; });
+upload('motif', 'shape', (bytes) => { motif = bytes; });
 
 function changed() {
   note(`input while ${page.state}`);

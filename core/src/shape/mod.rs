@@ -16,6 +16,7 @@
 mod blob;
 mod list;
 mod motif;
+mod motif_search;
 
 pub use list::{mix64, MixOrder, ShapeList};
 pub(crate) use motif::pair_near;
